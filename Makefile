@@ -1,0 +1,85 @@
+# tarn: `make demo` renders scenes/pond.json to pond.png; `make test` runs every test.
+# Both install missing Debian packages first (scripts/ensure-deps.sh).
+
+BUILD ?= build/release
+SAN ?= 0
+CC ?= cc
+
+WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes
+OPT := -O2 -g
+ifeq ($(SAN),1)
+OPT := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
+endif
+
+CORE_CFLAGS := -std=c99 -pedantic $(WARN) $(OPT) -Icore
+HOST_PKGS := libpng jansson
+HOST_CFLAGS := -std=c99 $(WARN) $(OPT) -D_POSIX_C_SOURCE=200809L -Icore -Ihost \
+	$(shell pkg-config --cflags $(HOST_PKGS) 2>/dev/null)
+HOST_LIBS := $(shell pkg-config --libs $(HOST_PKGS) 2>/dev/null) -lm
+TEST_LIBS := $(shell pkg-config --libs cmocka 2>/dev/null)
+
+CORE_SRC := $(wildcard core/*.c)
+HOST_SRC := $(filter-out host/main.c,$(wildcard host/*.c))
+TEST_SRC := $(wildcard tests/test_*.c)
+TEST_SUPPORT_SRC := $(filter-out $(TEST_SRC),$(wildcard tests/*.c))
+
+CORE_OBJ := $(CORE_SRC:%.c=$(BUILD)/%.o)
+HOST_OBJ := $(HOST_SRC:%.c=$(BUILD)/%.o)
+TEST_SUPPORT_OBJ := $(TEST_SUPPORT_SRC:%.c=$(BUILD)/%.o)
+TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+TARN := $(BUILD)/tarn
+
+.PHONY: all demo test check deps deps-test core-purity clean
+.DELETE_ON_ERROR:
+
+all: $(TARN)
+
+deps:
+	@scripts/ensure-deps.sh demo
+
+deps-test:
+	@scripts/ensure-deps.sh test
+
+demo: deps
+	@$(MAKE) --no-print-directory $(TARN)
+	$(TARN) render scenes/pond.json -o pond.png
+	@echo "wrote pond.png"
+
+# The whole suite: a plain build, then the same tests under ASan + UBSan, then the
+# check that core/ stays integer-only on a Cortex-M0.
+test: deps-test
+	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
+	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
+	@$(MAKE) --no-print-directory core-purity
+	@echo "all test suites passed"
+
+check: $(TARN) $(TEST_BIN)
+	@set -e; for t in $(TEST_BIN); do \
+		echo "== $$t"; TARN_BIN=$(TARN) $$t; \
+	done
+
+core-purity:
+	@BUILD=build/m0 tests/check_core_purity.sh
+
+$(TARN): $(BUILD)/host/main.o $(HOST_OBJ) $(CORE_OBJ)
+	$(CC) $(OPT) -o $@ $^ $(HOST_LIBS)
+
+$(BUILD)/tests/%: $(BUILD)/tests/%.o $(TEST_SUPPORT_OBJ) $(HOST_OBJ) $(CORE_OBJ)
+	$(CC) $(OPT) -o $@ $^ $(HOST_LIBS) $(TEST_LIBS)
+
+$(BUILD)/core/%.o: core/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CORE_CFLAGS) -MMD -MP -c -o $@ $<
+
+$(BUILD)/host/%.o: host/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(HOST_CFLAGS) -MMD -MP -c -o $@ $<
+
+$(BUILD)/tests/%.o: tests/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(HOST_CFLAGS) -Itests $(shell pkg-config --cflags cmocka 2>/dev/null) -MMD -MP -c -o $@ $<
+
+clean:
+	rm -rf build pond.png
+
+-include $(shell find build -name '*.d' 2>/dev/null)

@@ -1,0 +1,101 @@
+/* tarn_fixed.h: the fixed-point number formats of tarn and their helpers.
+ *
+ * Formats (Qm.n: m integer bits including sign where signed, n fraction bits):
+ *   tarn_q16   Q16.16 signed   world coordinates, matrices, scene scalars (1.0 = 65536)
+ *   Q1.15      signed          sin/cos results, unit-vector components per pixel
+ *   Q0.16      unsigned        exp2 results and blend factors (1.0 = 65536, held in 32 bits)
+ *   Q1.30      unsigned        inverse depth near/depth (1.0 = 1 << 30, at the near plane)
+ *   Q8.8       unsigned        8-bit colour channels with 8 fraction bits (255.0 = 65280)
+ *
+ * Rounding is to nearest, ties away from zero, unless a name says otherwise.
+ * Saturation clamps to the representable range instead of wrapping. */
+#ifndef TARN_FIXED_H
+#define TARN_FIXED_H
+
+#include <stdint.h>
+
+typedef int32_t tarn_q16; /* Q16.16 */
+
+#define TARN_Q16_ONE ((tarn_q16)65536)
+#define TARN_Q16_MAX ((tarn_q16)INT32_MAX)
+#define TARN_Q16_MIN ((tarn_q16)INT32_MIN)
+
+static inline int32_t tarn_sat_i64_to_i32(int64_t v)
+{
+    if (v > INT32_MAX) return INT32_MAX;
+    if (v < INT32_MIN) return INT32_MIN;
+    return (int32_t)v;
+}
+
+static inline int32_t tarn_clamp_i32(int32_t v, int32_t lo, int32_t hi)
+{
+    return v < lo ? lo : (v > hi ? hi : v);
+}
+
+/* Arithmetic shift right of a signed 64-bit value, rounding to nearest (ties up).
+ * Written with division-free operations so the result does not depend on how a
+ * compiler treats >> of negative values. */
+static inline int64_t tarn_round_shift_i64(int64_t v, unsigned shift)
+{
+    if (shift == 0) return v;
+    int64_t half = (int64_t)1 << (shift - 1);
+    int64_t biased = v + half;
+    /* floor division by 2^shift, valid for negative values too */
+    return biased >= 0 ? (biased >> shift) : -((-biased + ((int64_t)1 << shift) - 1) >> shift);
+}
+
+/* Q16.16 product, rounded and saturated. Uses a 64-bit multiply: per vertex or
+ * per frame only, never per pixel (Cortex-M0 has no 32x32->64 multiplier). */
+static inline tarn_q16 tarn_q16_mul(tarn_q16 a, tarn_q16 b)
+{
+    return tarn_sat_i64_to_i32(tarn_round_shift_i64((int64_t)a * b, 16));
+}
+
+/* Saturating Q16.16 sum. */
+static inline tarn_q16 tarn_q16_add(tarn_q16 a, tarn_q16 b)
+{
+    return tarn_sat_i64_to_i32((int64_t)a + b);
+}
+
+/* Q16.16 from a whole number, saturated. */
+static inline tarn_q16 tarn_q16_from_int(int32_t v)
+{
+    return tarn_sat_i64_to_i32((int64_t)v * 65536);
+}
+
+/* Number of leading zero bits of a 32-bit value (32 for 0). Portable: the
+ * Cortex-M0 has no CLZ instruction, and the result must match on every target. */
+static inline unsigned tarn_clz32(uint32_t v)
+{
+    unsigned n = 0;
+    if (v == 0) return 32;
+    if ((v & 0xFFFF0000u) == 0) { n += 16; v <<= 16; }
+    if ((v & 0xFF000000u) == 0) { n += 8; v <<= 8; }
+    if ((v & 0xF0000000u) == 0) { n += 4; v <<= 4; }
+    if ((v & 0xC0000000u) == 0) { n += 2; v <<= 2; }
+    if ((v & 0x80000000u) == 0) { n += 1; }
+    return n;
+}
+
+/* High 32 bits of an unsigned 32x32 product, from 16x16 partial products only, so
+ * per-pixel code needs no 64-bit multiply. Exact (equals (a*b) >> 32). */
+static inline uint32_t tarn_mul_hi_u32(uint32_t a, uint32_t b)
+{
+    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
+    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu);
+    return hh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+}
+
+/* Signed x unsigned high product: floor((a * b) / 2^32) for a signed a. */
+static inline int32_t tarn_mul_hi_s32_u32(int32_t a, uint32_t b)
+{
+    if (a >= 0) return (int32_t)tarn_mul_hi_u32((uint32_t)a, b);
+    /* -(|a|*b) >> 32 with floor semantics: -ceil(|a|*b / 2^32) */
+    uint32_t mag = (uint32_t)0 - (uint32_t)a;
+    uint32_t hi = tarn_mul_hi_u32(mag, b);
+    uint32_t lo = mag * b;
+    return (int32_t)-(int64_t)(hi + (lo != 0u)); /* fits: |result| <= 2^31 */
+}
+
+#endif

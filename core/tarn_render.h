@@ -1,0 +1,125 @@
+/* tarn_render.h: drawing a frame, a tile at a time, into memory the caller owns.
+ *
+ * Usage:
+ *     tarn_frame_config cfg = { 240, 240, tarn_quality_default() };
+ *     size_t need = tarn_frame_memory_bytes(&cfg);      0 means the config is invalid
+ *     static uint32_t mem[...];                          at least `need` bytes, 4-aligned
+ *     tarn_render_frame(&scene, &cfg, mem, sizeof mem, my_sink, my_ctx);
+ * The sink receives each finished tile, left to right, top to bottom.
+ *
+ * What a pixel is (the float reference in host/ implements the same rules):
+ *  - View space: forward f = normalize(target - position), right r = normalize(f x Y),
+ *    up u = r x f, where Y = (0,1,0); when f is (anti)parallel to Y, Y = (0,0,-1) instead.
+ *    A point P has view coordinates x = (P-C).r, y = (P-C).u, depth d = (P-C).f.
+ *  - Triangles are clipped to near <= d <= far (cut, not dropped) and, invisibly, to a
+ *    guard band of tarn_guard_band_pixels() around the frame; attributes are linear
+ *    along clipped edges in view space.
+ *  - Screen: focal = (height / 2) / tan(fov_y / 2) pixels; sx = width/2 + x*focal/d,
+ *    sy = height/2 - y*focal/d; rounded to the nearest 1/2^subpixel_bits pixel.
+ *  - Pixel (i, j) is sampled at its centre (i + 0.5, j + 0.5). A centre exactly on an
+ *    edge belongs to the triangle only if that is a top edge (horizontal, triangle
+ *    below it) or a left edge (triangle to its right): shared edges draw once.
+ *  - Front faces are counter-clockwise in the world, which is clockwise on the screen
+ *    (y down); the material's cull mode picks which are drawn. Zero-area triangles
+ *    draw nothing.
+ *  - Depth test: the pixel's inverse depth near/d (Q1.30) must be greater than the
+ *    stored one (closer wins; on a tie the earlier triangle stays). Objects draw in
+ *    scene order, triangles in index order.
+ *  - Vertex colour, per channel: base = material.colour * vertex colour / 255;
+ *    shade = min(1, ambient/255 + light/255 * max(0, N.L)) (1 if unlit);
+ *    lit = base * shade, in [0, 255].
+ *  - Perspective-correct interpolation of lit colour and texture coordinates (the
+ *    quality's perspective mode approximates it). Textured pixel = texel * lit / 255,
+ *    untextured = lit, rounded to nearest. Texel = (floor(u*W) mod W, floor(v*H) mod H).
+ */
+#ifndef TARN_RENDER_H
+#define TARN_RENDER_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "tarn_math.h"
+#include "tarn_scene.h"
+
+typedef enum {
+    TARN_OK = 0,
+    TARN_ERR_CONFIG,  /* a frame or quality field is out of range */
+    TARN_ERR_MEMORY,  /* the memory given is smaller than tarn_frame_memory_bytes() */
+    TARN_ERR_SCENE,   /* the scene is malformed (null arrays, index past the end...) */
+    TARN_ERR_SINK     /* the tile sink asked to stop */
+} tarn_status;
+
+const char *tarn_status_text(tarn_status status);
+
+typedef enum {
+    TARN_PERSPECTIVE_AFFINE = 0, /* linear in screen space: cheapest, bends textures */
+    TARN_PERSPECTIVE_SPAN = 1,   /* exact every `perspective_span` pixels, linear between */
+    TARN_PERSPECTIVE_PIXEL = 2   /* exact at every pixel */
+} tarn_perspective;
+
+#define TARN_SUBPIXEL_BITS_MIN 1u
+#define TARN_SUBPIXEL_BITS_MAX 8u
+#define TARN_TILE_SIZE_MIN 8u
+#define TARN_TILE_SIZE_MAX 64u
+#define TARN_FRAME_SIZE_MAX 1024u
+
+/* Every speed/accuracy knob. docs/figures.md gives each one's measured cost and error. */
+typedef struct {
+    tarn_exp2_config exp2;      /* exp2 table size and interpolation (fog, absorption) */
+    uint8_t recip_newton_steps; /* 0..TARN_RECIP_STEPS_MAX, per-pixel perspective divide */
+    uint8_t subpixel_bits;      /* 1..8; see tarn_frame_memory_bytes for the size limit */
+    uint8_t perspective;        /* tarn_perspective */
+    uint8_t perspective_span;   /* 2..64, a power of two; SPAN mode only */
+    uint8_t depth_bits;         /* 16 or 32 bits per depth-buffer entry */
+    uint8_t tile_size;          /* 8..64 pixels, square tiles; does not change the image */
+} tarn_quality;
+
+tarn_quality tarn_quality_default(void);
+
+typedef struct {
+    uint16_t width, height; /* pixels, 1..TARN_FRAME_SIZE_MAX */
+    tarn_quality quality;
+} tarn_frame_config;
+
+/* Pixels the guard band extends beyond each frame edge. */
+int32_t tarn_guard_band_pixels(const tarn_frame_config *config);
+
+/* Bytes of working memory a frame needs (tile colour and depth buffers), or 0 if
+ * the config is invalid: a field out of range, or a frame too large for the subpixel
+ * precision ((max(width,height) + 2*guard band) << subpixel_bits must stay below 2^15
+ * so that edge functions fit 32 bits). */
+size_t tarn_frame_memory_bytes(const tarn_frame_config *config);
+
+typedef struct {
+    uint16_t x, y, width, height; /* the tile's rectangle in the frame, pixels */
+    const uint32_t *rgb;          /* 0x00RRGGBB pixels, rows `stride` pixels apart */
+    uint16_t stride;
+} tarn_tile;
+
+/* Receives each finished tile; returns 0 to continue, non-zero to stop the frame. */
+typedef int (*tarn_tile_sink)(void *user, const tarn_tile *tile);
+
+/* Renders one frame. `memory` must be 4-byte aligned and at least
+ * tarn_frame_memory_bytes(config) long; nothing outside it is written. */
+tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *config,
+                              void *memory, size_t memory_bytes,
+                              tarn_tile_sink sink, void *user);
+
+/* A vertex after transform, clipping and snapping: what the rasterizer sees. */
+typedef struct {
+    int32_t x, y;        /* screen position in 1/2^subpixel_bits pixels */
+    uint32_t inv_depth;  /* near/d, Q1.30 */
+    tarn_uv uv;          /* Q16.16 texture coordinates */
+    uint16_t lit[3];     /* lit vertex colour, Q8.8 per channel (0..65280) */
+} tarn_screen_vertex;
+
+typedef void (*tarn_triangle_visitor)(void *user, const tarn_screen_vertex vertex[3],
+                                      const tarn_object *object);
+
+/* Calls `visit` for every triangle the rasterizer would draw, in drawing order,
+ * after clipping and culling. The float reference uses this to rasterize exactly
+ * the core's snapped triangles, isolating rasterization from transform precision. */
+tarn_status tarn_visit_screen_triangles(const tarn_scene *scene,
+                                        const tarn_frame_config *config,
+                                        tarn_triangle_visitor visit, void *user);
+
+#endif

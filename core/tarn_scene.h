@@ -1,0 +1,90 @@
+/* tarn_scene.h: a scene as plain const C data.
+ *
+ * The host builds these structs from a scene file; firmware holds them as const
+ * data baked into flash. Nothing here owns memory: every pointer refers to arrays
+ * the caller keeps alive for as long as the scene is rendered.
+ *
+ * Conventions: right-handed world, +y up. The camera looks from `position` toward
+ * `target`. Front faces wind counter-clockwise seen from the front. Texture
+ * coordinate (0,0) is the top-left corner of the texture's first row, 1.0 is one
+ * texture width or height, and coordinates wrap. Colours are 0xRRGGBB. */
+#ifndef TARN_SCENE_H
+#define TARN_SCENE_H
+
+#include <stdint.h>
+#include "tarn_fixed.h"
+
+typedef struct {
+    tarn_q16 x, y, z; /* Q16.16 */
+} tarn_vec3;
+
+typedef struct {
+    tarn_q16 u, v; /* Q16.16, 1.0 = one texture width (height) */
+} tarn_uv;
+
+#define TARN_TEXTURE_SIZE_MAX 1024u
+
+typedef struct {
+    uint16_t width, height; /* texels; each a power of two, 1..TARN_TEXTURE_SIZE_MAX */
+    const uint8_t *rgb;     /* width*height*3 bytes, rows top to bottom, R then G then B */
+} tarn_texture;
+
+typedef enum {
+    TARN_CULL_BACK = 0, /* draw front faces only (the default) */
+    TARN_CULL_NONE = 1, /* draw both sides */
+    TARN_CULL_FRONT = 2 /* draw back faces only */
+} tarn_cull;
+
+typedef struct {
+    uint32_t colour_rgb;          /* tint multiplying the texture or vertex colours */
+    const tarn_texture *texture;  /* NULL: untextured */
+    uint8_t cull;                 /* tarn_cull */
+    uint8_t unlit;                /* 1: ignore the light, colour is used as is */
+} tarn_material;
+
+#define TARN_MESH_VERTICES_MAX 65535u
+#define TARN_MESH_TRIANGLES_MAX 65535u
+
+typedef struct {
+    const tarn_vec3 *positions; /* object space, Q16.16 */
+    const tarn_vec3 *normals;   /* unit length, Q16.16, object space */
+    const tarn_uv *uvs;         /* NULL if the mesh has no texture coordinates */
+    const uint32_t *colours;    /* 0xRRGGBB per vertex, NULL for white */
+    const uint16_t *indices;    /* 3 per triangle */
+    uint16_t vertex_count;
+    uint16_t triangle_count;
+} tarn_mesh;
+
+/* World = position + scale * rotation * object. The rotation is orthonormal, so
+ * normals transform by the rotation alone. */
+typedef struct {
+    const tarn_mesh *mesh;
+    const tarn_material *material;
+    tarn_vec3 position;     /* Q16.16 world units */
+    tarn_q16 rotation[3][3]; /* Q16.16 rows of an orthonormal matrix */
+    tarn_q16 scale;         /* Q16.16, > 0 */
+} tarn_object;
+
+typedef struct {
+    tarn_vec3 position;     /* Q16.16 world */
+    tarn_vec3 target;       /* Q16.16 world, distinct from position */
+    tarn_q16 fov_y_degrees; /* Q16.16, vertical field of view, 1..179 */
+    tarn_q16 near;          /* Q16.16 world units, > 0 */
+    tarn_q16 far;           /* Q16.16 world units, > near; farther geometry is not drawn */
+} tarn_camera;
+
+typedef struct {
+    tarn_vec3 direction;   /* Q16.16 unit vector pointing from the scene toward the light */
+    uint32_t colour_rgb;   /* directional light colour */
+    uint32_t ambient_rgb;  /* ambient light colour */
+} tarn_light;
+
+typedef struct {
+    const tarn_object *objects;
+    uint16_t object_count;
+    tarn_camera camera;
+    tarn_light light;
+    uint32_t background_rgb; /* colour of pixels no triangle covers */
+} tarn_scene;
+
+#endif

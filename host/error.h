@@ -1,0 +1,22 @@
+/* error.h: one-line user-facing errors for the host tool.
+ *
+ * Every loader reports bad input by filling a tarn_error with a single line that
+ * names the file, the line or field, and what was expected, e.g.
+ *   "scenes/pond.json: objects[2].radius: expected a number > 0, got -1"
+ * The CLI prints it after "tarn: " and exits with status 2. */
+#ifndef TARN_HOST_ERROR_H
+#define TARN_HOST_ERROR_H
+
+#include <stddef.h>
+
+#define TARN_EXIT_BAD_INPUT 2
+
+typedef struct {
+    char message[512];
+} tarn_error;
+
+/* printf-style; always returns -1 so loaders can `return tarn_fail(err, ...)`. */
+int tarn_fail(tarn_error *err, const char *format, ...)
+    __attribute__((format(printf, 2, 3)));
+
+#endif

@@ -1,0 +1,32 @@
+#!/bin/sh
+# Installs the Debian packages the build and tests need, or says exactly how to.
+# Usage: scripts/ensure-deps.sh [demo|test]
+set -eu
+need=""
+want() { # want PACKAGE CHECK...: queue PACKAGE when the check fails
+    pkg=$1; shift
+    if ! "$@" >/dev/null 2>&1; then need="$need $pkg"; fi
+}
+want pkg-config command -v pkg-config
+want make command -v make
+want gcc command -v gcc
+want libpng-dev pkg-config --exists libpng
+want libjansson-dev pkg-config --exists jansson
+if [ "${1:-demo}" = test ]; then
+    want libcmocka-dev pkg-config --exists cmocka
+    want gcc-arm-none-eabi command -v arm-none-eabi-gcc
+    want libnewlib-arm-none-eabi test -e /usr/lib/arm-none-eabi/newlib
+    want binutils-arm-none-eabi command -v arm-none-eabi-nm
+fi
+[ -z "$need" ] && exit 0
+
+cmd="apt-get install -y --no-install-recommends$need"
+echo "tarn: installing missing packages:$need" >&2
+if [ "$(id -u)" = 0 ]; then
+    apt-get update -qq && DEBIAN_FRONTEND=noninteractive $cmd
+elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+    sudo apt-get update -qq && sudo DEBIAN_FRONTEND=noninteractive $cmd
+else
+    echo "tarn: cannot install as this user; run:  sudo apt-get update && sudo $cmd" >&2
+    exit 1
+fi
