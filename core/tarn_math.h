@@ -35,6 +35,13 @@ uint32_t tarn_exp2_neg_q16(tarn_q16 x, tarn_exp2_config config);
 #define TARN_RECIP_STEPS_MAX 2u
 uint32_t tarn_recip_u32(uint32_t x, unsigned newton_steps);
 
+/* The same reciprocal before scaling, for callers that track the exponent: for a
+ * mantissa m with its top bit set (m / 2^32 in [1/2, 1)), returns 2^62 / m, that is
+ * 1/(m / 2^32) in Q2.30, in (2^30, 2^31]. Keeps all 30 bits where tarn_recip_u32
+ * would round a large x's result to few bits. m without its top bit set is
+ * normalised first. */
+uint32_t tarn_recip_q30(uint32_t mantissa, unsigned newton_steps);
+
 /* ---- sine and cosine --------------------------------------------------------------
  * Angle in turns as Q0.16 wrapped (65536 = one full turn, so any uint16_t is valid);
  * result Q1.15 in [-32767, 32767]. Quarter-wave table with interpolation. */

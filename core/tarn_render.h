@@ -1,7 +1,7 @@
 /* tarn_render.h: drawing a frame, a tile at a time, into memory the caller owns.
  *
  * Usage:
- *     tarn_frame_config cfg = { 240, 240, tarn_quality_default() };
+ *     tarn_frame_config cfg = { 240, 240, tarn_quality_default(), time_ms };
  *     size_t need = tarn_frame_memory_bytes(&cfg);      0 means the config is invalid
  *     static uint32_t mem[...];                          at least `need` bytes, 4-aligned
  *     tarn_render_frame(&scene, &cfg, mem, sizeof mem, my_sink, my_ctx);
@@ -78,6 +78,7 @@ tarn_quality tarn_quality_default(void);
 typedef struct {
     uint16_t width, height; /* pixels, 1..TARN_FRAME_SIZE_MAX */
     tarn_quality quality;
+    uint32_t time_ms;       /* animation clock for panning textures; wraps after ~49 days */
 } tarn_frame_config;
 
 /* Pixels the guard band extends beyond each frame edge. */
@@ -92,7 +93,10 @@ size_t tarn_frame_memory_bytes(const tarn_frame_config *config);
 typedef struct {
     uint16_t x, y, width, height; /* the tile's rectangle in the frame, pixels */
     const uint32_t *rgb;          /* 0x00RRGGBB pixels, rows `stride` pixels apart */
+    const void *depth;            /* near/d per pixel (uint16_t Q0.16 or uint32_t Q1.30 by
+                                     depth_bits), same layout; 0 where no triangle drew */
     uint16_t stride;
+    uint8_t depth_bits;
 } tarn_tile;
 
 /* Receives each finished tile; returns 0 to continue, non-zero to stop the frame. */

@@ -1,0 +1,93 @@
+/* clip.c: Sutherland-Hodgman clipping in view space against the near and far
+ * planes and the guard band, so projected coordinates stay small enough for
+ * 32-bit edge functions. Runs per clipped triangle, never per pixel. */
+#include "pipeline.h"
+
+enum { PLANE_NEAR, PLANE_FAR, PLANE_LEFT, PLANE_RIGHT, PLANE_TOP, PLANE_BOTTOM, PLANE_COUNT };
+
+/* Signed distance to a plane, positive inside; a plane's units are its own. */
+static int64_t plane_distance(const tarn_view *view, int plane, const tarn_view_vertex *v)
+{
+    const int64_t x_focal = (int64_t)v->x * view->focal_q8;  /* Q24 */
+    const int64_t y_focal = (int64_t)v->y * view->focal_q8;
+    switch (plane) {
+    case PLANE_NEAR: return (int64_t)v->d - view->near;
+    case PLANE_FAR: return (int64_t)view->far - v->d;
+    case PLANE_LEFT: return x_focal + (int64_t)view->half_extent_q8[0] * v->d;
+    case PLANE_RIGHT: return (int64_t)view->half_extent_q8[0] * v->d - x_focal;
+    case PLANE_TOP: return (int64_t)view->half_extent_q8[1] * v->d - y_focal;
+    default: return y_focal + (int64_t)view->half_extent_q8[1] * v->d;
+    }
+}
+
+unsigned tarn_clip_outcode(const tarn_view *view, const tarn_view_vertex *v)
+{
+    unsigned code = 0;
+    for (int plane = 0; plane < PLANE_COUNT; plane++)
+        if (plane_distance(view, plane, v) < 0) code |= 1u << plane;
+    return code;
+}
+
+/* num / den in Q1.30 for 0 <= num <= den, den > 0. */
+static int64_t ratio_q30(int64_t num, int64_t den)
+{
+    while (den >= ((int64_t)1 << 32)) {
+        num >>= 1;
+        den >>= 1;
+    }
+    return (num * ((int64_t)1 << 30)) / den;
+}
+
+static int32_t lerp_q30(int32_t from, int32_t to, int64_t t_q30)
+{
+    return (int32_t)(from + tarn_round_shift_i64(((int64_t)to - from) * t_q30, 30));
+}
+
+/* The crossing point, always measured from the inside vertex so that the two
+ * triangles sharing a clipped edge get bit-identical new vertices. */
+static tarn_view_vertex crossing(const tarn_view_vertex *inside, int64_t dist_inside,
+                                 const tarn_view_vertex *outside, int64_t dist_outside)
+{
+    int64_t t = ratio_q30(dist_inside, dist_inside - dist_outside);
+    tarn_view_vertex v;
+    v.x = lerp_q30(inside->x, outside->x, t);
+    v.y = lerp_q30(inside->y, outside->y, t);
+    v.d = lerp_q30(inside->d, outside->d, t);
+    v.uv.u = lerp_q30(inside->uv.u, outside->uv.u, t);
+    v.uv.v = lerp_q30(inside->uv.v, outside->uv.v, t);
+    for (int c = 0; c < 3; c++) v.lit[c] = lerp_q30(inside->lit[c], outside->lit[c], t);
+    return v;
+}
+
+static int clip_against(const tarn_view *view, int plane,
+                        tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX], int count)
+{
+    tarn_view_vertex input[TARN_CLIP_POLYGON_MAX];
+    int64_t dist[TARN_CLIP_POLYGON_MAX];
+    for (int i = 0; i < count; i++) {
+        input[i] = polygon[i];
+        dist[i] = plane_distance(view, plane, &input[i]);
+    }
+    int out = 0;
+    for (int i = 0; i < count; i++) {
+        int j = i + 1 == count ? 0 : i + 1;
+        int in_i = dist[i] >= 0, in_j = dist[j] >= 0;
+        if (in_i) polygon[out++] = input[i];
+        if (in_i && !in_j) polygon[out++] = crossing(&input[i], dist[i], &input[j], dist[j]);
+        if (!in_i && in_j) polygon[out++] = crossing(&input[j], dist[j], &input[i], dist[i]);
+    }
+    /* Rounding must not leave a new vertex a hair outside the depth range. */
+    for (int i = 0; i < out; i++) {
+        if (plane == PLANE_NEAR && polygon[i].d < view->near) polygon[i].d = view->near;
+        if (plane == PLANE_FAR && polygon[i].d > view->far) polygon[i].d = view->far;
+    }
+    return out;
+}
+
+int tarn_clip_polygon(const tarn_view *view, unsigned planes,
+                      tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX], int count)
+{
+    for (int plane = 0; plane < PLANE_COUNT && count > 0; plane++)
+        if (planes & (1u << plane)) count = clip_against(view, plane, polygon, count);
+    return count;
+}

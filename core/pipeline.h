@@ -1,0 +1,99 @@
+/* pipeline.h: the renderer's internal stages (not part of the public API).
+ *
+ *   view.c       per frame: camera basis, focal length, guard band, light constants
+ *   vertex.c     per object: object-to-view transform; per vertex: position, shading
+ *   clip.c       polygon clipping against near, far and the guard band, in view space
+ *   project.c    view space to snapped screen space
+ *   triangles.c  walks the scene and hands each drawable screen triangle on
+ *   raster.c     edge functions, attribute planes, depth test and shading in a tile
+ *   frame.c      configuration checks, tile memory and the tile loop */
+#ifndef TARN_PIPELINE_H
+#define TARN_PIPELINE_H
+
+#include "tarn_render.h"
+
+/* Everything about the camera and light that is fixed for a frame. */
+typedef struct {
+    int32_t basis[3][3];     /* rows: right, up, forward; Q1.30 unit vectors */
+    tarn_vec3 eye;           /* Q16.16 world */
+    int32_t focal_q8;        /* focal length in pixels, Q24.8 */
+    tarn_q16 near, far;      /* Q16.16 view depth */
+    int32_t half_extent_q8[2]; /* width/2 + guard, height/2 + guard, pixels Q24.8 */
+    int32_t guard_pixels;
+    uint16_t width, height;
+    uint8_t subpixel_bits;
+    uint32_t light_q16[3];   /* directional light colour / 255 per channel, Q0.16 */
+    uint32_t ambient_q16[3]; /* ambient colour / 255 per channel, Q0.16 */
+    tarn_vec3 light_dir;     /* Q16.16 unit, toward the light */
+} tarn_view;
+
+/* A vertex in view space with its shading inputs, before projection. */
+typedef struct {
+    tarn_q16 x, y, d;  /* view space, Q16.16: right, up, depth along the view axis */
+    tarn_uv uv;        /* Q16.16 */
+    int32_t lit[3];    /* lit colour, Q8.8 per channel */
+} tarn_view_vertex;
+
+/* Per-object constants for one frame. */
+typedef struct {
+    int32_t to_view[3][3];  /* basis * scale * rotation, `to_view_frac_bits` fraction bits */
+    unsigned to_view_frac_bits;
+    tarn_q16 origin[3];     /* the object's origin in view space, Q16.16 */
+    tarn_q16 light_dir[3];  /* light direction in object space, Q16.16 unit */
+    uint32_t tint_q16[3];   /* material colour / 255 per channel, Q0.16 */
+    int unlit;              /* the material ignores the light */
+} tarn_object_xform;
+
+#define TARN_CLIP_POLYGON_MAX 9 /* a triangle cut by six planes has at most 3 + 6 corners */
+
+void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, tarn_view *view);
+
+void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
+                             tarn_object_xform *xform);
+void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *object_pos,
+                          tarn_view_vertex *out);
+void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
+                       const tarn_mesh *mesh, uint16_t index, tarn_view_vertex *out);
+
+/* Bit i set: the vertex is outside clip plane i (near, far, left, right, top, bottom). */
+unsigned tarn_clip_outcode(const tarn_view *view, const tarn_view_vertex *v);
+/* Clips the convex polygon in place against the planes in `planes` (outcode bits);
+ * returns the new vertex count (0 when nothing is left). */
+int tarn_clip_polygon(const tarn_view *view, unsigned planes,
+                      tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX], int count);
+
+/* Position, inverse depth and attributes; the second copies only the attributes. */
+void tarn_project(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out);
+void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out);
+
+/* Called for each screen triangle, in drawing order. */
+typedef void (*tarn_triangle_sink)(void *ctx, const tarn_screen_vertex vertex[3],
+                                   const tarn_object *object);
+
+typedef struct {
+    int32_t x0, y0, x1, y1; /* pixel rectangle [x0, x1) x [y0, y1) */
+} tarn_pixel_rect;
+
+/* Walks every triangle of the scene; triangles whose screen bounds miss `only_rect`
+ * (when not NULL) are skipped as early as possible. */
+void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view,
+                         const tarn_pixel_rect *only_rect, tarn_triangle_sink sink, void *ctx);
+
+/* The tile being drawn: its place in the frame and its buffers. */
+typedef struct {
+    tarn_pixel_rect rect;
+    uint32_t *colour;   /* 0x00RRGGBB, `stride` pixels per row */
+    void *depth;        /* uint16_t or uint32_t per pixel by depth_bits, near/d */
+    int32_t stride;
+    const tarn_quality *quality;
+} tarn_tile_target;
+
+void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex vertex[3],
+                          const tarn_object *object);
+
+/* Validates the scene's arrays so the walk never reads past them. */
+tarn_status tarn_scene_check(const tarn_scene *scene);
+/* Validates a frame config; TARN_OK or TARN_ERR_CONFIG. */
+tarn_status tarn_config_check(const tarn_frame_config *config);
+
+#endif

@@ -1,0 +1,113 @@
+/* vertex.c: object space to view space, and per-vertex lighting. */
+#include "pipeline.h"
+
+static unsigned bit_length_u64(uint64_t v)
+{
+    unsigned n = 0;
+    while (v != 0) { n++; v >>= 1; }
+    return n;
+}
+
+/* to_view = basis (Q1.30) * scale * rotation (Q16.16 each), kept with as many
+ * fraction bits as the largest entry allows (at most 30). */
+static void object_to_view_matrix(const tarn_view *view, const tarn_object *object,
+                                  tarn_object_xform *xform)
+{
+    int64_t product[3][3]; /* Q?.46 */
+    uint64_t largest = 0;
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            int64_t sum = 0;
+            for (int k = 0; k < 3; k++) {
+                int64_t scaled = tarn_round_shift_i64((int64_t)object->scale * object->rotation[k][j], 16);
+                sum += (int64_t)view->basis[i][k] * tarn_sat_i64_to_i32(scaled);
+            }
+            product[i][j] = sum;
+            uint64_t magnitude = sum < 0 ? (uint64_t)0 - (uint64_t)sum : (uint64_t)sum;
+            if (magnitude > largest) largest = magnitude;
+        }
+    }
+    /* Entries below 2^29 keep each product with a Q16.16 coordinate under 2^60, so
+     * the three-term sums in tarn_vertex_position cannot overflow. */
+    unsigned drop = bit_length_u64(largest) > 29 ? bit_length_u64(largest) - 29 : 0;
+    if (drop < 16) drop = 16; /* at most 30 fraction bits */
+    xform->to_view_frac_bits = 46 - drop;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            xform->to_view[i][j] = (int32_t)tarn_round_shift_i64(product[i][j], drop);
+}
+
+static void object_origin_in_view(const tarn_view *view, const tarn_object *object,
+                                  tarn_object_xform *xform)
+{
+    const int64_t offset[3] = {(int64_t)object->position.x - view->eye.x,
+                               (int64_t)object->position.y - view->eye.y,
+                               (int64_t)object->position.z - view->eye.z};
+    for (int i = 0; i < 3; i++) {
+        int64_t sum = 0;
+        for (int k = 0; k < 3; k++) sum += view->basis[i][k] * offset[k];
+        xform->origin[i] = tarn_sat_i64_to_i32(tarn_round_shift_i64(sum, 30));
+    }
+}
+
+void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
+                             tarn_object_xform *xform)
+{
+    object_to_view_matrix(view, object, xform);
+    object_origin_in_view(view, object, xform);
+    /* The rotation is orthonormal: object-space light = rotation^T * light. */
+    const tarn_q16 light[3] = {view->light_dir.x, view->light_dir.y, view->light_dir.z};
+    for (int j = 0; j < 3; j++) {
+        int64_t sum = 0;
+        for (int k = 0; k < 3; k++) sum += (int64_t)object->rotation[k][j] * light[k];
+        xform->light_dir[j] = tarn_sat_i64_to_i32(tarn_round_shift_i64(sum, 16));
+    }
+    xform->unlit = object->material->unlit != 0;
+    const uint32_t tint = object->material->colour_rgb;
+    for (int c = 0; c < 3; c++)
+        xform->tint_q16[c] = ((((tint >> (16 - 8 * c)) & 0xFFu) * 65536u) + 127u) / 255u;
+}
+
+void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,
+                          tarn_view_vertex *out)
+{
+    tarn_q16 *dest[3] = {&out->x, &out->y, &out->d};
+    for (int i = 0; i < 3; i++) {
+        int64_t sum = (int64_t)xform->to_view[i][0] * p->x + (int64_t)xform->to_view[i][1] * p->y +
+                      (int64_t)xform->to_view[i][2] * p->z;
+        int64_t view_q16 = tarn_round_shift_i64(sum, xform->to_view_frac_bits) + xform->origin[i];
+        *dest[i] = tarn_sat_i64_to_i32(view_q16);
+    }
+}
+
+/* shade = min(1, ambient + light * max(0, N.L)), Q0.16 per channel. */
+static uint32_t shade_q16(const tarn_view *view, int channel, int32_t n_dot_l_q16)
+{
+    uint32_t diffuse = n_dot_l_q16 > 0
+        ? (uint32_t)(((uint64_t)view->light_q16[channel] * (uint32_t)n_dot_l_q16 + 32768u) >> 16)
+        : 0u;
+    uint32_t shade = view->ambient_q16[channel] + diffuse;
+    return shade > 65536u ? 65536u : shade;
+}
+
+void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
+                       const tarn_mesh *mesh, uint16_t index, tarn_view_vertex *out)
+{
+    const tarn_vec3 *n = &mesh->normals[index];
+    int64_t dot = (int64_t)n->x * xform->light_dir[0] + (int64_t)n->y * xform->light_dir[1] +
+                  (int64_t)n->z * xform->light_dir[2];
+    int32_t n_dot_l = tarn_sat_i64_to_i32(tarn_round_shift_i64(dot, 16));
+    uint32_t vertex_rgb = mesh->colours ? mesh->colours[index] : 0xFFFFFFu;
+    for (int c = 0; c < 3; c++) {
+        uint32_t shade = xform->unlit ? 65536u : shade_q16(view, c, n_dot_l);
+        uint32_t factor = (uint32_t)(((uint64_t)xform->tint_q16[c] * shade + 32768u) >> 16);
+        uint32_t vertex_channel = (vertex_rgb >> (16 - 8 * c)) & 0xFFu;
+        out->lit[c] = (int32_t)((vertex_channel * factor + 128u) >> 8); /* Q8.8 */
+    }
+    if (mesh->uvs) {
+        out->uv = mesh->uvs[index];
+    } else {
+        out->uv.u = 0;
+        out->uv.v = 0;
+    }
+}

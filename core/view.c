@@ -1,0 +1,118 @@
+/* view.c: per-frame camera and light constants. Divisions here run once a frame. */
+#include "pipeline.h"
+
+static uint64_t isqrt_u64(uint64_t x)
+{
+    uint64_t root = 0, bit = (uint64_t)1 << 62;
+    while (bit > x) bit >>= 2;
+    while (bit != 0) {
+        if (x >= root + bit) {
+            x -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return root;
+}
+
+/* Normalises a vector given as 64-bit integers of any common scale into Q1.30.
+ * Returns 0 for the zero vector (out left unchanged). */
+static int normalise_q30(const int64_t v[3], int32_t out[3])
+{
+    /* Bring components below 2^31 so the squares and their sum fit 64 bits. */
+    int64_t c[3] = {v[0], v[1], v[2]};
+    for (;;) {
+        int big = 0;
+        for (int i = 0; i < 3; i++)
+            if (c[i] >= ((int64_t)1 << 31) || c[i] <= -((int64_t)1 << 31)) big = 1;
+        if (!big) break;
+        for (int i = 0; i < 3; i++) c[i] /= 2;
+    }
+    uint64_t sum = 0;
+    for (int i = 0; i < 3; i++) sum += (uint64_t)(c[i] * c[i]);
+    int64_t length = (int64_t)isqrt_u64(sum);
+    if (length == 0) return 0;
+    for (int i = 0; i < 3; i++)
+        out[i] = (int32_t)(c[i] * ((int64_t)1 << 30) / length);
+    return 1;
+}
+
+static int32_t mul_q30(int32_t a, int32_t b)
+{
+    return (int32_t)tarn_round_shift_i64((int64_t)a * b, 30);
+}
+
+static void cross_q30(const int32_t a[3], const int32_t b[3], int32_t out[3])
+{
+    out[0] = mul_q30(a[1], b[2]) - mul_q30(a[2], b[1]);
+    out[1] = mul_q30(a[2], b[0]) - mul_q30(a[0], b[2]);
+    out[2] = mul_q30(a[0], b[1]) - mul_q30(a[1], b[0]);
+}
+
+/* Forward, right and up as the public header defines them. */
+static void camera_basis(const tarn_camera *camera, int32_t basis[3][3])
+{
+    const int64_t forward[3] = {
+        (int64_t)camera->target.x - camera->position.x,
+        (int64_t)camera->target.y - camera->position.y,
+        (int64_t)camera->target.z - camera->position.z};
+    if (!normalise_q30(forward, basis[2])) {
+        /* target == position: look down -z rather than fail mid-frame */
+        basis[2][0] = 0; basis[2][1] = 0; basis[2][2] = -(1 << 30);
+    }
+    /* right = forward x Y; with Y = (0,1,0) that is (-fz, 0, fx) */
+    int64_t right[3] = {-forward[2], 0, forward[0]};
+    if (forward[0] == 0 && forward[2] == 0) {
+        /* looking straight up or down: Y = (0,0,-1), right = (-fy, fx, 0) */
+        right[0] = -forward[1]; right[1] = forward[0]; right[2] = 0;
+        if (forward[1] == 0) right[0] = 1 << 30;
+    }
+    normalise_q30(right, basis[0]);
+    cross_q30(basis[0], basis[2], basis[1]);
+}
+
+/* Focal length in pixels (Q24.8): (height / 2) / tan(fov / 2). */
+static int32_t focal_length_q8(const tarn_camera *camera, uint16_t height)
+{
+    tarn_q16 fov = tarn_clamp_i32(camera->fov_y_degrees, TARN_Q16_ONE, 179 * TARN_Q16_ONE);
+    uint16_t half_angle_turns = (uint16_t)(((int64_t)fov + 360) / 720); /* Q0.16 turns */
+    int64_t sine = tarn_sin_q15(half_angle_turns);
+    int64_t cosine = tarn_cos_q15(half_angle_turns);
+    if (sine < 1) sine = 1;
+    return tarn_sat_i64_to_i32(((int64_t)height * 128 * cosine + sine / 2) / sine);
+}
+
+static uint32_t channel_q16(uint32_t rgb, int channel)
+{
+    uint32_t value = (rgb >> (16 - 8 * channel)) & 0xFFu;
+    return (value * 65536u + 127u) / 255u;
+}
+
+int32_t tarn_guard_band_pixels(const tarn_frame_config *config)
+{
+    uint16_t larger = config->width > config->height ? config->width : config->height;
+    return larger / 4 + 16;
+}
+
+void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, tarn_view *view)
+{
+    const tarn_camera *camera = &scene->camera;
+    camera_basis(camera, view->basis);
+    view->eye = camera->position;
+    view->width = config->width;
+    view->height = config->height;
+    view->subpixel_bits = config->quality.subpixel_bits;
+    view->focal_q8 = focal_length_q8(camera, config->height);
+    view->near = camera->near > 0 ? camera->near : 1;
+    view->far = camera->far > view->near ? camera->far : view->near;
+    view->guard_pixels = tarn_guard_band_pixels(config);
+    view->half_extent_q8[0] = config->width * 128 + view->guard_pixels * 256;
+    view->half_extent_q8[1] = config->height * 128 + view->guard_pixels * 256;
+    for (int c = 0; c < 3; c++) {
+        view->light_q16[c] = channel_q16(scene->light.colour_rgb, c);
+        view->ambient_q16[c] = channel_q16(scene->light.ambient_rgb, c);
+    }
+    view->light_dir = scene->light.direction;
+}
