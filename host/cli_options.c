@@ -1,0 +1,187 @@
+#include "cli_options.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char tarn_cli_usage[] =
+    "usage: tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--reference [--snapped]] [QUALITY]\n"
+    "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]\n"
+    "       tarn accuracy --math\n"
+    "QUALITY: --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
+    "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n";
+
+/* Whole decimal number in [min, max], nothing else in the text. */
+static int parse_whole(const char *text, unsigned long min, unsigned long max, unsigned long *out)
+{
+    if (text == NULL || *text < '0' || *text > '9') return -1;
+    errno = 0;
+    char *end;
+    unsigned long value = strtoul(text, &end, 10);
+    if (errno != 0 || *end != '\0' || value < min || value > max) return -1;
+    *out = value;
+    return 0;
+}
+
+static int parse_size(const char *text, tarn_cli_options *o, tarn_error *err)
+{
+    const char *x = text ? strchr(text, 'x') : NULL;
+    unsigned long w, h;
+    char width_text[16];
+    if (x != NULL && (size_t)(x - text) < sizeof width_text) {
+        memcpy(width_text, text, (size_t)(x - text));
+        width_text[x - text] = '\0';
+        if (parse_whole(width_text, 1, TARN_FRAME_SIZE_MAX, &w) == 0 &&
+            parse_whole(x + 1, 1, TARN_FRAME_SIZE_MAX, &h) == 0) {
+            o->width = (uint16_t)w;
+            o->height = (uint16_t)h;
+            return 0;
+        }
+    }
+    return tarn_fail(err, "--size: expected WxH with each side 1..%u, got '%s'",
+                     TARN_FRAME_SIZE_MAX, text ? text : "");
+}
+
+static int parse_perspective(const char *text, tarn_quality *q, tarn_error *err)
+{
+    unsigned long span;
+    if (text && strcmp(text, "affine") == 0) {
+        q->perspective = TARN_PERSPECTIVE_AFFINE;
+    } else if (text && strcmp(text, "pixel") == 0) {
+        q->perspective = TARN_PERSPECTIVE_PIXEL;
+    } else if (text && strncmp(text, "span:", 5) == 0 && parse_whole(text + 5, 2, 64, &span) == 0 &&
+               (span & (span - 1)) == 0) {
+        q->perspective = TARN_PERSPECTIVE_SPAN;
+        q->perspective_span = (uint8_t)span;
+    } else {
+        return tarn_fail(err, "--perspective: expected affine, pixel or span:N (N a power of two 2..64), got '%s'",
+                         text ? text : "");
+    }
+    return 0;
+}
+
+static int parse_exp2(const char *text, tarn_quality *q, tarn_error *err)
+{
+    char entries_text[8];
+    const char *colon = text ? strchr(text, ':') : NULL;
+    size_t length = colon ? (size_t)(colon - text) : (text ? strlen(text) : 0);
+    unsigned long entries;
+    int interpolate = 1;
+    if (colon && strcmp(colon, ":nearest") == 0) interpolate = 0;
+    else if (colon && strcmp(colon, ":linear") != 0) length = sizeof entries_text;
+    if (text && length < sizeof entries_text) {
+        memcpy(entries_text, text, length);
+        entries_text[length] = '\0';
+        if (parse_whole(entries_text, TARN_EXP2_ENTRIES_MIN, TARN_EXP2_ENTRIES_MAX, &entries) == 0 &&
+            (entries & (entries - 1)) == 0) {
+            q->exp2.entries = (uint16_t)entries;
+            q->exp2.interpolate = (uint8_t)interpolate;
+            return 0;
+        }
+    }
+    return tarn_fail(err, "--exp2: expected N[:nearest|:linear] with N a power of two 8..256, got '%s'",
+                     text ? text : "");
+}
+
+/* A knob taking a whole number in a range, stored in a uint8_t field. */
+static int parse_knob(const char *name, const char *text, unsigned long min, unsigned long max,
+                      uint8_t *field, tarn_error *err)
+{
+    unsigned long value;
+    if (parse_whole(text, min, max, &value) != 0)
+        return tarn_fail(err, "%s: expected a whole number %lu..%lu, got '%s'", name, min, max,
+                         text ? text : "");
+    *field = (uint8_t)value;
+    return 0;
+}
+
+static int parse_quality_option(const char *name, const char *value, tarn_quality *q,
+                                tarn_error *err)
+{
+    if (strcmp(name, "--tile") == 0)
+        return parse_knob(name, value, TARN_TILE_SIZE_MIN, TARN_TILE_SIZE_MAX, &q->tile_size, err);
+    if (strcmp(name, "--subpixel") == 0)
+        return parse_knob(name, value, TARN_SUBPIXEL_BITS_MIN, TARN_SUBPIXEL_BITS_MAX, &q->subpixel_bits, err);
+    if (strcmp(name, "--recip-steps") == 0)
+        return parse_knob(name, value, 0, TARN_RECIP_STEPS_MAX, &q->recip_newton_steps, err);
+    if (strcmp(name, "--depth") == 0) {
+        if (value && (strcmp(value, "16") == 0 || strcmp(value, "32") == 0)) {
+            q->depth_bits = (uint8_t)atoi(value);
+            return 0;
+        }
+        return tarn_fail(err, "--depth: expected 16 or 32, got '%s'", value ? value : "");
+    }
+    if (strcmp(name, "--perspective") == 0) return parse_perspective(value, q, err);
+    if (strcmp(name, "--exp2") == 0) return parse_exp2(value, q, err);
+    return 1; /* not a quality option */
+}
+
+static int parse_command(const char *word, tarn_cli_options *o, tarn_error *err)
+{
+    if (word && strcmp(word, "render") == 0) o->command = TARN_CMD_RENDER;
+    else if (word && strcmp(word, "compare") == 0) o->command = TARN_CMD_COMPARE;
+    else if (word && strcmp(word, "accuracy") == 0) o->command = TARN_CMD_ACCURACY;
+    else return tarn_fail(err, "unknown command '%s'; expected render, compare or accuracy", word ? word : "");
+    return 0;
+}
+
+/* Options with a value; returns 1 if `name` is none of them. */
+static int parse_valued_option(const char *name, const char *value, tarn_cli_options *o,
+                               tarn_error *err)
+{
+    unsigned long ms;
+    if (strcmp(name, "-o") == 0) o->output_path = value;
+    else if (strcmp(name, "--diff") == 0) o->diff_path = value;
+    else if (strcmp(name, "--size") == 0) return parse_size(value, o, err);
+    else if (strcmp(name, "--time") == 0) {
+        if (parse_whole(value, 0, UINT32_MAX, &ms) != 0)
+            return tarn_fail(err, "--time: expected milliseconds 0..%lu, got '%s'",
+                             (unsigned long)UINT32_MAX, value ? value : "");
+        o->time_ms = (uint32_t)ms;
+    } else return parse_quality_option(name, value, &o->quality, err);
+    if (value == NULL || *value == '\0') return tarn_fail(err, "%s: expected a file name", name);
+    return 0;
+}
+
+static int parse_flag(const char *name, tarn_cli_options *o)
+{
+    if (strcmp(name, "--reference") == 0) o->reference = 1;
+    else if (strcmp(name, "--snapped") == 0) o->snapped = 1;
+    else if (strcmp(name, "--math") == 0) o->math = 1;
+    else return 1;
+    return 0;
+}
+
+static int check_combination(const tarn_cli_options *o, tarn_error *err)
+{
+    if (o->command == TARN_CMD_ACCURACY)
+        return o->math ? 0 : tarn_fail(err, "accuracy: expected --math");
+    if (o->scene_path == NULL) return tarn_fail(err, "expected a scene file");
+    if (o->command == TARN_CMD_RENDER && o->output_path == NULL)
+        return tarn_fail(err, "render: expected -o OUT.png");
+    if (o->snapped && o->command == TARN_CMD_RENDER && !o->reference)
+        return tarn_fail(err, "--snapped applies to the reference: add --reference");
+    return 0;
+}
+
+int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
+{
+    memset(o, 0, sizeof *o);
+    o->quality = tarn_quality_default();
+    if (argc < 2) return tarn_fail(err, "expected a command: render, compare or accuracy");
+    if (parse_command(argv[1], o, err) != 0) return -1;
+    for (int i = 2; i < argc; i++) {
+        const char *arg = argv[i];
+        if (arg[0] != '-') {
+            if (o->scene_path != NULL) return tarn_fail(err, "unexpected argument '%s'", arg);
+            o->scene_path = arg;
+            continue;
+        }
+        if (parse_flag(arg, o) == 0) continue;
+        int result = parse_valued_option(arg, i + 1 < argc ? argv[i + 1] : NULL, o, err);
+        if (result < 0) return -1;
+        if (result > 0) return tarn_fail(err, "unknown option '%s'", arg);
+        i++;
+    }
+    return check_combination(o, err);
+}

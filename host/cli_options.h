@@ -1,0 +1,36 @@
+/* cli_options.h: the command line of the `tarn` tool, parsed and range-checked.
+ *
+ *   tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--reference [--snapped]] [QUALITY]
+ *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]
+ *   tarn accuracy --math
+ * QUALITY knobs (defaults from tarn_quality_default()):
+ *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
+ *   --depth 16|32  --recip-steps N (0..2)  --exp2 N[:nearest|:linear] (8..256) */
+#ifndef TARN_HOST_CLI_OPTIONS_H
+#define TARN_HOST_CLI_OPTIONS_H
+
+#include <stdint.h>
+#include "error.h"
+#include "tarn_render.h"
+
+typedef enum { TARN_CMD_RENDER, TARN_CMD_COMPARE, TARN_CMD_ACCURACY } tarn_command;
+
+typedef struct {
+    tarn_command command;
+    const char *scene_path;
+    const char *output_path; /* render: -o */
+    const char *diff_path;   /* compare: --diff, or NULL */
+    uint16_t width, height;  /* 0: the scene's own frame size */
+    uint32_t time_ms;
+    int reference;           /* render with the float reference */
+    int snapped;             /* the reference rasterizes the core's snapped triangles */
+    int math;                /* accuracy --math */
+    tarn_quality quality;
+} tarn_cli_options;
+
+/* 0, or -1 with a one-line message in `err`. */
+int tarn_cli_parse(int argc, char **argv, tarn_cli_options *options, tarn_error *err);
+
+extern const char tarn_cli_usage[];
+
+#endif

@@ -1,0 +1,122 @@
+#include "commands.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "accuracy_math.h"
+#include "compare.h"
+#include "core_render.h"
+#include "png_io.h"
+#include "reference.h"
+#include "scene_load.h"
+
+/* Both renderers' output for one frame. */
+typedef struct {
+    int width, height;
+    uint8_t *rgb, *covered;
+} frame_image;
+
+static int report(const tarn_error *err)
+{
+    fprintf(stderr, "tarn: %s\n", err->message);
+    return TARN_EXIT_BAD_INPUT;
+}
+
+static tarn_frame_config frame_config(const tarn_cli_options *o, const tarn_loaded_scene *scene)
+{
+    tarn_frame_config config;
+    config.width = o->width ? o->width : scene->width;
+    config.height = o->height ? o->height : scene->height;
+    config.quality = o->quality;
+    config.time_ms = o->time_ms;
+    return config;
+}
+
+static int frame_alloc(frame_image *f, int width, int height, tarn_error *err)
+{
+    size_t pixels = (size_t)width * (size_t)height;
+    f->width = width;
+    f->height = height;
+    f->rgb = malloc(3 * pixels);
+    f->covered = malloc(pixels);
+    if (f->rgb == NULL || f->covered == NULL) return tarn_fail(err, "out of memory for a %dx%d frame", width, height);
+    return 0;
+}
+
+static void frame_free(frame_image *f)
+{
+    free(f->rgb);
+    free(f->covered);
+}
+
+static int render_reference(const tarn_loaded_scene *scene, const tarn_frame_config *config,
+                            int snapped, frame_image *f, tarn_error *err)
+{
+    tarn_reference_options options = {snapped, config->quality.subpixel_bits};
+    if (tarn_reference_render(&scene->scene, config->width, config->height, &options, f->rgb,
+                              f->covered) != 0)
+        return tarn_fail(err, "%s: the reference cannot render this scene at %ux%u",
+                         scene->name, config->width, config->height);
+    return 0;
+}
+
+int tarn_command_render(const tarn_cli_options *o)
+{
+    tarn_error err;
+    tarn_loaded_scene scene;
+    if (tarn_scene_load(o->scene_path, &scene, &err) != 0) return report(&err);
+    tarn_frame_config config = frame_config(o, &scene);
+    frame_image f = {0, 0, NULL, NULL};
+    int failed = frame_alloc(&f, config.width, config.height, &err) ||
+                 (o->reference ? render_reference(&scene, &config, o->snapped, &f, &err)
+                               : tarn_core_render(&scene.scene, &config, f.rgb, f.covered, &err)) ||
+                 tarn_png_write_rgb(o->output_path, f.rgb, config.width, config.height, &err);
+    frame_free(&f);
+    tarn_scene_free(&scene);
+    return failed ? report(&err) : 0;
+}
+
+static int compare_frames(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+                          const tarn_frame_config *config, frame_image *core,
+                          frame_image *reference, tarn_error *err)
+{
+    if (frame_alloc(core, config->width, config->height, err) ||
+        frame_alloc(reference, config->width, config->height, err) ||
+        tarn_core_render(&scene->scene, config, core->rgb, core->covered, err) ||
+        render_reference(scene, config, o->snapped, reference, err))
+        return -1;
+    tarn_compare_metrics metrics;
+    tarn_compare_images(core->rgb, reference->rgb, core->covered, reference->covered,
+                        config->width, config->height, &metrics);
+    if (o->diff_path) {
+        uint8_t *heat = malloc(3u * (size_t)config->width * config->height);
+        if (heat == NULL) return tarn_fail(err, "out of memory for the heat-map");
+        tarn_compare_heatmap_with_coverage(core->rgb, reference->rgb, core->covered, reference->covered,
+                                           config->width, config->height, heat);
+        int written = tarn_png_write_rgb(o->diff_path, heat, config->width, config->height, err);
+        free(heat);
+        if (written != 0) return -1;
+    }
+    tarn_compare_print(stdout, scene->name, config->width, config->height, &metrics);
+    return 0;
+}
+
+int tarn_command_compare(const tarn_cli_options *o)
+{
+    tarn_error err;
+    tarn_loaded_scene scene;
+    if (tarn_scene_load(o->scene_path, &scene, &err) != 0) return report(&err);
+    tarn_frame_config config = frame_config(o, &scene);
+    frame_image core = {0, 0, NULL, NULL}, reference = {0, 0, NULL, NULL};
+    int failed = compare_frames(o, &scene, &config, &core, &reference, &err);
+    frame_free(&core);
+    frame_free(&reference);
+    tarn_scene_free(&scene);
+    return failed ? report(&err) : 0;
+}
+
+int tarn_command_accuracy(const tarn_cli_options *o)
+{
+    (void)o; /* --math is the only table so far; the parser requires it */
+    return tarn_accuracy_math_print(stdout) == 0 ? 0 : 1;
+}

@@ -1,0 +1,13 @@
+/* commands.h: the `tarn` subcommands. Each returns the process exit status:
+ * 0 on success, TARN_EXIT_BAD_INPUT (2) for bad input with one "tarn: ..." line on
+ * stderr, and no output file left behind on any failure. */
+#ifndef TARN_HOST_COMMANDS_H
+#define TARN_HOST_COMMANDS_H
+
+#include "cli_options.h"
+
+int tarn_command_render(const tarn_cli_options *options);
+int tarn_command_compare(const tarn_cli_options *options);
+int tarn_command_accuracy(const tarn_cli_options *options);
+
+#endif

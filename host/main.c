@@ -1,0 +1,21 @@
+/* tarn: render scenes to PNG, measure the integer core against the float reference. */
+#include <stdio.h>
+
+#include "cli_options.h"
+#include "commands.h"
+
+int main(int argc, char **argv)
+{
+    tarn_cli_options options;
+    tarn_error err;
+    if (tarn_cli_parse(argc, argv, &options, &err) != 0) {
+        fprintf(stderr, "tarn: %s\n%s", err.message, tarn_cli_usage);
+        return TARN_EXIT_BAD_INPUT;
+    }
+    switch (options.command) {
+    case TARN_CMD_RENDER: return tarn_command_render(&options);
+    case TARN_CMD_COMPARE: return tarn_command_compare(&options);
+    case TARN_CMD_ACCURACY: return tarn_command_accuracy(&options);
+    }
+    return TARN_EXIT_BAD_INPUT;
+}

@@ -1,0 +1,537 @@
+/* test_raster.c: coverage rules, watertightness, tile-size invariance and the
+ * extremes of the integer rasterizer, checked against the float reference. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "compare.h"
+#include "core_render.h"
+#include "pipeline.h"
+#include "reference.h"
+#include "scene_builder.h"
+#include "scene_load.h"
+
+#define FRAME 64 /* the direct-raster tests draw into one 64x64 tile */
+
+/* ---- drawing screen triangles straight into a tile, counting coverage -------- */
+
+typedef struct {
+    uint32_t colour[FRAME * FRAME];
+    uint32_t depth[FRAME * FRAME];
+    uint8_t count[FRAME * FRAME];
+    tarn_quality quality;
+    tarn_material material;
+    tarn_mesh mesh;
+    tarn_object object;
+} coverage_counter;
+
+static void counter_init(coverage_counter *c, unsigned subpixel_bits)
+{
+    memset(c, 0, sizeof *c);
+    c->quality = tarn_quality_default();
+    c->quality.subpixel_bits = (uint8_t)subpixel_bits;
+    c->material.colour_rgb = 0xFFFFFF;
+    c->material.cull = TARN_CULL_NONE;
+    c->material.unlit = 1;
+    c->object.mesh = &c->mesh;
+    c->object.material = &c->material;
+}
+
+/* Draws one triangle alone into a cleared tile and adds its pixels to the count. */
+static void counter_draw(coverage_counter *c, const tarn_screen_vertex v[3])
+{
+    tarn_tile_target tile = {{0, 0, FRAME, FRAME}, c->colour, c->depth, FRAME, &c->quality};
+    memset(c->colour, 0, sizeof c->colour);
+    memset(c->depth, 0, sizeof c->depth);
+    tarn_raster_triangle(&tile, v, &c->object);
+    for (int i = 0; i < FRAME * FRAME; i++) c->count[i] += c->colour[i] != 0;
+}
+
+static tarn_screen_vertex screen_vertex(int32_t x, int32_t y)
+{
+    tarn_screen_vertex v;
+    memset(&v, 0, sizeof v);
+    v.x = x;
+    v.y = y;
+    v.inv_depth = 1u << 29;
+    for (int c = 0; c < 3; c++) v.lit[c] = 65280;
+    return v;
+}
+
+static uint32_t lcg(uint32_t *state)
+{
+    *state = *state * 1664525u + 1013904223u;
+    return *state >> 8;
+}
+
+/* A grid of jittered vertices reaching past the tile: every pixel once. */
+static void test_jittered_grid_covers_every_pixel_once(void **state)
+{
+    (void)state;
+    coverage_counter *c = malloc(sizeof *c);
+    counter_init(c, 4);
+    enum { N = 12 };
+    tarn_screen_vertex grid[N + 1][N + 1];
+    uint32_t seed = 1;
+    const int32_t cell = (FRAME + 16) * 16 / N; /* subpixels */
+    for (int j = 0; j <= N; j++) {
+        for (int i = 0; i <= N; i++) {
+            int border = i == 0 || j == 0 || i == N || j == N;
+            int32_t jx = border ? 0 : (int32_t)(lcg(&seed) % 61u) - 30;
+            int32_t jy = border ? 0 : (int32_t)(lcg(&seed) % 61u) - 30;
+            grid[j][i] = screen_vertex(-8 * 16 + i * cell + jx, -8 * 16 + j * cell + jy);
+        }
+    }
+    for (int j = 0; j < N; j++) {
+        for (int i = 0; i < N; i++) {
+            const tarn_screen_vertex a[3] = {grid[j][i], grid[j][i + 1], grid[j + 1][i + 1]};
+            const tarn_screen_vertex b[3] = {grid[j][i], grid[j + 1][i + 1], grid[j + 1][i]};
+            counter_draw(c, a);
+            counter_draw(c, b);
+        }
+    }
+    for (int p = 0; p < FRAME * FRAME; p++) assert_int_equal(c->count[p], 1);
+    free(c);
+}
+
+/* A fan of 48 triangles around a centre on pixel-centre and grid-aligned points. */
+static void test_fan_covers_disc_once(void **state)
+{
+    (void)state;
+    coverage_counter *c = malloc(sizeof *c);
+    counter_init(c, 4);
+    static const int32_t ring[][2] = {
+        {56, 32}, {55, 40}, {52, 46}, {48, 52}, {40, 55}, {32, 56}, {24, 55}, {16, 52},
+        {12, 46}, {9, 40}, {8, 32}, {9, 24}, {12, 18}, {16, 12}, {24, 9}, {32, 8},
+        {40, 9}, {48, 12}, {52, 18}, {55, 24}};
+    const int n = (int)(sizeof ring / sizeof ring[0]);
+    const tarn_screen_vertex centre = screen_vertex(32 * 16 + 8, 32 * 16 + 8); /* a pixel centre */
+    for (int k = 0; k < n; k++) {
+        const int *a = ring[k], *b = ring[(k + 1) % n];
+        const tarn_screen_vertex tri[3] = {centre, screen_vertex(a[0] * 16, a[1] * 16),
+                                           screen_vertex(b[0] * 16, b[1] * 16)};
+        counter_draw(c, tri);
+    }
+    for (int p = 0; p < FRAME * FRAME; p++) assert_true(c->count[p] <= 1);
+    for (int y = 14; y < 50; y++)
+        for (int x = 14; x < 50; x++) assert_int_equal(c->count[y * FRAME + x], 1);
+    free(c);
+}
+
+/* Triangles spanning the whole height but a fraction of a pixel wide. */
+static void test_slivers_cover_strip_once(void **state)
+{
+    (void)state;
+    coverage_counter *c = malloc(sizeof *c);
+    counter_init(c, 8);
+    /* top and bottom rows of points at irregular x; x in 1/256 pixel */
+    int32_t top[80], bottom[80];
+    uint32_t seed = 7;
+    top[0] = bottom[0] = 4 * 256;
+    for (int i = 1; i < 80; i++) {
+        top[i] = top[i - 1] + 1 + (int32_t)(lcg(&seed) % 180u); /* stays below 60 px */
+        bottom[i] = bottom[i - 1] + 1 + (int32_t)(lcg(&seed) % 180u);
+    }
+    top[79] = bottom[79] = 60 * 256;
+    int i = 0, j = 0;
+    while (i < 79 || j < 79) { /* zip the two rows into a strip of slivers */
+        int advance_top = j == 79 || (i < 79 && top[i + 1] < bottom[j + 1]);
+        tarn_screen_vertex tri[3] = {screen_vertex(top[i], 2 * 256), screen_vertex(bottom[j], 62 * 256),
+                                     advance_top ? screen_vertex(top[i + 1], 2 * 256)
+                                                 : screen_vertex(bottom[j + 1], 62 * 256)};
+        counter_draw(c, tri);
+        if (advance_top) i++; else j++;
+    }
+    for (int p = 0; p < FRAME * FRAME; p++) assert_true(c->count[p] <= 1);
+    for (int y = 2; y < 62; y++)
+        for (int x = 4; x < 60; x++) assert_int_equal(c->count[y * FRAME + x], 1);
+    free(c);
+}
+
+/* Pixel centres exactly on edges: a 4x4-pixel square from two triangles, corners
+ * on pixel centres, covers exactly the top-left-owned 4x4 block. */
+static void test_top_left_rule_on_pixel_centres(void **state)
+{
+    (void)state;
+    coverage_counter *c = malloc(sizeof *c);
+    counter_init(c, 4);
+    const int32_t x0 = 10 * 16 + 8, y0 = 20 * 16 + 8, x1 = 14 * 16 + 8, y1 = 24 * 16 + 8;
+    const tarn_screen_vertex a[3] = {screen_vertex(x0, y0), screen_vertex(x1, y0), screen_vertex(x1, y1)};
+    const tarn_screen_vertex b[3] = {screen_vertex(x0, y0), screen_vertex(x1, y1), screen_vertex(x0, y1)};
+    counter_draw(c, a);
+    counter_draw(c, b);
+    for (int y = 0; y < FRAME; y++)
+        for (int x = 0; x < FRAME; x++) {
+            int inside = x >= 10 && x < 14 && y >= 20 && y < 24; /* top and left edges only */
+            assert_int_equal(c->count[y * FRAME + x], inside);
+        }
+    free(c);
+}
+
+/* ---- whole frames through the pipeline ------------------------------------- */
+
+typedef struct {
+    uint8_t *rgb, *covered;
+} frame_buffers;
+
+static frame_buffers frame_new(int w, int h)
+{
+    frame_buffers f = {malloc((size_t)w * h * 3), malloc((size_t)w * h)};
+    assert_non_null(f.rgb);
+    assert_non_null(f.covered);
+    return f;
+}
+
+static void frame_free(frame_buffers *f)
+{
+    free(f->rgb);
+    free(f->covered);
+}
+
+static tarn_frame_config config_of(int w, int h)
+{
+    tarn_frame_config config = {(uint16_t)w, (uint16_t)h, tarn_quality_default(), 0};
+    return config;
+}
+
+static void render_core(const tarn_scene *scene, const tarn_frame_config *config, frame_buffers *f)
+{
+    tarn_error err;
+    int rc = tarn_core_render(scene, config, f->rgb, f->covered, &err);
+    if (rc != 0) fail_msg("core render: %s", err.message);
+}
+
+/* The core's coverage must equal the reference's on the core's own triangles:
+ * no pixel outside its triangle, none missing. Returns the comparison. */
+static tarn_compare_metrics compare_snapped(const tarn_scene *scene, const tarn_frame_config *config)
+{
+    frame_buffers core = frame_new(config->width, config->height);
+    frame_buffers ref = frame_new(config->width, config->height);
+    render_core(scene, config, &core);
+    tarn_reference_options options = {1, config->quality.subpixel_bits};
+    assert_int_equal(tarn_reference_render(scene, config->width, config->height, &options, ref.rgb,
+                                           ref.covered), 0);
+    tarn_compare_metrics m;
+    tarn_compare_images(core.rgb, ref.rgb, core.covered, ref.covered, config->width, config->height, &m);
+    frame_free(&core);
+    frame_free(&ref);
+    return m;
+}
+
+typedef struct {
+    coverage_counter *counter;
+    int32_t offset_x, offset_y; /* the 64x64 window of the frame being counted */
+} visit_counter;
+
+static void count_visited(void *user, const tarn_screen_vertex v[3], const tarn_object *object)
+{
+    (void)object;
+    visit_counter *vc = user;
+    tarn_screen_vertex shifted[3];
+    for (int k = 0; k < 3; k++) {
+        shifted[k] = v[k];
+        shifted[k].x -= vc->offset_x << 4;
+        shifted[k].y -= vc->offset_y << 4;
+    }
+    counter_draw(vc->counter, shifted);
+}
+
+/* A wall of 2,000 triangles filling the view, and a floor crossing the near plane
+ * (its clipped fans must share the cut edges): no pixel twice, the wall no holes. */
+static void test_clipped_meshes_stay_watertight(void **state)
+{
+    (void)state;
+    scene_builder *b = malloc(sizeof *b);
+    builder_init(b, 0, 1, 0, 0, 0.7, -10);
+    builder_begin_object(b, 0x808080, TARN_CULL_NONE);
+    builder_grid(b, 0, 0, -4, 60, 40, 40, 25); /* wall at z = -4 */
+    coverage_counter *c = malloc(sizeof *c);
+    counter_init(c, 4);
+    tarn_frame_config config = config_of(FRAME, FRAME);
+    visit_counter vc = {c, 0, 0};
+    assert_int_equal(tarn_visit_screen_triangles(&b->scene, &config, count_visited, &vc), TARN_OK);
+    for (int p = 0; p < FRAME * FRAME; p++) assert_int_equal(c->count[p], 1);
+
+    /* floor: y = 0 plane from z = +5 (behind the camera) to z = -30, tilted view */
+    builder_init(b, 0, 1, 0, 0, 0.2, -10);
+    builder_begin_object(b, 0x808080, TARN_CULL_NONE);
+    uint16_t first = (uint16_t)b->vertex_count;
+    for (int j = 0; j <= 20; j++)
+        for (int i = 0; i <= 20; i++) builder_vertex(b, -20 + 2.0 * i, 0, 5 - 1.75 * j);
+    for (int j = 0; j < 20; j++)
+        for (int i = 0; i < 20; i++) {
+            uint16_t v00 = (uint16_t)(first + j * 21 + i);
+            builder_triangle(b, v00, (uint16_t)(v00 + 1), (uint16_t)(v00 + 22));
+            builder_triangle(b, v00, (uint16_t)(v00 + 22), (uint16_t)(v00 + 21));
+        }
+    counter_init(c, 4);
+    assert_int_equal(tarn_visit_screen_triangles(&b->scene, &config, count_visited, &vc), TARN_OK);
+    int covered = 0;
+    for (int p = 0; p < FRAME * FRAME; p++) {
+        assert_true(c->count[p] <= 1);
+        covered += c->count[p];
+    }
+    assert_true(covered > FRAME * FRAME / 3); /* the floor fills the lower part */
+    for (int x = 0; x < FRAME; x++) assert_int_equal(c->count[(FRAME - 1) * FRAME + x], 1);
+    free(c);
+    free(b);
+}
+
+/* ---- tile size and the pond ----------------------------------------------------*/
+
+static tarn_loaded_scene *load_pond(void)
+{
+    tarn_loaded_scene *s = malloc(sizeof *s);
+    tarn_error err;
+    if (tarn_scene_load("scenes/pond.json", s, &err) != 0) fail_msg("%s", err.message);
+    return s;
+}
+
+static void unload(tarn_loaded_scene *s)
+{
+    tarn_scene_free(s);
+    free(s);
+}
+
+static void test_tile_size_does_not_change_the_image(void **state)
+{
+    (void)state;
+    tarn_loaded_scene *pond = load_pond();
+    static const uint8_t perspective[][2] = {
+        {TARN_PERSPECTIVE_PIXEL, 16}, {TARN_PERSPECTIVE_SPAN, 16}, {TARN_PERSPECTIVE_AFFINE, 16}};
+    static const uint8_t tiles[] = {8, 13, 16, 32, 64};
+    for (size_t m = 0; m < sizeof perspective / sizeof perspective[0]; m++) {
+        tarn_frame_config config = config_of(160, 120);
+        config.quality.perspective = perspective[m][0];
+        config.quality.perspective_span = perspective[m][1];
+        config.quality.depth_bits = m == 2 ? 16 : 32;
+        frame_buffers first = frame_new(160, 120), other = frame_new(160, 120);
+        config.quality.tile_size = tiles[0];
+        render_core(&pond->scene, &config, &first);
+        for (size_t t = 1; t < sizeof tiles; t++) {
+            config.quality.tile_size = tiles[t];
+            render_core(&pond->scene, &config, &other);
+            assert_memory_equal(first.rgb, other.rgb, 160 * 120 * 3);
+        }
+        frame_free(&first);
+        frame_free(&other);
+    }
+    unload(pond);
+}
+
+static void test_pond_matches_snapped_reference(void **state)
+{
+    (void)state;
+    tarn_loaded_scene *pond = load_pond();
+    tarn_frame_config config = config_of(240, 240);
+    tarn_compare_metrics m = compare_snapped(&pond->scene, &config);
+    assert_int_equal(m.coverage_mismatches, 0);
+    assert_true(m.psnr_db >= 50.0);
+    assert_true(m.max_channel_error <= 2);
+    unload(pond);
+}
+
+/* Unsnapped, the reference places vertices by its own double arithmetic, so a
+ * coverage difference may only appear where a triangle edge passes close by. */
+typedef struct {
+    double (*edges)[4];
+    size_t count, capacity;
+    unsigned subpixel_bits;
+} edge_list;
+
+static void collect_edges(void *user, const tarn_screen_vertex v[3], const tarn_object *object)
+{
+    (void)object;
+    edge_list *list = user;
+    const double unit = (double)(1u << list->subpixel_bits);
+    for (int k = 0; k < 3; k++) {
+        if (list->count == list->capacity) {
+            list->capacity = list->capacity ? 2 * list->capacity : 1024;
+            list->edges = realloc(list->edges, list->capacity * sizeof *list->edges);
+            assert_non_null(list->edges);
+        }
+        const tarn_screen_vertex *a = &v[k], *b = &v[(k + 1) % 3];
+        double *e = list->edges[list->count++];
+        e[0] = a->x / unit; e[1] = a->y / unit; e[2] = b->x / unit; e[3] = b->y / unit;
+    }
+}
+
+static double distance_to_segment(const double e[4], double px, double py)
+{
+    double dx = e[2] - e[0], dy = e[3] - e[1], length2 = dx * dx + dy * dy;
+    double t = length2 > 0 ? ((px - e[0]) * dx + (py - e[1]) * dy) / length2 : 0;
+    t = t < 0 ? 0 : (t > 1 ? 1 : t);
+    double ex = e[0] + t * dx - px, ey = e[1] + t * dy - py;
+    return ex * ex + ey * ey;
+}
+
+static void test_unsnapped_mismatches_lie_on_edges(void **state)
+{
+    (void)state;
+    tarn_loaded_scene *pond = load_pond();
+    tarn_frame_config config = config_of(240, 240);
+    frame_buffers core = frame_new(240, 240), ref = frame_new(240, 240);
+    render_core(&pond->scene, &config, &core);
+    tarn_reference_options options = {0, config.quality.subpixel_bits};
+    assert_int_equal(tarn_reference_render(&pond->scene, 240, 240, &options, ref.rgb, ref.covered), 0);
+    edge_list edges = {NULL, 0, 0, config.quality.subpixel_bits};
+    assert_int_equal(tarn_visit_screen_triangles(&pond->scene, &config, collect_edges, &edges), TARN_OK);
+    for (int p = 0; p < 240 * 240; p++) {
+        if (core.covered[p] == ref.covered[p]) continue;
+        double px = p % 240 + 0.5, py = p / 240 + 0.5;
+        int near_edge = 0;
+        for (size_t e = 0; e < edges.count && !near_edge; e++)
+            near_edge = distance_to_segment(edges.edges[e], px, py) <= 1.0;
+        assert_true(near_edge);
+    }
+    free(edges.edges);
+    frame_free(&core);
+    frame_free(&ref);
+    unload(pond);
+}
+
+/* ---- extremes ---------------------------------------------------------------- */
+
+/* Renders the builder's scene and checks coverage against the snapped reference. */
+static void assert_exact_coverage(scene_builder *b, int w, int h)
+{
+    tarn_frame_config config = config_of(w, h);
+    tarn_compare_metrics m = compare_snapped(&b->scene, &config);
+    assert_int_equal(m.coverage_mismatches, 0);
+}
+
+static void one_triangle(scene_builder *b, const double p[3][3])
+{
+    builder_begin_object(b, 0xC08040, TARN_CULL_NONE);
+    uint16_t a = builder_vertex(b, p[0][0], p[0][1], p[0][2]);
+    uint16_t c = builder_vertex(b, p[1][0], p[1][1], p[1][2]);
+    uint16_t d = builder_vertex(b, p[2][0], p[2][1], p[2][2]);
+    builder_triangle(b, a, c, d);
+}
+
+static void test_extreme_triangles(void **state)
+{
+    (void)state;
+    static const double cases[][3][3] = {
+        {{-30000, -30000, -5}, {30000, -30000, -5}, {0, 30000, -5}},  /* far larger than the screen */
+        {{-1, -1, 3}, {1, -1, -3}, {0, 1, -3}},                       /* crosses the near plane */
+        {{-1, -1, 30}, {1, -0.5, -2}, {0, 1, -2}},                    /* one vertex well behind */
+        {{-1, 0, -2}, {0, 0, -2}, {1, 0, -2}},                        /* collinear: no area */
+        {{0.3, 0.3, -2}, {0.3, 0.3, -2}, {0.3, 0.3, -2}},             /* a single point */
+        {{-1, -1, -2}, {1, 1, -2}, {1.0001, 1.0002, -2}},             /* sliver */
+        {{-500, -1, -999.9}, {500, -1, -999.9}, {0, 500, -999.9}},    /* at the far plane */
+        {{-500, -1, -1200}, {500, -1, -1200}, {0, 500, -1200}},       /* beyond it */
+        {{-32767, -32767, -32767}, {32767, -32767, -32767}, {0, 32767, 32767}}, /* Q16.16 limits */
+        {{-1e-4, 0, -0.1}, {1e-4, 0, -0.1}, {0, 1e-4, -0.1}},         /* tiny, at the near plane */
+    };
+    static const int sizes[][2] = {{64, 48}, {1, 1}, {1024, 1024}};
+    scene_builder *b = malloc(sizeof *b);
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
+            builder_init(b, 0, 0, 0, 0, 0, -1);
+            one_triangle(b, cases[c]);
+            assert_exact_coverage(b, sizes[s][0], sizes[s][1]);
+        }
+    }
+    free(b);
+}
+
+/* Cameras at the limits: far away, straight down, straight up, inside geometry. */
+static void test_extreme_cameras(void **state)
+{
+    (void)state;
+    static const double cameras[][6] = {
+        {0, 30000, 0, 0, 0, 0},          /* straight down from far away */
+        {0, -5, 0, 0, 5, 0},             /* straight up */
+        {32000, 32000, 32000, -32000, -32000, -32000},
+        {0, 0, -4, 0, 0, -4.0001},       /* a hair from the target */
+    };
+    scene_builder *b = malloc(sizeof *b);
+    for (size_t c = 0; c < sizeof cameras / sizeof cameras[0]; c++) {
+        const double *e = cameras[c];
+        builder_init(b, e[0], e[1], e[2], e[3], e[4], e[5]);
+        builder_begin_object(b, 0x4080C0, TARN_CULL_NONE);
+        builder_grid(b, 0, 0, -4, 40, 40, 8, 8);
+        assert_exact_coverage(b, 96, 64);
+    }
+    free(b);
+}
+
+static void test_cull_modes(void **state)
+{
+    (void)state;
+    static const uint8_t modes[] = {TARN_CULL_BACK, TARN_CULL_FRONT, TARN_CULL_NONE};
+    static const int expect_drawn[][2] = {{1, 0}, {0, 1}, {1, 1}}; /* front face, back face */
+    scene_builder *b = malloc(sizeof *b);
+    for (size_t m = 0; m < 3; m++) {
+        for (int back = 0; back < 2; back++) {
+            builder_init(b, 0, 0, 0, 0, 0, -1);
+            builder_begin_object(b, 0xFFFFFF, modes[m]);
+            uint16_t p = builder_vertex(b, -1, -1, -3), q = builder_vertex(b, 1, -1, -3),
+                     r = builder_vertex(b, 0, 1, -3);
+            if (back) builder_triangle(b, p, r, q); else builder_triangle(b, p, q, r);
+            tarn_frame_config config = config_of(32, 32);
+            frame_buffers f = frame_new(32, 32);
+            render_core(&b->scene, &config, &f);
+            assert_int_equal(f.covered[16 * 32 + 16], expect_drawn[m][back]);
+            frame_free(&f);
+        }
+    }
+    free(b);
+}
+
+static void test_configs_out_of_range_are_rejected(void **state)
+{
+    (void)state;
+    tarn_frame_config config = config_of(240, 240);
+    assert_true(tarn_frame_memory_bytes(&config) > 0);
+    tarn_frame_config bad = config;
+    bad.width = 0;
+    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+    bad = config; bad.width = TARN_FRAME_SIZE_MAX + 1;
+    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+    bad = config; bad.quality.tile_size = 7;
+    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+    bad = config; bad.quality.subpixel_bits = 7; /* 240 + guard band needs < 2^15 subpixels */
+    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+    bad = config; bad.quality.depth_bits = 24;
+    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+    bad = config; bad.quality.perspective_span = 12;
+    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+
+    uint32_t small[16];
+    scene_builder *b = malloc(sizeof *b);
+    builder_init(b, 0, 0, 0, 0, 0, -1);
+    assert_int_equal(tarn_render_frame(&b->scene, &config, small, sizeof small, NULL, NULL), TARN_ERR_MEMORY);
+    builder_begin_object(b, 0xFFFFFF, TARN_CULL_NONE);
+    builder_grid(b, 0, 0, -4, 1, 1, 1, 1);
+    b->indices[0] = 60000; /* an index past the vertices */
+    size_t need = tarn_frame_memory_bytes(&config);
+    void *memory = malloc(need);
+    assert_int_equal(tarn_render_frame(&b->scene, &config, memory, need, NULL, NULL), TARN_ERR_SCENE);
+    free(memory);
+    free(b);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_jittered_grid_covers_every_pixel_once),
+        cmocka_unit_test(test_fan_covers_disc_once),
+        cmocka_unit_test(test_slivers_cover_strip_once),
+        cmocka_unit_test(test_top_left_rule_on_pixel_centres),
+        cmocka_unit_test(test_clipped_meshes_stay_watertight),
+        cmocka_unit_test(test_tile_size_does_not_change_the_image),
+        cmocka_unit_test(test_pond_matches_snapped_reference),
+        cmocka_unit_test(test_unsnapped_mismatches_lie_on_edges),
+        cmocka_unit_test(test_extreme_triangles),
+        cmocka_unit_test(test_extreme_cameras),
+        cmocka_unit_test(test_cull_modes),
+        cmocka_unit_test(test_configs_out_of_range_are_rejected),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
