@@ -1,0 +1,514 @@
+/* reference.c: the float reference renderer (see reference.h).
+ *
+ * Written from the pixel rules in core/tarn_render.h, in doubles, on purpose with
+ * none of the core's arithmetic: a bug shared by both would be invisible. */
+#include "reference.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "tarn_render.h"
+
+#define Q16_SCALE 65536.0
+#define INV_DEPTH_SCALE 1073741824.0 /* Q1.30 */
+#define Q8_8_SCALE 256.0
+
+/* Snapped positions are integers in subpixel units. Beyond 2^51 the difference of
+ * two of them would stop being exact in a double. Only extreme scenes get there (a
+ * vertex ~10^13 pixels off-screen: huge coordinates just past a near plane of a few
+ * 1/65536); such positions are clamped, which bends those triangles' edges, so the
+ * reference is not the truth for them. */
+#define SUBPIXEL_COORD_LIMIT 2251799813685248.0 /* 2^51 */
+/* Below 2^26 every edge-function product fits the 53-bit mantissa: plain double
+ * arithmetic is exact and the slower accurate form is not needed. */
+#define EXACT_PRODUCT_LIMIT 67108864.0 /* 2^26 */
+
+typedef struct {
+    double x, y, z;
+} dvec3;
+
+/* A vertex as the rasterizer sees it: everything interpolated across a triangle. */
+typedef struct {
+    double x, y;      /* snapped screen position, subpixel units (integer-valued) */
+    double inv_depth; /* near/d: linear in screen space, the perspective weight */
+    double lit[3];    /* lit colour per channel, 0..255 */
+    double uv[2];     /* texture coordinates, 1.0 = one texture width / height */
+} ref_screen_vertex;
+
+/* A vertex in view space (x right, y up, z = depth d forward), before projection.
+ * Every field is linear along an edge in view space, which is how clipping cuts. */
+typedef struct {
+    double view[3];
+    double lit[3];
+    double uv[2];
+} ref_view_vertex;
+
+typedef struct {
+    int width, height;
+    double subpixel_unit; /* 2^subpixel_bits: subpixel units per pixel */
+    uint8_t *rgb;
+    uint8_t *covered; /* may be NULL */
+    double *depth;    /* near/d per pixel; 0 = nothing drawn */
+} ref_target;
+
+typedef struct {
+    dvec3 position, right, up, forward;
+    double near, far, focal;
+} ref_camera;
+
+/* ---- small vector helpers ------------------------------------------------------ */
+
+static dvec3 vec_from_q16(tarn_vec3 v)
+{
+    dvec3 r = { v.x / Q16_SCALE, v.y / Q16_SCALE, v.z / Q16_SCALE };
+    return r;
+}
+
+static dvec3 vec_sub(dvec3 a, dvec3 b)
+{
+    dvec3 r = { a.x - b.x, a.y - b.y, a.z - b.z };
+    return r;
+}
+
+static double vec_dot(dvec3 a, dvec3 b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+static dvec3 vec_cross(dvec3 a, dvec3 b)
+{
+    dvec3 r = { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x };
+    return r;
+}
+
+static dvec3 vec_normalize(dvec3 v)
+{
+    double len = sqrt(vec_dot(v, v));
+    dvec3 r = { v.x / len, v.y / len, v.z / len };
+    return r;
+}
+
+static double channel(uint32_t rgb, int c)
+{
+    return (double)((rgb >> (16 - 8 * c)) & 0xFFu);
+}
+
+/* ---- scene validation: the reference must not read outside the scene's arrays --- */
+
+static int is_power_of_two_up_to(unsigned v, unsigned max)
+{
+    return v >= 1 && v <= max && (v & (v - 1)) == 0;
+}
+
+static int texture_is_valid(const tarn_texture *t)
+{
+    return t == NULL || (t->rgb != NULL && is_power_of_two_up_to(t->width, TARN_TEXTURE_SIZE_MAX)
+                         && is_power_of_two_up_to(t->height, TARN_TEXTURE_SIZE_MAX));
+}
+
+static int mesh_is_valid(const tarn_mesh *mesh, int needs_normals)
+{
+    if (mesh->triangle_count == 0) return 1;
+    if (mesh->indices == NULL || mesh->positions == NULL) return 0;
+    if (needs_normals && mesh->normals == NULL) return 0;
+    for (unsigned i = 0; i < 3u * mesh->triangle_count; i++)
+        if (mesh->indices[i] >= mesh->vertex_count) return 0;
+    return 1;
+}
+
+static int camera_is_valid(const tarn_camera *cam)
+{
+    int same_point = cam->position.x == cam->target.x && cam->position.y == cam->target.y
+                     && cam->position.z == cam->target.z;
+    return !same_point && cam->near > 0 && cam->far > cam->near
+           && cam->fov_y_degrees >= TARN_Q16_ONE && cam->fov_y_degrees <= 179 * TARN_Q16_ONE;
+}
+
+static int scene_is_valid(const tarn_scene *scene)
+{
+    if (scene == NULL || !camera_is_valid(&scene->camera)) return 0;
+    if (scene->object_count > 0 && scene->objects == NULL) return 0;
+    for (unsigned i = 0; i < scene->object_count; i++) {
+        const tarn_object *obj = &scene->objects[i];
+        if (obj->mesh == NULL || obj->material == NULL) return 0;
+        if (!texture_is_valid(obj->material->texture)) return 0;
+        if (!mesh_is_valid(obj->mesh, !obj->material->unlit)) return 0;
+    }
+    return 1;
+}
+
+/* ---- exact edge tests ------------------------------------------------------------ */
+
+/* a*b - c*d by Kahan's algorithm with fma: its relative error is at most 2 units in
+ * the last place (Jeannerod, Louvet & Muller, 2013), so its sign is exact and it is
+ * zero only when the true value is, whatever the magnitudes (short of overflow). */
+static double accurate_product_difference(double a, double b, double c, double d)
+{
+    double cd = c * d;
+    double cd_error = fma(-c, d, cd); /* cd - c*d, exactly */
+    return fma(a, b, -cd) + cd_error;
+}
+
+/* One edge from `a` to `b` of a triangle wound so that its interior is where the
+ * edge function is positive. */
+typedef struct {
+    double ax, ay, dx, dy;
+    int owns_boundary; /* a top or left edge: centres exactly on it are inside */
+} ref_edge;
+
+/* Edge function of `e` at (px, py): twice the signed area of (a, b, p). With
+ * `exact_in_double` every product fits the mantissa and plain arithmetic is exact;
+ * otherwise the slower accurate form keeps the sign right. */
+static double edge_value(const ref_edge *e, double px, double py, int exact_in_double)
+{
+    if (exact_in_double) return e->dx * (py - e->ay) - e->dy * (px - e->ax);
+    return accurate_product_difference(e->dx, py - e->ay, e->dy, px - e->ax);
+}
+
+/* With positive-area winding in y-down screen coordinates the interior lies on the
+ * side where y grows for an edge running in +x (so a horizontal edge with dx > 0 has
+ * the triangle below it: a top edge) and on the side where x grows for an edge
+ * running in -y (triangle to its right: a left edge). */
+static ref_edge make_edge(const ref_screen_vertex *a, const ref_screen_vertex *b)
+{
+    ref_edge e = { a->x, a->y, b->x - a->x, b->y - a->y, 0 };
+    e.owns_boundary = e.dy < 0 || (e.dy == 0 && e.dx > 0);
+    return e;
+}
+
+/* ---- shading ---------------------------------------------------------------------- */
+
+static double round_to_byte(double v)
+{
+    double r = floor(v + 0.5);
+    return !(r >= 0) ? 0 : (r > 255 ? 255 : r); /* NaN to 0: never an undefined cast */
+}
+
+/* Texel = (floor(u*W) mod W, floor(v*H) mod H), wrapping negatives too. */
+static const uint8_t *sample_texel(const tarn_texture *tex, const double uv[2])
+{
+    double tx = fmod(floor(uv[0] * tex->width), tex->width);
+    double ty = fmod(floor(uv[1] * tex->height), tex->height);
+    if (tx < 0) tx += tex->width;
+    if (ty < 0) ty += tex->height;
+    return tex->rgb + 3 * ((size_t)ty * tex->width + (size_t)tx);
+}
+
+static void shade_pixel(const ref_screen_vertex v[3], const double weight[3],
+                        const tarn_texture *tex, uint8_t out[3])
+{
+    double total = weight[0] + weight[1] + weight[2];
+    double uv[2];
+    for (int k = 0; k < 2; k++)
+        uv[k] = (weight[0] * v[0].uv[k] + weight[1] * v[1].uv[k] + weight[2] * v[2].uv[k]) / total;
+    const uint8_t *texel = tex != NULL ? sample_texel(tex, uv) : NULL;
+    for (int c = 0; c < 3; c++) {
+        double lit = (weight[0] * v[0].lit[c] + weight[1] * v[1].lit[c] + weight[2] * v[2].lit[c])
+                     / total;
+        double colour = texel != NULL ? texel[c] * lit / 255.0 : lit;
+        out[c] = (uint8_t)round_to_byte(colour);
+    }
+}
+
+/* ---- rasterization ---------------------------------------------------------------- */
+
+/* Range of pixel indices whose centres (i + 0.5) * unit lie in [lo, hi] (subpixel
+ * units), clipped to [0, size). Returns 0 if empty. */
+static int pixel_span(double lo, double hi, double unit, int size, int *first, int *last)
+{
+    double f = ceil(lo / unit - 0.5), l = floor(hi / unit - 0.5);
+    if (f < 0) f = 0;
+    if (l > size - 1) l = size - 1;
+    if (f > l) return 0;
+    *first = (int)f;
+    *last = (int)l;
+    return 1;
+}
+
+static int is_drawn_side(int area_sign, uint8_t cull)
+{
+    int front = area_sign < 0; /* counter-clockwise in the world, view y up, screen y down */
+    if (cull == TARN_CULL_NONE) return 1;
+    return cull == TARN_CULL_FRONT ? !front : front;
+}
+
+static int within_exact_range(const ref_screen_vertex v[3], const ref_target *t)
+{
+    double reach = EXACT_PRODUCT_LIMIT / 2;
+    double frame = (t->width > t->height ? t->width : t->height) * t->subpixel_unit;
+    for (int i = 0; i < 3; i++)
+        if (fabs(v[i].x) + frame >= reach || fabs(v[i].y) + frame >= reach) return 0;
+    return 1;
+}
+
+static void draw_pixel(ref_target *t, int i, int j, const ref_screen_vertex v[3],
+                       const double bary[3], const tarn_texture *tex)
+{
+    double weight[3];
+    for (int k = 0; k < 3; k++) weight[k] = bary[k] * v[k].inv_depth;
+    double inv_depth = weight[0] + weight[1] + weight[2];
+    size_t p = (size_t)j * t->width + i;
+    if (!(inv_depth > t->depth[p])) return; /* closer wins; on a tie the earlier stays */
+    t->depth[p] = inv_depth;
+    shade_pixel(v, weight, tex, t->rgb + 3 * p);
+    if (t->covered != NULL) t->covered[p] = 1;
+}
+
+/* Draws one triangle with the top-left rule, perspective-correct attributes and
+ * the depth test, culled by its snapped screen winding and the material's mode. */
+static void rasterize_triangle(ref_target *t, const ref_screen_vertex in[3], uint8_t cull,
+                               const tarn_texture *tex)
+{
+    ref_edge first = make_edge(&in[0], &in[1]);
+    int exact = within_exact_range(in, t);
+    double signed_area = edge_value(&first, in[2].x, in[2].y, exact);
+    int area_sign = (signed_area > 0) - (signed_area < 0);
+    if (area_sign == 0 || !is_drawn_side(area_sign, cull)) return;
+
+    /* Wind to positive area so every edge function is positive inside. */
+    int flip = area_sign < 0;
+    ref_screen_vertex v[3] = { in[0], in[flip ? 2 : 1], in[flip ? 1 : 2] };
+    ref_edge edge[3];
+    for (int k = 0; k < 3; k++) edge[k] = make_edge(&v[(k + 1) % 3], &v[(k + 2) % 3]);
+    double area = fabs(signed_area);
+
+    int i0, i1, j0, j1;
+    double unit = t->subpixel_unit;
+    if (!pixel_span(fmin(v[0].x, fmin(v[1].x, v[2].x)), fmax(v[0].x, fmax(v[1].x, v[2].x)), unit,
+                    t->width, &i0, &i1)
+        || !pixel_span(fmin(v[0].y, fmin(v[1].y, v[2].y)), fmax(v[0].y, fmax(v[1].y, v[2].y)), unit,
+                       t->height, &j0, &j1))
+        return;
+
+    for (int j = j0; j <= j1; j++) {
+        double py = (j + 0.5) * unit;
+        for (int i = i0; i <= i1; i++) {
+            double px = (i + 0.5) * unit;
+            double bary[3];
+            int inside = 1;
+            for (int k = 0; k < 3 && inside; k++) {
+                double e = edge_value(&edge[k], px, py, exact);
+                inside = e > 0 || (e == 0 && edge[k].owns_boundary);
+                /* edge k is opposite vertex k: its value / area is k's barycentric */
+                bary[k] = e / area;
+            }
+            if (inside) draw_pixel(t, i, j, v, bary, tex);
+        }
+    }
+}
+
+/* ---- default mode: the whole pipeline in doubles ---------------------------------- */
+
+static ref_camera make_camera(const tarn_camera *cam, int height)
+{
+    ref_camera c;
+    c.position = vec_from_q16(cam->position);
+    c.forward = vec_normalize(vec_sub(vec_from_q16(cam->target), c.position));
+    /* f is (anti)parallel to +y exactly when the Q16.16 offset has no x or z */
+    int looks_vertically = cam->target.x == cam->position.x && cam->target.z == cam->position.z;
+    dvec3 world_up = { 0, looks_vertically ? 0 : 1, looks_vertically ? -1 : 0 };
+    c.right = vec_normalize(vec_cross(c.forward, world_up));
+    c.up = vec_cross(c.right, c.forward);
+    c.near = cam->near / Q16_SCALE;
+    c.far = cam->far / Q16_SCALE;
+    double fov = cam->fov_y_degrees / Q16_SCALE * (acos(-1.0) / 180.0);
+    c.focal = (height / 2.0) / tan(fov / 2.0);
+    return c;
+}
+
+/* Per-channel light of a world normal: min(1, ambient + light * max(0, N.L)). */
+static void light_vertex(const tarn_light *light, dvec3 normal, double shade[3])
+{
+    double n_dot_l = fmax(0.0, vec_dot(normal, vec_from_q16(light->direction)));
+    for (int c = 0; c < 3; c++) {
+        double lit = channel(light->ambient_rgb, c) / 255.0
+                     + channel(light->colour_rgb, c) / 255.0 * n_dot_l;
+        shade[c] = fmin(1.0, lit);
+    }
+}
+
+static dvec3 rotate(const tarn_q16 rot[3][3], dvec3 p)
+{
+    dvec3 r;
+    double *out[3] = { &r.x, &r.y, &r.z };
+    for (int row = 0; row < 3; row++) {
+        dvec3 axis = { rot[row][0] / Q16_SCALE, rot[row][1] / Q16_SCALE, rot[row][2] / Q16_SCALE };
+        *out[row] = vec_dot(axis, p);
+    }
+    return r;
+}
+
+static ref_view_vertex transform_vertex(const tarn_scene *scene, const ref_camera *cam,
+                                        const tarn_object *obj, unsigned index)
+{
+    const tarn_mesh *mesh = obj->mesh;
+    const tarn_material *mat = obj->material;
+    ref_view_vertex out;
+    dvec3 rotated = rotate(obj->rotation, vec_from_q16(mesh->positions[index]));
+    double scale = obj->scale / Q16_SCALE;
+    dvec3 pos = vec_from_q16(obj->position);
+    dvec3 world = { pos.x + scale * rotated.x, pos.y + scale * rotated.y,
+                    pos.z + scale * rotated.z };
+    dvec3 rel = vec_sub(world, cam->position);
+    out.view[0] = vec_dot(rel, cam->right);
+    out.view[1] = vec_dot(rel, cam->up);
+    out.view[2] = vec_dot(rel, cam->forward);
+
+    double shade[3] = { 1, 1, 1 };
+    if (!mat->unlit) {
+        dvec3 normal = rotate(obj->rotation, vec_from_q16(mesh->normals[index]));
+        light_vertex(&scene->light, normal, shade);
+    }
+    for (int c = 0; c < 3; c++) {
+        double vertex_colour = mesh->colours != NULL ? channel(mesh->colours[index], c) : 255.0;
+        out.lit[c] = channel(mat->colour_rgb, c) * vertex_colour / 255.0 * shade[c];
+    }
+    out.uv[0] = mesh->uvs != NULL ? mesh->uvs[index].u / Q16_SCALE : 0.0;
+    out.uv[1] = mesh->uvs != NULL ? mesh->uvs[index].v / Q16_SCALE : 0.0;
+    return out;
+}
+
+static ref_view_vertex lerp_view_vertex(const ref_view_vertex *a, const ref_view_vertex *b,
+                                        double s)
+{
+    ref_view_vertex r;
+    for (int k = 0; k < 3; k++) r.view[k] = a->view[k] + (b->view[k] - a->view[k]) * s;
+    for (int k = 0; k < 3; k++) r.lit[k] = a->lit[k] + (b->lit[k] - a->lit[k]) * s;
+    for (int k = 0; k < 2; k++) r.uv[k] = a->uv[k] + (b->uv[k] - a->uv[k]) * s;
+    return r;
+}
+
+#define CLIP_MAX_VERTICES 5 /* a triangle cut by two parallel planes */
+
+/* Sutherland-Hodgman against one depth plane: keeps side * (d - plane) >= 0, where
+ * side is +1 for the near plane and -1 for the far plane. Returns the new count. */
+static int clip_polygon_at_depth(const ref_view_vertex *in, int count, double plane, double side,
+                                 ref_view_vertex *out)
+{
+    int n = 0;
+    for (int i = 0; i < count; i++) {
+        const ref_view_vertex *a = &in[i], *b = &in[(i + 1) % count];
+        double da = side * (a->view[2] - plane), db = side * (b->view[2] - plane);
+        if (da >= 0) out[n++] = *a;
+        if ((da >= 0) != (db >= 0)) {
+            out[n] = lerp_view_vertex(a, b, da / (da - db));
+            out[n++].view[2] = plane; /* exactly on the plane, whatever the rounding */
+        }
+    }
+    return n;
+}
+
+static double snap_to_subpixels(double pixels, double unit)
+{
+    double s = round(pixels * unit); /* nearest, ties away from zero */
+    return fmax(-SUBPIXEL_COORD_LIMIT, fmin(SUBPIXEL_COORD_LIMIT, s));
+}
+
+static ref_screen_vertex project(const ref_view_vertex *v, const ref_camera *cam,
+                                 const ref_target *t)
+{
+    ref_screen_vertex s;
+    double d = v->view[2];
+    s.x = snap_to_subpixels(t->width / 2.0 + v->view[0] * cam->focal / d, t->subpixel_unit);
+    s.y = snap_to_subpixels(t->height / 2.0 - v->view[1] * cam->focal / d, t->subpixel_unit);
+    s.inv_depth = cam->near / d;
+    memcpy(s.lit, v->lit, sizeof s.lit);
+    memcpy(s.uv, v->uv, sizeof s.uv);
+    return s;
+}
+
+static void draw_view_triangle(ref_target *t, const ref_camera *cam, const ref_view_vertex tri[3],
+                               const tarn_material *mat)
+{
+    ref_view_vertex near_clipped[CLIP_MAX_VERTICES], clipped[CLIP_MAX_VERTICES];
+    int n = clip_polygon_at_depth(tri, 3, cam->near, 1.0, near_clipped);
+    n = clip_polygon_at_depth(near_clipped, n, cam->far, -1.0, clipped);
+    ref_screen_vertex screen[CLIP_MAX_VERTICES];
+    for (int i = 0; i < n; i++) screen[i] = project(&clipped[i], cam, t);
+    for (int i = 1; i + 1 < n; i++) {
+        ref_screen_vertex fan[3] = { screen[0], screen[i], screen[i + 1] };
+        rasterize_triangle(t, fan, mat->cull, mat->texture);
+    }
+}
+
+static void render_unsnapped(const tarn_scene *scene, ref_target *t)
+{
+    ref_camera cam = make_camera(&scene->camera, t->height);
+    for (unsigned o = 0; o < scene->object_count; o++) {
+        const tarn_object *obj = &scene->objects[o];
+        const tarn_mesh *mesh = obj->mesh;
+        for (unsigned tri = 0; tri < mesh->triangle_count; tri++) {
+            ref_view_vertex corner[3];
+            for (int k = 0; k < 3; k++)
+                corner[k] = transform_vertex(scene, &cam, obj, mesh->indices[3 * tri + k]);
+            draw_view_triangle(t, &cam, corner, obj->material);
+        }
+    }
+}
+
+/* ---- snapped mode: the core's own screen triangles -------------------------------- */
+
+static void visit_core_triangle(void *user, const tarn_screen_vertex vertex[3],
+                                const tarn_object *object)
+{
+    ref_target *t = user;
+    ref_screen_vertex v[3];
+    for (int k = 0; k < 3; k++) {
+        v[k].x = vertex[k].x;
+        v[k].y = vertex[k].y;
+        v[k].inv_depth = vertex[k].inv_depth / INV_DEPTH_SCALE;
+        for (int c = 0; c < 3; c++) v[k].lit[c] = vertex[k].lit[c] / Q8_8_SCALE;
+        v[k].uv[0] = vertex[k].uv.u / Q16_SCALE;
+        v[k].uv[1] = vertex[k].uv.v / Q16_SCALE;
+    }
+    /* The core hands triangles over in their original winding and culls them only in
+     * its rasterizer, on the snapped winding (whatever tarn_render.h says of the
+     * visitor): cull here by the same rule. Were they culled already, it is a no-op. */
+    rasterize_triangle(t, v, object->material->cull, object->material->texture);
+}
+
+static int render_snapped(const tarn_scene *scene, ref_target *t, int subpixel_bits)
+{
+    tarn_frame_config config;
+    config.width = (uint16_t)t->width;
+    config.height = (uint16_t)t->height;
+    config.quality = tarn_quality_default();
+    config.quality.subpixel_bits = (uint8_t)subpixel_bits;
+    return (int)tarn_visit_screen_triangles(scene, &config, visit_core_triangle, t);
+}
+
+/* ---- entry point ------------------------------------------------------------------ */
+
+static void clear_target(ref_target *t, uint32_t background)
+{
+    size_t pixels = (size_t)t->width * t->height;
+    for (size_t p = 0; p < pixels; p++) {
+        for (int c = 0; c < 3; c++) t->rgb[3 * p + c] = (uint8_t)channel(background, c);
+        t->depth[p] = 0.0;
+    }
+    if (t->covered != NULL) memset(t->covered, 0, pixels);
+}
+
+int tarn_reference_render(const tarn_scene *scene, int width, int height,
+                          const tarn_reference_options *opt, uint8_t *rgb, uint8_t *covered)
+{
+    if (opt == NULL || rgb == NULL || width < 1 || height < 1 || width > (int)TARN_FRAME_SIZE_MAX
+        || height > (int)TARN_FRAME_SIZE_MAX || opt->subpixel_bits < (int)TARN_SUBPIXEL_BITS_MIN
+        || opt->subpixel_bits > (int)TARN_SUBPIXEL_BITS_MAX)
+        return TARN_ERR_CONFIG;
+    if (!scene_is_valid(scene)) return TARN_ERR_SCENE;
+
+    ref_target t = { width, height, ldexp(1.0, opt->subpixel_bits), rgb, covered, NULL };
+    t.depth = malloc((size_t)width * height * sizeof *t.depth);
+    if (t.depth == NULL) return TARN_ERR_MEMORY;
+    clear_target(&t, scene->background_rgb);
+
+    int status = TARN_OK;
+    if (opt->snapped)
+        status = render_snapped(scene, &t, opt->subpixel_bits);
+    else
+        render_unsnapped(scene, &t);
+    free(t.depth);
+    return status;
+}

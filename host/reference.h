@@ -1,0 +1,34 @@
+/* reference.h: the float reference renderer, the truth the integer core is measured
+ * against.
+ *
+ * It follows the pixel rules written at the top of core/tarn_render.h, in double
+ * precision with libm, and shares no arithmetic with core/ (only the struct
+ * definitions, and in snapped mode the core's own screen triangles).
+ *
+ * Two modes:
+ *  - default: the whole pipeline in doubles (transform, camera, near/far clipping,
+ *    projection), then screen positions rounded to the 1/2^subpixel_bits grid and
+ *    rasterized. Measures everything the core approximates.
+ *  - snapped: rasterizes exactly the triangles the core produces
+ *    (tarn_visit_screen_triangles), so only rasterization and shading differ; the
+ *    coverage must then match the core's pixel for pixel. */
+#ifndef TARN_HOST_REFERENCE_H
+#define TARN_HOST_REFERENCE_H
+
+#include <stdint.h>
+#include "tarn_scene.h"
+
+typedef struct {
+    int snapped;       /* 1: rasterize the core's snapped triangles */
+    int subpixel_bits; /* TARN_SUBPIXEL_BITS_MIN..MAX, as in the core's quality */
+} tarn_reference_options;
+
+/* Renders `scene` into `rgb` (width*height*3 bytes, rows top to bottom, R G B) and,
+ * unless NULL, `covered` (width*height bytes: 1 where a triangle drew, else 0).
+ * Returns TARN_OK (0), TARN_ERR_CONFIG for a size or option out of range, or
+ * TARN_ERR_SCENE for a malformed scene; the outputs are then left unspecified. */
+int tarn_reference_render(const tarn_scene *scene, int width, int height,
+                          const tarn_reference_options *opt, uint8_t *rgb,
+                          uint8_t *covered);
+
+#endif
