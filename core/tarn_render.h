@@ -119,9 +119,11 @@ typedef struct {
 typedef void (*tarn_triangle_visitor)(void *user, const tarn_screen_vertex vertex[3],
                                       const tarn_object *object);
 
-/* Calls `visit` for every triangle the rasterizer would draw, in drawing order,
- * after clipping and culling. The float reference uses this to rasterize exactly
- * the core's snapped triangles, isolating rasterization from transform precision. */
+/* Calls `visit` for every triangle the rasterizer is handed, in drawing order,
+ * after clipping and snapping, with the mesh's own vertex order. Culling is not yet
+ * applied: the rasterizer culls on the snapped winding (see the rules above), and a
+ * visitor that draws must do the same. The float reference uses this to rasterize
+ * exactly the core's triangles, isolating rasterization from transform precision. */
 tarn_status tarn_visit_screen_triangles(const tarn_scene *scene,
                                         const tarn_frame_config *config,
                                         tarn_triangle_visitor visit, void *user);
