@@ -1,0 +1,238 @@
+#include "mesh_gen.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+tarn_q16 tarn_q16_from_double(double v)
+{
+    double scaled = round(v * 65536.0); /* round() ties away from zero, like the core */
+    if (!(scaled > (double)INT32_MIN)) return INT32_MIN; /* also catches NaN */
+    if (scaled > (double)INT32_MAX) return INT32_MAX;
+    return (tarn_q16)scaled;
+}
+
+static tarn_vec3 vec3_from_doubles(const double v[3])
+{
+    tarn_vec3 q = { tarn_q16_from_double(v[0]), tarn_q16_from_double(v[1]),
+                    tarn_q16_from_double(v[2]) };
+    return q;
+}
+
+static void cross(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+int tarn_mesh_reserve(tarn_mesh_buffer *m, uint32_t vertices, uint32_t triangles, int with_uvs,
+                      const char *what, tarn_error *err)
+{
+    memset(m, 0, sizeof *m);
+    if (vertices > TARN_MESH_VERTICES_MAX) {
+        return tarn_fail(err, "%s: needs %u vertices; a tarn mesh holds at most %u", what,
+                         vertices, TARN_MESH_VERTICES_MAX);
+    }
+    if (triangles > TARN_MESH_TRIANGLES_MAX) {
+        return tarn_fail(err, "%s: needs %u triangles; a tarn mesh holds at most %u", what,
+                         triangles, TARN_MESH_TRIANGLES_MAX);
+    }
+    /* +1 so that an empty mesh still gets non-NULL arrays */
+    m->positions = calloc(vertices + 1u, sizeof *m->positions);
+    m->normals = calloc(vertices + 1u, sizeof *m->normals);
+    m->uvs = with_uvs ? calloc(vertices + 1u, sizeof *m->uvs) : NULL;
+    m->indices = calloc(3u * triangles + 1u, sizeof *m->indices);
+    if (!m->positions || !m->normals || (with_uvs && !m->uvs) || !m->indices) {
+        tarn_mesh_buffer_free(m);
+        return tarn_fail(err, "%s: out of memory for %u vertices", what, vertices);
+    }
+    m->vertex_capacity = vertices;
+    m->triangle_capacity = triangles;
+    m->mesh.positions = m->positions;
+    m->mesh.normals = m->normals;
+    m->mesh.uvs = m->uvs;
+    m->mesh.colours = NULL;
+    m->mesh.indices = m->indices;
+    return 0;
+}
+
+uint16_t tarn_mesh_add_vertex(tarn_mesh_buffer *m, const double position[3],
+                              const double normal[3], const double uv[2])
+{
+    uint16_t index = m->mesh.vertex_count++;
+    double length = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    double unit[3] = { 0.0, 1.0, 0.0 };
+    if (length > 0.0 && isfinite(length)) {
+        for (int k = 0; k < 3; k++) unit[k] = normal[k] / length;
+    }
+    m->positions[index] = vec3_from_doubles(position);
+    m->normals[index] = vec3_from_doubles(unit);
+    if (m->uvs && uv) {
+        m->uvs[index].u = tarn_q16_from_double(uv[0]);
+        m->uvs[index].v = tarn_q16_from_double(uv[1]);
+    }
+    return index;
+}
+
+void tarn_mesh_add_triangle(tarn_mesh_buffer *m, uint32_t a, uint32_t b, uint32_t c)
+{
+    uint16_t *tri = m->indices + 3u * m->mesh.triangle_count++;
+    tri[0] = (uint16_t)a;
+    tri[1] = (uint16_t)b;
+    tri[2] = (uint16_t)c;
+}
+
+void tarn_mesh_buffer_free(tarn_mesh_buffer *m)
+{
+    if (!m) return;
+    free(m->positions);
+    free(m->normals);
+    free(m->uvs);
+    free(m->indices);
+    memset(m, 0, sizeof *m);
+}
+
+/* ---- grids: planes and heightfields ------------------------------------------ */
+
+typedef struct {
+    uint32_t columns, rows; /* vertices along x and along z, each >= 2 */
+    double width, depth;
+    double u_scale, v_scale;
+    const uint8_t *gray; /* columns*rows heights, or NULL for a flat grid */
+    double height;       /* world height of gray 255 */
+} grid_spec;
+
+static double grid_height(const grid_spec *g, uint32_t i, uint32_t j)
+{
+    return g->gray ? g->gray[(size_t)j * g->columns + i] / 255.0 * g->height : 0.0;
+}
+
+/* Slope of the surface between the neighbours of (i, j) along x (dx = 1) or z
+ * (dz = 1): central where both neighbours exist, one-sided at the border. */
+static double grid_slope(const grid_spec *g, uint32_t i, uint32_t j, int along_x)
+{
+    uint32_t n = along_x ? g->columns : g->rows;
+    uint32_t at = along_x ? i : j;
+    uint32_t lo = at > 0 ? at - 1 : at, hi = at + 1 < n ? at + 1 : at;
+    double spacing = (along_x ? g->width : g->depth) / (n - 1);
+    double h_lo = along_x ? grid_height(g, lo, j) : grid_height(g, i, lo);
+    double h_hi = along_x ? grid_height(g, hi, j) : grid_height(g, i, hi);
+    return (h_hi - h_lo) / ((hi - lo) * spacing);
+}
+
+static int build_grid(tarn_mesh_buffer *out, const grid_spec *g, const char *what,
+                      tarn_error *err)
+{
+    uint32_t quads = (g->columns - 1) * (g->rows - 1);
+    if (tarn_mesh_reserve(out, g->columns * g->rows, 2 * quads, 1, what, err)) return -1;
+    for (uint32_t j = 0; j < g->rows; j++) {
+        double fz = (double)j / (g->rows - 1);
+        for (uint32_t i = 0; i < g->columns; i++) {
+            double fx = (double)i / (g->columns - 1);
+            double position[3] = { (fx - 0.5) * g->width, grid_height(g, i, j),
+                                   (fz - 0.5) * g->depth };
+            /* the surface y = h(x, z) has normal (-dh/dx, 1, -dh/dz) */
+            double normal[3] = { -grid_slope(g, i, j, 1), 1.0, -grid_slope(g, i, j, 0) };
+            double uv[2] = { fx * g->u_scale, fz * g->v_scale };
+            tarn_mesh_add_vertex(out, position, normal, uv);
+        }
+    }
+    /* Seen from above, +x then +z turns counter-clockwise ((+z) x (+x) = +y). */
+    for (uint32_t j = 0; j + 1 < g->rows; j++) {
+        for (uint32_t i = 0; i + 1 < g->columns; i++) {
+            uint32_t a = j * g->columns + i, b = a + g->columns, c = a + 1, d = b + 1;
+            tarn_mesh_add_triangle(out, a, b, c);
+            tarn_mesh_add_triangle(out, c, b, d);
+        }
+    }
+    return 0;
+}
+
+int tarn_mesh_plane(tarn_mesh_buffer *out, double width, double depth, uint32_t segments_x,
+                    uint32_t segments_z, double u_scale, double v_scale, const char *what,
+                    tarn_error *err)
+{
+    grid_spec g = { .columns = segments_x + 1, .rows = segments_z + 1, .width = width,
+                    .depth = depth, .u_scale = u_scale, .v_scale = v_scale };
+    return build_grid(out, &g, what, err);
+}
+
+int tarn_mesh_heightfield(tarn_mesh_buffer *out, const tarn_image *gray, double width,
+                          double depth, double height, double u_scale, double v_scale,
+                          const char *what, tarn_error *err)
+{
+    grid_spec g = { .columns = gray->width, .rows = gray->height, .width = width,
+                    .depth = depth, .u_scale = u_scale, .v_scale = v_scale,
+                    .gray = gray->pixels, .height = height };
+    return build_grid(out, &g, what, err);
+}
+
+/* ---- box ---------------------------------------------------------------------- */
+
+int tarn_mesh_box(tarn_mesh_buffer *out, double width, double height, double depth,
+                  const char *what, tarn_error *err)
+{
+    /* Each face: its outward normal and the direction that is "right" when seen
+     * from outside; up = normal x right, so right x up = normal (counter-clockwise). */
+    static const double faces[6][2][3] = {
+        { { 1, 0, 0 }, { 0, 0, -1 } }, { { -1, 0, 0 }, { 0, 0, 1 } },
+        { { 0, 1, 0 }, { 1, 0, 0 } },  { { 0, -1, 0 }, { 1, 0, 0 } },
+        { { 0, 0, 1 }, { 1, 0, 0 } },  { { 0, 0, -1 }, { -1, 0, 0 } },
+    };
+    static const double corners[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
+    const double half[3] = { width / 2, height / 2, depth / 2 };
+    if (tarn_mesh_reserve(out, 24, 12, 1, what, err)) return -1;
+    for (int f = 0; f < 6; f++) {
+        const double *normal = faces[f][0], *right = faces[f][1];
+        double up[3];
+        cross(normal, right, up);
+        uint32_t first = out->mesh.vertex_count;
+        for (int c = 0; c < 4; c++) {
+            double position[3], uv[2] = { (corners[c][0] + 1) / 2, (1 - corners[c][1]) / 2 };
+            for (int k = 0; k < 3; k++) {
+                position[k] =
+                    (normal[k] + corners[c][0] * right[k] + corners[c][1] * up[k]) * half[k];
+            }
+            tarn_mesh_add_vertex(out, position, normal, uv);
+        }
+        tarn_mesh_add_triangle(out, first, first + 1, first + 2);
+        tarn_mesh_add_triangle(out, first, first + 2, first + 3);
+    }
+    return 0;
+}
+
+/* ---- sphere ------------------------------------------------------------------- */
+
+int tarn_mesh_sphere(tarn_mesh_buffer *out, double radius, uint32_t segments, uint32_t rings,
+                     const char *what, tarn_error *err)
+{
+    /* The seam column is duplicated (u = 0 and u = 1) and each pole is one vertex
+     * per segment, so every vertex has a single texture coordinate. */
+    uint32_t columns = segments + 1;
+    if (tarn_mesh_reserve(out, (rings + 1) * columns, 2 * segments * (rings - 1), 1, what, err)) {
+        return -1;
+    }
+    for (uint32_t k = 0; k <= rings; k++) {
+        double theta = PI * k / rings; /* 0 at the top pole */
+        for (uint32_t s = 0; s <= segments; s++) {
+            /* phi grows toward -z so that u increases to the right seen from outside */
+            double phi = 2 * PI * s / segments;
+            double normal[3] = { sin(theta) * cos(phi), cos(theta), -sin(theta) * sin(phi) };
+            double position[3] = { radius * normal[0], radius * normal[1], radius * normal[2] };
+            double uv[2] = { (double)s / segments, (double)k / rings };
+            tarn_mesh_add_vertex(out, position, normal, uv);
+        }
+    }
+    for (uint32_t k = 0; k < rings; k++) {
+        for (uint32_t s = 0; s < segments; s++) {
+            uint32_t a = k * columns + s, b = a + columns, c = a + 1, d = b + 1;
+            /* the triangle touching a pole through two of its corners has no area */
+            if (k != 0) tarn_mesh_add_triangle(out, a, b, c);
+            if (k != rings - 1) tarn_mesh_add_triangle(out, c, b, d);
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,21 @@
+/* obj_load.h: Wavefront OBJ meshes.
+ *
+ * Understood: v (x y z, optional w ignored), vt (u [v [w]]), vn (x y z), f with
+ * three or more corners (polygons are fanned from their first corner, so they must
+ * be convex), each corner v, v/vt, v//vn or v/vt/vn, indices from 1 or negative
+ * (relative to the elements read so far). Ignored: o, g, s, usemtl, mtllib and
+ * comments. Anything else is an error naming file:line.
+ *
+ * OBJ fronts are counter-clockwise, as in tarn. OBJ's v runs up the image while
+ * tarn's runs down, so v becomes 1 - v. Corners without a normal get a smooth one,
+ * the area-weighted average of the faces around their position. Coordinates must
+ * satisfy |v| < 32768 to fit Q16.16. */
+#ifndef TARN_HOST_OBJ_LOAD_H
+#define TARN_HOST_OBJ_LOAD_H
+
+#include "error.h"
+#include "mesh_gen.h"
+
+int tarn_obj_load(const char *path, tarn_mesh_buffer *out, tarn_error *err);
+
+#endif

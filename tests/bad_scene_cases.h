@@ -1,0 +1,246 @@
+/* bad_scene_cases.h: bad scene inputs and the one-line error each must produce.
+ *
+ * Shared by tests/test_scene_load.c (the loader's message) and
+ * tests/test_cli_bad_input.c (the CLI's exit status, stderr and lack of output).
+ * Each case is a scene file "bad.json" plus up to two asset files, written into a
+ * fresh directory; the error must contain "<dir>/<file><expect>": the file's full
+ * path as the loader saw it, then the line or field and what was expected. */
+#ifndef TARN_TESTS_BAD_SCENE_CASES_H
+#define TARN_TESTS_BAD_SCENE_CASES_H
+
+#include <dirent.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "png_io.h"
+
+typedef enum {
+    BAD_TEXT = 0,     /* `text` as is */
+    BAD_PNG,          /* a valid width x height RGB PNG */
+    BAD_PNG_TRUNCATED /* the same, cut off half way */
+} bad_file_kind;
+
+typedef struct {
+    const char *name; /* NULL: no file */
+    bad_file_kind kind;
+    const char *text;
+    uint16_t width, height;
+} bad_file;
+
+typedef struct {
+    const char *what;
+    const char *scene; /* bad.json's contents; NULL: no bad.json at all */
+    bad_file assets[2];
+    const char *file;   /* the file the message names */
+    const char *expect; /* what follows that file's path in the message */
+} bad_scene_case;
+
+#define BAD_CAMERA "\"camera\": {\"position\": [0, 2, 6], \"target\": [0, 0, 0], \"fov\": 60}"
+#define BAD_MATERIALS "\"materials\": {\"m\": {}}"
+#define BAD_SCENE_WITH(objects) "{" BAD_CAMERA ", " BAD_MATERIALS ", \"objects\": [" objects "]}"
+#define BAD_OBJECT(fields) "{\"material\": \"m\", " fields "}"
+#define BAD_CAMERA_SCENE(camera) \
+    "{\"camera\": {" camera "}, " BAD_MATERIALS ", \"objects\": []}"
+#define BAD_MESH_SCENE BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"mesh\", \"file\": \"leaf.obj\""))
+#define BAD_TEXTURE_SCENE \
+    "{" BAD_CAMERA ", \"materials\": {\"m\": {\"texture\": \"tex.png\"}}, \"objects\": []}"
+#define BAD_HEIGHTFIELD_SCENE                                                               \
+    BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"heightfield\", \"image\": \"pit.png\", "         \
+                              "\"size\": [4, 4], \"height\": 1"))
+#define BAD_OBJ(text) { { "leaf.obj", BAD_TEXT, text, 0, 0 } }
+#define BAD_QUAD "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+
+static const bad_scene_case BAD_SCENE_CASES[] = {
+    /* JSON syntax: jansson's text, at line:column */
+    { "syntax error", "{\n  \"camera\": {\n    \"fov\": 60,,\n", { { 0 } }, "bad.json",
+      ":3:15: string or '}' expected near ','" },
+    { "duplicate key", "{\"camera\": {}, \"camera\": {}}", { { 0 } }, "bad.json",
+      ":1:23: duplicate object key near '\"camera\"'" },
+    { "empty file", "", { { 0 } }, "bad.json", ":1:0: '[' or '{' expected near end of file" },
+    { "no scene file", NULL, { { 0 } }, "bad.json", ": cannot open: No such file or directory" },
+    { "top level array", "[1, 2]", { { 0 } }, "bad.json",
+      ": expected a JSON object at the top level, got array" },
+    /* fields */
+    { "unknown top-level field", "{\"cameras\": {}}", { { 0 } }, "bad.json",
+      ": cameras: unknown field (expected frame, background, camera, light, materials, objects)" },
+    { "control character in a field name", "{\"fo\\no\": 1}", { { 0 } }, "bad.json",
+      ": fo?o: unknown field (expected frame, background, camera, light, materials, objects)" },
+    { "unknown camera field", BAD_CAMERA_SCENE("\"fob\": 1"), { { 0 } }, "bad.json",
+      ": camera.fob: unknown field (expected position, target, fov, near, far)" },
+    { "field of another object type",
+      BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"sphere\", \"radius\": 1, \"size\": [1, 1, 1]")),
+      { { 0 } }, "bad.json",
+      ": objects[0].size: unknown field for a sphere (expected type, material, position, "
+      "rotation, scale, radius, segments, rings)" },
+    { "wrong type", BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"box\", \"size\": [1, 1, 1]") ", "
+                                   BAD_OBJECT("\"type\": \"sphere\", \"radius\": \"big\"")),
+      { { 0 } }, "bad.json", ": objects[1].radius: expected a number, got string" },
+    { "missing fov", BAD_CAMERA_SCENE("\"position\": [0, 2, 6], \"target\": [0, 0, 0]"),
+      { { 0 } }, "bad.json", ": camera.fov: missing (expected a number of degrees, 1..179)" },
+    { "fov out of range",
+      BAD_CAMERA_SCENE("\"position\": [0, 2, 6], \"target\": [0, 0, 0], \"fov\": 180"),
+      { { 0 } }, "bad.json", ": camera.fov: expected a number of degrees, 1..179, got 180" },
+    { "near zero",
+      BAD_CAMERA_SCENE("\"position\": [0, 2, 6], \"target\": [0, 0, 0], \"fov\": 60, \"near\": 0"),
+      { { 0 } }, "bad.json", ": camera.near: expected a number > 0 and < 32768, got 0" },
+    { "near below Q16.16",
+      BAD_CAMERA_SCENE("\"position\": [0, 2, 6], \"target\": [0, 0, 0], \"fov\": 60, "
+                       "\"near\": 0.000001"),
+      { { 0 } }, "bad.json",
+      ": camera.near: expected a number > 0 and < 32768, got 1e-06 (0 in Q16.16)" },
+    { "far before near",
+      BAD_CAMERA_SCENE("\"position\": [0, 2, 6], \"target\": [0, 0, 0], \"fov\": 60, "
+                       "\"near\": 5, \"far\": 2"),
+      { { 0 } }, "bad.json", ": camera.far: expected a number greater than camera.near (5), got 2" },
+    { "coordinate too large",
+      BAD_CAMERA_SCENE("\"position\": [0, 40000, 6], \"target\": [0, 0, 0], \"fov\": 60"),
+      { { 0 } }, "bad.json",
+      ": camera.position[1]: expected a number, -32768 < v < 32768, got 40000" },
+    { "vector too short", BAD_CAMERA_SCENE("\"position\": [0, 2], \"target\": [0, 0, 0], \"fov\": 60"),
+      { { 0 } }, "bad.json", ": camera.position: expected an array of 3 numbers, got 2" },
+    { "camera on its target",
+      BAD_CAMERA_SCENE("\"position\": [1, 2, 3], \"target\": [1, 2, 3], \"fov\": 60"),
+      { { 0 } }, "bad.json", ": camera.target: must differ from camera.position" },
+    { "bad colour", "{\"background\": \"#12345\"}", { { 0 } }, "bad.json",
+      ": background: expected a colour \"#rrggbb\", got \"#12345\"" },
+    { "colour not a string", "{\"background\": 255}", { { 0 } }, "bad.json",
+      ": background: expected a colour \"#rrggbb\", got number" },
+    { "frame too wide", "{\"frame\": {\"width\": 2000}}", { { 0 } }, "bad.json",
+      ": frame.width: expected an integer 1..1024, got 2000" },
+    { "zero light direction",
+      "{" BAD_CAMERA ", \"light\": {\"direction\": [0, 0, 0]}, " BAD_MATERIALS ", \"objects\": []}",
+      { { 0 } }, "bad.json", ": light.direction: expected a non-zero vector, got [0, 0, 0]" },
+    { "bad cull", "{" BAD_CAMERA ", \"materials\": {\"m\": {\"cull\": \"both\"}}, \"objects\": []}",
+      { { 0 } }, "bad.json",
+      ": materials.m.cull: expected one of \"back\", \"none\", \"front\", got \"both\"" },
+    { "bad unlit", "{" BAD_CAMERA ", \"materials\": {\"m\": {\"unlit\": \"yes\"}}, \"objects\": []}",
+      { { 0 } }, "bad.json", ": materials.m.unlit: expected true or false, got string" },
+    { "material not an object", "{" BAD_CAMERA ", \"materials\": {\"m\": 3}, \"objects\": []}",
+      { { 0 } }, "bad.json",
+      ": materials.m: expected an object {\"colour\", \"texture\", \"cull\", \"unlit\"}, got number" },
+    { "missing objects", "{" BAD_CAMERA ", " BAD_MATERIALS "}", { { 0 } }, "bad.json",
+      ": objects: missing (expected an array of objects)" },
+    { "unknown material",
+      BAD_SCENE_WITH("{\"type\": \"box\", \"material\": \"lava\", \"size\": [1, 1, 1]}"),
+      { { 0 } }, "bad.json", ": objects[0].material: no material named \"lava\" in materials" },
+    { "unknown object type", BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"cone\"")), { { 0 } },
+      "bad.json",
+      ": objects[0].type: expected one of \"plane\", \"box\", \"sphere\", \"heightfield\", "
+      "\"mesh\", got \"cone\"" },
+    { "zero segments",
+      BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"plane\", \"size\": [1, 1], \"segments\": [0, 1]")),
+      { { 0 } }, "bad.json", ": objects[0].segments[0]: expected an integer 1..256, got 0" },
+    { "fractional segments",
+      BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"sphere\", \"radius\": 1, \"segments\": 2.5")),
+      { { 0 } }, "bad.json", ": objects[0].segments: expected an integer 3..256, got 2.5" },
+    { "zero scale",
+      BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"box\", \"size\": [1, 1, 1], \"scale\": 0")),
+      { { 0 } }, "bad.json", ": objects[0].scale: expected a number > 0 and < 32768, got 0" },
+    { "sphere over the vertex limit",
+      BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"sphere\", \"radius\": 1, \"segments\": 256, "
+                                "\"rings\": 256")),
+      { { 0 } }, "bad.json", ": objects[0]: needs 66049 vertices; a tarn mesh holds at most 65535" },
+    /* textures and heightfields */
+    { "texture not a power of two", BAD_TEXTURE_SCENE, { { "tex.png", BAD_PNG, NULL, 300, 200 } },
+      "tex.png", ": texture is 300x200; expected power-of-two sides up to 1024" },
+    { "texture not a PNG", BAD_TEXTURE_SCENE, { { "tex.png", BAD_TEXT, "GIF89a...", 0, 0 } },
+      "tex.png", ": not a PNG file" },
+    { "texture truncated", BAD_TEXTURE_SCENE,
+      { { "tex.png", BAD_PNG_TRUNCATED, NULL, 64, 64 } }, "tex.png",
+      ": bad PNG: file is truncated" },
+    { "texture missing", BAD_TEXTURE_SCENE, { { 0 } }, "tex.png",
+      ": cannot open: No such file or directory" },
+    { "heightfield too large", BAD_HEIGHTFIELD_SCENE, { { "pit.png", BAD_PNG, NULL, 300, 300 } },
+      "pit.png", ": heightfield image is 300x300; expected sides 2..256" },
+    { "heightfield over the triangle limit", BAD_HEIGHTFIELD_SCENE,
+      { { "pit.png", BAD_PNG, NULL, 200, 200 } }, "pit.png",
+      ": needs 79202 triangles; a tarn mesh holds at most 65535" },
+    /* OBJ meshes */
+    { "OBJ index out of range", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "s off\nf 1 2 7\n"), "leaf.obj",
+      ":6: face index 7 is out of range (1..4)" },
+    { "OBJ negative index out of range", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "f -1 -2 -5\n"),
+      "leaf.obj", ":5: face index -5 is out of range (-4..-1)" },
+    { "OBJ texture index with no texture coordinates", BAD_MESH_SCENE,
+      BAD_OBJ(BAD_QUAD "f 1/1 2/2 3/3\n"), "leaf.obj",
+      ":5: face texture index 1 is out of range (no texture coordinates before this line)" },
+    { "OBJ unknown statement", BAD_MESH_SCENE, BAD_OBJ("# a leaf\nxyz 1 2\n"), "leaf.obj",
+      ":2: unknown statement 'xyz' (expected v, vt, vn, f, o, g, s, usemtl or mtllib)" },
+    { "OBJ control character", BAD_MESH_SCENE, BAD_OBJ("x\033y 1\n"), "leaf.obj",
+      ":1: unknown statement 'x?y' (expected v, vt, vn, f, o, g, s, usemtl or mtllib)" },
+    { "OBJ bad number", BAD_MESH_SCENE, BAD_OBJ("v 0 abc 0\n"), "leaf.obj",
+      ":1: 'abc' is not a number" },
+    { "OBJ coordinate too large", BAD_MESH_SCENE, BAD_OBJ("v 0 1e6 0\n"), "leaf.obj",
+      ":1: 1e6 is out of range (|v| < 32768)" },
+    { "OBJ too few coordinates", BAD_MESH_SCENE, BAD_OBJ("v 0 1\n"), "leaf.obj",
+      ":1: 'v' needs 3 to 4 numbers" },
+    { "OBJ two-corner face", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "f 1 2\n"), "leaf.obj",
+      ":5: a face needs at least 3 corners" },
+    { "OBJ bad corner", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "f 1 2 3/1/1/1\n"), "leaf.obj",
+      ":5: bad face corner; expected v, v/vt, v//vn or v/vt/vn" },
+    { "OBJ without faces", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD), "leaf.obj",
+      ": no faces; a mesh needs at least one" },
+};
+
+#define BAD_SCENE_CASE_COUNT (sizeof BAD_SCENE_CASES / sizeof BAD_SCENE_CASES[0])
+
+static inline int bad_write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) return -1;
+    size_t length = strlen(text);
+    int ok = fwrite(text, 1, length, f) == length;
+    return (fclose(f) == 0 && ok) ? 0 : -1;
+}
+
+static inline int bad_write_file(const char *dir, const bad_file *file)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, file->name);
+    if (file->kind == BAD_TEXT) return bad_write_text(path, file->text);
+    size_t bytes = (size_t)file->width * file->height * 3;
+    uint8_t *rgb = malloc(bytes);
+    if (!rgb) return -1;
+    for (size_t k = 0; k < bytes; k++) rgb[k] = (uint8_t)(k * 7 % 251); /* noise, so it compresses badly */
+    tarn_error err;
+    int result = tarn_png_write_rgb(path, rgb, file->width, file->height, &err);
+    free(rgb);
+    if (result == 0 && file->kind == BAD_PNG_TRUNCATED) {
+        FILE *f = fopen(path, "rb");
+        long size = -1;
+        if (f && fseek(f, 0, SEEK_END) == 0) size = ftell(f);
+        if (f) fclose(f);
+        result = size > 0 ? truncate(path, size / 2) : -1;
+    }
+    return result;
+}
+
+/* Writes the case's files into `dir`; scene_path receives bad.json's path. */
+static inline int bad_case_write(const bad_scene_case *c, const char *dir, char *scene_path,
+                                 size_t size)
+{
+    snprintf(scene_path, size, "%s/bad.json", dir);
+    if (c->scene && bad_write_text(scene_path, c->scene)) return -1;
+    for (size_t k = 0; k < sizeof c->assets / sizeof c->assets[0]; k++) {
+        if (c->assets[k].name && bad_write_file(dir, &c->assets[k])) return -1;
+    }
+    return 0;
+}
+
+/* Removes the files in `dir` (the case's, and anything a failing run left), then it. */
+static inline void bad_case_remove_dir(const char *dir)
+{
+    DIR *d = opendir(dir);
+    for (struct dirent *e; d && (e = readdir(d)) != NULL;) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        unlink(path);
+    }
+    if (d) closedir(d);
+    rmdir(dir);
+}
+
+#endif

@@ -1,0 +1,143 @@
+/* test_cli_bad_input.c: `tarn render BAD -o OUT.png` on every bad scene input.
+ *
+ * For each case of bad_scene_cases.h, run the real binary ($TARN_BIN, set by
+ * `make check`) and require: exit status 2, stderr exactly one line starting
+ * "tarn: " naming the file and its line or field, and no output file (nor any
+ * leftover temporary file) in the case's directory. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <errno.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "bad_scene_cases.h"
+
+extern char **environ;
+
+typedef struct {
+    int status;         /* exit status, or -1 if the process did not exit normally */
+    char stderr_text[4096];
+    size_t stderr_length;
+} run_result;
+
+/* Runs `argv` with stdout discarded and stderr captured. */
+static void run(char *const argv[], run_result *out)
+{
+    int pipe_fds[2];
+    assert_int_equal(pipe(pipe_fds), 0);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], STDERR_FILENO);
+    posix_spawn_file_actions_addclose(&actions, pipe_fds[0]);
+    posix_spawn_file_actions_addclose(&actions, pipe_fds[1]);
+    pid_t pid;
+    int spawned = posix_spawn(&pid, argv[0], &actions, NULL, argv, environ);
+    posix_spawn_file_actions_destroy(&actions);
+    close(pipe_fds[1]);
+    if (spawned != 0) fail_msg("cannot run %s: %s", argv[0], strerror(spawned));
+
+    out->stderr_length = 0;
+    for (;;) {
+        size_t room = sizeof out->stderr_text - 1 - out->stderr_length;
+        ssize_t got = read(pipe_fds[0], out->stderr_text + out->stderr_length, room);
+        if (got < 0 && errno == EINTR) continue;
+        if (got <= 0) break;
+        out->stderr_length += (size_t)got;
+        if (out->stderr_length == sizeof out->stderr_text - 1) break;
+    }
+    out->stderr_text[out->stderr_length] = '\0';
+    close(pipe_fds[0]);
+
+    int wait_status;
+    while (waitpid(pid, &wait_status, 0) < 0) assert_int_equal(errno, EINTR);
+    out->status = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
+}
+
+/* Files in `dir` besides those the case wrote: an output or a temporary file. */
+static int stray_files(const char *dir, const bad_scene_case *c, char *name, size_t size)
+{
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    int found = 0;
+    for (struct dirent *e; !found && (e = readdir(d)) != NULL;) {
+        int expected = strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0 ||
+                       (c->scene && strcmp(e->d_name, "bad.json") == 0);
+        for (size_t k = 0; k < sizeof c->assets / sizeof c->assets[0]; k++) {
+            if (c->assets[k].name && strcmp(e->d_name, c->assets[k].name) == 0) expected = 1;
+        }
+        if (!expected) {
+            snprintf(name, size, "%s", e->d_name);
+            found = 1;
+        }
+    }
+    closedir(d);
+    return found;
+}
+
+static int check_case(const char *tarn, const bad_scene_case *c)
+{
+    char dir[] = "/tmp/tarn_cli_test_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    char scene_path[1100], out_path[1100], expected[1600], stray[256];
+    assert_int_equal(bad_case_write(c, dir, scene_path, sizeof scene_path), 0);
+    snprintf(out_path, sizeof out_path, "%s/out.png", dir);
+    snprintf(expected, sizeof expected, "tarn: %s/%s%s\n", dir, c->file, c->expect);
+
+    char *const argv[] = { (char *)tarn, "render", scene_path, "-o", out_path, NULL };
+    run_result r;
+    run(argv, &r);
+
+    char problem[300] = "";
+    char *first_newline = strchr(r.stderr_text, '\n');
+    if (r.status != TARN_EXIT_BAD_INPUT) {
+        snprintf(problem, sizeof problem, "exit status %d, expected 2", r.status);
+    } else if (strncmp(r.stderr_text, "tarn: ", 6) != 0) {
+        snprintf(problem, sizeof problem, "stderr does not start with \"tarn: \"");
+    } else if (!first_newline || first_newline[1] != '\0') {
+        snprintf(problem, sizeof problem, "stderr is not exactly one line");
+    } else if (strcmp(r.stderr_text, expected) != 0) {
+        snprintf(problem, sizeof problem, "stderr is not the expected message");
+    } else if (stray_files(dir, c, stray, sizeof stray)) {
+        snprintf(problem, sizeof problem, "%s was left behind", stray);
+    }
+    if (problem[0]) {
+        print_error("case \"%s\": %s\n  stderr   %s  expected %s", c->what, problem,
+                    r.stderr_length ? r.stderr_text : "(empty)\n", expected);
+    }
+    bad_case_remove_dir(dir);
+    return problem[0] != '\0';
+}
+
+static void test_cli_bad_inputs(void **state)
+{
+    (void)state;
+    const char *tarn = getenv("TARN_BIN");
+    if (!tarn || access(tarn, X_OK) != 0) {
+        print_message("TARN_BIN is not set to an executable tarn binary; skipping\n");
+        skip();
+    }
+    int failures = 0; /* every case runs, so one run shows every wrong message */
+    for (size_t k = 0; k < BAD_SCENE_CASE_COUNT; k++) {
+        failures += check_case(tarn, &BAD_SCENE_CASES[k]);
+    }
+    assert_int_equal(failures, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_cli_bad_inputs),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,770 @@
+/* test_scene_load.c: the host's scene loading: primitives, OBJ meshes, PNG reading
+ * and writing, the demo scene, and the error for every kind of bad input. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <png.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "bad_scene_cases.h"
+#include "mesh_gen.h"
+#include "obj_load.h"
+#include "png_io.h"
+#include "scene_load.h"
+
+/* ---- helpers ------------------------------------------------------------------ */
+
+typedef struct {
+    double x, y, z;
+} dvec;
+
+static dvec dvec_of(tarn_vec3 v)
+{
+    dvec d = { v.x / 65536.0, v.y / 65536.0, v.z / 65536.0 };
+    return d;
+}
+
+static dvec sub(dvec a, dvec b)
+{
+    dvec d = { a.x - b.x, a.y - b.y, a.z - b.z };
+    return d;
+}
+
+static dvec cross3(dvec a, dvec b)
+{
+    dvec d = { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x };
+    return d;
+}
+
+static double dot3(dvec a, dvec b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+static dvec face_normal(const tarn_mesh *m, uint32_t t)
+{
+    const uint16_t *i = m->indices + 3 * t;
+    dvec a = dvec_of(m->positions[i[0]]), b = dvec_of(m->positions[i[1]]),
+         c = dvec_of(m->positions[i[2]]);
+    return cross3(sub(b, a), sub(c, a));
+}
+
+static dvec face_centroid(const tarn_mesh *m, uint32_t t)
+{
+    const uint16_t *i = m->indices + 3 * t;
+    dvec a = dvec_of(m->positions[i[0]]), b = dvec_of(m->positions[i[1]]),
+         c = dvec_of(m->positions[i[2]]);
+    dvec d = { (a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3 };
+    return d;
+}
+
+/* Indices in range, unit normals, no zero-area triangles. */
+static void check_mesh_consistent(const tarn_mesh *m)
+{
+    assert_non_null(m->positions);
+    assert_non_null(m->normals);
+    assert_non_null(m->indices);
+    assert_true(m->vertex_count > 0);
+    assert_true(m->triangle_count > 0);
+    for (uint32_t k = 0; k < 3u * m->triangle_count; k++) {
+        assert_true(m->indices[k] < m->vertex_count);
+    }
+    for (uint32_t v = 0; v < m->vertex_count; v++) {
+        dvec n = dvec_of(m->normals[v]);
+        assert_true(fabs(sqrt(dot3(n, n)) - 1.0) < 1e-3);
+    }
+    for (uint32_t t = 0; t < m->triangle_count; t++) {
+        dvec n = face_normal(m, t);
+        assert_true(dot3(n, n) > 0.0);
+    }
+}
+
+/* Each triangle faces away from `centre`, and its vertices' normals agree with it. */
+static void check_faces_outward(const tarn_mesh *m, dvec centre)
+{
+    for (uint32_t t = 0; t < m->triangle_count; t++) {
+        dvec n = face_normal(m, t);
+        assert_true(dot3(n, sub(face_centroid(m, t), centre)) > 0.0);
+        for (int k = 0; k < 3; k++) {
+            assert_true(dot3(n, dvec_of(m->normals[m->indices[3 * t + k]])) > 0.0);
+        }
+    }
+}
+
+static int same_position(const tarn_mesh *m, uint16_t a, uint16_t b)
+{
+    return memcmp(&m->positions[a], &m->positions[b], sizeof(tarn_vec3)) == 0;
+}
+
+/* Closed and consistently wound: every edge a->b (by position) is matched by
+ * exactly one edge b->a in another triangle. */
+static void check_closed(const tarn_mesh *m)
+{
+    for (uint32_t t = 0; t < m->triangle_count; t++) {
+        for (int e = 0; e < 3; e++) {
+            uint16_t a = m->indices[3 * t + e], b = m->indices[3 * t + (e + 1) % 3];
+            int matches = 0;
+            for (uint32_t u = 0; u < m->triangle_count; u++) {
+                for (int f = 0; f < 3; f++) {
+                    uint16_t c = m->indices[3 * u + f], d = m->indices[3 * u + (f + 1) % 3];
+                    if (same_position(m, a, d) && same_position(m, b, c)) matches++;
+                }
+            }
+            assert_int_equal(matches, 1);
+        }
+    }
+}
+
+static void check_faces_up(const tarn_mesh *m)
+{
+    for (uint32_t t = 0; t < m->triangle_count; t++) assert_true(face_normal(m, t).y > 0.0);
+    for (uint32_t v = 0; v < m->vertex_count; v++) assert_true(m->normals[v].y > 0);
+}
+
+static char *make_temp_dir(void)
+{
+    char *dir = strdup("/tmp/tarn_scene_test_XXXXXX");
+    assert_non_null(dir);
+    assert_non_null(mkdtemp(dir));
+    return dir;
+}
+
+static void remove_temp_dir(char *dir)
+{
+    bad_case_remove_dir(dir);
+    free(dir);
+}
+
+/* Writes `text` to dir/name and returns the path (static buffer). */
+static const char *write_temp(const char *dir, const char *name, const char *text)
+{
+    static char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    assert_int_equal(bad_write_text(path, text), 0);
+    return path;
+}
+
+static size_t files_in(const char *dir)
+{
+    size_t n = 0;
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    for (struct dirent *e; (e = readdir(d)) != NULL;) {
+        if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0) n++;
+    }
+    closedir(d);
+    return n;
+}
+
+/* ---- Q16.16 conversion -------------------------------------------------------- */
+
+static void test_q16_from_double(void **state)
+{
+    (void)state;
+    assert_int_equal(tarn_q16_from_double(1.0), 65536);
+    assert_int_equal(tarn_q16_from_double(-2.5), -163840);
+    assert_int_equal(tarn_q16_from_double(0.1), 6554);  /* 6553.6 rounds up */
+    assert_int_equal(tarn_q16_from_double(0.5 / 65536), 1);   /* ties away from zero */
+    assert_int_equal(tarn_q16_from_double(-0.5 / 65536), -1);
+    assert_int_equal(tarn_q16_from_double(40000.0), INT32_MAX); /* saturates */
+    assert_int_equal(tarn_q16_from_double(-40000.0), INT32_MIN);
+    assert_int_equal(tarn_q16_from_double(NAN), INT32_MIN);
+}
+
+/* ---- primitives --------------------------------------------------------------- */
+
+static void test_plane(void **state)
+{
+    (void)state;
+    tarn_error err;
+    tarn_mesh_buffer b;
+    assert_int_equal(tarn_mesh_plane(&b, 4, 2, 4, 2, 3, 0.5, "plane", &err), 0);
+    const tarn_mesh *m = &b.mesh;
+    assert_int_equal(m->vertex_count, 5 * 3);
+    assert_int_equal(m->triangle_count, 4 * 2 * 2);
+    check_mesh_consistent(m);
+    check_faces_up(m);
+    assert_non_null(m->uvs);
+    /* corners: (-2, 0, -1) with uv (0, 0) first, (2, 0, 1) with uv (3, 0.5) last */
+    assert_int_equal(m->positions[0].x, -2 * 65536);
+    assert_int_equal(m->positions[0].z, -65536);
+    assert_int_equal(m->positions[14].x, 2 * 65536);
+    assert_int_equal(m->positions[14].z, 65536);
+    assert_int_equal(m->uvs[14].u, 3 * 65536);
+    assert_int_equal(m->uvs[14].v, 32768);
+    for (uint32_t v = 0; v < m->vertex_count; v++) {
+        assert_int_equal(m->positions[v].y, 0);
+        assert_int_equal(m->normals[v].y, 65536);
+    }
+    tarn_mesh_buffer_free(&b);
+}
+
+static void test_box(void **state)
+{
+    (void)state;
+    tarn_error err;
+    tarn_mesh_buffer b;
+    assert_int_equal(tarn_mesh_box(&b, 2, 4, 6, "box", &err), 0);
+    const tarn_mesh *m = &b.mesh;
+    assert_int_equal(m->vertex_count, 24);
+    assert_int_equal(m->triangle_count, 12);
+    check_mesh_consistent(m);
+    check_faces_outward(m, (dvec){ 0, 0, 0 });
+    check_closed(m);
+    for (uint32_t v = 0; v < m->vertex_count; v++) {
+        assert_int_equal(abs(m->positions[v].x), 65536);
+        assert_int_equal(abs(m->positions[v].y), 2 * 65536);
+        assert_int_equal(abs(m->positions[v].z), 3 * 65536);
+        /* flat faces: normals along one axis */
+        tarn_vec3 n = m->normals[v];
+        assert_int_equal(abs(n.x) + abs(n.y) + abs(n.z), 65536);
+        assert_true(m->uvs[v].u == 0 || m->uvs[v].u == 65536);
+    }
+    tarn_mesh_buffer_free(&b);
+}
+
+static void test_sphere(void **state)
+{
+    (void)state;
+    tarn_error err;
+    tarn_mesh_buffer b;
+    assert_int_equal(tarn_mesh_sphere(&b, 1.5, 12, 6, "sphere", &err), 0);
+    const tarn_mesh *m = &b.mesh;
+    assert_int_equal(m->vertex_count, 7 * 13);
+    assert_int_equal(m->triangle_count, 2 * 12 * 5);
+    check_mesh_consistent(m);
+    check_faces_outward(m, (dvec){ 0, 0, 0 });
+    check_closed(m);
+    for (uint32_t v = 0; v < m->vertex_count; v++) {
+        dvec p = dvec_of(m->positions[v]);
+        assert_true(fabs(sqrt(dot3(p, p)) - 1.5) < 1e-4);
+        /* smooth: the normal is the direction from the centre */
+        dvec n = dvec_of(m->normals[v]);
+        assert_true(dot3(n, p) / 1.5 > 0.9999);
+    }
+    tarn_mesh_buffer_free(&b);
+
+    /* the smallest closed sphere */
+    assert_int_equal(tarn_mesh_sphere(&b, 1, 3, 2, "sphere", &err), 0);
+    check_mesh_consistent(&b.mesh);
+    check_faces_outward(&b.mesh, (dvec){ 0, 0, 0 });
+    check_closed(&b.mesh);
+    tarn_mesh_buffer_free(&b);
+}
+
+static void test_heightfield(void **state)
+{
+    (void)state;
+    /* a 5x5 image with a peak in the middle */
+    uint8_t gray[25] = { 0 };
+    gray[2 * 5 + 2] = 255;
+    gray[1 * 5 + 2] = gray[3 * 5 + 2] = gray[2 * 5 + 1] = gray[2 * 5 + 3] = 128;
+    tarn_image image = { 5, 5, 1, gray };
+    tarn_error err;
+    tarn_mesh_buffer b;
+    assert_int_equal(tarn_mesh_heightfield(&b, &image, 8, 4, 2, 1, 1, "hf", &err), 0);
+    const tarn_mesh *m = &b.mesh;
+    assert_int_equal(m->vertex_count, 25);
+    assert_int_equal(m->triangle_count, 32);
+    check_mesh_consistent(m);
+    check_faces_up(m);
+    /* the peak: centre of the field, height 2, normal straight up by symmetry */
+    const uint32_t peak = 2 * 5 + 2;
+    assert_int_equal(m->positions[peak].x, 0);
+    assert_int_equal(m->positions[peak].z, 0);
+    assert_int_equal(m->positions[peak].y, 2 * 65536);
+    assert_int_equal(m->normals[peak].x, 0);
+    assert_int_equal(m->normals[peak].z, 0);
+    /* left of the peak the ground rises toward +x, so the normal leans to -x;
+     * the image's top row lies toward -z, and a slope there leans to -z */
+    assert_true(m->normals[2 * 5 + 1].x < 0);
+    assert_true(m->normals[1 * 5 + 2].z < 0);
+    assert_int_equal(m->positions[0].x, -4 * 65536);
+    assert_int_equal(m->positions[0].z, -2 * 65536);
+    assert_int_equal(m->uvs[24].u, 65536);
+    assert_int_equal(m->uvs[24].v, 65536);
+    tarn_mesh_buffer_free(&b);
+}
+
+static void test_primitive_limits(void **state)
+{
+    (void)state;
+    tarn_error err;
+    tarn_mesh_buffer b;
+    assert_int_equal(tarn_mesh_plane(&b, 1, 1, 256, 256, 1, 1, "big plane", &err), -1);
+    assert_string_equal(err.message, "big plane: needs 66049 vertices; a tarn mesh holds at most 65535");
+    assert_null(b.positions);
+    assert_int_equal(tarn_mesh_sphere(&b, 1, 256, 200, "big sphere", &err), -1);
+    assert_string_equal(err.message,
+                        "big sphere: needs 101888 triangles; a tarn mesh holds at most 65535");
+    /* the largest plane that fits */
+    assert_int_equal(tarn_mesh_plane(&b, 1, 1, 180, 180, 1, 1, "plane", &err), 0);
+    assert_int_equal(b.mesh.triangle_count, 64800);
+    tarn_mesh_buffer_free(&b);
+}
+
+/* ---- OBJ ------------------------------------------------------------------------ */
+
+static void load_obj_text(const char *text, tarn_mesh_buffer *out)
+{
+    char *dir = make_temp_dir();
+    tarn_error err = { "" };
+    int result = tarn_obj_load(write_temp(dir, "t.obj", text), out, &err);
+    remove_temp_dir(dir);
+    if (result) fail_msg("%s", err.message);
+}
+
+static void test_obj_polygons(void **state)
+{
+    (void)state;
+    /* a quad and a convex pentagon in the XY plane, facing +z; comments, blank
+     * lines and the ignored statements on the way */
+    tarn_mesh_buffer b;
+    load_obj_text("# two polygons\nmtllib x.mtl\no thing\ng group\n\nv 0 0 0\nv 1 0 0\n"
+                  "v 1 1 0\nv 0 1 0\nusemtl green\ns 1\nf 1 2 3 4\n"
+                  "v 3 0 0\nv 4 0 0\nv 4.5 1 0\nv 3.5 2 0\nv 2.5 1 0\nf 5 6 7 8 9\n",
+                  &b);
+    const tarn_mesh *m = &b.mesh;
+    assert_int_equal(m->vertex_count, 9);
+    assert_int_equal(m->triangle_count, 2 + 3);
+    check_mesh_consistent(m);
+    /* fans from the first corner, winding kept */
+    static const uint16_t expected[] = { 0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7, 4, 7, 8 };
+    assert_memory_equal(m->indices, expected, sizeof expected);
+    for (uint32_t t = 0; t < m->triangle_count; t++) assert_true(face_normal(m, t).z > 0);
+    /* no normals in the file: smooth ones, here all +z */
+    for (uint32_t v = 0; v < m->vertex_count; v++) assert_int_equal(m->normals[v].z, 65536);
+    assert_null(m->uvs); /* no vt anywhere */
+    tarn_mesh_buffer_free(&b);
+}
+
+static void test_obj_negative_indices(void **state)
+{
+    (void)state;
+    tarn_mesh_buffer absolute, relative;
+    load_obj_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n", &absolute);
+    load_obj_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nf -3 -2 -1\nv 0 1 0\nf -4 -2 -1\n", &relative);
+    assert_int_equal(relative.mesh.vertex_count, absolute.mesh.vertex_count);
+    assert_int_equal(relative.mesh.triangle_count, absolute.mesh.triangle_count);
+    assert_memory_equal(relative.indices, absolute.indices, 6 * sizeof(uint16_t));
+    assert_memory_equal(relative.positions, absolute.positions, 4 * sizeof(tarn_vec3));
+    tarn_mesh_buffer_free(&absolute);
+    tarn_mesh_buffer_free(&relative);
+}
+
+static void test_obj_missing_normals(void **state)
+{
+    (void)state;
+    /* a closed square pyramid without normals: smooth normals point outward */
+    tarn_mesh_buffer b;
+    load_obj_text("v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nv 0 2 0\n"
+                  "f 1 2 3 4\nf 4 3 5\nf 3 2 5\nf 2 1 5\nf 1 4 5\n",
+                  &b);
+    const tarn_mesh *m = &b.mesh;
+    assert_int_equal(m->vertex_count, 5);
+    assert_int_equal(m->triangle_count, 6);
+    check_mesh_consistent(m);
+    dvec centre = { 0, 0.5, 0 };
+    check_closed(m);
+    /* every face is wound to face out, so each smooth normal leans away from the centre */
+    for (uint32_t v = 0; v < m->vertex_count; v++) {
+        assert_true(dot3(dvec_of(m->normals[v]), sub(dvec_of(m->positions[v]), centre)) > 0);
+    }
+    assert_int_equal(m->normals[4].x, 0); /* the apex: straight up by symmetry */
+    assert_int_equal(m->normals[4].z, 0);
+    assert_int_equal(m->normals[4].y, 65536);
+    tarn_mesh_buffer_free(&b);
+}
+
+static void test_obj_texcoords_and_normals(void **state)
+{
+    (void)state;
+    /* v/vt/vn, v//vn and v/vt corners; a corner repeated with the same triple is
+     * one vertex, with a different normal it is another */
+    tarn_mesh_buffer b;
+    load_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.25 0.75\nvt 1 1 0\nvn 0 0 2\nvn 0 1 0\n"
+                  "f 1/1/1 2/2/1 3/1/1\nf 1/1/1 3/1/1 2//2\nf 3/2 1/1 2/2\n",
+                  &b);
+    const tarn_mesh *m = &b.mesh;
+    assert_int_equal(m->triangle_count, 3);
+    assert_int_equal(m->vertex_count, 3 + 1 + 3);
+    check_mesh_consistent(m);
+    assert_non_null(m->uvs);
+    /* vertex 0: uv (0.25, 1 - 0.75), normal (0, 0, 2) normalised */
+    assert_int_equal(m->uvs[0].u, 16384);
+    assert_int_equal(m->uvs[0].v, 16384);
+    assert_int_equal(m->normals[0].z, 65536);
+    /* 2//2: no texture coordinate -> (0, 0); normal +y as given */
+    assert_int_equal(m->uvs[3].u, 0);
+    assert_int_equal(m->uvs[3].v, 0);
+    assert_int_equal(m->normals[3].y, 65536);
+    assert_int_equal(m->uvs[1].v, 0); /* vt 1 1 -> v = 0 */
+    tarn_mesh_buffer_free(&b);
+}
+
+static void test_obj_crlf_and_w(void **state)
+{
+    (void)state;
+    tarn_mesh_buffer b;
+    load_obj_text("v 0 0 0 1\r\nv 1 0 0 1\r\nv 0 1 0 1\r\nf 1 2 3\r\n", &b);
+    assert_int_equal(b.mesh.triangle_count, 1);
+    assert_int_equal(b.mesh.positions[1].x, 65536);
+    tarn_mesh_buffer_free(&b);
+}
+
+static void test_obj_triangle_limit(void **state)
+{
+    (void)state;
+    /* 65536 triangles over three vertices: the face that crosses the limit is named */
+    size_t size = 64 + 65536 * 8;
+    char *text = malloc(size);
+    assert_non_null(text);
+    size_t used = (size_t)snprintf(text, size, "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    for (int k = 0; k < 65536; k++) used += (size_t)snprintf(text + used, size - used, "f 1 2 3\n");
+    char *dir = make_temp_dir();
+    tarn_error err;
+    tarn_mesh_buffer b;
+    const char *path = write_temp(dir, "t.obj", text);
+    char expected[1200];
+    snprintf(expected, sizeof expected,
+             "%s:65539: more than 65535 triangles; a tarn mesh holds at most 65535", path);
+    assert_int_equal(tarn_obj_load(path, &b, &err), -1);
+    assert_string_equal(err.message, expected);
+    remove_temp_dir(dir);
+    free(text);
+}
+
+/* ---- PNG ------------------------------------------------------------------------ */
+
+/* Writes a PNG of any colour type and depth through libpng directly (test data). */
+static void write_png_raw(const char *path, uint32_t width, uint32_t height, int bit_depth,
+                          int colour_type, int interlace, const png_color *palette,
+                          int palette_size, const uint8_t *rows, size_t stride)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    png_infop info = png_create_info_struct(png);
+    png_init_io(png, f);
+    png_set_IHDR(png, info, width, height, bit_depth, colour_type, interlace,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (palette) png_set_PLTE(png, info, palette, palette_size);
+    png_write_info(png, info);
+    int passes = png_set_interlace_handling(png);
+    for (int pass = 0; pass < passes; pass++) {
+        for (uint32_t y = 0; y < height; y++) png_write_row(png, (png_bytep)(rows + y * stride));
+    }
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    fclose(f);
+}
+
+static void test_png_round_trip(void **state)
+{
+    (void)state;
+    char *dir = make_temp_dir();
+    char path[1024];
+    snprintf(path, sizeof path, "%s/out.png", dir);
+    uint8_t rgb[4 * 2 * 3];
+    for (size_t k = 0; k < sizeof rgb; k++) rgb[k] = (uint8_t)(k * 11);
+    tarn_error err;
+    assert_int_equal(tarn_png_write_rgb(path, rgb, 4, 2, &err), 0);
+    assert_int_equal(files_in(dir), 1); /* the temporary file was renamed, not left */
+    struct stat info;
+    assert_int_equal(stat(path, &info), 0);
+    assert_true(info.st_mode & S_IRUSR);
+
+    tarn_image image;
+    assert_int_equal(tarn_png_read_texture(path, &image, &err), 0);
+    assert_int_equal(image.width, 4);
+    assert_int_equal(image.height, 2);
+    assert_int_equal(image.channels, 3);
+    assert_memory_equal(image.pixels, rgb, sizeof rgb);
+    tarn_image_free(&image);
+
+    /* gray pixels come back unchanged as a heightfield */
+    for (size_t k = 0; k < 8; k++) rgb[3 * k] = rgb[3 * k + 1] = rgb[3 * k + 2] = (uint8_t)(k * 30);
+    assert_int_equal(tarn_png_write_rgb(path, rgb, 4, 2, &err), 0); /* replaces the file */
+    assert_int_equal(tarn_png_read_heightfield(path, &image, &err), 0);
+    assert_int_equal(image.channels, 1);
+    for (size_t k = 0; k < 8; k++) assert_int_equal(image.pixels[k], k * 30);
+    tarn_image_free(&image);
+    remove_temp_dir(dir);
+}
+
+static void test_png_formats(void **state)
+{
+    (void)state;
+    char *dir = make_temp_dir();
+    char path[1024];
+    snprintf(path, sizeof path, "%s/in.png", dir);
+    tarn_error err;
+    tarn_image image;
+
+    /* palette, 2 bits per pixel */
+    static const png_color palette[3] = { { 255, 0, 0 }, { 0, 255, 0 }, { 0, 0, 255 } };
+    const uint8_t indices[2] = { 0x18, 0x90 }; /* rows: 0 1 2 0 / 2 1 0 0 */
+    write_png_raw(path, 4, 2, 2, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE, palette, 3, indices, 1);
+    assert_int_equal(tarn_png_read_texture(path, &image, &err), 0);
+    static const uint8_t expected_palette[24] = { 255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 0, 0,
+                                                  0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 0, 0 };
+    assert_memory_equal(image.pixels, expected_palette, 24);
+    tarn_image_free(&image);
+
+    /* 1-bit gray */
+    const uint8_t bits[2] = { 0xA0, 0x50 }; /* rows: 1 0 1 0 / 0 1 0 1 */
+    write_png_raw(path, 4, 2, 1, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, NULL, 0, bits, 1);
+    assert_int_equal(tarn_png_read_heightfield(path, &image, &err), 0);
+    static const uint8_t expected_bits[8] = { 255, 0, 255, 0, 0, 255, 0, 255 };
+    assert_memory_equal(image.pixels, expected_bits, 8);
+    tarn_image_free(&image);
+
+    /* 16-bit gray + alpha: alpha dropped, high byte kept, expanded to RGB */
+    const uint8_t gray_alpha[2 * 4] = { 0x12, 0x00, 0x00, 0x00, 0xAB, 0xFF, 0xFF, 0xFF };
+    write_png_raw(path, 2, 1, 16, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_INTERLACE_NONE, NULL, 0,
+                  gray_alpha, 8);
+    assert_int_equal(tarn_png_read_texture(path, &image, &err), 0);
+    static const uint8_t expected_gray[6] = { 0x12, 0x12, 0x12, 0xAB, 0xAB, 0xAB };
+    assert_memory_equal(image.pixels, expected_gray, 6);
+    tarn_image_free(&image);
+
+    /* RGBA: alpha stripped */
+    const uint8_t rgba[8] = { 1, 2, 3, 0, 4, 5, 6, 128 };
+    write_png_raw(path, 2, 1, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, NULL, 0, rgba, 8);
+    assert_int_equal(tarn_png_read_texture(path, &image, &err), 0);
+    static const uint8_t expected_rgb[6] = { 1, 2, 3, 4, 5, 6 };
+    assert_memory_equal(image.pixels, expected_rgb, 6);
+    tarn_image_free(&image);
+
+    /* Adam7 interlacing */
+    uint8_t pattern[8 * 8 * 3];
+    for (size_t k = 0; k < sizeof pattern; k++) pattern[k] = (uint8_t)(k * 37 + 5);
+    write_png_raw(path, 8, 8, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_ADAM7, NULL, 0, pattern, 24);
+    assert_int_equal(tarn_png_read_texture(path, &image, &err), 0);
+    assert_memory_equal(image.pixels, pattern, sizeof pattern);
+    tarn_image_free(&image);
+    remove_temp_dir(dir);
+}
+
+static void test_png_write_failure_leaves_nothing(void **state)
+{
+    (void)state;
+    char *dir = make_temp_dir();
+    char path[1024];
+    uint8_t rgb[3] = { 1, 2, 3 };
+    tarn_error err;
+    /* a missing directory: no temporary file can even be made */
+    snprintf(path, sizeof path, "%s/missing/out.png", dir);
+    assert_int_equal(tarn_png_write_rgb(path, rgb, 1, 1, &err), -1);
+    assert_non_null(strstr(err.message, path));
+    /* the target is a directory: the PNG is written, the rename fails, the
+     * temporary file goes */
+    snprintf(path, sizeof path, "%s/taken", dir);
+    assert_int_equal(mkdir(path, 0755), 0);
+    char inner[1100];
+    snprintf(inner, sizeof inner, "%s/x", path);
+    assert_int_equal(bad_write_text(inner, "x"), 0); /* non-empty: rename cannot replace it */
+    assert_int_equal(tarn_png_write_rgb(path, rgb, 1, 1, &err), -1);
+    assert_non_null(strstr(err.message, "cannot rename"));
+    assert_int_equal(files_in(dir), 1);
+    assert_int_equal(unlink(inner), 0);
+    assert_int_equal(rmdir(path), 0);
+    /* an empty image is refused before anything is created */
+    snprintf(path, sizeof path, "%s/empty.png", dir);
+    assert_int_equal(tarn_png_write_rgb(path, rgb, 0, 1, &err), -1);
+    assert_int_equal(files_in(dir), 0);
+    remove_temp_dir(dir);
+}
+
+/* ---- scenes --------------------------------------------------------------------- */
+
+static void test_pond(void **state)
+{
+    (void)state;
+    tarn_loaded_scene s;
+    tarn_error err = { "" };
+    if (tarn_scene_load("scenes/pond.json", &s, &err)) fail_msg("%s", err.message);
+    assert_string_equal(s.name, "pond");
+    assert_int_equal(s.width, 240);
+    assert_int_equal(s.height, 240);
+    assert_int_equal(s.scene.background_rgb, 0x87CEEB);
+    assert_int_equal(s.scene.camera.fov_y_degrees, 60 * 65536);
+    assert_int_equal(s.scene.camera.near, 6554);
+    assert_int_equal(s.scene.camera.far, 100 * 65536);
+    assert_int_equal(s.scene.light.colour_rgb, 0xFFFFF0);
+    assert_int_equal(s.scene.light.ambient_rgb, 0x404850);
+    dvec l = dvec_of(s.scene.light.direction);
+    assert_true(fabs(sqrt(dot3(l, l)) - 1) < 1e-4);
+    assert_true(l.y > 0);
+    /* the camera looks down into the pit at 30..40 degrees */
+    dvec view = sub(dvec_of(s.scene.camera.target), dvec_of(s.scene.camera.position));
+    double down = atan2(-view.y, sqrt(view.x * view.x + view.z * view.z)) * 180 / 3.14159265358979;
+    assert_true(down >= 30 && down <= 40);
+
+    assert_int_equal(s.material_count, 6);
+    assert_int_equal(s.texture_count, 1);
+    assert_int_equal(s.textures[0].width, 64);
+    assert_int_equal(s.textures[0].height, 64);
+    assert_ptr_equal(s.materials[0].texture, &s.textures[0]);
+    assert_string_equal(s.material_names[1], "plant");
+    assert_int_equal(s.materials[1].cull, TARN_CULL_NONE);
+
+    assert_int_equal(s.scene.object_count, 12);
+    assert_ptr_equal(s.scene.objects, s.objects);
+    unsigned triangles = 0, spheres = 0, plants = 0;
+    for (size_t k = 0; k < s.object_count; k++) {
+        const tarn_object *o = &s.objects[k];
+        check_mesh_consistent(o->mesh);
+        assert_true(o->scale > 0);
+        triangles += o->mesh->triangle_count;
+        if (o->material == &s.materials[1]) plants++;
+        if (o->material == &s.materials[3] || o->material == &s.materials[4]) {
+            spheres++;
+            check_faces_outward(o->mesh, (dvec){ 0, 0, 0 });
+            check_closed(o->mesh);
+        }
+    }
+    assert_int_equal(spheres, 2);
+    assert_true(plants >= 4);
+    /* the pit: 64x64 vertices; the water: one quad at the top of the list's end */
+    assert_int_equal(s.objects[0].mesh->vertex_count, 64 * 64);
+    assert_int_equal(s.objects[0].mesh->triangle_count, 63 * 63 * 2);
+    check_faces_up(s.objects[11].mesh);
+    assert_int_equal(s.objects[11].mesh->triangle_count, 2);
+    print_message("pond: %zu objects, %u triangles\n", s.object_count, triangles);
+    tarn_scene_free(&s);
+    assert_null(s.objects);
+}
+
+static void test_scene_defaults_and_rotation(void **state)
+{
+    (void)state;
+    char *dir = make_temp_dir();
+    const char *path = write_temp(
+        dir, "min.scene.json",
+        "{\"camera\": {\"position\": [0, 0, 5], \"target\": [0, 0, 0], \"fov\": 45.5},"
+        " \"materials\": {\"m\": {}},"
+        " \"objects\": [{\"type\": \"box\", \"material\": \"m\", \"size\": [1, 1, 1],"
+        "                \"rotation\": [90, 0, 0]},"
+        "               {\"type\": \"box\", \"material\": \"m\", \"size\": [1, 1, 1],"
+        "                \"rotation\": [90, 90, 0], \"scale\": 0.5, \"position\": [1, -2, 3.25]}]}");
+    tarn_loaded_scene s;
+    tarn_error err = { "" };
+    if (tarn_scene_load(path, &s, &err)) fail_msg("%s", err.message);
+    assert_string_equal(s.name, "min.scene");
+    assert_int_equal(s.width, 240);
+    assert_int_equal(s.height, 240);
+    assert_int_equal(s.scene.background_rgb, 0);
+    assert_int_equal(s.scene.camera.fov_y_degrees, 45 * 65536 + 32768);
+    assert_int_equal(s.scene.camera.near, 6554);
+    assert_int_equal(s.scene.camera.far, 100 * 65536);
+    assert_int_equal(s.scene.light.direction.y, 65536);
+    assert_int_equal(s.scene.light.colour_rgb, 0xFFFFFF);
+    assert_int_equal(s.materials[0].colour_rgb, 0xFFFFFF);
+    assert_int_equal(s.materials[0].cull, TARN_CULL_BACK);
+    assert_int_equal(s.materials[0].unlit, 0);
+    assert_null(s.materials[0].texture);
+    /* Rx(90): y -> z, z -> -y */
+    static const tarn_q16 rx90[3][3] = { { 65536, 0, 0 }, { 0, 0, -65536 }, { 0, 65536, 0 } };
+    assert_memory_equal(s.objects[0].rotation, rx90, sizeof rx90);
+    /* Ry(90) * Rx(90): X first, then Y. x -> -z; y -> z -> x; z -> -y */
+    static const tarn_q16 ryrx[3][3] = { { 0, 65536, 0 }, { 0, 0, -65536 }, { -65536, 0, 0 } };
+    assert_memory_equal(s.objects[1].rotation, ryrx, sizeof ryrx);
+    assert_int_equal(s.objects[1].scale, 32768);
+    assert_int_equal(s.objects[1].position.z, 3 * 65536 + 16384);
+    assert_int_equal(s.objects[0].scale, 65536);
+    tarn_scene_free(&s);
+    tarn_scene_free(&s); /* twice is harmless */
+    remove_temp_dir(dir);
+}
+
+static void test_asset_paths(void **state)
+{
+    (void)state;
+    /* relative to the scene's directory; absolute paths as they are */
+    char *dir = make_temp_dir();
+    char sub_dir[1024], obj_path[1100], scene[2600];
+    snprintf(sub_dir, sizeof sub_dir, "%s/meshes", dir);
+    assert_int_equal(mkdir(sub_dir, 0755), 0);
+    snprintf(obj_path, sizeof obj_path, "%s/tri.obj", sub_dir);
+    assert_int_equal(bad_write_text(obj_path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), 0);
+    snprintf(scene, sizeof scene,
+             "{\"frame\": {\"width\": 320, \"height\": 200},"
+             " \"camera\": {\"position\": [0, 0, 5], \"target\": [0, 0, 0], \"fov\": 60},"
+             " \"materials\": {\"m\": {}}, \"objects\": ["
+             "  {\"type\": \"mesh\", \"material\": \"m\", \"file\": \"meshes/tri.obj\"},"
+             "  {\"type\": \"mesh\", \"material\": \"m\", \"file\": \"%s\"}]}",
+             obj_path);
+    const char *path = write_temp(dir, "s.json", scene);
+    tarn_loaded_scene s;
+    tarn_error err = { "" };
+    if (tarn_scene_load(path, &s, &err)) fail_msg("%s", err.message);
+    assert_int_equal(s.width, 320);
+    assert_int_equal(s.height, 200);
+    assert_int_equal(s.scene.object_count, 2);
+    assert_int_equal(s.objects[1].mesh->triangle_count, 1);
+    tarn_scene_free(&s);
+    assert_int_equal(unlink(obj_path), 0);
+    assert_int_equal(rmdir(sub_dir), 0);
+    remove_temp_dir(dir);
+}
+
+static void test_bad_inputs(void **state)
+{
+    (void)state;
+    int failures = 0; /* every case runs, so one run shows every wrong message */
+    for (size_t k = 0; k < BAD_SCENE_CASE_COUNT; k++) {
+        const bad_scene_case *c = &BAD_SCENE_CASES[k];
+        char *dir = make_temp_dir();
+        char scene_path[1100], expected[1600];
+        assert_int_equal(bad_case_write(c, dir, scene_path, sizeof scene_path), 0);
+        snprintf(expected, sizeof expected, "%s/%s%s", dir, c->file, c->expect);
+        tarn_loaded_scene s;
+        tarn_error err = { "" };
+        int result = tarn_scene_load(scene_path, &s, &err);
+        if (result != -1 || strcmp(err.message, expected) != 0) {
+            print_error("case \"%s\":\n  got      %s\n  expected %s\n", c->what,
+                        result ? err.message : "(loaded)", expected);
+            failures++;
+        }
+        assert_null(strchr(err.message, '\n'));
+        assert_null(s.objects); /* nothing left to free */
+        assert_int_equal(s.material_count, 0);
+        remove_temp_dir(dir);
+    }
+    assert_int_equal(failures, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_q16_from_double),
+        cmocka_unit_test(test_plane),
+        cmocka_unit_test(test_box),
+        cmocka_unit_test(test_sphere),
+        cmocka_unit_test(test_heightfield),
+        cmocka_unit_test(test_primitive_limits),
+        cmocka_unit_test(test_obj_polygons),
+        cmocka_unit_test(test_obj_negative_indices),
+        cmocka_unit_test(test_obj_missing_normals),
+        cmocka_unit_test(test_obj_texcoords_and_normals),
+        cmocka_unit_test(test_obj_crlf_and_w),
+        cmocka_unit_test(test_obj_triangle_limit),
+        cmocka_unit_test(test_png_round_trip),
+        cmocka_unit_test(test_png_formats),
+        cmocka_unit_test(test_png_write_failure_leaves_nothing),
+        cmocka_unit_test(test_pond),
+        cmocka_unit_test(test_scene_defaults_and_rotation),
+        cmocka_unit_test(test_asset_paths),
+        cmocka_unit_test(test_bad_inputs),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
