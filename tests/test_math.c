@@ -1,0 +1,297 @@
+/* test_math.c: core/'s fixed-point math against libm, over each whole input range.
+ *
+ * The sweeps are host/accuracy_math.c's (the same numbers `tarn accuracy --math`
+ * prints); this file asserts the error bounds documented in core/tarn_math.h, the
+ * exact values at the limits, and that invalid knob values stay in bounds. Running
+ * it under ASan + UBSan also checks every swept input for undefined behaviour and
+ * out-of-bounds table reads. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include <cmocka.h>
+
+#include "accuracy_math.h"
+#include "tarn_math.h"
+
+#define EXP2_CONFIGS 6 /* table sizes 8, 16, ..., 256 */
+
+/* tarn_math.h's documented maxima, in Q0.16 LSBs, per table size 8..256. */
+static const double exp2_nearest_max_lsb[EXP2_CONFIGS] = {5439, 2778, 1404, 706, 354, 177};
+static const double exp2_linear_max_lsb[EXP2_CONFIGS] = {60, 15.4, 4.5, 1.7, 1.2, 1.0};
+
+/* tarn_math.h's documented relative errors beyond rounding, per Newton step count,
+ * for tarn_recip_u32 and tarn_recip_q30 alike. */
+static const double recip_max_rel_excess[TARN_RECIP_STEPS_MAX + 1] = {1.96e-3, 3.82e-6, 9.4e-10};
+
+static void assert_max_error(const char *what, tarn_math_error e, double max_lsb)
+{
+    if (e.max_abs_lsb <= max_lsb) return;
+    print_error("%s: error %.4f LSB at input %lld, documented maximum %.4f\n", what,
+                e.max_abs_lsb, (long long)e.worst_input, max_lsb);
+    fail();
+}
+
+static void assert_max_rel_excess(const char *what, tarn_math_error e, double max_rel)
+{
+    if (e.max_rel_excess >= 0.0 && e.max_rel_excess <= max_rel) return;
+    print_error("%s: relative error beyond rounding %.3g, documented maximum %.3g\n", what,
+                e.max_rel_excess, max_rel);
+    fail();
+}
+
+static tarn_exp2_config exp2_config(unsigned size_index, int interpolate)
+{
+    tarn_exp2_config config = {(uint16_t)(TARN_EXP2_ENTRIES_MIN << size_index), (uint8_t)interpolate};
+    return config;
+}
+
+/* ---- exp2 --------------------------------------------------------------------------*/
+
+static void exp2_sweeps_stay_within_documented_bounds(void **state)
+{
+    (void)state;
+    for (int interpolate = 0; interpolate <= 1; interpolate++) {
+        const double *bounds = interpolate ? exp2_linear_max_lsb : exp2_nearest_max_lsb;
+        double coarser_max = 1e30;
+        for (unsigned size = 0; size < EXP2_CONFIGS; size++) {
+            tarn_exp2_config config = exp2_config(size, interpolate);
+            tarn_math_error e = tarn_math_measure_exp2(config);
+            char what[48];
+            snprintf(what, sizeof what, "exp2 %u entries %s", config.entries,
+                     interpolate ? "linear" : "nearest");
+            assert_int_equal(e.samples, 18ul * 65536ul + 1ul); /* 0 down to -18.0 */
+            assert_max_error(what, e, bounds[size]);
+            /* more entries never make it worse */
+            assert_true(e.max_abs_lsb <= coarser_max);
+            coarser_max = e.max_abs_lsb;
+        }
+    }
+}
+
+static void exp2_limits(void **state)
+{
+    (void)state;
+    for (unsigned size = 0; size < EXP2_CONFIGS; size++) {
+        for (int interpolate = 0; interpolate <= 1; interpolate++) {
+            tarn_exp2_config config = exp2_config(size, interpolate);
+            assert_int_equal(tarn_exp2_neg_q16(0, config), 65536);
+            assert_int_equal(tarn_exp2_neg_q16(1, config), 65536); /* positive x clamps */
+            assert_int_equal(tarn_exp2_neg_q16(INT32_MAX, config), 65536);
+            assert_int_equal(tarn_exp2_neg_q16(-65536, config), 32768);
+            assert_int_equal(tarn_exp2_neg_q16(-16 * 65536, config), 1);
+            assert_int_equal(tarn_exp2_neg_q16(-17 * 65536, config), 1); /* 0.5 rounds up */
+            assert_int_equal(tarn_exp2_neg_q16(-18 * 65536, config), 0);
+            assert_int_equal(tarn_exp2_neg_q16(-18 * 65536 - 1, config), 0);
+            assert_int_equal(tarn_exp2_neg_q16(INT32_MIN + 1, config), 0);
+            assert_int_equal(tarn_exp2_neg_q16(INT32_MIN, config), 0);
+        }
+        /* just below 0: linear follows 2^(-1/65536) = 65535.3, nearest-below stays at 1.0 */
+        assert_int_equal(tarn_exp2_neg_q16(-1, exp2_config(size, 1)), 65535);
+        assert_int_equal(tarn_exp2_neg_q16(-1, exp2_config(size, 0)), 65536);
+    }
+}
+
+/* Outside the swept range every result is 0 (x < -18) or 65536 (x > 0); stepping
+ * through it under UBSan also shows no shift reaches 32. */
+static void exp2_outside_the_sweep_saturates(void **state)
+{
+    (void)state;
+    tarn_exp2_config config = exp2_config(EXP2_CONFIGS - 1, 1);
+    for (int64_t x = INT32_MIN; x < -18 * 65536; x += 4099) {
+        assert_int_equal(tarn_exp2_neg_q16((tarn_q16)x, config), 0);
+    }
+    for (int64_t x = 1; x <= INT32_MAX; x += 4099) {
+        assert_int_equal(tarn_exp2_neg_q16((tarn_q16)x, config), 65536);
+    }
+}
+
+/* Invalid table sizes clamp into [8, 256] and round down to a power of two; any
+ * non-zero `interpolate` means linear. Under ASan an out-of-bounds read would fail. */
+static void exp2_invalid_config_uses_a_valid_table(void **state)
+{
+    (void)state;
+    static const struct {
+        uint16_t entries, behaves_as;
+    } sizes[] = {{0, 8}, {1, 8}, {7, 8}, {9, 8}, {15, 8}, {100, 64}, {255, 128},
+                 {257, 256}, {512, 256}, {1000, 256}, {UINT16_MAX, 256}};
+    for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
+        for (uint8_t interpolate = 0; interpolate <= 2; interpolate++) {
+            tarn_exp2_config asked = {sizes[i].entries, interpolate};
+            tarn_exp2_config valid = {sizes[i].behaves_as, interpolate != 0};
+            for (int32_t x = 0; x >= -2 * 65536; x -= 7) {
+                assert_int_equal(tarn_exp2_neg_q16(x, asked), tarn_exp2_neg_q16(x, valid));
+            }
+        }
+        tarn_exp2_config any_nonzero = {sizes[i].entries, UINT8_MAX};
+        tarn_exp2_config linear = {sizes[i].behaves_as, 1};
+        assert_int_equal(tarn_exp2_neg_q16(-12345, any_nonzero), tarn_exp2_neg_q16(-12345, linear));
+    }
+}
+
+/* ---- reciprocal ----------------------------------------------------------------------*/
+
+/* Asserts the documented relative error for each step count and that every step
+ * helps; returns the error at TARN_RECIP_STEPS_MAX. */
+static tarn_math_error assert_recip_errors(const char *name, tarn_math_error (*measure)(unsigned))
+{
+    tarn_math_error e = {0}, fewer_steps = {0};
+    for (unsigned steps = 0; steps <= TARN_RECIP_STEPS_MAX; steps++) {
+        char what[48];
+        snprintf(what, sizeof what, "%s %u Newton steps", name, steps);
+        e = measure(steps);
+        assert_true(e.samples > (1ul << 21));
+        assert_max_rel_excess(what, e, recip_max_rel_excess[steps]);
+        if (steps > 0) {
+            assert_true(e.max_rel_excess < fewer_steps.max_rel_excess);
+            assert_true(e.max_abs_lsb < fewer_steps.max_abs_lsb);
+        }
+        fewer_steps = e;
+    }
+    return e;
+}
+
+static void recip_sweeps_stay_within_documented_bounds(void **state)
+{
+    (void)state;
+    assert_max_error("recip_u32 2 Newton steps", assert_recip_errors("recip_u32", tarn_math_measure_recip), 1.0);
+    assert_max_error("recip_q30 2 Newton steps",
+                     assert_recip_errors("recip_q30", tarn_math_measure_recip_q30), 2.0);
+}
+
+static void recip_limits(void **state)
+{
+    (void)state;
+    for (unsigned steps = 0; steps <= TARN_RECIP_STEPS_MAX + 1; steps++) {
+        assert_int_equal(tarn_recip_u32(0, steps), UINT32_MAX);
+        assert_int_equal(tarn_recip_u32(1, steps), UINT32_MAX);
+        assert_int_equal(tarn_recip_u32(UINT32_MAX, steps), 1);
+        assert_int_equal(tarn_recip_u32(1u << 31, steps), 2);
+    }
+    assert_in_range(tarn_recip_u32(2, TARN_RECIP_STEPS_MAX), (1u << 31) - 1u, 1u << 31);
+    assert_in_range(tarn_recip_u32(3, TARN_RECIP_STEPS_MAX), 1431655764u, 1431655766u);
+    assert_int_equal(tarn_recip_u32(65536, TARN_RECIP_STEPS_MAX), 65536);
+}
+
+static void recip_q30_limits(void **state)
+{
+    (void)state;
+    for (unsigned steps = 0; steps <= TARN_RECIP_STEPS_MAX; steps++) {
+        assert_int_equal(tarn_recip_q30(0, steps), UINT32_MAX);
+        /* documented range, at both ends of the mantissa */
+        assert_in_range(tarn_recip_q30(1u << 31, steps), (1u << 30) - 1022u, (1u << 31) - 1u);
+        assert_in_range(tarn_recip_q30(UINT32_MAX, steps), (1u << 30) - 1022u, (1u << 31) - 1u);
+        /* an unnormalised mantissa is shifted up first */
+        assert_int_equal(tarn_recip_q30(1, steps), tarn_recip_q30(1u << 31, steps));
+        assert_int_equal(tarn_recip_q30(3, steps), tarn_recip_q30(3u << 30, steps));
+        assert_int_equal(tarn_recip_q30(0x7FFFFFFFu, steps), tarn_recip_q30(0xFFFFFFFEu, steps));
+    }
+    /* tarn_recip_u32 is the same mantissa scaled and rounded: 2^32 / 3 and 2^32 / 6 */
+    assert_int_equal(tarn_recip_u32(3, 2), tarn_recip_q30(3u << 30, 2));
+    assert_int_equal(tarn_recip_u32(6, 2), (tarn_recip_q30(3u << 30, 2) + 1u) >> 1);
+}
+
+/* More steps than TARN_RECIP_STEPS_MAX act as TARN_RECIP_STEPS_MAX (bounded time). */
+static void recip_extra_steps_clamp(void **state)
+{
+    (void)state;
+    for (uint32_t x = 2; x < 100000; x += 37) {
+        uint32_t full = tarn_recip_u32(x, TARN_RECIP_STEPS_MAX);
+        assert_int_equal(tarn_recip_u32(x, TARN_RECIP_STEPS_MAX + 1), full);
+        assert_int_equal(tarn_recip_u32(x, UINT32_MAX), full);
+        uint32_t full_q30 = tarn_recip_q30(x, TARN_RECIP_STEPS_MAX);
+        assert_int_equal(tarn_recip_q30(x, TARN_RECIP_STEPS_MAX + 1), full_q30);
+        assert_int_equal(tarn_recip_q30(x, UINT32_MAX), full_q30);
+    }
+}
+
+/* ---- sine and cosine ---------------------------------------------------------------*/
+
+static void sin_cos_every_angle_within_documented_bound(void **state)
+{
+    (void)state;
+    tarn_math_error sin_error = tarn_math_measure_sin();
+    tarn_math_error cos_error = tarn_math_measure_cos();
+    assert_int_equal(sin_error.samples, 65536);
+    assert_int_equal(cos_error.samples, 65536);
+    assert_max_error("sin", sin_error, 1.001);
+    assert_max_error("cos", cos_error, 1.001);
+}
+
+static void sin_cos_exact_points_range_and_symmetry(void **state)
+{
+    (void)state;
+    assert_int_equal(tarn_sin_q15(0), 0);
+    assert_int_equal(tarn_sin_q15(16384), 32767);
+    assert_int_equal(tarn_sin_q15(32768), 0);
+    assert_int_equal(tarn_sin_q15(49152), -32767);
+    assert_int_equal(tarn_cos_q15(0), 32767);
+    assert_int_equal(tarn_cos_q15(16384), 0);
+    assert_int_equal(tarn_cos_q15(32768), -32767);
+    assert_int_equal(tarn_cos_q15(UINT16_MAX), 32767);
+    for (uint32_t a = 0; a <= UINT16_MAX; a++) {
+        int32_t s = tarn_sin_q15((uint16_t)a);
+        assert_in_range(s + 32767, 0, 2 * 32767);
+        assert_int_equal(tarn_sin_q15((uint16_t)(a + 32768u)), -s);
+        assert_int_equal(tarn_sin_q15((uint16_t)(32768u - a)), s);
+        assert_int_equal(tarn_cos_q15((uint16_t)a), tarn_sin_q15((uint16_t)(a + 16384u)));
+    }
+}
+
+/* ---- square roots ------------------------------------------------------------------*/
+
+static void isqrt_is_exact(void **state)
+{
+    (void)state;
+    tarn_math_error e = tarn_math_measure_isqrt();
+    assert_true(e.samples > (1ul << 24));
+    assert_max_error("isqrt", e, 0.0);
+    assert_int_equal(tarn_isqrt_u32(0), 0);
+    assert_int_equal(tarn_isqrt_u32(1), 1);
+    assert_int_equal(tarn_isqrt_u32(65535u * 65535u), 65535);
+    assert_int_equal(tarn_isqrt_u32(65535u * 65535u - 1u), 65534);
+    assert_int_equal(tarn_isqrt_u32(UINT32_MAX), 65535);
+}
+
+static void rsqrt_sweep_within_documented_bound(void **state)
+{
+    (void)state;
+    tarn_math_error e = tarn_math_measure_rsqrt();
+    assert_true(e.samples > (1ul << 20));
+    assert_max_error("rsqrt", e, 0.501);
+    assert_max_rel_excess("rsqrt", e, 2.5e-9);
+}
+
+static void rsqrt_limits(void **state)
+{
+    (void)state;
+    assert_int_equal(tarn_rsqrt_q16(0), 0);               /* no direction */
+    assert_int_equal(tarn_rsqrt_q16(1), 1u << 24);        /* 1/sqrt(2^-16) = 256.0 */
+    assert_int_equal(tarn_rsqrt_q16(2), 11863283);        /* 2^24 / sqrt(2) */
+    assert_int_equal(tarn_rsqrt_q16(65536), 65536);       /* 1.0 */
+    assert_int_equal(tarn_rsqrt_q16(4 * 65536), 32768);   /* 1/sqrt(4) = 0.5 */
+    assert_int_equal(tarn_rsqrt_q16(UINT32_MAX), 256);    /* 1/sqrt(65536.0) */
+    assert_int_equal(tarn_rsqrt_q16(UINT32_MAX - 1u), 256);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(exp2_sweeps_stay_within_documented_bounds),
+        cmocka_unit_test(exp2_limits),
+        cmocka_unit_test(exp2_outside_the_sweep_saturates),
+        cmocka_unit_test(exp2_invalid_config_uses_a_valid_table),
+        cmocka_unit_test(recip_sweeps_stay_within_documented_bounds),
+        cmocka_unit_test(recip_limits),
+        cmocka_unit_test(recip_q30_limits),
+        cmocka_unit_test(recip_extra_steps_clamp),
+        cmocka_unit_test(sin_cos_every_angle_within_documented_bound),
+        cmocka_unit_test(sin_cos_exact_points_range_and_symmetry),
+        cmocka_unit_test(isqrt_is_exact),
+        cmocka_unit_test(rsqrt_sweep_within_documented_bound),
+        cmocka_unit_test(rsqrt_limits),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
