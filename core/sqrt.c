@@ -2,13 +2,13 @@
 #include "tarn_math.h"
 #include "math_tables.h"
 
-uint32_t tarn_isqrt_u32(uint32_t x)
+uint64_t tarn_isqrt_u64(uint64_t x)
 {
     /* Digit by digit in base 4, as in long division: `bit` walks down the even powers
      * of two from the highest one not above x; `root` holds the root's bits found so
      * far, scaled so that root + bit is what the next digit would subtract from x. */
-    uint32_t root = 0u;
-    uint32_t bit = 1u << 30;
+    uint64_t root = 0u;
+    uint64_t bit = (uint64_t)1 << 62;
     while (bit > x) bit >>= 2;
     while (bit != 0u) {
         if (x >= root + bit) {
@@ -20,6 +20,11 @@ uint32_t tarn_isqrt_u32(uint32_t x)
         bit >>= 2;
     }
     return root;
+}
+
+uint32_t tarn_isqrt_u32(uint32_t x)
+{
+    return (uint32_t)tarn_isqrt_u64(x);
 }
 
 #define ONE_Q28 (1u << 28)

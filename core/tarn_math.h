@@ -76,6 +76,9 @@ int32_t tarn_cos_q15(uint16_t angle_turns_q16);
 /* ---- square roots -----------------------------------------------------------------*/
 /* floor(sqrt(x)), exact for every 32-bit input. */
 uint32_t tarn_isqrt_u32(uint32_t x);
+/* The same for 64-bit inputs; 64-bit shifts and adds only, for per-frame work such
+ * as normalising the camera basis. */
+uint64_t tarn_isqrt_u64(uint64_t x);
 
 /* 1/sqrt(x) for x in Q16.16, result Q16.16 rounded to nearest, 0 at x = 0 ("no
  * direction"). Used to normalise vectors. Results run from 2^24 (256.0, at the

@@ -1,22 +1,6 @@
 /* view.c: per-frame camera and light constants. Divisions here run once a frame. */
 #include "pipeline.h"
 
-static uint64_t isqrt_u64(uint64_t x)
-{
-    uint64_t root = 0, bit = (uint64_t)1 << 62;
-    while (bit > x) bit >>= 2;
-    while (bit != 0) {
-        if (x >= root + bit) {
-            x -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    return root;
-}
-
 /* Normalises a vector given as 64-bit integers of any common scale into Q1.30.
  * Returns 0 for the zero vector (out left unchanged). */
 static int normalise_q30(const int64_t v[3], int32_t out[3])
@@ -32,7 +16,7 @@ static int normalise_q30(const int64_t v[3], int32_t out[3])
     }
     uint64_t sum = 0;
     for (int i = 0; i < 3; i++) sum += (uint64_t)(c[i] * c[i]);
-    int64_t length = (int64_t)isqrt_u64(sum);
+    int64_t length = (int64_t)tarn_isqrt_u64(sum);
     if (length == 0) return 0;
     for (int i = 0; i < 3; i++)
         out[i] = (int32_t)(c[i] * ((int64_t)1 << 30) / length);
