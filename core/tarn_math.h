@@ -73,6 +73,12 @@ uint32_t tarn_recip_q30(uint32_t mantissa, unsigned newton_steps);
 int32_t tarn_sin_q15(uint16_t angle_turns_q16);
 int32_t tarn_cos_q15(uint16_t angle_turns_q16);
 
+/* Sine and cosine of an angle in radians, Q2.30, clamped to [-pi/2, pi/2]; results
+ * Q2.30 within a few units of 2^-30 (tests/test_math.c asserts 4). A Taylor series
+ * with 64-bit products and constant divisions: for per-frame work such as the focal
+ * length, where the table's 2^-15 would shift the frame edge by a hundredth of a pixel. */
+void tarn_sin_cos_q30(int32_t radians_q30, int32_t *sine_q30, int32_t *cosine_q30);
+
 /* ---- square roots -----------------------------------------------------------------*/
 /* floor(sqrt(x)), exact for every 32-bit input. */
 uint32_t tarn_isqrt_u32(uint32_t x);

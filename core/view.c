@@ -60,11 +60,12 @@ static void camera_basis(const tarn_camera *camera, int32_t basis[3][3])
 /* Focal length in pixels (Q24.8): (height / 2) / tan(fov / 2). */
 static int32_t focal_length_q8(const tarn_camera *camera, uint16_t height)
 {
+    const int64_t pi_q32 = 13493037705; /* pi * 2^32, rounded */
     tarn_q16 fov = tarn_clamp_i32(camera->fov_y_degrees, TARN_Q16_ONE, 179 * TARN_Q16_ONE);
-    uint16_t half_angle_turns = (uint16_t)(((int64_t)fov + 360) / 720); /* Q0.16 turns */
-    int64_t sine = tarn_sin_q15(half_angle_turns);
-    int64_t cosine = tarn_cos_q15(half_angle_turns);
-    if (sine < 1) sine = 1;
+    /* half the fov in radians, Q2.30: fov_q16 * pi / 360 */
+    int32_t half_angle = (int32_t)(((int64_t)fov * pi_q32 + (180 << 17)) / (360 << 18));
+    int32_t sine, cosine;
+    tarn_sin_cos_q30(half_angle, &sine, &cosine);
     return tarn_sat_i64_to_i32(((int64_t)height * 128 * cosine + sine / 2) / sine);
 }
 

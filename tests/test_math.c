@@ -9,6 +9,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <math.h>
 #include <stdio.h>
 
 #include <cmocka.h>
@@ -240,6 +241,29 @@ static void sin_cos_exact_points_range_and_symmetry(void **state)
     }
 }
 
+/* Every angle from -pi/2 to pi/2 in steps of 2^-14 rad, and past both ends (clamped). */
+static void sin_cos_q30_within_four_units(void **state)
+{
+    (void)state;
+    const double unit = 1073741824.0; /* 2^30 */
+    double worst = 0;
+    for (int64_t x = -1686629713 - (1 << 20); x <= 1686629713 + (1 << 20); x += 1 << 16) {
+        int32_t sine, cosine;
+        tarn_sin_cos_q30((int32_t)x, &sine, &cosine);
+        const double half_pi = 2 * atan(1.0);
+        double angle = fmax(-half_pi, fmin(half_pi, (double)x / unit));
+        worst = fmax(worst, fabs(sine - sin(angle) * unit));
+        worst = fmax(worst, fabs(cosine - cos(angle) * unit));
+    }
+    assert_true(worst <= 4.0);
+    int32_t sine, cosine;
+    tarn_sin_cos_q30(INT32_MIN, &sine, &cosine); /* clamps, no overflow */
+    assert_true(sine <= -(1 << 30) + 4 && cosine >= 0 && cosine <= 4);
+    tarn_sin_cos_q30(0, &sine, &cosine);
+    assert_int_equal(sine, 0);
+    assert_int_equal(cosine, 1 << 30);
+}
+
 /* ---- square roots ------------------------------------------------------------------*/
 
 static void isqrt_is_exact(void **state)
@@ -253,6 +277,11 @@ static void isqrt_is_exact(void **state)
     assert_int_equal(tarn_isqrt_u32(65535u * 65535u), 65535);
     assert_int_equal(tarn_isqrt_u32(65535u * 65535u - 1u), 65534);
     assert_int_equal(tarn_isqrt_u32(UINT32_MAX), 65535);
+    const uint64_t big = 4294967295u; /* (2^32 - 1)^2 is the largest square below 2^64 */
+    assert_true(tarn_isqrt_u64(big * big) == big);
+    assert_true(tarn_isqrt_u64(big * big - 1u) == big - 1u);
+    assert_true(tarn_isqrt_u64(UINT64_MAX) == big);
+    assert_true(tarn_isqrt_u64((uint64_t)1 << 62) == (uint64_t)1 << 31);
 }
 
 static void rsqrt_sweep_within_documented_bound(void **state)
@@ -289,6 +318,7 @@ int main(void)
         cmocka_unit_test(recip_extra_steps_clamp),
         cmocka_unit_test(sin_cos_every_angle_within_documented_bound),
         cmocka_unit_test(sin_cos_exact_points_range_and_symmetry),
+        cmocka_unit_test(sin_cos_q30_within_four_units),
         cmocka_unit_test(isqrt_is_exact),
         cmocka_unit_test(rsqrt_sweep_within_documented_bound),
         cmocka_unit_test(rsqrt_limits),
