@@ -34,10 +34,25 @@ typedef struct {
     edge edges[3];
 } triangle_setup;
 
+/* near/d rounded to Q1.30 exactly, as quotient and remainder of N(p) / area2: N is
+ * the barycentric numerator (plus area2/2 to round), linear in the pixel, so it
+ * steps exactly. Exact depth makes the depth test's outcome a property of the
+ * triangle, not of how its interpolation rounded: where two surfaces meet, the
+ * float reference (which rounds the exact value the same way) agrees pixel for pixel. */
+typedef struct {
+    uint32_t quotient;  /* modulo 2^32; in range at covered pixels */
+    uint32_t remainder; /* in [0, den) */
+} exact_value;
+
+typedef struct {
+    uint32_t den; /* area2 */
+    exact_value step_x, step_y;
+} exact_plane;
+
 typedef struct {
     int count;
     int perspective; /* tarn_perspective */
-    plane depth;     /* near/d, Q1.30 */
+    exact_plane depth; /* near/d, Q1.30 */
     plane q;         /* normalised near/d, perspective modes */
     uint32_t q_min, q_max;
     plane premultiplied[ATTRIBUTES_MAX]; /* T * q / 2^30, or T when affine */
@@ -57,6 +72,28 @@ static int32_t floor_shift(int32_t v, unsigned s)
 static int64_t round_div_i64(int64_t num, int64_t den) /* den > 0 */
 {
     return num >= 0 ? (num + den / 2) / den : -((-num + den / 2) / den);
+}
+
+static exact_value floor_divmod(int64_t num, int64_t den) /* den > 0 */
+{
+    int64_t q = num / den, r = num % den;
+    if (r < 0) {
+        r += den;
+        q--;
+    }
+    exact_value v = {(uint32_t)q, (uint32_t)r};
+    return v;
+}
+
+static void exact_step(exact_value *v, const exact_value *step, uint32_t den)
+{
+    v->quotient += step->quotient;
+    if (v->remainder >= den - step->remainder) {
+        v->remainder -= den - step->remainder;
+        v->quotient++;
+    } else {
+        v->remainder += step->remainder;
+    }
 }
 
 static unsigned bit_length_u32(uint32_t v)
@@ -191,28 +228,55 @@ static void texture_coordinates(const triangle_setup *t, int axis, uint32_t out[
     for (int n = 0; n < 3; n++) out[n] = (uint32_t)c[n] - *base;
 }
 
+static int64_t depth_numerator_step(const triangle_setup *t, int32_t a1, int32_t a2)
+{
+    const int64_t d1 = (int64_t)t->v[1]->inv_depth - t->v[0]->inv_depth;
+    const int64_t d2 = (int64_t)t->v[2]->inv_depth - t->v[0]->inv_depth;
+    return (a1 * d1 + a2 * d2) * ((int64_t)1 << t->subpixel_bits);
+}
+
+static exact_plane make_exact_depth_plane(const triangle_setup *t)
+{
+    exact_plane p;
+    p.den = (uint32_t)t->area2;
+    p.step_x = floor_divmod(depth_numerator_step(t, t->edges[1].a, t->edges[2].a), t->area2);
+    p.step_y = floor_divmod(depth_numerator_step(t, t->edges[1].b, t->edges[2].b), t->area2);
+    return p;
+}
+
+/* Exact depth at pixel (i, j): (area2*z0 + E1*(z1 - z0) + E2*(z2 - z0) + area2/2) / area2,
+ * each term below 2^61 inside the guard box. */
+static exact_value exact_depth_at(const triangle_setup *t, int32_t i, int32_t j)
+{
+    const unsigned s = t->subpixel_bits;
+    const int32_t px = pixel_centre(i, s), py = pixel_centre(j, s);
+    const int64_t z0 = t->v[0]->inv_depth;
+    int64_t num = t->area2 * z0 + t->area2 / 2 +
+                  edge_unbiased_at(&t->edges[1], px, py) * ((int64_t)t->v[1]->inv_depth - z0) +
+                  edge_unbiased_at(&t->edges[2], px, py) * ((int64_t)t->v[2]->inv_depth - z0);
+    return floor_divmod(num, t->area2);
+}
+
 static void setup_attributes(const triangle_setup *t, int textured, uint8_t perspective,
                              attribute_set *set)
 {
-    int64_t depth[3];
+    int64_t q_values[3];
     uint32_t q[3], largest = 0;
     set->count = 0;
     set->perspective = perspective;
-    for (int n = 0; n < 3; n++) {
-        depth[n] = t->v[n]->inv_depth;
+    for (int n = 0; n < 3; n++)
         if (t->v[n]->inv_depth > largest) largest = t->v[n]->inv_depth;
-    }
-    set->depth = make_plane(t, depth);
+    set->depth = make_exact_depth_plane(t);
     unsigned normalise = tarn_clz32(largest) > 2u ? tarn_clz32(largest) - 2u : 0u;
     set->q_min = T_ONE;
     set->q_max = 0;
     for (int n = 0; n < 3; n++) {
         q[n] = t->v[n]->inv_depth << normalise;
-        depth[n] = q[n];
+        q_values[n] = q[n];
         if (q[n] < set->q_min) set->q_min = q[n];
         if (q[n] > set->q_max) set->q_max = q[n];
     }
-    set->q = make_plane(t, depth);
+    set->q = make_plane(t, q_values);
     for (int c = 0; c < 3; c++) {
         uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
         add_attribute(set, t, lit, q);
@@ -343,7 +407,8 @@ static int depth_pass(void *depth, int depth_bits, int32_t offset, uint32_t inv_
 }
 
 static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
-                       const tarn_texture *texture, int32_t j, int32_t i0, int32_t i1)
+                       const tarn_texture *texture, int32_t j, int32_t i0, int32_t i1,
+                       exact_value depth)
 {
     const tarn_quality *quality = tile->quality;
     const unsigned s = t->subpixel_bits;
@@ -354,13 +419,12 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
         e[k] = edge_at(&t->edges[k], px, py);
         e_step[k] = (int32_t)((uint32_t)t->edges[k].a << s);
     }
-    uint32_t inv_depth = plane_at(&set->depth, t, i0, j);
     const int32_t row = (j - tile->rect.y0) * tile->stride - tile->rect.x0;
     span_cache cache;
     cache.start = INT32_MIN;
     for (int32_t i = i0; i <= i1; i++) {
         if ((e[0] | e[1] | e[2]) >= 0 &&
-            depth_pass(tile->depth, quality->depth_bits, row + i, inv_depth)) {
+            depth_pass(tile->depth, quality->depth_bits, row + i, depth.quotient)) {
             uint32_t values[ATTRIBUTES_MAX];
             if (set->perspective == TARN_PERSPECTIVE_SPAN)
                 span_t(set, t, quality, i, j, &cache, values);
@@ -369,7 +433,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
             tile->colour[row + i] = shade_pixel(set, texture, values);
         }
         for (int k = 0; k < 3; k++) e[k] += e_step[k];
-        inv_depth += set->depth.step_x;
+        exact_step(&depth, &set->depth.step_x, set->depth.den);
     }
 }
 
@@ -391,6 +455,9 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     const int textured = material->texture != NULL && object->mesh->uvs != NULL;
     attribute_set set;
     setup_attributes(&t, textured, tile->quality->perspective, &set);
-    for (int32_t j = draw.y0; j <= draw.y1; j++)
-        raster_row(tile, &t, &set, textured ? material->texture : NULL, j, draw.x0, draw.x1);
+    exact_value depth = exact_depth_at(&t, draw.x0, draw.y0);
+    for (int32_t j = draw.y0; j <= draw.y1; j++) {
+        raster_row(tile, &t, &set, textured ? material->texture : NULL, j, draw.x0, draw.x1, depth);
+        exact_step(&depth, &set.depth.step_y, set.depth.den);
+    }
 }

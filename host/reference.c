@@ -49,7 +49,7 @@ typedef struct {
     double subpixel_unit; /* 2^subpixel_bits: subpixel units per pixel */
     uint8_t *rgb;
     uint8_t *covered; /* may be NULL */
-    double *depth;    /* near/d per pixel; 0 = nothing drawn */
+    double *depth;    /* near/d per pixel in Q1.30 units, rounded; 0 = nothing drawn */
 } ref_target;
 
 typedef struct {
@@ -242,15 +242,36 @@ static int within_exact_range(const ref_screen_vertex v[3], const ref_target *t)
     return 1;
 }
 
+/* The depth test compares near/d rounded to Q1.30, as the header defines the depth
+ * buffer. With the core's own triangles (snapped mode) the vertex depths are whole
+ * Q1.30 numbers and the edge values whole subpixel products, so the rounding is done
+ * exactly in integers and ties fall exactly as they must; otherwise in doubles.
+ * `edge` are the three non-negative edge values of a covered pixel. */
+static double depth_q30(const ref_screen_vertex v[3], const double edge[3], double area, int exact)
+{
+    double z[3];
+    int whole = exact;
+    for (int k = 0; k < 3; k++) {
+        z[k] = v[k].inv_depth * INV_DEPTH_SCALE;
+        whole = whole && z[k] == floor(z[k]);
+    }
+    if (whole) { /* sum of edge * z <= area * 2^30 < 2^61: exact in int64 */
+        int64_t num = 0, den = (int64_t)area;
+        for (int k = 0; k < 3; k++) num += (int64_t)edge[k] * (int64_t)z[k];
+        return (double)((num + den / 2) / den);
+    }
+    return floor((edge[0] * z[0] + edge[1] * z[1] + edge[2] * z[2]) / area + 0.5);
+}
+
 static void draw_pixel(ref_target *t, int i, int j, const ref_screen_vertex v[3],
-                       const double bary[3], const tarn_texture *tex)
+                       const double edge[3], double area, int exact, const tarn_texture *tex)
 {
     double weight[3];
-    for (int k = 0; k < 3; k++) weight[k] = bary[k] * v[k].inv_depth;
-    double inv_depth = weight[0] + weight[1] + weight[2];
+    for (int k = 0; k < 3; k++) weight[k] = edge[k] / area * v[k].inv_depth;
+    double depth = depth_q30(v, edge, area, exact);
     size_t p = (size_t)j * t->width + i;
-    if (!(inv_depth > t->depth[p])) return; /* closer wins; on a tie the earlier stays */
-    t->depth[p] = inv_depth;
+    if (!(depth > t->depth[p])) return; /* closer wins; on a tie the earlier stays */
+    t->depth[p] = depth;
     shade_pixel(v, weight, tex, t->rgb + 3 * p);
     if (t->covered != NULL) t->covered[p] = 1;
 }
@@ -285,15 +306,14 @@ static void rasterize_triangle(ref_target *t, const ref_screen_vertex in[3], uin
         double py = (j + 0.5) * unit;
         for (int i = i0; i <= i1; i++) {
             double px = (i + 0.5) * unit;
-            double bary[3];
+            double e[3];
             int inside = 1;
             for (int k = 0; k < 3 && inside; k++) {
-                double e = edge_value(&edge[k], px, py, exact);
-                inside = e > 0 || (e == 0 && edge[k].owns_boundary);
                 /* edge k is opposite vertex k: its value / area is k's barycentric */
-                bary[k] = e / area;
+                e[k] = edge_value(&edge[k], px, py, exact);
+                inside = e[k] > 0 || (e[k] == 0 && edge[k].owns_boundary);
             }
-            if (inside) draw_pixel(t, i, j, v, bary, tex);
+            if (inside) draw_pixel(t, i, j, v, e, area, exact, tex);
         }
     }
 }

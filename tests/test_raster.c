@@ -461,6 +461,48 @@ static void test_extreme_cameras(void **state)
     free(b);
 }
 
+/* One plane tessellated twice, 23x19 and 21x17, red first. Tilted, the two surfaces
+ * differ only by vertex rounding and interleave finely; facing the camera, every
+ * pixel is an exact tie and the earlier (red) must win. Unlit flat colours, so a
+ * wrong winner shows as a full-intensity error against the reference. */
+static void plane_grid(scene_builder *b, uint32_t colour, int n, int m, double tilt)
+{
+    builder_begin_object(b, colour, TARN_CULL_NONE);
+    uint16_t first = (uint16_t)b->vertex_count;
+    for (int j = 0; j <= m; j++)
+        for (int i = 0; i <= n; i++) {
+            double y = -4 + 8.0 * j / m;
+            builder_vertex(b, -4 + 8.0 * i / n, y, -6 - tilt * y);
+        }
+    for (int j = 0; j < m; j++)
+        for (int i = 0; i < n; i++) {
+            uint16_t v00 = (uint16_t)(first + j * (n + 1) + i);
+            builder_triangle(b, v00, (uint16_t)(v00 + 1), (uint16_t)(v00 + n + 2));
+            builder_triangle(b, v00, (uint16_t)(v00 + n + 2), (uint16_t)(v00 + n + 1));
+        }
+}
+
+static void test_depth_ties_resolve_like_the_reference(void **state)
+{
+    (void)state;
+    static const double tilts[] = {0.3, 0.0};
+    scene_builder *b = malloc(sizeof *b);
+    tarn_frame_config config = config_of(200, 150);
+    for (size_t t = 0; t < 2; t++) {
+        builder_init(b, 0, 0, 0, 0, 0, -1);
+        plane_grid(b, 0xFF0000, 23, 19, tilts[t]);
+        plane_grid(b, 0x00FF00, 21, 17, tilts[t]);
+        tarn_compare_metrics m = compare_snapped(&b->scene, &config);
+        assert_int_equal(m.coverage_mismatches, 0);
+        assert_int_equal(m.max_channel_error, 0);
+    }
+    frame_buffers f = frame_new(200, 150); /* the exact tie: red everywhere it drew */
+    render_core(&b->scene, &config, &f);
+    for (int p = 0; p < 200 * 150; p++) assert_true(!f.covered[p] || f.rgb[3 * p + 1] == 0);
+    frame_free(&f);
+    free(b);
+}
+
 static void test_cull_modes(void **state)
 {
     (void)state;
@@ -530,6 +572,7 @@ int main(void)
         cmocka_unit_test(test_unsnapped_mismatches_lie_on_edges),
         cmocka_unit_test(test_extreme_triangles),
         cmocka_unit_test(test_extreme_cameras),
+        cmocka_unit_test(test_depth_ties_resolve_like_the_reference),
         cmocka_unit_test(test_cull_modes),
         cmocka_unit_test(test_configs_out_of_range_are_rejected),
     };
