@@ -62,20 +62,19 @@ static int parse_perspective(const char *text, tarn_quality *q, tarn_error *err)
 
 static int parse_exp2(const char *text, tarn_quality *q, tarn_error *err)
 {
-    char entries_text[8];
     const char *colon = text ? strchr(text, ':') : NULL;
+    const char *mode = colon ? colon + 1 : "linear";
     size_t length = colon ? (size_t)(colon - text) : (text ? strlen(text) : 0);
+    int mode_known = strcmp(mode, "nearest") == 0 || strcmp(mode, "linear") == 0;
+    char entries_text[8];
     unsigned long entries;
-    int interpolate = 1;
-    if (colon && strcmp(colon, ":nearest") == 0) interpolate = 0;
-    else if (colon && strcmp(colon, ":linear") != 0) length = sizeof entries_text;
-    if (text && length < sizeof entries_text) {
+    if (text && mode_known && length < sizeof entries_text) {
         memcpy(entries_text, text, length);
         entries_text[length] = '\0';
         if (parse_whole(entries_text, TARN_EXP2_ENTRIES_MIN, TARN_EXP2_ENTRIES_MAX, &entries) == 0 &&
             (entries & (entries - 1)) == 0) {
             q->exp2.entries = (uint16_t)entries;
-            q->exp2.interpolate = (uint8_t)interpolate;
+            q->exp2.interpolate = strcmp(mode, "linear") == 0;
             return 0;
         }
     }
