@@ -22,6 +22,7 @@ typedef struct {
     int32_t a, b, x, y, bias; /* E(p) = a*(px - x) + b*(py - y) + bias, covered when >= 0 */
 } edge;
 
+
 typedef struct {
     int32_t x0, y0, x1, y1; /* pixel bounds, inclusive */
 } pixel_box;
@@ -31,6 +32,7 @@ typedef struct {
     int64_t area2;
     unsigned subpixel_bits;
     int32_t anchor_i, anchor_j;
+    pixel_box box; /* pixels whose centres may be covered */
     edge edges[3];
 } triangle_setup;
 
@@ -337,26 +339,54 @@ static void exact_t(const attribute_set *set, const triangle_setup *t, int32_t i
                              set->t_min[k], set->t_max[k]);
 }
 
-/* Linear interpolation between exact values every `span` pixels, spans aligned to
- * the frame (not the tile) so the image does not depend on the tile size. */
+/* Linear interpolation between exact values every `span` pixels. Spans sit on a
+ * grid fixed to the frame, cut to the triangle's own pixel box, so neither depends
+ * on the tile. A span's ends may lie outside the triangle: there the exact values
+ * are extrapolated, signed and unclamped (clamping them would bend the slope
+ * between the ends); only the interpolated pixels are clamped to the triangle. */
 typedef struct {
     int32_t start; /* first pixel of the cached span, or INT32_MIN */
     int32_t t0[ATTRIBUTES_MAX], dt[ATTRIBUTES_MAX];
 } span_cache;
 
-static void span_t(const attribute_set *set, const triangle_setup *t, const tarn_quality *quality,
+#define SPAN_END_MIN (-(1 << 28))
+#define SPAN_END_MAX ((1 << 30) + (1 << 28)) /* ends this far apart still fit a step */
+
+/* T = p * 2^30 / q for a signed, extrapolated p, saturated to the span end range. */
+static int32_t span_end_t(int32_t premultiplied, uint32_t recip, unsigned lz)
+{
+    int32_t p = tarn_clamp_i32(premultiplied, -(1 << 30) + 1, (1 << 30) - 1);
+    int64_t t = tarn_mul_hi_s32_u32(p * 2, recip); /* |t| <= 2^30 */
+    t = t < 0 ? -((-t) << (lz - 1u)) : t << (lz - 1u);
+    return (int32_t)(t < SPAN_END_MIN ? SPAN_END_MIN : (t > SPAN_END_MAX ? SPAN_END_MAX : t));
+}
+
+static void span_end(const attribute_set *set, const triangle_setup *t, int32_t i, int32_t j,
+                     unsigned steps, int32_t out[ATTRIBUTES_MAX])
+{
+    int32_t q = (int32_t)plane_at(&set->q, t, i, j);
+    int32_t q_floor = (int32_t)(set->q_min / 2u) > 1 ? (int32_t)(set->q_min / 2u) : 1;
+    unsigned lz;
+    uint32_t recip = reciprocal_of_q((uint32_t)tarn_clamp_i32(q, q_floor, (int32_t)T_ONE), steps, &lz);
+    for (int k = 0; k < set->count; k++)
+        out[k] = span_end_t((int32_t)plane_at(&set->premultiplied[k], t, i, j), recip, lz);
+}
+
+static void span_t(const attribute_set *set, const triangle_setup *t, int32_t span, unsigned steps,
                    int32_t i, int32_t j, span_cache *cache, uint32_t out[ATTRIBUTES_MAX])
 {
-    const unsigned log2_span = 31u - tarn_clz32(quality->perspective_span);
-    const int32_t start = (int32_t)((uint32_t)floor_shift(i, log2_span) << log2_span);
+    const unsigned log2_span = 31u - tarn_clz32((uint32_t)span);
+    const int32_t grid = (int32_t)((uint32_t)floor_shift(i, log2_span) << log2_span);
+    const int32_t start = grid > t->box.x0 ? grid : t->box.x0;
     if (cache->start != start) {
-        uint32_t first[ATTRIBUTES_MAX], last[ATTRIBUTES_MAX];
-        exact_t(set, t, start, j, quality->recip_newton_steps, first);
-        exact_t(set, t, start + quality->perspective_span, j, quality->recip_newton_steps, last);
-        for (int k = 0; k < set->count; k++) {
-            cache->t0[k] = (int32_t)first[k];
-            cache->dt[k] = floor_shift((int32_t)last[k] - (int32_t)first[k], log2_span);
-        }
+        const int32_t end = grid + span < t->box.x1 ? grid + span : t->box.x1;
+        int32_t last[ATTRIBUTES_MAX];
+        span_end(set, t, start, j, steps, cache->t0);
+        span_end(set, t, end, j, steps, last);
+        /* per span, not per pixel: 1/length from the reciprocal, not a division */
+        const uint32_t inverse_length = end > start ? tarn_recip_u32((uint32_t)(end - start), 2) : 0u;
+        for (int k = 0; k < set->count; k++)
+            cache->dt[k] = tarn_mul_hi_s32_u32(last[k] - cache->t0[k], inverse_length);
         cache->start = start;
     }
     for (int k = 0; k < set->count; k++) {
@@ -427,7 +457,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
             depth_pass(tile->depth, quality->depth_bits, row + i, depth.quotient)) {
             uint32_t values[ATTRIBUTES_MAX];
             if (set->perspective == TARN_PERSPECTIVE_SPAN)
-                span_t(set, t, quality, i, j, &cache, values);
+                span_t(set, t, quality->perspective_span, quality->recip_newton_steps, i, j, &cache, values);
             else
                 exact_t(set, t, i, j, quality->recip_newton_steps, values);
             tile->colour[row + i] = shade_pixel(set, texture, values);
@@ -437,16 +467,27 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
     }
 }
 
+/* Span mode interpolates between exact ends a span apart; on a triangle narrower
+ * than a span those ends would be extrapolated outside it, and over so few pixels
+ * affine interpolation is both cheaper and closer. The choice depends on the
+ * triangle alone, so the image still does not depend on the tile size. */
+static uint8_t perspective_mode(const tarn_quality *quality, const pixel_box *box)
+{
+    if (quality->perspective == TARN_PERSPECTIVE_SPAN && box->x1 - box->x0 < quality->perspective_span)
+        return TARN_PERSPECTIVE_AFFINE;
+    return quality->perspective;
+}
+
 void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex vertex[3],
                           const tarn_object *object)
 {
     const tarn_material *material = object->material;
     triangle_setup t;
     if (!orient_triangle(vertex, material->cull, tile->quality->subpixel_bits, &t)) return;
-    pixel_box box = triangle_pixels(&t);
-    t.anchor_i = box.x0;
-    t.anchor_j = box.y0;
-    pixel_box draw = box;
+    t.box = triangle_pixels(&t);
+    t.anchor_i = t.box.x0;
+    t.anchor_j = t.box.y0;
+    pixel_box draw = t.box;
     if (draw.x0 < tile->rect.x0) draw.x0 = tile->rect.x0;
     if (draw.y0 < tile->rect.y0) draw.y0 = tile->rect.y0;
     if (draw.x1 > tile->rect.x1 - 1) draw.x1 = tile->rect.x1 - 1;
@@ -454,7 +495,7 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     if (draw.x0 > draw.x1 || draw.y0 > draw.y1) return;
     const int textured = material->texture != NULL && object->mesh->uvs != NULL;
     attribute_set set;
-    setup_attributes(&t, textured, tile->quality->perspective, &set);
+    setup_attributes(&t, textured, perspective_mode(tile->quality, &t.box), &set);
     exact_value depth = exact_depth_at(&t, draw.x0, draw.y0);
     for (int32_t j = draw.y0; j <= draw.y1; j++) {
         raster_row(tile, &t, &set, textured ? material->texture : NULL, j, draw.x0, draw.x1, depth);
