@@ -59,6 +59,19 @@ int tarn_mesh_reserve(tarn_mesh_buffer *m, uint32_t vertices, uint32_t triangles
     return 0;
 }
 
+int tarn_mesh_reserve_colours(tarn_mesh_buffer *m, const char *what, tarn_error *err)
+{
+    m->colours = malloc((m->vertex_capacity + 1u) * sizeof *m->colours);
+    if (!m->colours) {
+        uint32_t vertices = m->vertex_capacity;
+        tarn_mesh_buffer_free(m);
+        return tarn_fail(err, "%s: out of memory for %u vertex colours", what, vertices);
+    }
+    for (uint32_t k = 0; k < m->vertex_capacity; k++) m->colours[k] = 0xFFFFFFu;
+    m->mesh.colours = m->colours;
+    return 0;
+}
+
 uint16_t tarn_mesh_add_vertex(tarn_mesh_buffer *m, const double position[3],
                               const double normal[3], const double uv[2])
 {
@@ -91,6 +104,7 @@ void tarn_mesh_buffer_free(tarn_mesh_buffer *m)
     free(m->positions);
     free(m->normals);
     free(m->uvs);
+    free(m->colours);
     free(m->indices);
     memset(m, 0, sizeof *m);
 }

@@ -20,6 +20,7 @@ typedef struct {
     tarn_vec3 *positions;
     tarn_vec3 *normals;
     tarn_uv *uvs; /* NULL when the mesh has no texture coordinates */
+    uint32_t *colours; /* 0xRRGGBB per vertex; NULL when the mesh has none (white) */
     uint16_t *indices;
     uint32_t vertex_capacity, triangle_capacity;
 } tarn_mesh_buffer;
@@ -31,6 +32,11 @@ tarn_q16 tarn_q16_from_double(double v);
  * about `what` when either exceeds the tarn_mesh limits. */
 int tarn_mesh_reserve(tarn_mesh_buffer *m, uint32_t vertices, uint32_t triangles, int with_uvs,
                       const char *what, tarn_error *err);
+
+/* Gives a reserved mesh per-vertex colours, all white until the caller sets
+ * colours[index] for the vertices it adds. On failure the mesh is freed, as when
+ * tarn_mesh_reserve fails. */
+int tarn_mesh_reserve_colours(tarn_mesh_buffer *m, const char *what, tarn_error *err);
 
 /* Appends a vertex and returns its index. The normal is normalised here (a zero
  * normal becomes +y); `uv` may be NULL for meshes without texture coordinates.

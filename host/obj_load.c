@@ -13,6 +13,10 @@
 
 #define NO_INDEX (-1)
 
+#define Q16_COORDINATE_LIMIT 32768.0 /* Q16.16 holds |v| < 32768 */
+#define ELEMENT_NUMBERS_MAX 3        /* the most a vt or vn line takes */
+#define VERTEX_NUMBERS_COLOURED 6    /* v x y z r g b */
+
 typedef struct {
     double *values; /* `width` per element */
     size_t count, capacity;
@@ -33,6 +37,9 @@ typedef struct {
     corner *corners; /* 3 per triangle, in file order */
     size_t triangle_count, corner_capacity;
     int any_texcoords;
+    uint32_t *position_colours; /* 0xRRGGBB per position, white where the file gave none */
+    size_t position_colour_capacity;
+    int any_colours; /* some v line had a colour: the mesh gets colours */
 } obj_parser;
 
 /* Makes room for `needed` elements of `size` bytes, doubling. 0 ok, -1 no memory. */
@@ -66,48 +73,106 @@ static int fail_at_line(obj_parser *p, const char *format, ...)
     return tarn_fail(p->err, "%s:%lu: %s", p->path, p->line, message);
 }
 
-static int parse_number(obj_parser *p, const char *token, double limit, double *out)
+/* strtod's syntax, which includes nan and inf: callers check the range. errno is
+ * ERANGE afterwards when the value over- or underflowed. */
+static int read_number(obj_parser *p, const char *token, double *out)
 {
     char *end;
     errno = 0;
-    double v = strtod(token, &end);
-    if (end == token || *end != '\0') {
-        return fail_at_line(p, "'%s' is not a number", token);
-    }
-    if (!isfinite(v) || errno == ERANGE || fabs(v) >= limit) {
-        return fail_at_line(p, "%s is out of range (|v| < %g)", token, limit);
-    }
-    *out = v;
+    *out = strtod(token, &end);
+    if (end == token || *end != '\0') return fail_at_line(p, "'%s' is not a number", token);
     return 0;
 }
 
-/* v x y z [w], vt u [v [w]], vn x y z: reads `min`..`max` numbers of which the
- * first list->width are kept (missing ones are 0). */
-static int parse_element(obj_parser *p, element_list *list, const char *keyword, unsigned min,
-                         unsigned max, char **save)
+/* `count` coordinates, each finite with |v| < limit. */
+static int parse_coordinates(obj_parser *p, char *const tokens[], unsigned count, double limit,
+                             double *out)
+{
+    for (unsigned k = 0; k < count; k++) {
+        if (read_number(p, tokens[k], &out[k])) return -1;
+        if (!isfinite(out[k]) || errno == ERANGE || fabs(out[k]) >= limit) {
+            return fail_at_line(p, "%s is out of range (|v| < %g)", tokens[k], limit);
+        }
+    }
+    return 0;
+}
+
+/* r g b, each 0..1, as 0xRRGGBB rounded to nearest. */
+static int parse_colour(obj_parser *p, char *const tokens[3], uint32_t *rgb)
+{
+    *rgb = 0;
+    for (unsigned k = 0; k < 3; k++) {
+        double c;
+        if (read_number(p, tokens[k], &c)) return -1;
+        if (!(c >= 0.0 && c <= 1.0)) { /* NaN fails both */
+            return fail_at_line(p, "colour component %s is out of range (0..1)", tokens[k]);
+        }
+        *rgb = (*rgb << 8) | (uint32_t)(c * 255.0 + 0.5);
+    }
+    return 0;
+}
+
+/* The rest of the line's tokens, up to `max` + 1 of them so that one too many shows. */
+static unsigned split_tokens(char **save, char *tokens[], unsigned max)
+{
+    unsigned n = 0;
+    while (n <= max && (tokens[n] = strtok_r(NULL, " \t\r\n", save)) != NULL) n++;
+    return n;
+}
+
+/* Room for one more element at the end of `list`; NULL with the error set. */
+static double *append_element(obj_parser *p, element_list *list, const char *keyword)
 {
     if (list->count >= OBJ_ELEMENTS_MAX) {
-        return fail_at_line(p, "more than %u '%s' lines", OBJ_ELEMENTS_MAX, keyword);
+        fail_at_line(p, "more than %u '%s' lines", OBJ_ELEMENTS_MAX, keyword);
+        return NULL;
     }
     if (ensure_capacity((void **)&list->values, &list->capacity,
                         (list->count + 1) * list->width, sizeof(double))) {
-        return fail_at_line(p, "out of memory");
+        fail_at_line(p, "out of memory");
+        return NULL;
     }
-    double *element = list->values + list->count * list->width;
-    unsigned n = 0;
-    for (char *token; (token = strtok_r(NULL, " \t\r\n", save)) != NULL && n <= max; n++) {
-        double v = 0.0;
-        /* Q16.16 holds |v| < 32768; normals are normalised later, so any size goes */
-        if (n < max && parse_number(p, token, list == &p->normals ? HUGE_VAL : 32768.0, &v)) {
-            return -1;
-        }
-        if (n < list->width) element[n] = v;
-    }
+    return list->values + list->count++ * list->width;
+}
+
+/* vt u [v [w]], vn x y z: `min`..`max` numbers of which the first list->width are
+ * kept (missing ones are 0). */
+static int parse_element(obj_parser *p, element_list *list, const char *keyword, unsigned min,
+                         unsigned max, char **save)
+{
+    char *tokens[ELEMENT_NUMBERS_MAX + 1];
+    unsigned n = split_tokens(save, tokens, max);
     if (n < min || n > max) {
         return fail_at_line(p, "'%s' needs %u to %u numbers", keyword, min, max);
     }
-    for (; n < list->width; n++) element[n] = 0.0;
-    list->count++;
+    double numbers[ELEMENT_NUMBERS_MAX] = { 0.0 };
+    /* normals are normalised later, so any size goes */
+    double limit = list == &p->normals ? HUGE_VAL : Q16_COORDINATE_LIMIT;
+    double *element = append_element(p, list, keyword);
+    if (!element || parse_coordinates(p, tokens, n, limit, numbers)) return -1;
+    memcpy(element, numbers, list->width * sizeof *element);
+    return 0;
+}
+
+/* v x y z, or v x y z r g b: the vertex-colour extension MeshLab and Blender write.
+ * Every position gets a colour, white when its line has none. */
+static int parse_vertex(obj_parser *p, char **save)
+{
+    char *tokens[VERTEX_NUMBERS_COLOURED + 1];
+    unsigned n = split_tokens(save, tokens, VERTEX_NUMBERS_COLOURED);
+    if (n != 3 && n != VERTEX_NUMBERS_COLOURED) {
+        return fail_at_line(p, "'v' needs 3 numbers (x y z) or 6 (x y z r g b)");
+    }
+    double *position = append_element(p, &p->positions, "v");
+    if (!position || parse_coordinates(p, tokens, 3, Q16_COORDINATE_LIMIT, position)) return -1;
+    uint32_t rgb = 0xFFFFFFu;
+    if (n == VERTEX_NUMBERS_COLOURED && parse_colour(p, tokens + 3, &rgb)) return -1;
+    if (ensure_capacity((void **)&p->position_colours, &p->position_colour_capacity,
+                        p->positions.count, sizeof *p->position_colours)) {
+        return fail_at_line(p, "out of memory");
+    }
+    p->position_colours[p->positions.count - 1] = rgb;
+    if (n == VERTEX_NUMBERS_COLOURED) p->any_colours = 1;
     return 0;
 }
 
@@ -202,7 +267,7 @@ static int parse_line(obj_parser *p, char *line)
     char *save = NULL;
     char *keyword = strtok_r(line, " \t\r\n", &save);
     if (!keyword || keyword[0] == '#') return 0;
-    if (strcmp(keyword, "v") == 0) return parse_element(p, &p->positions, keyword, 3, 4, &save);
+    if (strcmp(keyword, "v") == 0) return parse_vertex(p, &save);
     if (strcmp(keyword, "vt") == 0) return parse_element(p, &p->texcoords, keyword, 1, 3, &save);
     if (strcmp(keyword, "vn") == 0) return parse_element(p, &p->normals, keyword, 3, 3, &save);
     if (strcmp(keyword, "f") == 0) return parse_face(p, &save);
@@ -298,7 +363,9 @@ static void emit_vertex(const obj_parser *p, corner c, const double *smooth,
         uv[0] = t[0];
         uv[1] = 1.0 - t[1]; /* OBJ's v grows up the image, tarn's down */
     }
-    tarn_mesh_add_vertex(out, position_of(p, c), normal, uv);
+    uint16_t index = tarn_mesh_add_vertex(out, position_of(p, c), normal, uv);
+    /* a colour belongs to the v line, so every split of a position shares it */
+    if (out->colours) out->colours[index] = p->position_colours[c.position];
 }
 
 static int build_mesh(const obj_parser *p, tarn_mesh_buffer *out, tarn_error *err)
@@ -324,6 +391,7 @@ static int build_mesh(const obj_parser *p, tarn_mesh_buffer *out, tarn_error *er
         result = tarn_mesh_reserve(out, (uint32_t)t.vertex_count, (uint32_t)p->triangle_count,
                                    p->any_texcoords, p->path, err);
     }
+    if (result == 0 && p->any_colours) result = tarn_mesh_reserve_colours(out, p->path, err);
     if (result == 0) {
         for (size_t v = 0; v < t.vertex_count; v++) emit_vertex(p, t.vertices[v], smooth, out);
         for (size_t k = 0; k < corner_count; k += 3) {
@@ -356,5 +424,6 @@ int tarn_obj_load(const char *path, tarn_mesh_buffer *out, tarn_error *err)
     free(p.texcoords.values);
     free(p.normals.values);
     free(p.corners);
+    free(p.position_colours);
     return result;
 }

@@ -1,6 +1,6 @@
 /* obj_load.h: Wavefront OBJ meshes.
  *
- * Understood: v (x y z, optional w ignored), vt (u [v [w]]), vn (x y z), f with
+ * Understood: v (x y z, or x y z r g b), vt (u [v [w]]), vn (x y z), f with
  * three or more corners (polygons are fanned from their first corner, so they must
  * be convex), each corner v, v/vt, v//vn or v/vt/vn, indices from 1 or negative
  * (relative to the elements read so far). Ignored: o, g, s, usemtl, mtllib and
@@ -9,7 +9,12 @@
  * OBJ fronts are counter-clockwise, as in tarn. OBJ's v runs up the image while
  * tarn's runs down, so v becomes 1 - v. Corners without a normal get a smooth one,
  * the area-weighted average of the faces around their position. Coordinates must
- * satisfy |v| < 32768 to fit Q16.16. */
+ * satisfy |v| < 32768 to fit Q16.16.
+ *
+ * Vertex colours (the MeshLab/Blender extension): r g b in 0..1 on a v line, rounded
+ * to 8 bits each. If any v line has them the mesh gets colours, white for v lines
+ * without; otherwise its colours are NULL. The homogeneous w of `v x y z w` is not
+ * accepted: four numbers more likely mean a colour cut short. */
 #ifndef TARN_HOST_OBJ_LOAD_H
 #define TARN_HOST_OBJ_LOAD_H
 

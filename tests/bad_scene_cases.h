@@ -52,6 +52,7 @@ typedef struct {
                               "\"size\": [4, 4], \"height\": 1"))
 #define BAD_OBJ(text) { { "leaf.obj", BAD_TEXT, text, 0, 0 } }
 #define BAD_QUAD "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+#define BAD_V_COUNT "'v' needs 3 numbers (x y z) or 6 (x y z r g b)"
 
 static const bad_scene_case BAD_SCENE_CASES[] = {
     /* JSON syntax: jansson's text, at line:column */
@@ -175,7 +176,21 @@ static const bad_scene_case BAD_SCENE_CASES[] = {
     { "OBJ coordinate too large", BAD_MESH_SCENE, BAD_OBJ("v 0 1e6 0\n"), "leaf.obj",
       ":1: 1e6 is out of range (|v| < 32768)" },
     { "OBJ too few coordinates", BAD_MESH_SCENE, BAD_OBJ("v 0 1\n"), "leaf.obj",
-      ":1: 'v' needs 3 to 4 numbers" },
+      ":1: " BAD_V_COUNT },
+    { "OBJ homogeneous w", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "v 0 0 0 1\n"), "leaf.obj",
+      ":5: " BAD_V_COUNT },
+    { "OBJ colour missing b", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "v 0 0 0 1 1\n"), "leaf.obj",
+      ":5: " BAD_V_COUNT },
+    { "OBJ colour with alpha", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "v 0 0 0 1 1 1 1\n"),
+      "leaf.obj", ":5: " BAD_V_COUNT },
+    { "OBJ colour above 1", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "v 0 0 0 0.5 1.5 0\n"),
+      "leaf.obj", ":5: colour component 1.5 is out of range (0..1)" },
+    { "OBJ negative colour", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "v 0 0 0 0 0 -0.1\n"),
+      "leaf.obj", ":5: colour component -0.1 is out of range (0..1)" },
+    { "OBJ NaN colour", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "v 0 0 0 nan 0 0\n"), "leaf.obj",
+      ":5: colour component nan is out of range (0..1)" },
+    { "OBJ infinite colour", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "v 0 0 0 0 inf 0\n"), "leaf.obj",
+      ":5: colour component inf is out of range (0..1)" },
     { "OBJ two-corner face", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "f 1 2\n"), "leaf.obj",
       ":5: a face needs at least 3 corners" },
     { "OBJ bad corner", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD "f 1 2 3/1/1/1\n"), "leaf.obj",

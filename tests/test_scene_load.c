@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "bad_scene_cases.h"
+#include "core_render.h"
 #include "mesh_gen.h"
 #include "obj_load.h"
 #include "png_io.h"
@@ -342,7 +343,8 @@ static void test_obj_polygons(void **state)
     for (uint32_t t = 0; t < m->triangle_count; t++) assert_true(face_normal(m, t).z > 0);
     /* no normals in the file: smooth ones, here all +z */
     for (uint32_t v = 0; v < m->vertex_count; v++) assert_int_equal(m->normals[v].z, 65536);
-    assert_null(m->uvs); /* no vt anywhere */
+    assert_null(m->uvs);     /* no vt anywhere */
+    assert_null(m->colours); /* nor a coloured v */
     tarn_mesh_buffer_free(&b);
 }
 
@@ -410,13 +412,46 @@ static void test_obj_texcoords_and_normals(void **state)
     tarn_mesh_buffer_free(&b);
 }
 
-static void test_obj_crlf_and_w(void **state)
+static void test_obj_crlf(void **state)
 {
     (void)state;
     tarn_mesh_buffer b;
-    load_obj_text("v 0 0 0 1\r\nv 1 0 0 1\r\nv 0 1 0 1\r\nf 1 2 3\r\n", &b);
+    load_obj_text("v 0 0 0\r\nv 1 0 0 0 0 1\r\nv 0 1 0\r\nf 1 2 3\r\n", &b);
     assert_int_equal(b.mesh.triangle_count, 1);
     assert_int_equal(b.mesh.positions[1].x, 65536);
+    assert_non_null(b.mesh.colours);
+    assert_int_equal(b.mesh.colours[1], 0x0000FF); /* the \r is not part of the blue */
+    tarn_mesh_buffer_free(&b);
+}
+
+static void test_obj_vertex_colours(void **state)
+{
+    (void)state;
+    /* position 1 is used with two normals, so it splits into two vertices: both
+     * keep its colour. 0.5 -> 128 and 0.2 -> 51 show rounding to nearest. */
+    tarn_mesh_buffer b;
+    load_obj_text("v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nv 1 1 0 0.5 0.25 0.2\n"
+                  "vn 0 0 1\nvn 0 1 0\nf 1//1 2//1 3//1\nf 2//1 4//1 3//1\nf 1//2 3//1 4//1\n",
+                  &b);
+    const tarn_mesh *m = &b.mesh;
+    assert_int_equal(m->vertex_count, 5);
+    check_mesh_consistent(m);
+    assert_non_null(m->colours);
+    static const uint32_t expected[] = { 0xFF0000, 0x00FF00, 0x0000FF, 0x804033, 0xFF0000 };
+    assert_memory_equal(m->colours, expected, sizeof expected);
+    assert_int_equal(m->positions[4].x, m->positions[0].x); /* the split: same position */
+    tarn_mesh_buffer_free(&b);
+}
+
+static void test_obj_mixed_colours(void **state)
+{
+    (void)state;
+    /* one coloured v line gives the whole mesh colours; the others are white */
+    tarn_mesh_buffer b;
+    load_obj_text("v 0 0 0\nv 1 0 0 0.2 0.4 0.6\nv 0 1 0\nf 1 2 3\n", &b);
+    static const uint32_t expected[] = { 0xFFFFFF, 0x336699, 0xFFFFFF };
+    assert_non_null(b.mesh.colours);
+    assert_memory_equal(b.mesh.colours, expected, sizeof expected);
     tarn_mesh_buffer_free(&b);
 }
 
@@ -717,6 +752,62 @@ static void test_asset_paths(void **state)
     remove_temp_dir(dir);
 }
 
+/* Index of the covered pixel whose centre is nearest (sx, sy). */
+static size_t nearest_covered_pixel(const uint8_t *covered, int width, int height, double sx,
+                                    double sy)
+{
+    size_t best = SIZE_MAX;
+    double best_distance = HUGE_VAL;
+    for (int j = 0; j < height; j++) {
+        for (int i = 0; i < width; i++) {
+            double dx = i + 0.5 - sx, dy = j + 0.5 - sy, distance = dx * dx + dy * dy;
+            if (covered[j * width + i] && distance < best_distance) {
+                best = (size_t)(j * width + i);
+                best_distance = distance;
+            }
+        }
+    }
+    assert_true(best_distance < 2.0 * 2.0);
+    return best;
+}
+
+static void test_vertex_colours_render(void **state)
+{
+    (void)state;
+    /* loader to core: an unlit white triangle with a red, a green and a blue corner,
+     * seen head on. fov 90 from z = 1 maps x, y in -1..1 onto the 64 pixels. */
+    enum { SIDE = 64 };
+    static const double corners[3][2] = { { -0.9, -0.9 }, { 0.9, -0.9 }, { 0.0, 0.9 } };
+    static const uint8_t corner_rgb[3][3] = { { 255, 0, 0 }, { 0, 255, 0 }, { 0, 0, 255 } };
+    char *dir = make_temp_dir();
+    write_temp(dir, "tri.obj", "v -0.9 -0.9 0 1 0 0\nv 0.9 -0.9 0 0 1 0\nv 0 0.9 0 0 0 1\n"
+                               "f 1 2 3\n");
+    const char *scene_path = write_temp(
+        dir, "tri.json",
+        "{\"frame\": {\"width\": 64, \"height\": 64},"
+        " \"camera\": {\"position\": [0, 0, 1], \"target\": [0, 0, 0], \"fov\": 90},"
+        " \"materials\": {\"paint\": {\"colour\": \"#ffffff\", \"unlit\": true}},"
+        " \"objects\": [{\"type\": \"mesh\", \"material\": \"paint\", \"file\": \"tri.obj\"}]}");
+    tarn_loaded_scene s;
+    tarn_error err = { "" };
+    if (tarn_scene_load(scene_path, &s, &err)) fail_msg("%s", err.message);
+    tarn_frame_config config = { SIDE, SIDE, tarn_quality_default(), 0 };
+    static uint8_t rgb[SIDE * SIDE * 3], covered[SIDE * SIDE];
+    if (tarn_core_render(&s.scene, &config, rgb, covered, &err)) fail_msg("%s", err.message);
+    for (int k = 0; k < 3; k++) {
+        double sx = SIDE / 2.0 * (1.0 + corners[k][0]), sy = SIDE / 2.0 * (1.0 - corners[k][1]);
+        const uint8_t *pixel = rgb + 3 * nearest_covered_pixel(covered, SIDE, SIDE, sx, sy);
+        for (int c = 0; c < 3; c++) {
+            if (abs(pixel[c] - corner_rgb[k][c]) > 8) {
+                fail_msg("corner %d: pixel #%02x%02x%02x, expected #%02x%02x%02x", k, pixel[0],
+                         pixel[1], pixel[2], corner_rgb[k][0], corner_rgb[k][1], corner_rgb[k][2]);
+            }
+        }
+    }
+    tarn_scene_free(&s);
+    remove_temp_dir(dir);
+}
+
 static void test_bad_inputs(void **state)
 {
     (void)state;
@@ -756,7 +847,9 @@ int main(void)
         cmocka_unit_test(test_obj_negative_indices),
         cmocka_unit_test(test_obj_missing_normals),
         cmocka_unit_test(test_obj_texcoords_and_normals),
-        cmocka_unit_test(test_obj_crlf_and_w),
+        cmocka_unit_test(test_obj_crlf),
+        cmocka_unit_test(test_obj_vertex_colours),
+        cmocka_unit_test(test_obj_mixed_colours),
         cmocka_unit_test(test_obj_triangle_limit),
         cmocka_unit_test(test_png_round_trip),
         cmocka_unit_test(test_png_formats),
@@ -764,6 +857,7 @@ int main(void)
         cmocka_unit_test(test_pond),
         cmocka_unit_test(test_scene_defaults_and_rotation),
         cmocka_unit_test(test_asset_paths),
+        cmocka_unit_test(test_vertex_colours_render),
         cmocka_unit_test(test_bad_inputs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
