@@ -73,13 +73,25 @@ static int texture_valid(const tarn_texture *t)
            t->width <= TARN_TEXTURE_SIZE_MAX && t->height <= TARN_TEXTURE_SIZE_MAX;
 }
 
+/* Clusters, when given, must cover the triangles exactly once and in order. */
+static int clusters_valid(const tarn_mesh *m)
+{
+    if (m->clusters == NULL) return 1;
+    uint32_t next = 0;
+    for (uint32_t c = 0; c < m->cluster_count; c++) {
+        if (m->clusters[c].first_triangle != next || m->clusters[c].radius < 0) return 0;
+        next += m->clusters[c].triangle_count;
+    }
+    return next == m->triangle_count;
+}
+
 static int mesh_valid(const tarn_mesh *m)
 {
     if (m->triangle_count == 0) return 1;
     if (m->positions == NULL || m->normals == NULL || m->indices == NULL) return 0;
     for (uint32_t i = 0; i < 3u * m->triangle_count; i++)
         if (m->indices[i] >= m->vertex_count) return 0;
-    return 1;
+    return clusters_valid(m);
 }
 
 tarn_status tarn_scene_check(const tarn_scene *scene)

@@ -45,6 +45,17 @@ typedef struct {
 #define TARN_MESH_VERTICES_MAX 65535u
 #define TARN_MESH_TRIANGLES_MAX 65535u
 
+/* A run of a mesh's triangles that lie close together, and a sphere holding all
+ * their vertices. For each tile the renderer tests the sphere against the tile's
+ * slice of the view and skips the whole run when it cannot touch it: the walk stays
+ * free of RAM, and most of a large mesh is never transformed for a given tile. */
+typedef struct {
+    tarn_vec3 centre;        /* object space, Q16.16 */
+    tarn_q16 radius;         /* object space, Q16.16; every vertex of the run within it */
+    uint16_t first_triangle; /* the run is triangles [first, first + count) */
+    uint16_t triangle_count;
+} tarn_cluster;
+
 typedef struct {
     const tarn_vec3 *positions; /* object space, Q16.16 */
     const tarn_vec3 *normals;   /* unit length, Q16.16, object space */
@@ -53,6 +64,9 @@ typedef struct {
     const uint16_t *indices;    /* 3 per triangle */
     uint16_t vertex_count;
     uint16_t triangle_count;
+    const tarn_cluster *clusters; /* runs covering every triangle once, in order; NULL:
+                                     one run of all triangles that is never skipped */
+    uint16_t cluster_count;
 } tarn_mesh;
 
 /* World = position + scale * rotation * object. The rotation is orthonormal, so

@@ -1,7 +1,54 @@
 /* triangles.c: walks a scene's triangles through transform, clipping, projection
  * and culling-free emission; the rasterizer culls, since culling needs the
- * snapped screen winding. */
+ * snapped screen winding. For a tile, whole clusters whose bounding sphere misses
+ * the tile's slice of the view are skipped before any of their vertices is touched. */
 #include "pipeline.h"
+
+/* The four planes through the eye bounding a pixel rectangle, as
+ * side * (x*focal - offset*d) >= 0 with x the view x (or -y) and offset the
+ * rectangle edge's distance from the frame centre; norm = |(focal, offset)|. */
+typedef struct {
+    int32_t offset_q8[4]; /* pixels from the frame centre, Q24.8: left, right, top, bottom */
+    int64_t norm_q8[4];   /* sqrt(focal^2 + offset^2), Q.8 */
+    int use_x[4];         /* 1: the plane bounds x; 0: it bounds -y (screen y runs down) */
+    int side[4];          /* +1: inside where x*focal >= offset*d; -1: where <= */
+    int active;           /* 0: no rectangle, every cluster is walked */
+} tile_frustum;
+
+static tile_frustum make_tile_frustum(const tarn_view *view, const tarn_pixel_rect *rect)
+{
+    tile_frustum f;
+    f.active = rect != NULL;
+    if (!f.active) return f;
+    const int32_t edges[4] = {rect->x0, rect->x1, rect->y0, rect->y1};
+    for (int k = 0; k < 4; k++) {
+        const int horizontal = k < 2;
+        const int32_t centre = horizontal ? view->width : view->height; /* in half pixels */
+        f.offset_q8[k] = edges[k] * 256 - centre * 128;
+        f.use_x[k] = horizontal;
+        f.side[k] = (k % 2 == 0) ? 1 : -1;
+        uint64_t sum = (uint64_t)((int64_t)view->focal_q8 * view->focal_q8) +
+                       (uint64_t)((int64_t)f.offset_q8[k] * f.offset_q8[k]);
+        f.norm_q8[k] = (int64_t)tarn_isqrt_u64(sum) + 1; /* rounded up: conservative */
+    }
+    return f;
+}
+
+/* 1 when the sphere (view space centre, radius) cannot touch the tile's slice of
+ * the view between near and far. */
+static int sphere_misses_tile(const tarn_view *view, const tile_frustum *f,
+                              const tarn_view_vertex *centre, int64_t radius_q16)
+{
+    if ((int64_t)centre->d + radius_q16 < view->near) return 1;
+    if ((int64_t)centre->d - radius_q16 > view->far) return 1;
+    if (!f->active) return 0;
+    for (int k = 0; k < 4; k++) {
+        const int64_t along = f->use_x[k] ? centre->x : -(int64_t)centre->y;
+        const int64_t signed_q24 = f->side[k] * (along * view->focal_q8 - (int64_t)f->offset_q8[k] * centre->d);
+        if (signed_q24 < -radius_q16 * f->norm_q8[k]) return 1;
+    }
+    return 0;
+}
 
 static int bounds_miss_rect(const tarn_screen_vertex s[3], unsigned subpixel_bits,
                             const tarn_pixel_rect *rect)
@@ -32,25 +79,24 @@ static void emit_clipped(const tarn_view *view, unsigned planes, const tarn_view
     }
 }
 
-static void walk_object(const tarn_view *view, const tarn_object *object,
-                        const tarn_pixel_rect *only_rect, tarn_triangle_sink sink, void *ctx)
+static void walk_run(const tarn_view *view, const tarn_object_xform *xform, const tarn_object *object,
+                     uint32_t first, uint32_t end, const tarn_pixel_rect *only_rect,
+                     tarn_triangle_sink sink, void *ctx)
 {
     const tarn_mesh *mesh = object->mesh;
-    tarn_object_xform xform;
-    tarn_object_xform_setup(view, object, &xform);
-    for (uint32_t t = 0; t < mesh->triangle_count; t++) {
+    for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
         tarn_view_vertex v[3] = {{0}};
         unsigned outside_all = ~0u, outside_any = 0;
         for (int k = 0; k < 3; k++) {
-            tarn_vertex_position(&xform, &mesh->positions[index[k]], &v[k]);
+            tarn_vertex_position(xform, &mesh->positions[index[k]], &v[k]);
             unsigned code = tarn_clip_outcode(view, &v[k]);
             outside_all &= code;
             outside_any |= code;
         }
         if (outside_all) continue; /* wholly outside one plane */
         if (outside_any) {
-            for (int k = 0; k < 3; k++) tarn_vertex_shade(view, &xform, mesh, index[k], &v[k]);
+            for (int k = 0; k < 3; k++) tarn_vertex_shade(view, xform, mesh, index[k], &v[k]);
             emit_clipped(view, outside_any, v, object, sink, ctx);
             continue;
         }
@@ -58,16 +104,38 @@ static void walk_object(const tarn_view *view, const tarn_object *object,
         for (int k = 0; k < 3; k++) tarn_project(view, &v[k], &screen[k]);
         if (only_rect && bounds_miss_rect(screen, view->subpixel_bits, only_rect)) continue;
         for (int k = 0; k < 3; k++) {
-            tarn_vertex_shade(view, &xform, mesh, index[k], &v[k]);
+            tarn_vertex_shade(view, xform, mesh, index[k], &v[k]);
             tarn_project_attributes(&v[k], &screen[k]);
         }
         sink(ctx, screen, object);
     }
 }
 
+static void walk_object(const tarn_view *view, const tarn_object *object, const tile_frustum *frustum,
+                        const tarn_pixel_rect *only_rect, tarn_triangle_sink sink, void *ctx)
+{
+    const tarn_mesh *mesh = object->mesh;
+    tarn_object_xform xform;
+    tarn_object_xform_setup(view, object, &xform);
+    if (mesh->clusters == NULL) {
+        walk_run(view, &xform, object, 0, mesh->triangle_count, only_rect, sink, ctx);
+        return;
+    }
+    for (uint32_t c = 0; c < mesh->cluster_count; c++) {
+        const tarn_cluster *cluster = &mesh->clusters[c];
+        tarn_view_vertex centre;
+        tarn_vertex_position(&xform, &cluster->centre, &centre);
+        int64_t radius = tarn_round_shift_i64((int64_t)cluster->radius * object->scale, 16) + 1;
+        if (sphere_misses_tile(view, frustum, &centre, radius)) continue;
+        walk_run(view, &xform, object, cluster->first_triangle,
+                 (uint32_t)cluster->first_triangle + cluster->triangle_count, only_rect, sink, ctx);
+    }
+}
+
 void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view,
                          const tarn_pixel_rect *only_rect, tarn_triangle_sink sink, void *ctx)
 {
+    const tile_frustum frustum = make_tile_frustum(view, only_rect);
     for (uint32_t i = 0; i < scene->object_count; i++)
-        walk_object(view, &scene->objects[i], only_rect, sink, ctx);
+        walk_object(view, &scene->objects[i], &frustum, only_rect, sink, ctx);
 }

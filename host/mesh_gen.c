@@ -106,6 +106,7 @@ void tarn_mesh_buffer_free(tarn_mesh_buffer *m)
     free(m->uvs);
     free(m->colours);
     free(m->indices);
+    free(m->clusters);
     memset(m, 0, sizeof *m);
 }
 

@@ -1,5 +1,7 @@
 #include "scene_load.h"
 
+#include "mesh_clusters.h"
+
 #include <errno.h>
 #include <jansson.h>
 #include <math.h>
@@ -661,7 +663,7 @@ static int load_object(loader *l, const json_t *o, size_t index)
         get_vec3(l, o, field, "position", origin, position) ||
         get_vec3(l, o, field, "rotation", origin, rotation) ||
         get_number(l, o, field, "scale", &POSITIVE, &unit_scale, &scale) ||
-        type->build(l, o, field, mesh)) {
+        type->build(l, o, field, mesh) || tarn_mesh_build_clusters(mesh, l->err)) {
         return -1;
     }
     object->mesh = &mesh->mesh;
