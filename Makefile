@@ -31,6 +31,7 @@ TARN := $(BUILD)/tarn
 
 .PHONY: all demo test check deps deps-test core-purity clean
 .DELETE_ON_ERROR:
+.SECONDARY:
 
 all: $(TARN)
 
@@ -51,12 +52,11 @@ test: deps-test
 	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
 	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
 	@$(MAKE) --no-print-directory core-purity
-	@echo "all test suites passed"
+	@cat build/release/summary build/san/summary | \
+		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'
 
 check: $(TARN) $(TEST_BIN)
-	@set -e; for t in $(TEST_BIN); do \
-		echo "== $$t"; TARN_BIN=$(TARN) $$t; \
-	done
+	@TARN_BIN=$(TARN) SUMMARY_FILE=$(BUILD)/summary tests/run_suites.sh $(TEST_BIN)
 
 core-purity:
 	@BUILD=build/m0 tests/check_core_purity.sh

@@ -22,6 +22,13 @@ for src in core/*.c; do
     if [ -n "$helpers" ]; then fail "$src references soft-float helpers: $helpers"; else pass; fi
 done
 
+# Functions that run per pixel on a Cortex-M0 (no divider, no 32x32->64 multiply)
+# must not call the library's division or 64-bit multiply helpers.
+for unit in exp2 recip; do
+    slow=$(arm-none-eabi-nm -u "$BUILD/$unit.o" | grep -E '__aeabi_(l|ul|i|ui)div|__aeabi_lmul|__aeabi_.*divmod|__divdi3|__muldi3' || true)
+    if [ -n "$slow" ]; then fail "core/$unit.c calls division or 64-bit multiply helpers: $slow"; else pass; fi
+done
+
 # Comments may mention these words; code may not. Strip comments before looking.
 for src in core/*.c core/*.h; do
     code=$(sed -e 's://.*$::' "$src" | perl -0pe 's:/\*.*?\*/::gs')
@@ -32,12 +39,17 @@ for src in core/*.c core/*.h; do
     if [ -n "$includes" ]; then fail "$src includes a non-freestanding header: $includes"; else pass; fi
 done
 
-# The check must be able to fail: a float expression does pull in a helper.
+# The checks must be able to fail: a float expression pulls in a soft-float
+# helper, and a 64-bit product a multiply helper.
 probe="$BUILD/probe_float.o"
 printf 'float tarn_probe(float a, int b) { return a * (float)b; }\n' |
     arm-none-eabi-gcc -x c -std=c99 -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -O2 -c - -o "$probe"
 if arm-none-eabi-nm -u "$probe" | grep -qE '__aeabi_(f|d)|__aeabi_[a-z0-9]+2(f|d)$'; then pass; else
     fail "the soft-float probe found no helper: the check itself is broken"; fi
+printf 'long long tarn_probe(long long a, long long b) { return a * b / 3; }\n' |
+    arm-none-eabi-gcc -x c -std=c99 -mcpu=cortex-m0 -mthumb -O2 -c - -o "$probe"
+if arm-none-eabi-nm -u "$probe" | grep -qE '__aeabi_lmul' && arm-none-eabi-nm -u "$probe" | grep -qE '__aeabi_ldivmod'; then pass; else
+    fail "the 64-bit probe found no helper: the check itself is broken"; fi
 
 echo "purity: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
