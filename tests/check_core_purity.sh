@@ -22,9 +22,9 @@ for src in core/*.c; do
     if [ -n "$helpers" ]; then fail "$src references soft-float helpers: $helpers"; else pass; fi
 done
 
-# Functions that run per pixel on a Cortex-M0 (no divider, no 32x32->64 multiply)
+# Code that runs per pixel on a Cortex-M0 (no divider, no 32x32->64 multiply)
 # must not call the library's division or 64-bit multiply helpers.
-for unit in exp2 recip; do
+for unit in exp2 recip raster; do
     slow=$(arm-none-eabi-nm -u "$BUILD/$unit.o" | grep -E '__aeabi_(l|ul|i|ui)div|__aeabi_lmul|__aeabi_.*divmod|__divdi3|__muldi3' || true)
     if [ -n "$slow" ]; then fail "core/$unit.c calls division or 64-bit multiply helpers: $slow"; else pass; fi
 done

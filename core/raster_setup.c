@@ -1,0 +1,197 @@
+/* raster_setup.c: per-triangle setup for the rasterizer: winding and culling, edge
+ * functions, the pixel box, attribute planes and the exact depth plane. 64-bit
+ * products and divisions are allowed here (once per triangle per tile), never in
+ * raster.c. */
+#include "raster_setup.h"
+
+static int64_t round_div_i64(int64_t num, int64_t den) /* den > 0 */
+{
+    return num >= 0 ? (num + den / 2) / den : -((-num + den / 2) / den);
+}
+
+static exact_value floor_divmod(int64_t num, int64_t den) /* den > 0 */
+{
+    int64_t q = num / den, r = num % den;
+    if (r < 0) {
+        r += den;
+        q--;
+    }
+    exact_value v = {(uint32_t)q, (uint32_t)r};
+    return v;
+}
+
+static unsigned bit_length_u32(uint32_t v)
+{
+    return 32u - tarn_clz32(v);
+}
+
+static edge make_edge(const tarn_screen_vertex *from, const tarn_screen_vertex *to)
+{
+    edge e;
+    int32_t dx = to->x - from->x, dy = to->y - from->y;
+    e.a = -dy;
+    e.b = dx;
+    e.x = from->x;
+    e.y = from->y;
+    /* With area2 > 0 on a y-down screen, top edges run in +x and left edges in -y. */
+    int top_or_left = (dy == 0 && dx > 0) || dy < 0;
+    e.bias = top_or_left ? 0 : -1;
+    return e;
+}
+
+static int64_t edge_unbiased_at(const edge *e, int32_t px, int32_t py)
+{
+    return (int64_t)e->a * (px - e->x) + (int64_t)e->b * (py - e->y);
+}
+
+int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned s,
+                           triangle_setup *t)
+{
+    int64_t area2 = (int64_t)(in[1].x - in[0].x) * (in[2].y - in[0].y) -
+                    (int64_t)(in[1].y - in[0].y) * (in[2].x - in[0].x);
+    if (area2 == 0) return 0;
+    int front = area2 < 0; /* counter-clockwise in the y-up world */
+    if ((cull == TARN_CULL_BACK && !front) || (cull == TARN_CULL_FRONT && front)) return 0;
+    t->v[0] = &in[0];
+    t->v[1] = front ? &in[2] : &in[1];
+    t->v[2] = front ? &in[1] : &in[2];
+    t->area2 = front ? -area2 : area2;
+    t->subpixel_bits = s;
+    /* edge k is the one opposite vertex k */
+    t->edges[0] = make_edge(t->v[1], t->v[2]);
+    t->edges[1] = make_edge(t->v[2], t->v[0]);
+    t->edges[2] = make_edge(t->v[0], t->v[1]);
+    return 1;
+}
+
+pixel_box tarn_triangle_pixels(const triangle_setup *t)
+{
+    const unsigned s = t->subpixel_bits;
+    const int32_t half = (int32_t)1 << (s - 1);
+    int32_t min_x = t->v[0]->x, max_x = min_x, min_y = t->v[0]->y, max_y = min_y;
+    for (int k = 1; k < 3; k++) {
+        if (t->v[k]->x < min_x) min_x = t->v[k]->x;
+        if (t->v[k]->x > max_x) max_x = t->v[k]->x;
+        if (t->v[k]->y < min_y) min_y = t->v[k]->y;
+        if (t->v[k]->y > max_y) max_y = t->v[k]->y;
+    }
+    pixel_box box;
+    box.x0 = -floor_shift(half - min_x, s); /* ceil((min - half) / 2^s) */
+    box.y0 = -floor_shift(half - min_y, s);
+    box.x1 = floor_shift(max_x - half, s);
+    box.y1 = floor_shift(max_y - half, s);
+    return box;
+}
+
+/* A plane through the three vertex values (each within [0, 2^30]). */
+static plane make_plane(const triangle_setup *t, const int64_t value[3])
+{
+    const unsigned s = t->subpixel_bits;
+    const edge *e1 = &t->edges[1], *e2 = &t->edges[2];
+    const int64_t d1 = value[1] - value[0], d2 = value[2] - value[0];
+    const int32_t px = pixel_centre(t->anchor_i, s), py = pixel_centre(t->anchor_j, s);
+    int64_t at_anchor = value[0] + round_div_i64(edge_unbiased_at(e1, px, py) * d1 +
+                                                 edge_unbiased_at(e2, px, py) * d2, t->area2);
+    int64_t step_x = round_div_i64(((int64_t)e1->a * d1 + (int64_t)e2->a * d2) * ((int64_t)1 << s), t->area2);
+    int64_t step_y = round_div_i64(((int64_t)e1->b * d1 + (int64_t)e2->b * d2) * ((int64_t)1 << s), t->area2);
+    plane p = {(uint32_t)at_anchor, (uint32_t)step_x, (uint32_t)step_y};
+    return p;
+}
+
+/* Scales one attribute's three values toward 2^30 and premultiplies by q. */
+static void add_attribute(attribute_set *set, const triangle_setup *t, const uint32_t value[3],
+                          const uint32_t q[3])
+{
+    const int k = set->count++;
+    uint32_t largest = value[0] | value[1] | value[2];
+    unsigned shift = 30u - (bit_length_u32(largest) > 30u ? 30u : bit_length_u32(largest));
+    int64_t premultiplied[3];
+    set->t_min[k] = T_ONE;
+    set->t_max[k] = 0;
+    for (int n = 0; n < 3; n++) {
+        uint32_t scaled = (value[n] > T_ONE ? T_ONE : value[n]) << shift;
+        if (scaled > T_ONE) scaled = T_ONE;
+        if (scaled < set->t_min[k]) set->t_min[k] = scaled;
+        if (scaled > set->t_max[k]) set->t_max[k] = scaled;
+        premultiplied[n] = set->perspective == TARN_PERSPECTIVE_AFFINE
+            ? (int64_t)scaled
+            : (int64_t)(((uint64_t)scaled * q[n]) >> 30);
+    }
+    set->t_shift[k] = shift;
+    set->premultiplied[k] = make_plane(t, premultiplied);
+}
+
+/* Texture coordinates less their whole repeats (which do not move a texel). */
+static void texture_coordinates(const triangle_setup *t, int axis, uint32_t out[3], uint32_t *base)
+{
+    int32_t c[3], low;
+    for (int n = 0; n < 3; n++) c[n] = axis == 0 ? t->v[n]->uv.u : t->v[n]->uv.v;
+    low = c[0] < c[1] ? c[0] : c[1];
+    low = low < c[2] ? low : c[2];
+    int32_t whole = floor_shift(low, 16);
+    *base = (uint32_t)whole << 16;
+    for (int n = 0; n < 3; n++) out[n] = (uint32_t)c[n] - *base;
+}
+
+static int64_t depth_numerator_step(const triangle_setup *t, int32_t a1, int32_t a2)
+{
+    const int64_t d1 = (int64_t)t->v[1]->inv_depth - t->v[0]->inv_depth;
+    const int64_t d2 = (int64_t)t->v[2]->inv_depth - t->v[0]->inv_depth;
+    return (a1 * d1 + a2 * d2) * ((int64_t)1 << t->subpixel_bits);
+}
+
+static exact_plane make_exact_depth_plane(const triangle_setup *t)
+{
+    exact_plane p;
+    p.den = (uint32_t)t->area2;
+    p.step_x = floor_divmod(depth_numerator_step(t, t->edges[1].a, t->edges[2].a), t->area2);
+    p.step_y = floor_divmod(depth_numerator_step(t, t->edges[1].b, t->edges[2].b), t->area2);
+    return p;
+}
+
+/* Exact depth at pixel (i, j): (area2*z0 + E1*(z1 - z0) + E2*(z2 - z0) + area2/2) / area2,
+ * each term below 2^61 inside the guard box. */
+exact_value tarn_exact_depth_at(const triangle_setup *t, int32_t i, int32_t j)
+{
+    const unsigned s = t->subpixel_bits;
+    const int32_t px = pixel_centre(i, s), py = pixel_centre(j, s);
+    const int64_t z0 = t->v[0]->inv_depth;
+    int64_t num = t->area2 * z0 + t->area2 / 2 +
+                  edge_unbiased_at(&t->edges[1], px, py) * ((int64_t)t->v[1]->inv_depth - z0) +
+                  edge_unbiased_at(&t->edges[2], px, py) * ((int64_t)t->v[2]->inv_depth - z0);
+    return floor_divmod(num, t->area2);
+}
+
+void tarn_setup_attributes(const triangle_setup *t, int textured, uint8_t perspective,
+                             attribute_set *set)
+{
+    int64_t q_values[3];
+    uint32_t q[3], largest = 0;
+    set->count = 0;
+    set->perspective = perspective;
+    for (int n = 0; n < 3; n++)
+        if (t->v[n]->inv_depth > largest) largest = t->v[n]->inv_depth;
+    set->depth = make_exact_depth_plane(t);
+    unsigned normalise = tarn_clz32(largest) > 2u ? tarn_clz32(largest) - 2u : 0u;
+    set->q_min = T_ONE;
+    set->q_max = 0;
+    for (int n = 0; n < 3; n++) {
+        q[n] = t->v[n]->inv_depth << normalise;
+        q_values[n] = q[n];
+        if (q[n] < set->q_min) set->q_min = q[n];
+        if (q[n] > set->q_max) set->q_max = q[n];
+    }
+    set->q = make_plane(t, q_values);
+    for (int c = 0; c < 3; c++) {
+        uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
+        add_attribute(set, t, lit, q);
+    }
+    if (textured) {
+        uint32_t coordinate[3];
+        texture_coordinates(t, 0, coordinate, &set->u_base);
+        add_attribute(set, t, coordinate, q);
+        texture_coordinates(t, 1, coordinate, &set->v_base);
+        add_attribute(set, t, coordinate, q);
+    }
+}
+

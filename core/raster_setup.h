@@ -1,0 +1,109 @@
+/* raster_setup.h: the rasterizer's per-triangle setup (raster_setup.c) and the
+ * shapes it hands to the per-pixel loops (raster.c). The split is the numeric
+ * contract made visible: setup may use 64-bit products and divisions once per
+ * triangle; nothing in raster.c may, and tests/check_core_purity.sh proves it on
+ * the Cortex-M0 build. Private to core/. */
+#ifndef TARN_RASTER_SETUP_H
+#define TARN_RASTER_SETUP_H
+
+#include "pipeline.h"
+
+#define T_ONE ((uint32_t)1 << 30)
+#define ATTRIBUTES_MAX 5 /* lit r, g, b; texture u, v */
+
+typedef struct {
+    uint32_t anchor, step_x, step_y; /* modulo 2^32 */
+} plane;
+
+typedef struct {
+    int32_t a, b, x, y, bias; /* E(p) = a*(px - x) + b*(py - y) + bias, covered when >= 0 */
+} edge;
+
+
+typedef struct {
+    int32_t x0, y0, x1, y1; /* pixel bounds, inclusive */
+} pixel_box;
+
+typedef struct {
+    const tarn_screen_vertex *v[3]; /* oriented so that area2 > 0 */
+    int64_t area2;
+    unsigned subpixel_bits;
+    int32_t anchor_i, anchor_j;
+    pixel_box box; /* pixels whose centres may be covered */
+    edge edges[3];
+} triangle_setup;
+
+/* near/d rounded to Q1.30 exactly, as quotient and remainder of N(p) / area2: N is
+ * the barycentric numerator (plus area2/2 to round), linear in the pixel, so it
+ * steps exactly. Exact depth makes the depth test's outcome a property of the
+ * triangle, not of how its interpolation rounded: where two surfaces meet, the
+ * float reference (which rounds the exact value the same way) agrees pixel for pixel. */
+typedef struct {
+    uint32_t quotient;  /* modulo 2^32; in range at covered pixels */
+    uint32_t remainder; /* in [0, den) */
+} exact_value;
+
+typedef struct {
+    uint32_t den; /* area2 */
+    exact_value step_x, step_y;
+} exact_plane;
+
+typedef struct {
+    int count;
+    int perspective; /* tarn_perspective */
+    exact_plane depth; /* near/d, Q1.30 */
+    plane q;         /* normalised near/d, perspective modes */
+    uint32_t q_min, q_max;
+    plane premultiplied[ATTRIBUTES_MAX]; /* T * q / 2^30, or T when affine */
+    uint32_t t_min[ATTRIBUTES_MAX], t_max[ATTRIBUTES_MAX];
+    unsigned t_shift[ATTRIBUTES_MAX];    /* attribute = T >> t_shift */
+    uint32_t u_base, v_base;             /* whole texture repeats removed from u, v (Q16.16) */
+} attribute_set;
+
+/* ---- per-pixel helpers shared with setup (32-bit arithmetic only) ------------ */
+
+static inline int32_t floor_shift(int32_t v, unsigned s)
+{
+    /* floor(v / 2^s) without relying on >> of a negative number */
+    return v >= 0 ? (v >> s) : -(int32_t)((((uint32_t)0 - (uint32_t)v) + ((1u << s) - 1u)) >> s);
+}
+
+static inline int32_t pixel_centre(int32_t pixel, unsigned s)
+{
+    return (int32_t)((uint32_t)pixel << s) + (int32_t)(1u << (s - 1));
+}
+
+static inline int32_t edge_at(const edge *e, int32_t px, int32_t py)
+{
+    return e->a * (px - e->x) + e->b * (py - e->y) + e->bias;
+}
+
+static inline uint32_t plane_at(const plane *p, const triangle_setup *t, int32_t i, int32_t j)
+{
+    return p->anchor + p->step_x * (uint32_t)(i - t->anchor_i) + p->step_y * (uint32_t)(j - t->anchor_j);
+}
+
+static inline void exact_step(exact_value *v, const exact_value *step, uint32_t den)
+{
+    v->quotient += step->quotient;
+    if (v->remainder >= den - step->remainder) {
+        v->remainder -= den - step->remainder;
+        v->quotient++;
+    } else {
+        v->remainder += step->remainder;
+    }
+}
+
+/* ---- setup, once per triangle per tile ------------------------------------------ */
+
+/* Culls by the material and orients the triangle; returns 0 when nothing draws. */
+int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned subpixel_bits,
+                         triangle_setup *t);
+/* Pixels whose centres may be covered, before the tile clips them. */
+pixel_box tarn_triangle_pixels(const triangle_setup *t);
+void tarn_setup_attributes(const triangle_setup *t, int textured, uint8_t perspective,
+                           attribute_set *set);
+/* Exact depth at pixel (i, j), to be stepped from there with exact_step. */
+exact_value tarn_exact_depth_at(const triangle_setup *t, int32_t i, int32_t j);
+
+#endif
