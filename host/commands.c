@@ -60,20 +60,36 @@ static int render_reference(const tarn_loaded_scene *scene, const tarn_frame_con
     return 0;
 }
 
-int tarn_command_render(const tarn_cli_options *o)
+typedef int (*scene_action)(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+                            const tarn_frame_config *config, tarn_error *err);
+
+/* Loads the scene, runs the action on it and reports any failure as one line. */
+static int run_on_scene(const tarn_cli_options *o, scene_action action)
 {
     tarn_error err;
     tarn_loaded_scene scene;
     if (tarn_scene_load(o->scene_path, &scene, &err) != 0) return report(&err);
     tarn_frame_config config = frame_config(o, &scene);
-    frame_image f = {0, 0, NULL, NULL};
-    int failed = frame_alloc(&f, config.width, config.height, &err) ||
-                 (o->reference ? render_reference(&scene, &config, o->snapped, &f, &err)
-                               : tarn_core_render(&scene.scene, &config, f.rgb, f.covered, &err)) ||
-                 tarn_png_write_rgb(o->output_path, f.rgb, config.width, config.height, &err);
-    frame_free(&f);
+    int failed = action(o, &scene, &config, &err);
     tarn_scene_free(&scene);
     return failed ? report(&err) : 0;
+}
+
+static int render_to_png(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+                         const tarn_frame_config *config, tarn_error *err)
+{
+    frame_image f = {0, 0, NULL, NULL};
+    int failed = frame_alloc(&f, config->width, config->height, err) ||
+                 (o->reference ? render_reference(scene, config, o->snapped, &f, err)
+                               : tarn_core_render(&scene->scene, config, f.rgb, f.covered, err)) ||
+                 tarn_png_write_rgb(o->output_path, f.rgb, config->width, config->height, err);
+    frame_free(&f);
+    return failed ? -1 : 0;
+}
+
+int tarn_command_render(const tarn_cli_options *o)
+{
+    return run_on_scene(o, render_to_png);
 }
 
 static int compare_frames(const tarn_cli_options *o, const tarn_loaded_scene *scene,
@@ -101,18 +117,19 @@ static int compare_frames(const tarn_cli_options *o, const tarn_loaded_scene *sc
     return 0;
 }
 
-int tarn_command_compare(const tarn_cli_options *o)
+static int compare_with_reference(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+                                  const tarn_frame_config *config, tarn_error *err)
 {
-    tarn_error err;
-    tarn_loaded_scene scene;
-    if (tarn_scene_load(o->scene_path, &scene, &err) != 0) return report(&err);
-    tarn_frame_config config = frame_config(o, &scene);
     frame_image core = {0, 0, NULL, NULL}, reference = {0, 0, NULL, NULL};
-    int failed = compare_frames(o, &scene, &config, &core, &reference, &err);
+    int failed = compare_frames(o, scene, config, &core, &reference, err);
     frame_free(&core);
     frame_free(&reference);
-    tarn_scene_free(&scene);
-    return failed ? report(&err) : 0;
+    return failed ? -1 : 0;
+}
+
+int tarn_command_compare(const tarn_cli_options *o)
+{
+    return run_on_scene(o, compare_with_reference);
 }
 
 int tarn_command_accuracy(const tarn_cli_options *o)
