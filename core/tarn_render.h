@@ -22,9 +22,11 @@
  *  - Front faces are counter-clockwise in the world, which is clockwise on the screen
  *    (y down); the material's cull mode picks which are drawn. Zero-area triangles
  *    draw nothing.
- *  - Depth test: the pixel's inverse depth near/d (Q1.30) must be greater than the
- *    stored one (closer wins; on a tie the earlier triangle stays). Objects draw in
- *    scene order, triangles in index order.
+ *  - Depth test: the pixel's inverse depth near/d, interpolated exactly from the
+ *    vertices' Q1.30 values and rounded to nearest Q1.30 (16-bit depth keeps its top
+ *    16 bits), must be greater than the stored one: closer wins; on a tie the
+ *    earlier triangle stays. Objects draw in scene order, triangles in index order
+ *    (the host orders each mesh's triangles spatially when it loads it).
  *  - Vertex colour, per channel: base = material.colour * vertex colour / 255;
  *    shade = min(1, ambient/255 + light/255 * max(0, N.L)) (1 if unlit);
  *    lit = base * shade, in [0, 255].
