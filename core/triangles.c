@@ -125,7 +125,8 @@ static void walk_object(const tarn_view *view, const tarn_object *object, const 
         const tarn_cluster *cluster = &mesh->clusters[c];
         tarn_view_vertex centre;
         tarn_vertex_position(&xform, &cluster->centre, &centre);
-        int64_t radius = tarn_round_shift_i64((int64_t)cluster->radius * object->scale, 16) + 1;
+        /* at most Q16.16's range, so that radius * plane norm stays within 64 bits */
+        int64_t radius = tarn_sat_i64_to_i32(tarn_round_shift_i64((int64_t)cluster->radius * object->scale, 16) + 1);
         if (sphere_misses_tile(view, frustum, &centre, radius)) continue;
         walk_run(view, &xform, object, cluster->first_triangle,
                  (uint32_t)cluster->first_triangle + cluster->triangle_count, only_rect, sink, ctx);

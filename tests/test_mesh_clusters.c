@@ -102,12 +102,33 @@ static void test_malformed_runs_are_rejected(void **state)
     free(pond);
 }
 
+/* Huge scales make huge spheres: the sphere test must saturate, not overflow (the
+ * sanitizer build runs this), and still draw what is in view. */
+static void test_huge_spheres_stay_in_range(void **state)
+{
+    (void)state;
+    tarn_loaded_scene *pond = load_pond();
+    for (size_t o = 0; o < pond->object_count; o++) {
+        pond->objects[o].scale = INT32_MAX;
+        for (uint32_t c = 0; c < pond->meshes[o].mesh.cluster_count; c++)
+            pond->meshes[o].clusters[c].radius = INT32_MAX;
+    }
+    pond->scene.camera.fov_y_degrees = 65536; /* 1 degree: a long focal length, large plane norms */
+    tarn_frame_config config = {64, 64, tarn_quality_default(), 0};
+    uint8_t rgb[64 * 64 * 3], covered[64 * 64];
+    tarn_error err;
+    assert_int_equal(tarn_core_render(&pond->scene, &config, rgb, covered, &err), 0);
+    tarn_scene_free(pond);
+    free(pond);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_runs_cover_triangles_and_spheres_hold_them),
         cmocka_unit_test(test_skipping_runs_changes_no_pixel),
         cmocka_unit_test(test_malformed_runs_are_rejected),
+        cmocka_unit_test(test_huge_spheres_stay_in_range),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
