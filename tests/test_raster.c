@@ -205,6 +205,8 @@ static void render_core(const tarn_scene *scene, const tarn_frame_config *config
     if (rc != 0) fail_msg("core render: %s", err.message);
 }
 
+static long drawn_pixels; /* pixels the core drew in the last compare_snapped */
+
 /* The core's coverage must equal the reference's on the core's own triangles:
  * no pixel outside its triangle, none missing. Returns the comparison. */
 static tarn_compare_metrics compare_snapped(const tarn_scene *scene, const tarn_frame_config *config)
@@ -217,6 +219,8 @@ static tarn_compare_metrics compare_snapped(const tarn_scene *scene, const tarn_
                                            ref.covered), 0);
     tarn_compare_metrics m;
     tarn_compare_images(core.rgb, ref.rgb, core.covered, ref.covered, config->width, config->height, &m);
+    drawn_pixels = 0;
+    for (int p = 0; p < config->width * config->height; p++) drawn_pixels += core.covered[p];
     frame_free(&core);
     frame_free(&ref);
     return m;
@@ -440,6 +444,41 @@ static void test_extreme_triangles(void **state)
     free(b);
 }
 
+/* A coordinate from a scale chosen at random: a hair, a room, a valley, the limit. */
+static double random_coordinate(uint32_t *seed)
+{
+    static const double scales[] = {1e-3, 1, 40, 2000, 32000};
+    double scale = scales[lcg(seed) % 5u];
+    return ((double)(lcg(seed) % 20001u) / 10000.0 - 1.0) * scale;
+}
+
+/* 300 random triangles around and behind a random camera, in random frame sizes
+ * and subpixel precisions: every one covers exactly the pixels the reference says. */
+static void test_random_triangles_cover_exactly(void **state)
+{
+    (void)state;
+    scene_builder *b = malloc(sizeof *b);
+    uint32_t seed = 12345;
+    int visible = 0;
+    for (int n = 0; n < 300; n++) {
+        double p[3][3];
+        for (int k = 0; k < 3; k++)
+            for (int a = 0; a < 3; a++) p[k][a] = random_coordinate(&seed);
+        builder_init(b, 0, 0, 0, random_coordinate(&seed), random_coordinate(&seed), -1 - (double)(lcg(&seed) % 100u));
+        one_triangle(b, p);
+        const int w = 1 + (int)(lcg(&seed) % 80u), h = 1 + (int)(lcg(&seed) % 60u);
+        tarn_frame_config config = config_of(w, h);
+        config.quality.subpixel_bits = (uint8_t)(1 + lcg(&seed) % 8u);
+        if (tarn_frame_memory_bytes(&config) == 0) config.quality.subpixel_bits = 4;
+        tarn_compare_metrics m = compare_snapped(&b->scene, &config);
+        if (m.coverage_mismatches != 0) fail_msg("triangle %d: %ld pixels differ", n, m.coverage_mismatches);
+        visible += drawn_pixels > 0;
+    }
+    print_message("%d of 300 random triangles drew pixels\n", visible);
+    assert_true(visible >= 60); /* the sweep must exercise drawing, not only rejection */
+    free(b);
+}
+
 /* Cameras at the limits: far away, straight down, straight up, inside geometry. */
 static void test_extreme_cameras(void **state)
 {
@@ -571,6 +610,7 @@ int main(void)
         cmocka_unit_test(test_pond_matches_snapped_reference),
         cmocka_unit_test(test_unsnapped_mismatches_lie_on_edges),
         cmocka_unit_test(test_extreme_triangles),
+        cmocka_unit_test(test_random_triangles_cover_exactly),
         cmocka_unit_test(test_extreme_cameras),
         cmocka_unit_test(test_depth_ties_resolve_like_the_reference),
         cmocka_unit_test(test_cull_modes),
