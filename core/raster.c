@@ -121,12 +121,10 @@ static uint32_t shade_pixel(const attribute_set *set, const tarn_texture *textur
         for (int c = 0; c < 3; c++) rgb = (rgb << 8) | ((lit[c] + 128u) >> 8);
         return rgb;
     }
-    const unsigned log2_w = 31u - tarn_clz32(texture->width);
-    const unsigned log2_h = 31u - tarn_clz32(texture->height);
     const uint32_t u = t[3] >> set->t_shift[3], v = t[4] >> set->t_shift[4]; /* Q16.16 */
-    const uint32_t tx = (u >> (16u - log2_w)) & (texture->width - 1u);
-    const uint32_t ty = (v >> (16u - log2_h)) & (texture->height - 1u);
-    const uint8_t *texel = &texture->rgb[3u * ((ty << log2_w) + tx)];
+    const uint32_t tx = (u >> (16u - set->log2_width)) & (texture->width - 1u);
+    const uint32_t ty = (v >> (16u - set->log2_height)) & (texture->height - 1u);
+    const uint8_t *texel = &texture->rgb[3u * ((ty << set->log2_width) + tx)];
     for (int c = 0; c < 3; c++) {
         uint32_t product = texel[c] * lit[c]; /* / (255 * 256), to nearest */
         rgb = (rgb << 8) | ((product + (product >> 8) + 32768u) >> 16);
@@ -202,8 +200,6 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     triangle_setup t;
     if (!tarn_orient_triangle(vertex, material->cull, tile->quality->subpixel_bits, &t)) return;
     t.box = tarn_triangle_pixels(&t);
-    t.anchor_i = t.box.x0;
-    t.anchor_j = t.box.y0;
     pixel_box draw = t.box;
     if (draw.x0 < tile->rect.x0) draw.x0 = tile->rect.x0;
     if (draw.y0 < tile->rect.y0) draw.y0 = tile->rect.y0;
@@ -212,7 +208,7 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     if (draw.x0 > draw.x1 || draw.y0 > draw.y1) return;
     const int textured = material->texture != NULL && object->mesh->uvs != NULL;
     attribute_set set;
-    tarn_setup_attributes(&t, textured, perspective_mode(tile->quality, &t.box), &set);
+    tarn_setup_attributes(&t, textured ? material->texture : NULL, perspective_mode(tile->quality, &t.box), &set);
     exact_value depth = tarn_exact_depth_at(&t, draw.x0, draw.y0);
     for (int32_t j = draw.y0; j <= draw.y1; j++) {
         raster_row(tile, &t, &set, textured ? material->texture : NULL, j, draw.x0, draw.x1, depth);

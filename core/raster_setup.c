@@ -89,7 +89,7 @@ static plane make_plane(const triangle_setup *t, const int64_t value[3])
     const unsigned s = t->subpixel_bits;
     const edge *e1 = &t->edges[1], *e2 = &t->edges[2];
     const int64_t d1 = value[1] - value[0], d2 = value[2] - value[0];
-    const int32_t px = pixel_centre(t->anchor_i, s), py = pixel_centre(t->anchor_j, s);
+    const int32_t px = pixel_centre(t->box.x0, s), py = pixel_centre(t->box.y0, s);
     int64_t at_anchor = value[0] + round_div_i64(edge_unbiased_at(e1, px, py) * d1 +
                                                  edge_unbiased_at(e2, px, py) * d2, t->area2);
     int64_t step_x = round_div_i64(((int64_t)e1->a * d1 + (int64_t)e2->a * d2) * ((int64_t)1 << s), t->area2);
@@ -162,7 +162,7 @@ exact_value tarn_exact_depth_at(const triangle_setup *t, int32_t i, int32_t j)
     return floor_divmod(num, t->area2);
 }
 
-void tarn_setup_attributes(const triangle_setup *t, int textured, uint8_t perspective,
+void tarn_setup_attributes(const triangle_setup *t, const tarn_texture *texture, uint8_t perspective,
                              attribute_set *set)
 {
     int64_t q_values[3];
@@ -186,7 +186,9 @@ void tarn_setup_attributes(const triangle_setup *t, int textured, uint8_t perspe
         uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
         add_attribute(set, t, lit, q);
     }
-    if (textured) {
+    if (texture != NULL) {
+        set->log2_width = 31u - tarn_clz32(texture->width);
+        set->log2_height = 31u - tarn_clz32(texture->height);
         uint32_t coordinate[3];
         texture_coordinates(t, 0, coordinate, &set->u_base);
         add_attribute(set, t, coordinate, q);

@@ -28,8 +28,7 @@ typedef struct {
     const tarn_screen_vertex *v[3]; /* oriented so that area2 > 0 */
     int64_t area2;
     unsigned subpixel_bits;
-    int32_t anchor_i, anchor_j;
-    pixel_box box; /* pixels whose centres may be covered */
+    pixel_box box; /* pixels whose centres may be covered; planes are anchored at (x0, y0) */
     edge edges[3];
 } triangle_setup;
 
@@ -58,6 +57,7 @@ typedef struct {
     uint32_t t_min[ATTRIBUTES_MAX], t_max[ATTRIBUTES_MAX];
     unsigned t_shift[ATTRIBUTES_MAX];    /* attribute = T >> t_shift */
     uint32_t u_base, v_base;             /* whole texture repeats removed from u, v (Q16.16) */
+    unsigned log2_width, log2_height;    /* of the texture, when textured */
 } attribute_set;
 
 /* ---- per-pixel helpers shared with setup (32-bit arithmetic only) ------------ */
@@ -80,7 +80,7 @@ static inline int32_t edge_at(const edge *e, int32_t px, int32_t py)
 
 static inline uint32_t plane_at(const plane *p, const triangle_setup *t, int32_t i, int32_t j)
 {
-    return p->anchor + p->step_x * (uint32_t)(i - t->anchor_i) + p->step_y * (uint32_t)(j - t->anchor_j);
+    return p->anchor + p->step_x * (uint32_t)(i - t->box.x0) + p->step_y * (uint32_t)(j - t->box.y0);
 }
 
 static inline void exact_step(exact_value *v, const exact_value *step, uint32_t den)
@@ -101,7 +101,8 @@ int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned 
                          triangle_setup *t);
 /* Pixels whose centres may be covered, before the tile clips them. */
 pixel_box tarn_triangle_pixels(const triangle_setup *t);
-void tarn_setup_attributes(const triangle_setup *t, int textured, uint8_t perspective,
+/* `texture` NULL: lit colour only; otherwise texture coordinates too. */
+void tarn_setup_attributes(const triangle_setup *t, const tarn_texture *texture, uint8_t perspective,
                            attribute_set *set);
 /* Exact depth at pixel (i, j), to be stepped from there with exact_step. */
 exact_value tarn_exact_depth_at(const triangle_setup *t, int32_t i, int32_t j);
