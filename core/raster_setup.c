@@ -163,7 +163,7 @@ exact_value tarn_exact_depth_at(const triangle_setup *t, int32_t i, int32_t j)
 }
 
 void tarn_setup_attributes(const triangle_setup *t, const tarn_texture *texture, uint8_t perspective,
-                             attribute_set *set)
+                           attribute_set *set)
 {
     int64_t q_values[3];
     uint32_t q[3], largest = 0;
