@@ -98,7 +98,7 @@ static void test_jittered_grid_covers_every_pixel_once(void **state)
     free(c);
 }
 
-/* A fan of 48 triangles around a centre on pixel-centre and grid-aligned points. */
+/* A fan of 20 triangles around a pixel centre, to grid-aligned points. */
 static void test_fan_covers_disc_once(void **state)
 {
     (void)state;
