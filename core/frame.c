@@ -14,6 +14,7 @@ tarn_quality tarn_quality_default(void)
     q.perspective_span = 16;
     q.depth_bits = 32;
     q.tile_size = 32;
+    q.refraction_apron = 1;
     return q;
 }
 
@@ -43,7 +44,8 @@ static int quality_in_range(const tarn_quality *q)
            q->perspective <= TARN_PERSPECTIVE_PIXEL &&
            is_power_of_two(q->perspective_span) && q->perspective_span >= 2 && q->perspective_span <= 64 &&
            (q->depth_bits == 16 || q->depth_bits == 32) &&
-           q->tile_size >= TARN_TILE_SIZE_MIN && q->tile_size <= TARN_TILE_SIZE_MAX;
+           q->tile_size >= TARN_TILE_SIZE_MIN && q->tile_size <= TARN_TILE_SIZE_MAX &&
+           q->refraction_apron <= 1;
 }
 
 tarn_status tarn_config_check(const tarn_frame_config *config)
@@ -60,8 +62,9 @@ tarn_status tarn_config_check(const tarn_frame_config *config)
     return TARN_OK;
 }
 
-size_t tarn_frame_memory_bytes(const tarn_frame_config *config)
+size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
 {
+    (void)scene;
     if (tarn_config_check(config) != TARN_OK) return 0;
     size_t pixels = (size_t)config->quality.tile_size * config->quality.tile_size;
     return pixels * sizeof(uint32_t) + pixels * (config->quality.depth_bits / 8u);
@@ -121,7 +124,7 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
                               void *memory, size_t memory_bytes, tarn_tile_sink sink, void *user)
 {
     if (tarn_config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
-    if (memory == NULL || memory_bytes < tarn_frame_memory_bytes(config)) return TARN_ERR_MEMORY;
+    if (memory == NULL || memory_bytes < tarn_frame_memory_bytes(config, scene)) return TARN_ERR_MEMORY;
     tarn_status status = tarn_scene_check(scene);
     if (status != TARN_OK) return status;
 

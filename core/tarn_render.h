@@ -41,6 +41,7 @@
 #include <stdint.h>
 #include "tarn_math.h"
 #include "tarn_scene.h"
+#include "tarn_water.h"
 
 typedef enum {
     TARN_OK = 0,
@@ -73,6 +74,9 @@ typedef struct {
     uint8_t perspective_span;   /* 2..64, a power of two; SPAN mode only */
     uint8_t depth_bits;         /* 16 or 32 bits per depth-buffer entry */
     uint8_t tile_size;          /* 8..64 pixels, square tiles; does not change the image */
+    uint8_t refraction_apron;   /* 1: render the opaque scene around each tile as far as
+                                   refraction reaches (seamless); 0: clamp refracted
+                                   samples to the tile (less memory, seams at tile edges) */
 } tarn_quality;
 
 tarn_quality tarn_quality_default(void);
@@ -86,11 +90,18 @@ typedef struct {
 /* Pixels the guard band extends beyond each frame edge. */
 int32_t tarn_guard_band_pixels(const tarn_frame_config *config);
 
-/* Bytes of working memory a frame needs (tile colour and depth buffers), or 0 if
- * the config is invalid: a field out of range, or a frame too large for the subpixel
- * precision ((max(width,height) + 2*guard band) << subpixel_bits must stay below 2^15
- * so that edge functions fit 32 bits). */
-size_t tarn_frame_memory_bytes(const tarn_frame_config *config);
+/* Pixels of opaque scene rendered around each tile: the farthest any water
+ * material's refraction reaches at this width (0 with refraction_apron off). */
+int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config *config);
+
+/* Bytes of working memory a frame of this scene needs, or 0 if the config is
+ * invalid: a field out of range, or a frame too large for the subpixel precision
+ * ((max(width,height) + 2*guard band) << subpixel_bits must stay below 2^15 so that
+ * edge functions fit 32 bits). Opaque scenes need tile_size^2 * (4 + depth_bits/8);
+ * with water, the opaque buffers grow by the apron on every side and the tile
+ * gains a second colour and depth buffer for the water pass. `scene` may be NULL
+ * for an opaque-only budget. */
+size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene);
 
 typedef struct {
     uint16_t x, y, width, height; /* the tile's rectangle in the frame, pixels */
@@ -116,6 +127,8 @@ typedef struct {
     uint32_t inv_depth;  /* near/d, Q1.30 */
     tarn_uv uv;          /* Q16.16 texture coordinates */
     uint16_t lit[3];     /* lit vertex colour, Q8.8 per channel (0..65280) */
+    uint16_t fresnel;    /* (1 - n.v)^2, Q1.15 (32768 = 1): n the unit vertex normal, v the
+                            unit vector toward the camera; water materials only, else 0 */
 } tarn_screen_vertex;
 
 typedef void (*tarn_triangle_visitor)(void *user, const tarn_screen_vertex vertex[3],

@@ -35,11 +35,15 @@ typedef enum {
     TARN_CULL_FRONT = 2 /* draw back faces only */
 } tarn_cull;
 
+typedef struct tarn_water tarn_water;           /* tarn_water.h */
+typedef struct tarn_underwater tarn_underwater; /* tarn_water.h */
+
 typedef struct {
     uint32_t colour_rgb;          /* tint multiplying the texture or vertex colours */
     const tarn_texture *texture;  /* NULL: untextured */
     uint8_t cull;                 /* tarn_cull */
     uint8_t unlit;                /* 1: ignore the light, colour is used as is */
+    const tarn_water *water;      /* NULL: opaque; else drawn after the opaque scene */
 } tarn_material;
 
 #define TARN_MESH_VERTICES_MAX 65535u
@@ -99,6 +103,7 @@ typedef struct {
     tarn_camera camera;
     tarn_light light;
     uint32_t background_rgb; /* colour of pixels no triangle covers */
+    const tarn_underwater *underwater; /* NULL: no underwater view */
 } tarn_scene;
 
 #endif

@@ -33,7 +33,7 @@ static int copy_tile(void *user, const tarn_tile *tile)
 int tarn_core_render(const tarn_scene *scene, const tarn_frame_config *config, uint8_t *rgb,
                      uint8_t *covered, tarn_error *err)
 {
-    size_t bytes = tarn_frame_memory_bytes(config);
+    size_t bytes = tarn_frame_memory_bytes(config, scene);
     if (bytes == 0)
         return tarn_fail(err, "frame %ux%u with these quality settings: %s (a frame this large needs fewer subpixel bits)",
                          config->width, config->height, tarn_status_text(TARN_ERR_CONFIG));

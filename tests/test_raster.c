@@ -469,7 +469,7 @@ static void test_random_triangles_cover_exactly(void **state)
         const int w = 1 + (int)(lcg(&seed) % 80u), h = 1 + (int)(lcg(&seed) % 60u);
         tarn_frame_config config = config_of(w, h);
         config.quality.subpixel_bits = (uint8_t)(1 + lcg(&seed) % 8u);
-        if (tarn_frame_memory_bytes(&config) == 0) config.quality.subpixel_bits = 4;
+        if (tarn_frame_memory_bytes(&config, NULL) == 0) config.quality.subpixel_bits = 4;
         tarn_compare_metrics m = compare_snapped(&b->scene, &config);
         if (m.coverage_mismatches != 0) fail_msg("triangle %d: %ld pixels differ", n, m.coverage_mismatches);
         visible += drawn_pixels > 0;
@@ -569,20 +569,20 @@ static void test_configs_out_of_range_are_rejected(void **state)
 {
     (void)state;
     tarn_frame_config config = config_of(240, 240);
-    assert_true(tarn_frame_memory_bytes(&config) > 0);
+    assert_true(tarn_frame_memory_bytes(&config, NULL) > 0);
     tarn_frame_config bad = config;
     bad.width = 0;
-    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+    assert_int_equal(tarn_frame_memory_bytes(&bad, NULL), 0);
     bad = config; bad.width = TARN_FRAME_SIZE_MAX + 1;
-    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+    assert_int_equal(tarn_frame_memory_bytes(&bad, NULL), 0);
     bad = config; bad.quality.tile_size = 7;
-    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+    assert_int_equal(tarn_frame_memory_bytes(&bad, NULL), 0);
     bad = config; bad.quality.subpixel_bits = 7; /* 240 + guard band needs < 2^15 subpixels */
-    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+    assert_int_equal(tarn_frame_memory_bytes(&bad, NULL), 0);
     bad = config; bad.quality.depth_bits = 24;
-    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+    assert_int_equal(tarn_frame_memory_bytes(&bad, NULL), 0);
     bad = config; bad.quality.perspective_span = 12;
-    assert_int_equal(tarn_frame_memory_bytes(&bad), 0);
+    assert_int_equal(tarn_frame_memory_bytes(&bad, NULL), 0);
 
     uint32_t small[16];
     scene_builder *b = malloc(sizeof *b);
@@ -591,7 +591,7 @@ static void test_configs_out_of_range_are_rejected(void **state)
     builder_begin_object(b, 0xFFFFFF, TARN_CULL_NONE);
     builder_grid(b, 0, 0, -4, 1, 1, 1, 1);
     b->indices[0] = 60000; /* an index past the vertices */
-    size_t need = tarn_frame_memory_bytes(&config);
+    size_t need = tarn_frame_memory_bytes(&config, NULL);
     void *memory = malloc(need);
     assert_int_equal(tarn_render_frame(&b->scene, &config, memory, need, NULL, NULL), TARN_ERR_SCENE);
     free(memory);

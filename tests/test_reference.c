@@ -40,7 +40,7 @@ static const tarn_vec3 facing[8] = {
     VEC(0, 0, 1), VEC(0, 0, 1), VEC(0, 0, 1), VEC(0, 0, 1),
 };
 
-static const tarn_material white_two_sided = { 0xFFFFFF, NULL, TARN_CULL_NONE, 1 };
+static const tarn_material white_two_sided = { 0xFFFFFF, NULL, TARN_CULL_NONE, 1, NULL };
 
 static uint8_t rgb[W * H * 3];
 static uint8_t covered[W * H];
@@ -60,6 +60,7 @@ static tarn_scene scene_of(const tarn_object *objects, uint16_t count)
         { VEC(0, 0, 0), VEC(0, 0, -1), Q(90), Q(1), Q(100) },
         { VEC(0, 0, 1), 0xFFFFFF, 0x000000 },
         BACKGROUND,
+        NULL,
     };
     return scene;
 }
@@ -170,7 +171,7 @@ static void test_covered_pixels_take_colour_and_others_background(void **state)
 {
     (void)state;
     static const uint16_t indices[3] = { 0, 2, 1 };
-    static const tarn_material red = { RED, NULL, TARN_CULL_NONE, 1 };
+    static const tarn_material red = { RED, NULL, TARN_CULL_NONE, 1, NULL };
     tarn_mesh mesh = { corner_positions, facing, NULL, NULL, indices, 4, 1, NULL, 0 };
     render_mesh(&mesh, &red);
     for (int j = 0; j < H; j++)
@@ -335,7 +336,7 @@ static const tarn_vec3 front_positions[] = { VEC(-1, -1, -2), VEC(1, -1, -2), VE
 
 static int centre_drawn(const uint16_t indices[3], uint8_t cull)
 {
-    tarn_material material = { 0xFFFFFF, NULL, cull, 1 };
+    tarn_material material = { 0xFFFFFF, NULL, cull, 1, NULL };
     tarn_mesh mesh = { front_positions, facing, NULL, NULL, indices, 3, 1, NULL, 0 };
     render_mesh(&mesh, &material);
     return covered[8 * W + 8];
@@ -359,7 +360,7 @@ static void test_rotated_object_shows_its_back(void **state)
 {
     (void)state;
     static const uint16_t front[3] = { 0, 1, 2 };
-    static const tarn_material culled = { 0xFFFFFF, NULL, TARN_CULL_BACK, 1 };
+    static const tarn_material culled = { 0xFFFFFF, NULL, TARN_CULL_BACK, 1, NULL };
     tarn_mesh mesh = { front_positions, facing, NULL, NULL, front, 3, 1, NULL, 0 };
     tarn_object obj = object_of(&mesh, &culled);
     const tarn_q16 half_turn_y[3][3] = { { Q(-1), 0, 0 }, { 0, Q(1), 0 }, { 0, 0, Q(-1) } };
@@ -495,7 +496,7 @@ static void render_textured_quad(double u0, double v0, double u1, double v1, uin
     const tarn_uv uvs[4] = {
         { Q(u0), Q(v0) }, { Q(u1), Q(v0) }, { Q(u1), Q(v1) }, { Q(u0), Q(v1) },
     };
-    tarn_material material = { tint, &texture4, TARN_CULL_BACK, 1 };
+    tarn_material material = { tint, &texture4, TARN_CULL_BACK, 1, NULL };
     tarn_mesh mesh = { screen_quad, facing, uvs, NULL, screen_quad_indices, 4, 2, NULL, 0 };
     fill_texels();
     render_mesh(&mesh, &material);
@@ -554,7 +555,7 @@ static void render_lit_quad(const lighting_case *lc, const tarn_object *obj_temp
 {
     const uint32_t colours[4] = { lc->vertex_colour, lc->vertex_colour, lc->vertex_colour,
                                   lc->vertex_colour };
-    tarn_material material = { lc->material, NULL, TARN_CULL_BACK, lc->unlit };
+    tarn_material material = { lc->material, NULL, TARN_CULL_BACK, lc->unlit, NULL };
     tarn_mesh mesh = *obj_template->mesh;
     mesh.colours = colours;
     tarn_object obj = *obj_template;
@@ -635,7 +636,7 @@ static void test_bad_input_is_rejected(void **state)
     static const tarn_texture not_power_of_two = { 3, 4, texels };
     const tarn_texture *bad_textures[2] = { &no_texels, &not_power_of_two };
     for (int k = 0; k < 2; k++) {
-        tarn_material material = { 0xFFFFFF, bad_textures[k], TARN_CULL_NONE, 1 };
+        tarn_material material = { 0xFFFFFF, bad_textures[k], TARN_CULL_NONE, 1, NULL };
         tarn_mesh fine = single_triangle(&mesh, 0);
         fine.indices = screen_quad_indices;
         obj = object_of(&fine, &material);
@@ -661,7 +662,7 @@ static void test_snapped_mode_matches_on_grid_triangles(void **state)
     (void)state;
     static const uint16_t indices[6] = { 0, 2, 1, 1, 2, 3 };
     static const uint32_t colours[4] = { RED, GREEN, 0x0000FF, 0xFFFFFF };
-    static const tarn_material material = { 0xFFFFFF, NULL, TARN_CULL_BACK, 1 };
+    static const tarn_material material = { 0xFFFFFF, NULL, TARN_CULL_BACK, 1, NULL };
     tarn_mesh mesh = { corner_positions, facing, NULL, colours, indices, 4, 2, NULL, 0 };
     tarn_object obj = object_of(&mesh, &material);
     tarn_scene scene = scene_of(&obj, 1);
@@ -681,7 +682,7 @@ static void test_snapped_mode_culls_back_faces(void **state)
 {
     (void)state;
     static const uint16_t back[3] = { 0, 1, 2 }; /* clockwise seen from the camera */
-    static const tarn_material material = { 0xFFFFFF, NULL, TARN_CULL_BACK, 1 };
+    static const tarn_material material = { 0xFFFFFF, NULL, TARN_CULL_BACK, 1, NULL };
     tarn_mesh mesh = { corner_positions, facing, NULL, NULL, back, 4, 1, NULL, 0 };
     tarn_object obj = object_of(&mesh, &material);
     tarn_scene scene = scene_of(&obj, 1);
