@@ -56,6 +56,7 @@ static tarn_view_vertex crossing(const tarn_view_vertex *inside, int64_t dist_in
     v.uv.u = lerp_q30(inside->uv.u, outside->uv.u, t);
     v.uv.v = lerp_q30(inside->uv.v, outside->uv.v, t);
     for (int c = 0; c < 3; c++) v.lit[c] = lerp_q30(inside->lit[c], outside->lit[c], t);
+    v.fresnel = lerp_q30(inside->fresnel, outside->fresnel, t);
     return v;
 }
 

@@ -1,5 +1,6 @@
 /* frame.c: configuration, working memory and the tile loop. */
 #include "pipeline.h"
+#include "water.h"
 
 #include <string.h>
 
@@ -62,12 +63,56 @@ tarn_status tarn_config_check(const tarn_frame_config *config)
     return TARN_OK;
 }
 
+static int scene_has_water(const tarn_scene *scene)
+{
+    for (uint32_t i = 0; scene != NULL && i < scene->object_count; i++)
+        if (scene->objects[i].material != NULL && scene->objects[i].material->water != NULL) return 1;
+    return 0;
+}
+
+int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config *config)
+{
+    int32_t apron = 0;
+    if (scene == NULL || !config->quality.refraction_apron) return 0;
+    for (uint32_t i = 0; i < scene->object_count; i++) {
+        const tarn_material *m = scene->objects[i].material;
+        int32_t reach = m != NULL ? tarn_water_reach_pixels(m->water, config->width) : 0;
+        if (reach > apron) apron = reach;
+    }
+    return apron > (int32_t)TARN_WATER_APRON_MAX ? (int32_t)TARN_WATER_APRON_MAX : apron;
+}
+
+/* The buffers of one frame, carved from the caller's memory: the opaque pass's
+ * colour and depth over the tile and its apron, and for water the tile's own
+ * colour and depth, which the water pass draws into. */
+typedef struct {
+    int32_t tile, apron, region; /* region = tile + 2 * apron, pixels per side */
+    int water;
+    size_t depth_bytes;
+} frame_layout;
+
+static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene *scene)
+{
+    frame_layout l;
+    l.tile = config->quality.tile_size;
+    l.water = scene_has_water(scene);
+    l.apron = l.water ? tarn_frame_apron_pixels(scene, config) : 0;
+    l.region = l.tile + 2 * l.apron;
+    l.depth_bytes = config->quality.depth_bits / 8u;
+    return l;
+}
+
+static size_t layout_bytes(const frame_layout *l)
+{
+    const size_t region = (size_t)l->region * (size_t)l->region, tile = (size_t)l->tile * (size_t)l->tile;
+    return region * (4u + l->depth_bytes) + (l->water ? tile * (4u + l->depth_bytes) : 0u);
+}
+
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
 {
-    (void)scene;
     if (tarn_config_check(config) != TARN_OK) return 0;
-    size_t pixels = (size_t)config->quality.tile_size * config->quality.tile_size;
-    return pixels * sizeof(uint32_t) + pixels * (config->quality.depth_bits / 8u);
+    const frame_layout l = layout_of(config, scene);
+    return layout_bytes(&l);
 }
 
 static int texture_valid(const tarn_texture *t)
@@ -88,6 +133,23 @@ static int clusters_valid(const tarn_mesh *m)
     return next == m->triangle_count;
 }
 
+static int optional_texture_valid(const tarn_texture *t)
+{
+    return t == NULL || texture_valid(t);
+}
+
+/* Every texture a feature samples must be there; the apron limit is checked
+ * against the frame width when a frame is drawn. */
+static int water_valid(const tarn_water *w)
+{
+    if ((w->features & TARN_WATER_NORMALS) && w->normal_a == NULL) return 0;
+    if ((w->features & TARN_WATER_FOAM) && w->foam_texture == NULL) return 0;
+    return optional_texture_valid(w->normal_a) && optional_texture_valid(w->normal_b) &&
+           optional_texture_valid(w->foam_texture) && optional_texture_valid(w->colour_ramp) &&
+           w->specular_power >= 1 && w->specular_power <= 256 &&
+           w->normal_strength >= 0 && w->normal_strength <= 8 * TARN_Q16_ONE;
+}
+
 static int mesh_valid(const tarn_mesh *m)
 {
     if (m->triangle_count == 0) return 1;
@@ -105,6 +167,7 @@ tarn_status tarn_scene_check(const tarn_scene *scene)
         const tarn_object *o = &scene->objects[i];
         if (o->mesh == NULL || o->material == NULL || !mesh_valid(o->mesh)) return TARN_ERR_SCENE;
         if (o->material->texture != NULL && !texture_valid(o->material->texture)) return TARN_ERR_SCENE;
+        if (o->material->water != NULL && !water_valid(o->material->water)) return TARN_ERR_SCENE;
     }
     return TARN_OK;
 }
@@ -114,44 +177,137 @@ static void raster_into_tile(void *ctx, const tarn_screen_vertex vertex[3], cons
     tarn_raster_triangle(ctx, vertex, object);
 }
 
-static void clear_tile(tarn_tile_target *tile, uint32_t background, int depth_bits, size_t pixels)
+static void clear_buffers(uint32_t *colour, void *depth, size_t pixels, uint32_t background,
+                          size_t depth_bytes)
 {
-    for (size_t i = 0; i < pixels; i++) tile->colour[i] = background;
-    memset(tile->depth, 0, pixels * (size_t)(depth_bits / 8));
+    for (size_t i = 0; i < pixels; i++) colour[i] = background;
+    memset(depth, 0, pixels * depth_bytes);
+}
+
+/* Copies the tile's own pixels out of the opaque buffers: the water pass starts
+ * from them and depth-tests against them. */
+static void copy_tile_pixels(const tarn_tile_target *from, tarn_tile_target *to, size_t depth_bytes)
+{
+    for (int32_t j = to->rect.y0; j < to->rect.y1; j++) {
+        const int32_t source = (j - from->origin_y) * from->stride + (to->rect.x0 - from->origin_x);
+        const int32_t dest = (j - to->origin_y) * to->stride + (to->rect.x0 - to->origin_x);
+        const size_t count = (size_t)(to->rect.x1 - to->rect.x0);
+        memcpy(to->colour + dest, from->colour + source, count * 4u);
+        memcpy((uint8_t *)to->depth + (size_t)dest * depth_bytes,
+               (const uint8_t *)from->depth + (size_t)source * depth_bytes, count * depth_bytes);
+    }
+}
+
+typedef struct {
+    const tarn_scene *scene;
+    const tarn_frame_config *config;
+    const tarn_view *view;
+    frame_layout layout;
+    tarn_tile_target opaque, water;
+    tarn_water_context water_context;
+} frame_state;
+
+static void carve_buffers(frame_state *f, void *memory)
+{
+    const frame_layout *l = &f->layout;
+    const size_t region = (size_t)l->region * (size_t)l->region, tile = (size_t)l->tile * (size_t)l->tile;
+    uint8_t *next = memory;
+    f->opaque.colour = (uint32_t *)(void *)next;
+    next += region * 4u;
+    f->water.colour = (uint32_t *)(void *)next;
+    next += l->water ? tile * 4u : 0u;
+    f->opaque.depth = next;
+    next += region * l->depth_bytes;
+    f->water.depth = next;
+    f->opaque.stride = l->region;
+    f->water.stride = l->tile;
+    f->opaque.quality = f->water.quality = &f->config->quality;
+    f->opaque.water = NULL;
+    f->water.water = &f->water_context;
+    f->water.view = f->opaque.view = f->view;
+    f->water.config = f->opaque.config = f->config;
+}
+
+static tarn_pixel_rect intersect(tarn_pixel_rect a, tarn_pixel_rect b)
+{
+    tarn_pixel_rect r = {a.x0 > b.x0 ? a.x0 : b.x0, a.y0 > b.y0 ? a.y0 : b.y0,
+                         a.x1 < b.x1 ? a.x1 : b.x1, a.y1 < b.y1 ? a.y1 : b.y1};
+    return r;
+}
+
+/* The water pass: over the tile only, reading the opaque pass's buffers. */
+static void draw_water(frame_state *f, const tarn_pixel_rect *tile_rect)
+{
+    tarn_tile_target *w = &f->water;
+    w->rect = *tile_rect;
+    w->origin_x = tile_rect->x0;
+    w->origin_y = tile_rect->y0;
+    copy_tile_pixels(&f->opaque, w, f->layout.depth_bytes);
+    tarn_water_context *c = &f->water_context;
+    c->object = NULL; /* set up again for the first water object of the tile */
+    c->background = f->opaque.colour;
+    c->background_depth = f->opaque.depth;
+    c->depth_bits = f->config->quality.depth_bits;
+    c->background_rect.x0 = f->opaque.origin_x;
+    c->background_rect.y0 = f->opaque.origin_y;
+    c->background_stride = f->opaque.stride;
+    c->sample_rect = f->config->quality.refraction_apron ? f->opaque.rect : *tile_rect;
+    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, tile_rect, raster_into_tile, w);
+}
+
+static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, void *user)
+{
+    const int32_t size = f->layout.tile, apron = f->layout.apron;
+    const tarn_pixel_rect frame = {0, 0, f->config->width, f->config->height};
+    const tarn_pixel_rect tile_rect = intersect((tarn_pixel_rect){x, y, x + size, y + size}, frame);
+    tarn_tile_target *o = &f->opaque;
+    o->origin_x = x - apron;
+    o->origin_y = y - apron;
+    o->rect = intersect((tarn_pixel_rect){x - apron, y - apron, x + size + apron, y + size + apron}, frame);
+    clear_buffers(o->colour, o->depth, (size_t)f->layout.region * (size_t)f->layout.region,
+                  f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
+    tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, &o->rect, raster_into_tile, o);
+    const tarn_tile_target *out = o;
+    if (f->layout.water) {
+        draw_water(f, &tile_rect);
+        out = &f->water;
+    }
+    const int32_t first = (y - out->origin_y) * out->stride + (x - out->origin_x);
+    tarn_tile tile = {(uint16_t)x, (uint16_t)y, (uint16_t)(tile_rect.x1 - x), (uint16_t)(tile_rect.y1 - y),
+                      out->colour + first, (const uint8_t *)out->depth + (size_t)first * f->layout.depth_bytes,
+                      (uint16_t)out->stride, f->config->quality.depth_bits};
+    return sink != NULL ? sink(user, &tile) : 0;
+}
+
+static tarn_status check_water_reach(const tarn_scene *scene, const tarn_frame_config *config)
+{
+    for (uint32_t i = 0; i < scene->object_count; i++)
+        if (tarn_water_reach_pixels(scene->objects[i].material->water, config->width) >
+            (int32_t)TARN_WATER_APRON_MAX)
+            return TARN_ERR_SCENE;
+    return TARN_OK;
 }
 
 tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *config,
                               void *memory, size_t memory_bytes, tarn_tile_sink sink, void *user)
 {
     if (tarn_config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
-    if (memory == NULL || memory_bytes < tarn_frame_memory_bytes(config, scene)) return TARN_ERR_MEMORY;
     tarn_status status = tarn_scene_check(scene);
+    if (status == TARN_OK) status = check_water_reach(scene, config);
     if (status != TARN_OK) return status;
+    if (memory == NULL || memory_bytes < tarn_frame_memory_bytes(config, scene)) return TARN_ERR_MEMORY;
 
-    const tarn_quality *quality = &config->quality;
-    const int32_t size = quality->tile_size;
-    const size_t pixels = (size_t)size * (size_t)size;
     tarn_view view;
     tarn_view_setup(scene, config, &view);
-    tarn_tile_target tile;
-    tile.colour = memory;
-    tile.depth = tile.colour + pixels;
-    tile.stride = size;
-    tile.quality = quality;
-    for (int32_t y = 0; y < config->height; y += size) {
-        for (int32_t x = 0; x < config->width; x += size) {
-            tile.rect.x0 = x;
-            tile.rect.y0 = y;
-            tile.rect.x1 = x + size < config->width ? x + size : config->width;
-            tile.rect.y1 = y + size < config->height ? y + size : config->height;
-            clear_tile(&tile, scene->background_rgb & 0xFFFFFFu, quality->depth_bits, pixels);
-            tarn_walk_triangles(scene, &view, &tile.rect, raster_into_tile, &tile);
-            tarn_tile out = {(uint16_t)x, (uint16_t)y, (uint16_t)(tile.rect.x1 - x),
-                             (uint16_t)(tile.rect.y1 - y), tile.colour, tile.depth,
-                             (uint16_t)size, quality->depth_bits};
-            if (sink != NULL && sink(user, &out) != 0) return TARN_ERR_SINK;
-        }
-    }
+    frame_state f;
+    f.scene = scene;
+    f.config = config;
+    f.view = &view;
+    f.layout = layout_of(config, scene);
+    carve_buffers(&f, memory);
+    for (int32_t y = 0; y < config->height; y += f.layout.tile)
+        for (int32_t x = 0; x < config->width; x += f.layout.tile)
+            if (draw_tile(&f, x, y, sink, user) != 0) return TARN_ERR_SINK;
     return TARN_OK;
 }
 
@@ -175,6 +331,7 @@ tarn_status tarn_visit_screen_triangles(const tarn_scene *scene, const tarn_fram
     tarn_view view;
     tarn_view_setup(scene, config, &view);
     visit_context ctx = {visit, user};
-    tarn_walk_triangles(scene, &view, NULL, forward_to_visitor, &ctx);
+    tarn_walk_triangles(scene, &view, TARN_WALK_OPAQUE, NULL, forward_to_visitor, &ctx);
+    tarn_walk_triangles(scene, &view, TARN_WALK_WATER, NULL, forward_to_visitor, &ctx);
     return TARN_OK;
 }

@@ -32,6 +32,7 @@ typedef struct {
     tarn_q16 x, y, d;  /* view space, Q16.16: right, up, depth along the view axis */
     tarn_uv uv;        /* Q16.16 */
     int32_t lit[3];    /* lit colour, Q8.8 per channel */
+    int32_t fresnel;   /* (1 - n.v)^2, Q1.15; water materials only */
 } tarn_view_vertex;
 
 /* Per-object constants for one frame. */
@@ -42,6 +43,8 @@ typedef struct {
     tarn_q16 light_dir[3];  /* light direction in object space, Q16.16 unit */
     uint32_t tint_q16[3];   /* material colour / 255 per channel, Q0.16 */
     int unlit;              /* the material ignores the light */
+    int32_t normal_to_view[3][3]; /* basis * rotation, Q1.30: normals into view space */
+    int water;              /* the material is water: vertices carry the fresnel term */
 } tarn_object_xform;
 
 #define TARN_CLIP_POLYGON_MAX 9 /* a triangle cut by six planes has at most 3 + 6 corners */
@@ -74,18 +77,32 @@ typedef struct {
     int32_t x0, y0, x1, y1; /* pixel rectangle [x0, x1) x [y0, y1) */
 } tarn_pixel_rect;
 
-/* Walks every triangle of the scene; triangles whose screen bounds miss `only_rect`
- * (when not NULL) are skipped as early as possible. */
-void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view,
+typedef enum {
+    TARN_WALK_OPAQUE, /* objects whose material has no water block */
+    TARN_WALK_WATER   /* water objects only */
+} tarn_walk_pass;
+
+/* Walks the triangles of the pass's objects in scene order; triangles whose screen
+ * bounds miss `only_rect` (when not NULL) are skipped as early as possible. */
+void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view, tarn_walk_pass pass,
                          const tarn_pixel_rect *only_rect, tarn_triangle_sink sink, void *ctx);
 
-/* The tile being drawn: its place in the frame and its buffers. */
+struct tarn_water_context; /* water.h */
+
+/* What a pass draws into: the pixels it may draw, and buffers whose index 0 holds
+ * frame pixel (origin_x, origin_y). */
 typedef struct {
     tarn_pixel_rect rect;
+    int32_t origin_x, origin_y;
     uint32_t *colour;   /* 0x00RRGGBB, `stride` pixels per row */
     void *depth;        /* uint16_t or uint32_t per pixel by depth_bits, near/d */
     int32_t stride;
     const tarn_quality *quality;
+    /* the water pass only: the frame, and the water shading context (its buffers
+     * point at the opaque pass's colour and depth) */
+    const tarn_view *view;
+    const tarn_frame_config *config;
+    struct tarn_water_context *water;
 } tarn_tile_target;
 
 void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex vertex[3],

@@ -33,4 +33,5 @@ void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out
     out->uv = in->uv;
     for (int c = 0; c < 3; c++)
         out->lit[c] = (uint16_t)tarn_clamp_i32(in->lit[c], 0, 65280);
+    out->fresnel = (uint16_t)tarn_clamp_i32(in->fresnel, 0, 32768);
 }

@@ -10,6 +10,7 @@
  * normalised inverse depth q, and divided back per pixel (or per span) with the
  * table-and-Newton reciprocal, using 16x16-bit partial products only. */
 #include "raster_setup.h"
+#include "water.h"
 
 /* T = premultiplied * 2^30 / q, given 1/q as a Q2.30 mantissa and q's leading zeros:
  * 1/q = recip * 2^(lz - 62), so T = mul_hi(p << 1, recip) << (lz - 1). Clamped to the
@@ -151,6 +152,19 @@ static int depth_pass(void *depth, int depth_bits, int32_t offset, uint32_t inv_
     return 1;
 }
 
+/* The water pixel's inputs from the interpolated attributes. */
+static tarn_water_input water_input(const attribute_set *set, const uint32_t values[ATTRIBUTES_MAX],
+                                    uint32_t inv_depth)
+{
+    tarn_water_input in;
+    in.inv_depth = inv_depth;
+    for (int c = 0; c < 3; c++) in.lit[c] = values[c] >> set->t_shift[c];
+    in.u = (values[ATTRIBUTE_U] >> set->t_shift[ATTRIBUTE_U]) + set->u_base;
+    in.v = (values[ATTRIBUTE_V] >> set->t_shift[ATTRIBUTE_V]) + set->v_base;
+    in.fresnel = set->count > ATTRIBUTE_FRESNEL ? values[ATTRIBUTE_FRESNEL] >> set->t_shift[ATTRIBUTE_FRESNEL] : 0u;
+    return in;
+}
+
 static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
                        const tarn_texture *texture, int32_t j, int32_t i0, int32_t i1,
                        exact_value depth)
@@ -164,7 +178,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
         e[k] = edge_at(&t->edges[k], px, py);
         e_step[k] = (int32_t)((uint32_t)t->edges[k].a << s);
     }
-    const int32_t row = (j - tile->rect.y0) * tile->stride - tile->rect.x0;
+    const int32_t row = (j - tile->origin_y) * tile->stride - tile->origin_x;
     span_cache cache;
     cache.start = INT32_MIN;
     for (int32_t i = i0; i <= i1; i++) {
@@ -175,7 +189,12 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
                 span_t(set, t, quality->perspective_span, quality->recip_newton_steps, i, j, &cache, values);
             else
                 exact_t(set, t, i, j, quality->recip_newton_steps, values);
-            tile->colour[row + i] = shade_pixel(set, texture, values);
+            if (tile->water != NULL) {
+                const tarn_water_input in = water_input(set, values, depth.quotient);
+                tile->colour[row + i] = tarn_water_shade(tile->water, i, j, &in);
+            } else {
+                tile->colour[row + i] = shade_pixel(set, texture, values);
+            }
         }
         for (int k = 0; k < 3; k++) e[k] += e_step[k];
         exact_step(&depth, &set->depth.step_x, set->depth.den);
@@ -193,12 +212,28 @@ static uint8_t perspective_mode(const tarn_quality *quality, const pixel_box *bo
     return quality->perspective;
 }
 
+/* What the triangle interpolates, and for water, the context for its object. */
+static attribute_request request_for(tarn_tile_target *tile, const tarn_object *object)
+{
+    const tarn_material *material = object->material;
+    attribute_request request = {NULL, 0, 0};
+    if (material->water != NULL) {
+        if (tile->water->object != object)
+            tarn_water_context_setup(tile->water, tile->view, tile->config, object);
+        request.uv = 1;
+        request.fresnel = (material->water->features & TARN_WATER_FRESNEL) != 0;
+    } else if (material->texture != NULL && object->mesh->uvs != NULL) {
+        request.texture = material->texture;
+        request.uv = 1;
+    }
+    return request;
+}
+
 void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex vertex[3],
                           const tarn_object *object)
 {
-    const tarn_material *material = object->material;
     triangle_setup t;
-    if (!tarn_orient_triangle(vertex, material->cull, tile->quality->subpixel_bits, &t)) return;
+    if (!tarn_orient_triangle(vertex, object->material->cull, tile->quality->subpixel_bits, &t)) return;
     t.box = tarn_triangle_pixels(&t);
     pixel_box draw = t.box;
     if (draw.x0 < tile->rect.x0) draw.x0 = tile->rect.x0;
@@ -206,12 +241,12 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     if (draw.x1 > tile->rect.x1 - 1) draw.x1 = tile->rect.x1 - 1;
     if (draw.y1 > tile->rect.y1 - 1) draw.y1 = tile->rect.y1 - 1;
     if (draw.x0 > draw.x1 || draw.y0 > draw.y1) return;
-    const int textured = material->texture != NULL && object->mesh->uvs != NULL;
+    const attribute_request request = request_for(tile, object);
     attribute_set set;
-    tarn_setup_attributes(&t, textured ? material->texture : NULL, perspective_mode(tile->quality, &t.box), &set);
+    tarn_setup_attributes(&t, &request, perspective_mode(tile->quality, &t.box), &set);
     exact_value depth = tarn_exact_depth_at(&t, draw.x0, draw.y0);
     for (int32_t j = draw.y0; j <= draw.y1; j++) {
-        raster_row(tile, &t, &set, textured ? material->texture : NULL, j, draw.x0, draw.x1, depth);
+        raster_row(tile, &t, &set, request.texture, j, draw.x0, draw.x1, depth);
         exact_step(&depth, &set.depth.step_y, set.depth.den);
     }
 }

@@ -162,8 +162,8 @@ exact_value tarn_exact_depth_at(const triangle_setup *t, int32_t i, int32_t j)
     return floor_divmod(num, t->area2);
 }
 
-void tarn_setup_attributes(const triangle_setup *t, const tarn_texture *texture, uint8_t perspective,
-                           attribute_set *set)
+void tarn_setup_attributes(const triangle_setup *t, const attribute_request *request,
+                           uint8_t perspective, attribute_set *set)
 {
     int64_t q_values[3];
     uint32_t q[3], largest = 0;
@@ -186,14 +186,19 @@ void tarn_setup_attributes(const triangle_setup *t, const tarn_texture *texture,
         uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
         add_attribute(set, t, lit, q);
     }
-    if (texture != NULL) {
-        set->log2_width = 31u - tarn_clz32(texture->width);
-        set->log2_height = 31u - tarn_clz32(texture->height);
+    if (request->uv) {
+        if (request->texture != NULL) {
+            set->log2_width = 31u - tarn_clz32(request->texture->width);
+            set->log2_height = 31u - tarn_clz32(request->texture->height);
+        }
         uint32_t coordinate[3];
         texture_coordinates(t, 0, coordinate, &set->u_base);
         add_attribute(set, t, coordinate, q);
         texture_coordinates(t, 1, coordinate, &set->v_base);
         add_attribute(set, t, coordinate, q);
     }
+    if (request->fresnel) {
+        uint32_t fresnel[3] = {t->v[0]->fresnel, t->v[1]->fresnel, t->v[2]->fresnel};
+        add_attribute(set, t, fresnel, q);
+    }
 }
-

@@ -9,7 +9,10 @@
 #include "pipeline.h"
 
 #define T_ONE ((uint32_t)1 << 30)
-#define ATTRIBUTES_MAX 5 /* lit r, g, b; texture u, v */
+#define ATTRIBUTES_MAX 6 /* lit r, g, b; texture u, v; fresnel */
+#define ATTRIBUTE_U 3
+#define ATTRIBUTE_V 4
+#define ATTRIBUTE_FRESNEL 5
 
 typedef struct {
     uint32_t anchor, step_x, step_y; /* modulo 2^32 */
@@ -101,9 +104,15 @@ int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned 
                          triangle_setup *t);
 /* Pixels whose centres may be covered, before the tile clips them. */
 pixel_box tarn_triangle_pixels(const triangle_setup *t);
-/* `texture` NULL: lit colour only; otherwise texture coordinates too. */
-void tarn_setup_attributes(const triangle_setup *t, const tarn_texture *texture, uint8_t perspective,
-                           attribute_set *set);
+/* What a triangle interpolates besides its lit colour. */
+typedef struct {
+    const tarn_texture *texture; /* textured opaque: its sizes for sampling */
+    int uv;                      /* texture coordinates (textured, or water) */
+    int fresnel;                 /* the fresnel term (water; needs uv) */
+} attribute_request;
+
+void tarn_setup_attributes(const triangle_setup *t, const attribute_request *request,
+                           uint8_t perspective, attribute_set *set);
 /* Exact depth at pixel (i, j), to be stepped from there with exact_step. */
 exact_value tarn_exact_depth_at(const triangle_setup *t, int32_t i, int32_t j);
 

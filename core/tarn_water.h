@@ -28,7 +28,7 @@
  *     row at x = floor(saturate(diff / depth_scale) * (W - 1) + 0.5).
  *  7. S is lit like any vertex colour (material colour * shade, interpolated), then
  *     C = S * alpha + B * (1 - alpha), where with TARN_WATER_FRESNEL
- *     alpha = alpha + (1 - alpha) * fresnel * (1 - n.v)^2, n the mesh normal and v
+ *     alpha = alpha + (1 - alpha) * fresnel * saturate(1 - n.v)^2, n the mesh normal and v
  *     toward the camera, per vertex and interpolated.
  *  8. Specular (TARN_WATER_SPECULAR): C += light * specular * max(0, N.h)^power, h the
  *     half vector of the light and the camera's backward axis in the water's

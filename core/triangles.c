@@ -133,10 +133,13 @@ static void walk_object(const tarn_view *view, const tarn_object *object, const 
     }
 }
 
-void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view,
+void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view, tarn_walk_pass pass,
                          const tarn_pixel_rect *only_rect, tarn_triangle_sink sink, void *ctx)
 {
     const tile_frustum frustum = make_tile_frustum(view, only_rect);
-    for (uint32_t i = 0; i < scene->object_count; i++)
-        walk_object(view, &scene->objects[i], &frustum, only_rect, sink, ctx);
+    for (uint32_t i = 0; i < scene->object_count; i++) {
+        const tarn_object *object = &scene->objects[i];
+        if ((object->material->water != NULL) != (pass == TARN_WALK_WATER)) continue;
+        walk_object(view, object, &frustum, only_rect, sink, ctx);
+    }
 }

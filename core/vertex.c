@@ -50,10 +50,24 @@ static void object_origin_in_view(const tarn_view *view, const tarn_object *obje
     }
 }
 
+/* basis (Q1.30) * rotation (Q16.16) in Q1.30: rotates object normals into view space. */
+static void normal_to_view_matrix(const tarn_view *view, const tarn_object *object,
+                                  tarn_object_xform *xform)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            int64_t sum = 0;
+            for (int k = 0; k < 3; k++) sum += (int64_t)view->basis[i][k] * object->rotation[k][j];
+            xform->normal_to_view[i][j] = tarn_sat_i64_to_i32(tarn_round_shift_i64(sum, 16));
+        }
+}
+
 void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
                              tarn_object_xform *xform)
 {
     object_to_view_matrix(view, object, xform);
+    xform->water = object->material->water != NULL;
+    if (xform->water) normal_to_view_matrix(view, object, xform);
     object_origin_in_view(view, object, xform);
     /* The rotation is orthonormal: object-space light = rotation^T * light. */
     const tarn_q16 light[3] = {view->light_dir.x, view->light_dir.y, view->light_dir.z};
@@ -90,6 +104,31 @@ static uint32_t shade_q16(const tarn_view *view, int channel, int32_t n_dot_l_q1
     return shade > 65536u ? 65536u : shade;
 }
 
+/* (1 - n.v)^2 in Q1.15: n the vertex normal in view space, v the unit vector from
+ * the vertex (already in view space, `at`) toward the camera at the origin. */
+static int32_t fresnel_q15(const tarn_object_xform *xform, const tarn_vec3 *normal,
+                           const tarn_view_vertex *at)
+{
+    const int64_t n_object[3] = {normal->x, normal->y, normal->z};
+    const int64_t position[3] = {at->x, at->y, at->d};
+    int64_t n_dot_p = 0; /* Q16.16 * Q16.16 */
+    uint64_t length2 = 0;
+    for (int i = 0; i < 3; i++) {
+        int64_t n_view = 0;
+        for (int k = 0; k < 3; k++) n_view += xform->normal_to_view[i][k] * n_object[k];
+        n_dot_p += tarn_round_shift_i64(n_view, 30) * position[i];
+        length2 += (uint64_t)(position[i] * position[i]);
+    }
+    int64_t length = (int64_t)tarn_isqrt_u64(length2); /* Q16.16 */
+    if (length == 0) return 0;
+    /* n.v = -(n.p)/|p|, as Q1.15, clamped to [-1, 1] */
+    int64_t n_dot_v = -n_dot_p / length / 2;
+    n_dot_v = n_dot_v > 32768 ? 32768 : (n_dot_v < -32768 ? -32768 : n_dot_v);
+    int64_t one_minus = 32768 - n_dot_v; /* 0..65536 */
+    if (one_minus > 32768) one_minus = 32768; /* saturate(1 - n.v) */
+    return (int32_t)((one_minus * one_minus + 16384) >> 15);
+}
+
 void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
                        const tarn_mesh *mesh, uint16_t index, tarn_view_vertex *out)
 {
@@ -110,4 +149,5 @@ void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
         out->uv.u = 0;
         out->uv.v = 0;
     }
+    out->fresnel = xform->water ? fresnel_q15(xform, n, out) : 0;
 }

@@ -44,7 +44,8 @@ static void counter_init(coverage_counter *c, unsigned subpixel_bits)
 /* Draws one triangle alone into a cleared tile and adds its pixels to the count. */
 static void counter_draw(coverage_counter *c, const tarn_screen_vertex v[3])
 {
-    tarn_tile_target tile = {{0, 0, FRAME, FRAME}, c->colour, c->depth, FRAME, &c->quality};
+    tarn_tile_target tile = {.rect = {0, 0, FRAME, FRAME}, .colour = c->colour, .depth = c->depth,
+                             .stride = FRAME, .quality = &c->quality};
     memset(c->colour, 0, sizeof c->colour);
     memset(c->depth, 0, sizeof c->depth);
     tarn_raster_triangle(&tile, v, &c->object);
@@ -214,7 +215,7 @@ static tarn_compare_metrics compare_snapped(const tarn_scene *scene, const tarn_
     frame_buffers core = frame_new(config->width, config->height);
     frame_buffers ref = frame_new(config->width, config->height);
     render_core(scene, config, &core);
-    tarn_reference_options options = {1, config->quality.subpixel_bits};
+    tarn_reference_options options = {.snapped = 1, .subpixel_bits = config->quality.subpixel_bits};
     assert_int_equal(tarn_reference_render(scene, config->width, config->height, &options, ref.rgb,
                                            ref.covered), 0);
     tarn_compare_metrics m;
@@ -380,7 +381,7 @@ static void test_unsnapped_mismatches_lie_on_edges(void **state)
     tarn_frame_config config = config_of(240, 240);
     frame_buffers core = frame_new(240, 240), ref = frame_new(240, 240);
     render_core(&pond->scene, &config, &core);
-    tarn_reference_options options = {0, config.quality.subpixel_bits};
+    tarn_reference_options options = {.snapped = 0, .subpixel_bits = config.quality.subpixel_bits};
     assert_int_equal(tarn_reference_render(&pond->scene, 240, 240, &options, ref.rgb, ref.covered), 0);
     edge_list edges = {NULL, 0, 0, config.quality.subpixel_bits};
     assert_int_equal(tarn_visit_screen_triangles(&pond->scene, &config, collect_edges, &edges), TARN_OK);

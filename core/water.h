@@ -1,0 +1,55 @@
+/* water.h: the water pixel of tarn_water.h, in integers (private to core/).
+ *
+ * A context holds what is fixed for one water object in one tile: the material,
+ * the frame's time-dependent pan offsets, the half vector in the object's tangent
+ * frame, reciprocals of the material's distances, and the opaque background
+ * buffers (the tile plus its apron) that refraction and fog read. Per pixel,
+ * tarn_water_shade uses 32-bit products only (16x16-bit partial products where a
+ * result needs more), the table reciprocal, and no division. */
+#ifndef TARN_WATER_PRIVATE_H
+#define TARN_WATER_PRIVATE_H
+
+#include "pipeline.h"
+
+typedef struct tarn_water_context {
+    const tarn_water *water;
+    const tarn_object *object;  /* the object the context was made for */
+    uint16_t width, height;     /* the frame */
+    tarn_q16 near, far;
+    tarn_exp2_config exp2;
+    unsigned recip_steps;
+
+    uint16_t pan_a[2], pan_b[2], foam_pan[2]; /* Q0.16 offsets of the panning textures */
+    uint16_t foam_phase;        /* time * foam_line_speed, Q0.16 turns of the band */
+    int32_t half_vector[3];     /* Q1.15, in the object's tangent frame (u, v, up) */
+    uint32_t light_q8[3];       /* light colour, Q8.8 per channel */
+    uint32_t inv_depth_scale;   /* Q16.16 per world unit */
+    uint32_t inv_foam_distance; /* Q16.16 per world unit */
+    uint32_t refraction_px;     /* refraction * width: pixels per unit normal, Q16.16 */
+    uint32_t sparkle_threshold; /* sparkle where x^2 (Q2.30) exceeds this */
+
+    const uint32_t *background;      /* opaque colour, 0x00RRGGBB */
+    const void *background_depth;    /* opaque near/d, by depth_bits */
+    uint8_t depth_bits;
+    tarn_pixel_rect background_rect; /* frame pixels the background buffers hold */
+    int32_t background_stride;
+    tarn_pixel_rect sample_rect;     /* where refracted samples may land */
+} tarn_water_context;
+
+/* Per-frame and per-object constants; buffers are set by the caller. */
+void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
+                              const tarn_frame_config *config, const tarn_object *object);
+
+/* Interpolated inputs of one water pixel. */
+typedef struct {
+    uint32_t inv_depth; /* the water surface's near/d, Q1.30 */
+    uint32_t lit[3];    /* material colour times shade, Q8.8 */
+    uint32_t u, v;      /* texture coordinates, Q16.16 modulo 2^16 repeats */
+    uint32_t fresnel;   /* saturate(1 - n.v)^2, Q1.15 */
+} tarn_water_input;
+
+/* The colour (0x00RRGGBB) of water pixel (i, j). */
+uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j,
+                          const tarn_water_input *in);
+
+#endif

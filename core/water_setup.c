@@ -1,0 +1,78 @@
+/* water_setup.c: what a water context holds for one object in one tile: pan
+ * offsets from the frame's time, the half vector in the object's tangent frame,
+ * and reciprocals of the material's distances. 64-bit products and divisions are
+ * fine here; water.c, per pixel, has neither. */
+#include "water.h"
+
+#define Q15_ONE 32768
+
+/* floor(speed * time_ms / 1000) modulo one repeat, Q0.16. */
+static uint16_t pan_offset(tarn_q16 speed, uint32_t time_ms)
+{
+    int64_t travelled = (int64_t)speed * time_ms; /* |speed| <= 2^20: below 2^52 */
+    int64_t q16 = travelled >= 0 ? travelled / 1000 : -((-travelled + 999) / 1000);
+    return (uint16_t)((uint64_t)q16 & 0xFFFFu);
+}
+
+/* 2^32 / x: the reciprocal of a Q16.16 distance in Q16.16, saturated. */
+static uint32_t reciprocal_q16(tarn_q16 x)
+{
+    if (x <= 0) return UINT32_MAX;
+    int64_t r = ((int64_t)1 << 32) / x;
+    return r > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)r;
+}
+
+/* normalize(L + V) in the object's tangent frame (object x, z, y), Q1.15. */
+static void half_vector(const tarn_view *view, const tarn_object *object, int32_t out[3])
+{
+    int64_t h[3] = {(int64_t)view->light_dir.x - (view->basis[2][0] >> 14),
+                    (int64_t)view->light_dir.y - (view->basis[2][1] >> 14),
+                    (int64_t)view->light_dir.z - (view->basis[2][2] >> 14)}; /* Q16.16 */
+    uint64_t length2 = 0;
+    for (int k = 0; k < 3; k++) length2 += (uint64_t)(h[k] * h[k]);
+    const int64_t length = (int64_t)tarn_isqrt_u64(length2);
+    static const int axis_of[3] = {0, 2, 1}; /* tangent u = object x, v = object z, up = object y */
+    for (int k = 0; k < 3; k++) {
+        int64_t along = 0;
+        for (int r = 0; r < 3; r++) along += h[r] * object->rotation[r][axis_of[k]]; /* Q32 */
+        out[k] = length > 0 ? (int32_t)(along / length / 2) : (k == 2 ? Q15_ONE : 0);
+    }
+}
+
+void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
+                              const tarn_frame_config *config, const tarn_object *object)
+{
+    const tarn_water *water = object->material->water;
+    w->water = water;
+    w->object = object;
+    w->width = config->width;
+    w->height = config->height;
+    w->near = view->near;
+    w->far = view->far;
+    w->exp2 = config->quality.exp2;
+    w->recip_steps = config->quality.recip_newton_steps;
+    const tarn_panning *pans[3] = {&water->pan_a, &water->pan_b, &water->foam_pan};
+    uint16_t *offsets[3] = {w->pan_a, w->pan_b, w->foam_pan};
+    for (int k = 0; k < 3; k++) {
+        offsets[k][0] = pan_offset(pans[k]->speed_u, config->time_ms);
+        offsets[k][1] = pan_offset(pans[k]->speed_v, config->time_ms);
+    }
+    w->foam_phase = pan_offset(water->foam_line_speed, config->time_ms);
+    half_vector(view, object, w->half_vector);
+    for (int c = 0; c < 3; c++) w->light_q8[c] = ((view->light_q16[c] * 255u + 32768u) >> 16) << 8;
+    w->inv_depth_scale = reciprocal_q16(water->depth_scale);
+    w->inv_foam_distance = reciprocal_q16(water->foam_distance);
+    int64_t px = (int64_t)water->refraction * config->width;
+    w->refraction_px = px > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)px;
+    int64_t threshold = water->sparkle_amount > 0 ? ((int64_t)1 << 46) / water->sparkle_amount : INT64_MAX;
+    w->sparkle_threshold = threshold > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)threshold;
+}
+
+int32_t tarn_water_reach_pixels(const tarn_water *water, uint16_t frame_width)
+{
+    if (water == NULL || !(water->features & TARN_WATER_REFRACTION)) return 0;
+    /* refraction (Q16) * width * normal_xy_max (Q16): pixels in Q32, rounded up; one
+     * more for the rounding of the offset to a whole pixel */
+    uint64_t q32 = (uint64_t)(uint32_t)water->refraction * frame_width * (uint32_t)water->normal_xy_max;
+    return (int32_t)((q32 + 0xFFFFFFFFu) >> 32) + 1;
+}
