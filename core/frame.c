@@ -1,5 +1,6 @@
 /* frame.c: configuration, working memory and the tile loop. */
 #include "pipeline.h"
+#include "underwater.h"
 #include "water.h"
 
 #include <string.h>
@@ -31,19 +32,14 @@ const char *tarn_status_text(tarn_status status)
     return "unknown status";
 }
 
-static int is_power_of_two(uint32_t v)
-{
-    return v != 0 && (v & (v - 1u)) == 0;
-}
-
 static int quality_in_range(const tarn_quality *q)
 {
-    return is_power_of_two(q->exp2.entries) && q->exp2.entries >= TARN_EXP2_ENTRIES_MIN &&
+    return tarn_is_power_of_two(q->exp2.entries) && q->exp2.entries >= TARN_EXP2_ENTRIES_MIN &&
            q->exp2.entries <= TARN_EXP2_ENTRIES_MAX && q->exp2.interpolate <= 1 &&
            q->recip_newton_steps <= TARN_RECIP_STEPS_MAX &&
            q->subpixel_bits >= TARN_SUBPIXEL_BITS_MIN && q->subpixel_bits <= TARN_SUBPIXEL_BITS_MAX &&
            q->perspective <= TARN_PERSPECTIVE_PIXEL &&
-           is_power_of_two(q->perspective_span) && q->perspective_span >= 2 && q->perspective_span <= 64 &&
+           tarn_is_power_of_two(q->perspective_span) && q->perspective_span >= 2 && q->perspective_span <= 64 &&
            (q->depth_bits == 16 || q->depth_bits == 32) &&
            q->tile_size >= TARN_TILE_SIZE_MIN && q->tile_size <= TARN_TILE_SIZE_MAX &&
            q->refraction_apron <= 1;
@@ -83,29 +79,44 @@ int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config
 }
 
 /* The buffers of one frame, carved from the caller's memory: the opaque pass's
- * colour and depth over the tile and its apron, and for water the tile's own
- * colour and depth, which the water pass draws into. */
+ * colour and depth over the tile and its apron; with water or the underwater
+ * view, the water pass's colour and depth over the tile and the underwater apron;
+ * with the underwater view, the tile's final colour. */
 typedef struct {
-    int32_t tile, apron, region; /* region = tile + 2 * apron, pixels per side */
-    int water;
+    int32_t tile;
+    int32_t under_apron;  /* pixels the underwater displacement reaches */
+    int32_t apron;        /* the opaque pass's: refraction plus underwater */
+    int32_t region;       /* tile + 2 * apron, pixels per side */
+    int32_t water_region; /* tile + 2 * under_apron */
+    int water;            /* a water pass runs */
+    int underwater;
     size_t depth_bytes;
 } frame_layout;
 
 static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene *scene)
 {
     frame_layout l;
+    const int apron_on = config->quality.refraction_apron != 0;
     l.tile = config->quality.tile_size;
-    l.water = scene_has_water(scene);
-    l.apron = l.water ? tarn_frame_apron_pixels(scene, config) : 0;
+    l.underwater = tarn_underwater_active(scene);
+    l.water = scene_has_water(scene) || l.underwater;
+    l.under_apron = l.underwater && apron_on
+        ? tarn_clamp_i32(tarn_underwater_reach_pixels(scene->underwater, config->width), 0, TARN_WATER_APRON_MAX)
+        : 0;
+    l.apron = l.water ? tarn_frame_apron_pixels(scene, config) + l.under_apron : 0;
     l.region = l.tile + 2 * l.apron;
+    l.water_region = l.tile + 2 * l.under_apron;
     l.depth_bytes = config->quality.depth_bits / 8u;
     return l;
 }
 
 static size_t layout_bytes(const frame_layout *l)
 {
-    const size_t region = (size_t)l->region * (size_t)l->region, tile = (size_t)l->tile * (size_t)l->tile;
-    return region * (4u + l->depth_bytes) + (l->water ? tile * (4u + l->depth_bytes) : 0u);
+    const size_t region = (size_t)l->region * (size_t)l->region;
+    const size_t water = (size_t)l->water_region * (size_t)l->water_region;
+    const size_t tile = (size_t)l->tile * (size_t)l->tile;
+    return region * (4u + l->depth_bytes) + (l->water ? water * (4u + l->depth_bytes) : 0u) +
+           (l->underwater ? tile * 4u : 0u);
 }
 
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
@@ -113,63 +124,6 @@ size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene
     if (tarn_config_check(config) != TARN_OK) return 0;
     const frame_layout l = layout_of(config, scene);
     return layout_bytes(&l);
-}
-
-static int texture_valid(const tarn_texture *t)
-{
-    return t->rgb != NULL && is_power_of_two(t->width) && is_power_of_two(t->height) &&
-           t->width <= TARN_TEXTURE_SIZE_MAX && t->height <= TARN_TEXTURE_SIZE_MAX;
-}
-
-/* Clusters, when given, must cover the triangles exactly once and in order. */
-static int clusters_valid(const tarn_mesh *m)
-{
-    if (m->clusters == NULL) return 1;
-    uint32_t next = 0;
-    for (uint32_t c = 0; c < m->cluster_count; c++) {
-        if (m->clusters[c].first_triangle != next || m->clusters[c].radius < 0) return 0;
-        next += m->clusters[c].triangle_count;
-    }
-    return next == m->triangle_count;
-}
-
-static int optional_texture_valid(const tarn_texture *t)
-{
-    return t == NULL || texture_valid(t);
-}
-
-/* Every texture a feature samples must be there; the apron limit is checked
- * against the frame width when a frame is drawn. */
-static int water_valid(const tarn_water *w)
-{
-    if ((w->features & TARN_WATER_NORMALS) && w->normal_a == NULL) return 0;
-    if ((w->features & TARN_WATER_FOAM) && w->foam_texture == NULL) return 0;
-    return optional_texture_valid(w->normal_a) && optional_texture_valid(w->normal_b) &&
-           optional_texture_valid(w->foam_texture) && optional_texture_valid(w->colour_ramp) &&
-           w->specular_power >= 1 && w->specular_power <= 256 &&
-           w->normal_strength >= 0 && w->normal_strength <= 8 * TARN_Q16_ONE;
-}
-
-static int mesh_valid(const tarn_mesh *m)
-{
-    if (m->triangle_count == 0) return 1;
-    if (m->positions == NULL || m->normals == NULL || m->indices == NULL) return 0;
-    for (uint32_t i = 0; i < 3u * m->triangle_count; i++)
-        if (m->indices[i] >= m->vertex_count) return 0;
-    return clusters_valid(m);
-}
-
-tarn_status tarn_scene_check(const tarn_scene *scene)
-{
-    if (scene == NULL || (scene->object_count > 0 && scene->objects == NULL)) return TARN_ERR_SCENE;
-    if (scene->camera.near <= 0 || scene->camera.far <= scene->camera.near) return TARN_ERR_SCENE;
-    for (uint32_t i = 0; i < scene->object_count; i++) {
-        const tarn_object *o = &scene->objects[i];
-        if (o->mesh == NULL || o->material == NULL || !mesh_valid(o->mesh)) return TARN_ERR_SCENE;
-        if (o->material->texture != NULL && !texture_valid(o->material->texture)) return TARN_ERR_SCENE;
-        if (o->material->water != NULL && !water_valid(o->material->water)) return TARN_ERR_SCENE;
-    }
-    return TARN_OK;
 }
 
 static void raster_into_tile(void *ctx, const tarn_screen_vertex vertex[3], const tarn_object *object)
@@ -204,23 +158,28 @@ typedef struct {
     const tarn_view *view;
     frame_layout layout;
     tarn_tile_target opaque, water;
+    uint32_t *final;              /* the underwater pass's tile */
     tarn_water_context water_context;
+    tarn_underwater_context underwater;
 } frame_state;
 
 static void carve_buffers(frame_state *f, void *memory)
 {
     const frame_layout *l = &f->layout;
-    const size_t region = (size_t)l->region * (size_t)l->region, tile = (size_t)l->tile * (size_t)l->tile;
-    uint8_t *next = memory;
+    const size_t region = (size_t)l->region * (size_t)l->region;
+    const size_t water = l->water ? (size_t)l->water_region * (size_t)l->water_region : 0u;
+    uint8_t *next = memory; /* 4-byte buffers first, so every one stays aligned */
     f->opaque.colour = (uint32_t *)(void *)next;
     next += region * 4u;
     f->water.colour = (uint32_t *)(void *)next;
-    next += l->water ? tile * 4u : 0u;
+    next += water * 4u;
+    f->final = (uint32_t *)(void *)next;
+    next += l->underwater ? (size_t)l->tile * (size_t)l->tile * 4u : 0u;
     f->opaque.depth = next;
     next += region * l->depth_bytes;
     f->water.depth = next;
     f->opaque.stride = l->region;
-    f->water.stride = l->tile;
+    f->water.stride = l->water_region;
     f->opaque.quality = f->water.quality = &f->config->quality;
     f->opaque.water = NULL;
     f->water.water = &f->water_context;
@@ -235,13 +194,21 @@ static tarn_pixel_rect intersect(tarn_pixel_rect a, tarn_pixel_rect b)
     return r;
 }
 
-/* The water pass: over the tile only, reading the opaque pass's buffers. */
-static void draw_water(frame_state *f, const tarn_pixel_rect *tile_rect)
+static tarn_pixel_rect around(int32_t x, int32_t y, int32_t size, int32_t apron, const tarn_pixel_rect *frame)
+{
+    tarn_pixel_rect r = {x - apron, y - apron, x + size + apron, y + size + apron};
+    return intersect(r, *frame);
+}
+
+/* The water pass: over the tile and the underwater apron, reading the opaque
+ * pass's buffers; it starts from a copy of the opaque pixels it covers. */
+static void draw_water(frame_state *f, int32_t x, int32_t y, const tarn_pixel_rect *frame)
 {
     tarn_tile_target *w = &f->water;
-    w->rect = *tile_rect;
-    w->origin_x = tile_rect->x0;
-    w->origin_y = tile_rect->y0;
+    const int32_t apron = f->layout.under_apron;
+    w->rect = around(x, y, f->layout.tile, apron, frame);
+    w->origin_x = x - apron;
+    w->origin_y = y - apron;
     copy_tile_pixels(&f->opaque, w, f->layout.depth_bytes);
     tarn_water_context *c = &f->water_context;
     c->object = NULL; /* set up again for the first water object of the tile */
@@ -251,41 +218,51 @@ static void draw_water(frame_state *f, const tarn_pixel_rect *tile_rect)
     c->background_rect.x0 = f->opaque.origin_x;
     c->background_rect.y0 = f->opaque.origin_y;
     c->background_stride = f->opaque.stride;
-    c->sample_rect = f->config->quality.refraction_apron ? f->opaque.rect : *tile_rect;
-    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, tile_rect, raster_into_tile, w);
+    c->sample_rect = f->config->quality.refraction_apron ? f->opaque.rect : w->rect;
+    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, &w->rect, raster_into_tile, w);
+}
+
+static void draw_underwater(frame_state *f, const tarn_pixel_rect *tile_rect)
+{
+    tarn_underwater_context *u = &f->underwater;
+    u->colour = f->water.colour;
+    u->depth = f->water.depth;
+    u->depth_bits = f->config->quality.depth_bits;
+    u->origin_x = f->water.origin_x;
+    u->origin_y = f->water.origin_y;
+    u->stride = f->water.stride;
+    u->sample_rect = f->water.rect;
+    tarn_underwater_tile(u, tile_rect, f->final, f->layout.tile);
 }
 
 static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, void *user)
 {
-    const int32_t size = f->layout.tile, apron = f->layout.apron;
+    const int32_t size = f->layout.tile;
     const tarn_pixel_rect frame = {0, 0, f->config->width, f->config->height};
-    const tarn_pixel_rect tile_rect = intersect((tarn_pixel_rect){x, y, x + size, y + size}, frame);
+    const tarn_pixel_rect tile_rect = around(x, y, size, 0, &frame);
     tarn_tile_target *o = &f->opaque;
-    o->origin_x = x - apron;
-    o->origin_y = y - apron;
-    o->rect = intersect((tarn_pixel_rect){x - apron, y - apron, x + size + apron, y + size + apron}, frame);
+    o->origin_x = x - f->layout.apron;
+    o->origin_y = y - f->layout.apron;
+    o->rect = around(x, y, size, f->layout.apron, &frame);
     clear_buffers(o->colour, o->depth, (size_t)f->layout.region * (size_t)f->layout.region,
                   f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
     tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, &o->rect, raster_into_tile, o);
     const tarn_tile_target *out = o;
     if (f->layout.water) {
-        draw_water(f, &tile_rect);
+        draw_water(f, x, y, &frame);
         out = &f->water;
     }
     const int32_t first = (y - out->origin_y) * out->stride + (x - out->origin_x);
     tarn_tile tile = {(uint16_t)x, (uint16_t)y, (uint16_t)(tile_rect.x1 - x), (uint16_t)(tile_rect.y1 - y),
                       out->colour + first, (const uint8_t *)out->depth + (size_t)first * f->layout.depth_bytes,
                       (uint16_t)out->stride, f->config->quality.depth_bits};
+    if (f->layout.underwater) {
+        draw_underwater(f, &tile_rect);
+        tile.rgb = f->final;
+        tile.stride = (uint16_t)size;
+        tile.depth = NULL; /* the displaced image has no single depth per pixel */
+    }
     return sink != NULL ? sink(user, &tile) : 0;
-}
-
-static tarn_status check_water_reach(const tarn_scene *scene, const tarn_frame_config *config)
-{
-    for (uint32_t i = 0; i < scene->object_count; i++)
-        if (tarn_water_reach_pixels(scene->objects[i].material->water, config->width) >
-            (int32_t)TARN_WATER_APRON_MAX)
-            return TARN_ERR_SCENE;
-    return TARN_OK;
 }
 
 tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *config,
@@ -293,7 +270,7 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
 {
     if (tarn_config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
     tarn_status status = tarn_scene_check(scene);
-    if (status == TARN_OK) status = check_water_reach(scene, config);
+    if (status == TARN_OK) status = tarn_scene_check_reach(scene, config);
     if (status != TARN_OK) return status;
     if (memory == NULL || memory_bytes < tarn_frame_memory_bytes(config, scene)) return TARN_ERR_MEMORY;
 
@@ -305,6 +282,7 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
     f.view = &view;
     f.layout = layout_of(config, scene);
     carve_buffers(&f, memory);
+    if (f.layout.underwater) tarn_underwater_setup(&f.underwater, &view, config, scene->underwater);
     for (int32_t y = 0; y < config->height; y += f.layout.tile)
         for (int32_t x = 0; x < config->width; x += f.layout.tile)
             if (draw_tile(&f, x, y, sink, user) != 0) return TARN_ERR_SINK;

@@ -110,6 +110,8 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
 
 /* Validates the scene's arrays so the walk never reads past them. */
 tarn_status tarn_scene_check(const tarn_scene *scene);
+/* TARN_ERR_SCENE when a water material's refraction reaches past the widest apron. */
+tarn_status tarn_scene_check_reach(const tarn_scene *scene, const tarn_frame_config *config);
 /* Validates a frame config; TARN_OK or TARN_ERR_CONFIG. */
 tarn_status tarn_config_check(const tarn_frame_config *config);
 

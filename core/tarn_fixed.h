@@ -63,6 +63,11 @@ static inline tarn_q16 tarn_q16_from_int(int32_t v)
     return tarn_sat_i64_to_i32((int64_t)v * 65536);
 }
 
+static inline int tarn_is_power_of_two(uint32_t v)
+{
+    return v != 0u && (v & (v - 1u)) == 0u;
+}
+
 /* Number of leading zero bits of a 32-bit value (32 for 0). Portable: the
  * Cortex-M0 has no CLZ instruction, and the result must match on every target. */
 static inline unsigned tarn_clz32(uint32_t v)

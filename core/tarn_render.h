@@ -107,7 +107,9 @@ typedef struct {
     uint16_t x, y, width, height; /* the tile's rectangle in the frame, pixels */
     const uint32_t *rgb;          /* 0x00RRGGBB pixels, rows `stride` pixels apart */
     const void *depth;            /* near/d per pixel (uint16_t Q0.16 or uint32_t Q1.30 by
-                                     depth_bits), same layout; 0 where no triangle drew */
+                                     depth_bits), same layout; 0 where no triangle drew.
+                                     NULL under the underwater view, whose displaced
+                                     pixels have no single depth */
     uint16_t stride;
     uint8_t depth_bits;
 } tarn_tile;

@@ -9,7 +9,7 @@
 
 /* a * b / 2^16 for unsigned Q16.16 values, saturated to INT32_MAX: 16x16-bit
  * partial products summed in 64 bits (adds only; no divider, no 64-bit multiply). */
-static uint32_t mul_q16_sat(uint32_t a, uint32_t b)
+uint32_t tarn_water_mul_q16(uint32_t a, uint32_t b)
 {
     const uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
     const uint64_t sum = ((uint64_t)(ah * bh) << 16) + ah * bl + al * bh + ((al * bl) >> 16);
@@ -19,7 +19,7 @@ static uint32_t mul_q16_sat(uint32_t a, uint32_t b)
 /* (a * b / 2^16) mod 2^16 for texture coordinates: the fraction of a repeat. Only
  * low bits matter, so 16x16-bit products suffice, and negative or wrapped inputs
  * give the right fraction too. */
-static uint32_t repeat_fraction(uint32_t a, uint32_t b)
+uint32_t tarn_water_repeat_fraction(uint32_t a, uint32_t b)
 {
     const uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
     return (ah * bl + al * bh + ((al * bl) >> 16)) & 0xFFFFu;
@@ -36,12 +36,12 @@ static uint32_t channel_q8(uint32_t rgb, int c)
 }
 
 /* A texel's channel decoded to a normal component, (2c - 255) / 255, Q1.15. */
-static int32_t normal_component(uint8_t c)
+int32_t tarn_water_normal_component(uint8_t c)
 {
     return ((2 * (int32_t)c - 255) * 257) / 2;
 }
 
-static const uint8_t *texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction)
+const uint8_t *tarn_water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction)
 {
     const unsigned log2_w = 31u - tarn_clz32(t->width), log2_h = 31u - tarn_clz32(t->height);
     const uint32_t x = u_fraction >> (16u - log2_w), y = v_fraction >> (16u - log2_h);
@@ -51,25 +51,29 @@ static const uint8_t *texel_at(const tarn_texture *t, uint32_t u_fraction, uint3
 static const uint8_t *panned_texel(const tarn_texture *t, const tarn_panning *pan,
                                    const uint16_t offset[2], const tarn_water_input *in)
 {
-    uint32_t u = (repeat_fraction(in->u, (uint32_t)pan->scale) + offset[0]) & 0xFFFFu;
-    uint32_t v = (repeat_fraction(in->v, (uint32_t)pan->scale) + offset[1]) & 0xFFFFu;
-    return texel_at(t, u, v);
+    uint32_t u = (tarn_water_repeat_fraction(in->u, (uint32_t)pan->scale) + offset[0]) & 0xFFFFu;
+    uint32_t v = (tarn_water_repeat_fraction(in->v, (uint32_t)pan->scale) + offset[1]) & 0xFFFFu;
+    return tarn_water_texel_at(t, u, v);
 }
 
-/* near / (iz / 2^30): linear depth in Q16.16 world units, saturated; far for iz 0. */
-static uint32_t linear_depth(const tarn_water_context *w, uint32_t iz_q30)
+uint32_t tarn_water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps)
 {
-    if (iz_q30 == 0u) return (uint32_t)w->far;
+    if (iz_q30 == 0u) return (uint32_t)far;
     const unsigned lz = tarn_clz32(iz_q30);
-    const uint32_t recip = tarn_recip_q30(iz_q30 << lz, w->recip_steps); /* 2^62 / (iz << lz) */
-    const unsigned near_shift = tarn_clz32((uint32_t)w->near);
+    const uint32_t recip = tarn_recip_q30(iz_q30 << lz, recip_steps); /* 2^62 / (iz << lz) */
+    const unsigned near_shift = tarn_clz32((uint32_t)near);
     /* d = near * recip * 2^(lz - 32), with near pre-shifted for precision */
-    const uint32_t scaled = tarn_mul_hi_u32((uint32_t)w->near << near_shift, recip);
+    const uint32_t scaled = tarn_mul_hi_u32((uint32_t)near << near_shift, recip);
     if (lz >= near_shift) {
         unsigned up = lz - near_shift;
         return up >= 31u || scaled > ((uint32_t)INT32_MAX >> up) ? (uint32_t)INT32_MAX : scaled << up;
     }
     return scaled >> (near_shift - lz);
+}
+
+static uint32_t linear_depth(const tarn_water_context *w, uint32_t iz_q30)
+{
+    return tarn_water_linear_depth(iz_q30, w->near, w->far, w->recip_steps);
 }
 
 static uint32_t background_depth_q30(const tarn_water_context *w, int32_t offset)
@@ -86,7 +90,7 @@ static int32_t background_offset(const tarn_water_context *w, int32_t i, int32_t
 /* 2^(-rate * x) for rate, x >= 0 (Q16.16), Q0.16. */
 static uint32_t decay(const tarn_water_context *w, uint32_t rate, uint32_t x)
 {
-    return tarn_exp2_neg_q16(-(tarn_q16)mul_q16_sat(rate, x), w->exp2);
+    return tarn_exp2_neg_q16(-(tarn_q16)tarn_water_mul_q16(rate, x), w->exp2);
 }
 
 /* ---- the steps ------------------------------------------------------------------- */
@@ -99,7 +103,7 @@ typedef struct {
 
 static void decode_normal(const uint8_t *texel, int32_t out[3])
 {
-    for (int k = 0; k < 3; k++) out[k] = normal_component(texel[k]);
+    for (int k = 0; k < 3; k++) out[k] = tarn_water_normal_component(texel[k]);
 }
 
 /* Step 1: N = normalize(strength * (a.xy + b.xy), a.z * b.z). */
@@ -187,7 +191,7 @@ static void fog_and_absorb(const tarn_water_context *w, uint32_t diff, uint32_t 
         }
     }
     if (water->features & TARN_WATER_ABSORPTION) {
-        const uint32_t x = water->absorption_squared ? mul_q16_sat(diff, diff) : diff;
+        const uint32_t x = water->absorption_squared ? tarn_water_mul_q16(diff, diff) : diff;
         const uint32_t absorbed = (Q16_ONE - decay(w, (uint32_t)water->absorption, x)) >> 1; /* Q1.15 */
         for (int c = 0; c < 3; c++) {
             const uint32_t inverse = 65280u - channel_q8(water->absorb_rgb, c);
@@ -205,7 +209,7 @@ static void surface_colour(const tarn_water_context *w, uint32_t diff, uint32_t 
         for (int c = 0; c < 3; c++) out[c] = channel_q8(water->albedo_rgb, c);
         return;
     }
-    uint32_t t = mul_q16_sat(diff, w->inv_depth_scale);
+    uint32_t t = tarn_water_mul_q16(diff, w->inv_depth_scale);
     if (t > Q16_ONE) t = Q16_ONE;
     if (water->colour_ramp != NULL) {
         const tarn_texture *ramp = water->colour_ramp;
@@ -265,7 +269,7 @@ static void add_foam(const tarn_water_context *w, const tarn_water_input *in, ui
 {
     const tarn_water *water = w->water;
     if (!(water->features & TARN_WATER_FOAM) || water->foam_texture == NULL) return;
-    uint32_t f = mul_q16_sat(diff, w->inv_foam_distance);
+    uint32_t f = tarn_water_mul_q16(diff, w->inv_foam_distance);
     if (f >= Q16_ONE) return;
     const uint16_t turns = (uint16_t)(water->foam_line_count * (f - w->foam_phase));
     int32_t wave = tarn_sin_q15(turns);

@@ -48,6 +48,20 @@ typedef struct {
     uint32_t fresnel;   /* saturate(1 - n.v)^2, Q1.15 */
 } tarn_water_input;
 
+/* Per-pixel helpers the underwater pass shares (32-bit products only). */
+/* a * b / 2^16 for unsigned Q16.16 values, saturated to INT32_MAX. */
+uint32_t tarn_water_mul_q16(uint32_t a, uint32_t b);
+/* (a * b / 2^16) modulo 2^16: the fraction of a texture repeat, for any a. */
+uint32_t tarn_water_repeat_fraction(uint32_t a, uint32_t b);
+/* A texel channel as a normal component, (2c - 255) / 255 in Q1.15. */
+int32_t tarn_water_normal_component(uint8_t c);
+/* The texel at a repeat fraction (Q0.16 each axis), nearest, power-of-two sides. */
+const uint8_t *tarn_water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction);
+/* near / (iz / 2^30) in Q16.16 world units, saturated; `far` for iz 0. */
+uint32_t tarn_water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps);
+/* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.16. */
+uint16_t tarn_water_pan_offset(tarn_q16 speed, uint32_t time_ms);
+
 /* The colour (0x00RRGGBB) of water pixel (i, j). */
 uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j,
                           const tarn_water_input *in);

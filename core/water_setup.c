@@ -1,13 +1,15 @@
-/* water_setup.c: what a water context holds for one object in one tile: pan
+/* water_setup.c: what a water context holds for one object in one tile (pan
  * offsets from the frame's time, the half vector in the object's tangent frame,
- * and reciprocals of the material's distances. 64-bit products and divisions are
- * fine here; water.c, per pixel, has neither. */
+ * reciprocals of the material's distances), and the underwater view's per-frame
+ * constants. 64-bit products and divisions are fine here; water.c and
+ * underwater.c, per pixel, have neither. */
 #include "water.h"
+#include "underwater.h"
 
 #define Q15_ONE 32768
 
 /* floor(speed * time_ms / 1000) modulo one repeat, Q0.16. */
-static uint16_t pan_offset(tarn_q16 speed, uint32_t time_ms)
+uint16_t tarn_water_pan_offset(tarn_q16 speed, uint32_t time_ms)
 {
     int64_t travelled = (int64_t)speed * time_ms; /* |speed| <= 2^20: below 2^52 */
     int64_t q16 = travelled >= 0 ? travelled / 1000 : -((-travelled + 999) / 1000);
@@ -54,10 +56,10 @@ void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
     const tarn_panning *pans[3] = {&water->pan_a, &water->pan_b, &water->foam_pan};
     uint16_t *offsets[3] = {w->pan_a, w->pan_b, w->foam_pan};
     for (int k = 0; k < 3; k++) {
-        offsets[k][0] = pan_offset(pans[k]->speed_u, config->time_ms);
-        offsets[k][1] = pan_offset(pans[k]->speed_v, config->time_ms);
+        offsets[k][0] = tarn_water_pan_offset(pans[k]->speed_u, config->time_ms);
+        offsets[k][1] = tarn_water_pan_offset(pans[k]->speed_v, config->time_ms);
     }
-    w->foam_phase = pan_offset(water->foam_line_speed, config->time_ms);
+    w->foam_phase = tarn_water_pan_offset(water->foam_line_speed, config->time_ms);
     half_vector(view, object, w->half_vector);
     for (int c = 0; c < 3; c++) w->light_q8[c] = ((view->light_q16[c] * 255u + 32768u) >> 16) << 8;
     w->inv_depth_scale = reciprocal_q16(water->depth_scale);
@@ -75,4 +77,34 @@ int32_t tarn_water_reach_pixels(const tarn_water *water, uint16_t frame_width)
      * more for the rounding of the offset to a whole pixel */
     uint64_t q32 = (uint64_t)(uint32_t)water->refraction * frame_width * (uint32_t)water->normal_xy_max;
     return (int32_t)((q32 + 0xFFFFFFFFu) >> 32) + 1;
+}
+
+/* ---- the underwater view ----------------------------------------------------------- */
+
+int tarn_underwater_active(const tarn_scene *scene)
+{
+    return scene != NULL && scene->underwater != NULL && scene->underwater->normal_map != NULL &&
+           scene->camera.position.y < scene->underwater->level;
+}
+
+int32_t tarn_underwater_reach_pixels(const tarn_underwater *under, uint16_t frame_width)
+{
+    /* |N.x|, |N.y| <= 1; one more pixel for rounding the offset */
+    uint64_t q16 = (uint64_t)(uint32_t)under->distortion * frame_width;
+    return (int32_t)((q16 + 0xFFFFu) >> 16) + 1;
+}
+
+void tarn_underwater_setup(tarn_underwater_context *u, const tarn_view *view,
+                           const tarn_frame_config *config, const tarn_underwater *under)
+{
+    u->under = under;
+    u->near = view->near;
+    u->far = view->far;
+    u->exp2 = config->quality.exp2;
+    u->recip_steps = config->quality.recip_newton_steps;
+    u->pan[0] = tarn_water_pan_offset(under->pan.speed_u, config->time_ms);
+    u->pan[1] = tarn_water_pan_offset(under->pan.speed_v, config->time_ms);
+    u->screen_u_per_half = (uint32_t)(((uint64_t)1 << 32) / (2u * config->width));
+    int64_t px = (int64_t)under->distortion * config->width;
+    u->distortion_px = px > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)px;
 }

@@ -9,6 +9,7 @@ typedef struct {
 
 static int tile_covered(const tarn_tile *tile, size_t offset)
 {
+    if (tile->depth == NULL) return 1; /* the underwater view covers every pixel */
     if (tile->depth_bits == 16) return ((const uint16_t *)tile->depth)[offset] != 0;
     return ((const uint32_t *)tile->depth)[offset] != 0;
 }

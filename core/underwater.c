@@ -1,0 +1,68 @@
+/* underwater.c: the underwater view, per pixel in 32-bit products; the setup
+ * below it runs once a frame. */
+#include "underwater.h"
+
+#include "water.h"
+
+static int32_t floor_shift(int32_t v, unsigned s)
+{
+    return v >= 0 ? (v >> s) : -(int32_t)((((uint32_t)0 - (uint32_t)v) + ((1u << s) - 1u)) >> s);
+}
+
+static int32_t clamp_to(int32_t v, int32_t lo, int32_t hi_exclusive)
+{
+    return v < lo ? lo : (v >= hi_exclusive ? hi_exclusive - 1 : v);
+}
+
+static uint32_t depth_q30(const tarn_underwater_context *u, int32_t offset)
+{
+    if (u->depth_bits == 16) return (uint32_t)((const uint16_t *)u->depth)[offset] << 14;
+    return ((const uint32_t *)u->depth)[offset];
+}
+
+/* The pixel the displacement at (i, j) samples. */
+static int32_t displaced_offset(const tarn_underwater_context *u, int32_t i, int32_t j)
+{
+    const tarn_underwater *under = u->under;
+    /* screen (x / width, y / width) at the pixel centre, Q0.16, then panned */
+    const uint32_t sx = tarn_mul_hi_u32((uint32_t)(2 * i + 1) << 16, u->screen_u_per_half);
+    const uint32_t sy = tarn_mul_hi_u32((uint32_t)(2 * j + 1) << 16, u->screen_u_per_half);
+    const uint32_t fu = (tarn_water_repeat_fraction(sx, (uint32_t)under->pan.scale) + u->pan[0]) & 0xFFFFu;
+    const uint32_t fv = (tarn_water_repeat_fraction(sy, (uint32_t)under->pan.scale) + u->pan[1]) & 0xFFFFu;
+    const uint8_t *texel = tarn_water_texel_at(under->normal_map, fu, fv);
+    int32_t target[2] = {i, j};
+    for (int k = 0; k < 2; k++) {
+        /* N (Q1.15) * pixels per unit normal (Q16.16) / 2^23 -> pixels, Q24.8 */
+        int32_t offset_q8 = tarn_mul_hi_s32_u32(tarn_water_normal_component(texel[k]) * 512, u->distortion_px);
+        target[k] += floor_shift(tarn_clamp_i32(offset_q8, -(64 << 8), 64 << 8) + 128, 8);
+    }
+    const int32_t x = clamp_to(target[0], u->sample_rect.x0, u->sample_rect.x1);
+    const int32_t y = clamp_to(target[1], u->sample_rect.y0, u->sample_rect.y1);
+    return (y - u->origin_y) * u->stride + (x - u->origin_x);
+}
+
+static uint32_t tinted(const tarn_underwater_context *u, int32_t offset)
+{
+    const uint32_t d = tarn_water_linear_depth(depth_q30(u, offset), u->near, u->far, u->recip_steps);
+    const uint32_t keep = tarn_exp2_neg_q16(-(tarn_q16)tarn_water_mul_q16((uint32_t)u->under->tint_density, d),
+                                            u->exp2) >> 1; /* Q1.15 */
+    const uint32_t rgb = u->colour[offset];
+    uint32_t out = 0;
+    for (int c = 0; c < 3; c++) {
+        const int32_t below = (int32_t)(((rgb >> (16 - 8 * c)) & 0xFFu) << 8);
+        const int32_t tint = (int32_t)(((u->under->tint_rgb >> (16 - 8 * c)) & 0xFFu) << 8);
+        const int32_t mixed = tint + ((below - tint) * (int32_t)keep) / 32768; /* Q8.8 */
+        const int32_t byte = (mixed + 128) >> 8;
+        out = (out << 8) | (uint32_t)(byte > 255 ? 255 : (byte < 0 ? 0 : byte));
+    }
+    return out;
+}
+
+void tarn_underwater_tile(const tarn_underwater_context *u, const tarn_pixel_rect *rect,
+                          uint32_t *out, int32_t out_stride)
+{
+    for (int32_t j = rect->y0; j < rect->y1; j++)
+        for (int32_t i = rect->x0; i < rect->x1; i++)
+            out[(j - rect->y0) * out_stride + (i - rect->x0)] = tinted(u, displaced_offset(u, i, j));
+}
+
