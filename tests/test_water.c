@@ -1,0 +1,268 @@
+/* test_water.c: the integer water pass at its limits, against what the rules in
+ * tarn_water.h say must happen: density 0 leaves the background bit for bit, a huge
+ * density leaves only fog, zero refraction changes nothing, a constant normal map
+ * shifts the background by an exact number of pixels, tiles do not show with the
+ * apron on, and a scene without water pays nothing for water. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "core_render.h"
+#include "scene_builder.h"
+
+#define W 96
+#define H 64
+
+/* A floor at z = -8 with a 1-pixel-ish checker of vertex colours, under a water
+ * quad at z = -5 facing the camera, which looks down -z from the origin. */
+typedef struct {
+    scene_builder b;
+    tarn_water water;
+    uint32_t colours[BUILDER_VERTICES_MAX];
+    uint8_t normal_texels[4 * 4 * 3];
+    tarn_texture normal_map;
+} water_scene;
+
+static void floor_and_water(water_scene *s, int with_water)
+{
+    builder_init(&s->b, 0, 0, 0, 0, 0, -1);
+    builder_begin_object(&s->b, 0xFFFFFF, TARN_CULL_NONE);
+    builder_grid(&s->b, 0, 0, -8, 24, 16, 48, 32); /* many small quads: a varied background */
+    for (uint32_t v = 0; v < s->b.vertex_count; v++)
+        s->colours[v] = (v * 2654435761u) & 0xFFFFFFu;
+    s->b.meshes[0].colours = s->colours;
+    if (!with_water) return;
+    builder_begin_object(&s->b, 0xFFFFFF, TARN_CULL_NONE);
+    builder_grid(&s->b, 0, 0, -5, 20, 14, 1, 1);
+    s->b.materials[1].water = &s->water;
+}
+
+static void constant_normal_map(water_scene *s, uint8_t x, uint8_t y)
+{
+    for (int t = 0; t < 16; t++) {
+        s->normal_texels[3 * t] = x;
+        s->normal_texels[3 * t + 1] = y;
+        s->normal_texels[3 * t + 2] = 255;
+    }
+    s->normal_map.width = s->normal_map.height = 4;
+    s->normal_map.rgb = s->normal_texels;
+    s->water.normal_a = &s->normal_map;
+    s->water.pan_a.scale = TARN_Q16_ONE;
+    s->water.normal_strength = TARN_Q16_ONE;
+    s->water.normal_xy_max = TARN_Q16_ONE;
+    s->water.features |= TARN_WATER_NORMALS;
+}
+
+static water_scene *new_scene(int with_water)
+{
+    water_scene *s = calloc(1, sizeof *s);
+    assert_non_null(s);
+    s->water.specular_power = 1;
+    s->water.fog_rgb = 0x4E83A9;
+    floor_and_water(s, with_water);
+    return s;
+}
+
+static uint8_t *render(const water_scene *s, tarn_frame_config config)
+{
+    uint8_t *rgb = malloc(3u * config.width * config.height);
+    tarn_error err;
+    if (tarn_core_render(&s->b.scene, &config, rgb, NULL, &err) != 0) fail_msg("%s", err.message);
+    return rgb;
+}
+
+static tarn_frame_config config_of(void)
+{
+    tarn_frame_config config = {W, H, tarn_quality_default(), 0};
+    return config;
+}
+
+static void test_zero_density_leaves_background_bit_for_bit(void **state)
+{
+    (void)state;
+    water_scene *dry = new_scene(0), *wet = new_scene(1);
+    wet->water.features = TARN_WATER_FOG; /* density 0, alpha 0 */
+    uint8_t *a = render(dry, config_of()), *b = render(wet, config_of());
+    assert_memory_equal(a, b, 3u * W * H);
+    free(a);
+    free(b);
+    free(dry);
+    free(wet);
+}
+
+static void test_huge_density_leaves_only_fog(void **state)
+{
+    (void)state;
+    water_scene *wet = new_scene(1);
+    wet->water.features = TARN_WATER_FOG;
+    wet->water.fog_density = 64 * TARN_Q16_ONE; /* 3 units of water: 2^-192 of the floor */
+    uint8_t *rgb = render(wet, config_of());
+    for (int p = 0; p < W * H; p++) {
+        assert_int_equal(rgb[3 * p], 0x4E);
+        assert_int_equal(rgb[3 * p + 1], 0x83);
+        assert_int_equal(rgb[3 * p + 2], 0xA9);
+    }
+    free(rgb);
+    free(wet);
+}
+
+static void test_opaque_surface_colour(void **state)
+{
+    (void)state;
+    water_scene *wet = new_scene(1);
+    wet->water.albedo_rgb = 0x20C040;
+    wet->water.alpha = TARN_Q16_ONE;
+    wet->b.materials[1].unlit = 1;
+    uint8_t *rgb = render(wet, config_of());
+    for (int p = 0; p < W * H; p++) {
+        assert_int_equal(rgb[3 * p], 0x20);
+        assert_int_equal(rgb[3 * p + 1], 0xC0);
+        assert_int_equal(rgb[3 * p + 2], 0x40);
+    }
+    free(rgb);
+    free(wet);
+}
+
+static void test_zero_refraction_changes_nothing(void **state)
+{
+    (void)state;
+    water_scene *plain = new_scene(1), *refracting = new_scene(1);
+    water_scene *both[2] = {plain, refracting};
+    for (int k = 0; k < 2; k++) {
+        both[k]->water.features = TARN_WATER_FOG;
+        both[k]->water.fog_density = TARN_Q16_ONE / 8;
+        constant_normal_map(both[k], 230, 40);
+    }
+    refracting->water.features |= TARN_WATER_REFRACTION; /* strength 0 */
+    uint8_t *a = render(plain, config_of()), *b = render(refracting, config_of());
+    assert_memory_equal(a, b, 3u * W * H);
+    free(a);
+    free(b);
+    free(plain);
+    free(refracting);
+}
+
+/* N from texel (255, 128, 255) is (1, 0.0039, 1) normalised: x = 0.7057. With
+ * refraction r, the sample moves round(0.7057 * r * W) pixels right. */
+static void test_constant_normals_shift_the_background(void **state)
+{
+    (void)state;
+    water_scene *dry = new_scene(0), *wet = new_scene(1);
+    constant_normal_map(wet, 255, 128);
+    wet->water.features |= TARN_WATER_REFRACTION;
+    wet->water.refraction = TARN_Q16_ONE / 16; /* 6 px per unit normal at 96 wide: 4.23 -> 4 */
+    uint8_t *floor = render(dry, config_of()), *water = render(wet, config_of());
+    int checked = 0;
+    for (int j = 0; j < H; j++)
+        for (int i = 0; i + 4 < W; i++) {
+            assert_memory_equal(&water[3 * (j * W + i)], &floor[3 * (j * W + i + 4)], 3);
+            checked++;
+        }
+    assert_true(checked > 1000);
+    free(floor);
+    free(water);
+    free(dry);
+    free(wet);
+}
+
+static void test_tiles_do_not_show_with_the_apron(void **state)
+{
+    (void)state;
+    water_scene *wet = new_scene(1);
+    constant_normal_map(wet, 250, 20);
+    wet->water.features |= TARN_WATER_REFRACTION | TARN_WATER_FOG;
+    wet->water.fog_density = TARN_Q16_ONE / 4;
+    wet->water.refraction = TARN_Q16_ONE / 10;
+    tarn_frame_config config = config_of();
+    config.quality.tile_size = 64;
+    uint8_t *whole = render(wet, config);
+    static const uint8_t tiles[] = {8, 13, 16, 32};
+    for (size_t t = 0; t < sizeof tiles; t++) {
+        config.quality.tile_size = tiles[t];
+        uint8_t *tiled = render(wet, config);
+        assert_memory_equal(whole, tiled, 3u * W * H);
+        free(tiled);
+    }
+    /* without the apron, samples clamp to the tile: seams appear, nothing breaks */
+    config.quality.refraction_apron = 0;
+    config.quality.tile_size = 8;
+    uint8_t *clamped = render(wet, config);
+    assert_memory_not_equal(whole, clamped, 3u * W * H);
+    free(clamped);
+    free(whole);
+    free(wet);
+}
+
+static void test_time_near_the_wrap(void **state)
+{
+    (void)state;
+    water_scene *wet = new_scene(1);
+    constant_normal_map(wet, 200, 90);
+    wet->water.pan_a.speed_u = 16 * TARN_Q16_ONE;
+    wet->water.pan_a.speed_v = -16 * TARN_Q16_ONE;
+    wet->water.features |= TARN_WATER_REFRACTION | TARN_WATER_SPARKLES | TARN_WATER_SPECULAR;
+    wet->water.refraction = TARN_Q16_ONE / 10;
+    wet->water.sparkle_amount = 2 * TARN_Q16_ONE;
+    wet->water.specular = 4 * TARN_Q16_ONE;
+    wet->water.specular_power = 256;
+    static const uint32_t times[] = {0, UINT32_MAX - 1000, UINT32_MAX};
+    for (size_t t = 0; t < 3; t++) {
+        tarn_frame_config config = config_of();
+        config.time_ms = times[t];
+        free(render(wet, config));
+    }
+    free(wet);
+}
+
+/* Water on the floor itself: diff is 0 or negative everywhere; and the camera
+ * exactly in the water plane. Nothing may break. */
+static void test_coplanar_water_and_camera_on_the_surface(void **state)
+{
+    (void)state;
+    water_scene *wet = new_scene(1);
+    wet->water.features = TARN_WATER_FOG | TARN_WATER_ABSORPTION | TARN_WATER_DEPTH_COLOUR | TARN_WATER_FOAM;
+    wet->water.fog_density = TARN_Q16_ONE;
+    wet->water.absorption = TARN_Q16_ONE;
+    wet->water.depth_scale = TARN_Q16_ONE;
+    wet->water.foam_distance = TARN_Q16_ONE;
+    wet->water.foam_texture = &wet->normal_map;
+    constant_normal_map(wet, 128, 128);
+    for (uint32_t v = 0; v < wet->b.vertex_count; v++) wet->b.positions[v].z = builder_q16(-8);
+    free(render(wet, config_of()));
+    builder_init(&wet->b, 0, -5, 0, 0, -5, -1); /* eye in the plane y = -5 */
+    floor_and_water(wet, 1);
+    free(render(wet, config_of()));
+    free(wet);
+}
+
+static void test_opaque_scenes_pay_nothing_for_water(void **state)
+{
+    (void)state;
+    water_scene *dry = new_scene(0), *wet = new_scene(1);
+    tarn_frame_config config = config_of();
+    const size_t tile = (size_t)config.quality.tile_size * config.quality.tile_size;
+    assert_int_equal(tarn_frame_memory_bytes(&config, &dry->b.scene), tile * 8u);
+    assert_true(tarn_frame_memory_bytes(&config, &wet->b.scene) > tile * 8u);
+    free(dry);
+    free(wet);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_zero_density_leaves_background_bit_for_bit),
+        cmocka_unit_test(test_huge_density_leaves_only_fog),
+        cmocka_unit_test(test_opaque_surface_colour),
+        cmocka_unit_test(test_zero_refraction_changes_nothing),
+        cmocka_unit_test(test_constant_normals_shift_the_background),
+        cmocka_unit_test(test_tiles_do_not_show_with_the_apron),
+        cmocka_unit_test(test_time_near_the_wrap),
+        cmocka_unit_test(test_coplanar_water_and_camera_on_the_surface),
+        cmocka_unit_test(test_opaque_scenes_pay_nothing_for_water),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
