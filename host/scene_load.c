@@ -13,16 +13,20 @@
 
 #include "obj_load.h"
 
+#include "water_load.h"
+
 #define PI 3.14159265358979323846
-#define FIELD_PATH_MAX 256
+
+/* The most textures one material loads: its own, two normal maps, foam and a ramp. */
+#define TEXTURES_PER_MATERIAL 5u
 
 /* State while one scene file loads. */
-typedef struct {
+struct tarn_loader {
     const char *file; /* the scene path as given: every message starts with it */
     char *dir;        /* its directory with a trailing '/', or "" */
     tarn_error *err;
     tarn_loaded_scene *out;
-} loader;
+};
 
 /* Field names and values come from the file, and JSON strings may hold any
  * character; control characters become '?' so that an error stays one line. */
@@ -33,11 +37,7 @@ static void make_printable(char *text)
     }
 }
 
-/* "file: field: message" */
-static int fail_field(loader *l, const char *field, const char *format, ...)
-    __attribute__((format(printf, 3, 4)));
-
-static int fail_field(loader *l, const char *field, const char *format, ...)
+int tarn_fail_field(tarn_loader *l, const char *field, const char *format, ...)
 {
     char message[sizeof l->err->message];
     va_list args;
@@ -49,14 +49,14 @@ static int fail_field(loader *l, const char *field, const char *format, ...)
     return -1;
 }
 
-static void join_path(char out[FIELD_PATH_MAX], const char *parent, const char *key)
+void tarn_join_path(char out[TARN_FIELD_PATH_MAX], const char *parent, const char *key)
 {
-    int length = snprintf(out, FIELD_PATH_MAX, "%s%s%s", parent, parent[0] ? "." : "", key);
+    int length = snprintf(out, TARN_FIELD_PATH_MAX, "%s%s%s", parent, parent[0] ? "." : "", key);
     /* only absurdly long material names get here; say the path was cut */
-    if (length >= FIELD_PATH_MAX) memcpy(out + FIELD_PATH_MAX - 4, "...", 4);
+    if (length >= TARN_FIELD_PATH_MAX) memcpy(out + TARN_FIELD_PATH_MAX - 4, "...", 4);
 }
 
-static const char *json_type_name(const json_t *v)
+const char *tarn_json_type(const json_t *v)
 {
     switch (json_typeof(v)) {
     case JSON_OBJECT: return "object";
@@ -72,45 +72,39 @@ static const char *json_type_name(const json_t *v)
 
 /* ---- field rules ------------------------------------------------------------ */
 
-enum { MIN_OPEN = 1, MAX_OPEN = 2, INTEGER = 4 };
-
-/* A number field's range, and how messages describe it ("expected <what>"). */
-typedef struct {
-    const char *what;
-    double min, max;
-    unsigned flags;
-} number_rule;
-
 /* Q16.16 holds |v| < 32768: the widest any field may be. */
-static const number_rule COORDINATE = { "a number, -32768 < v < 32768", -32768, 32768,
-                                        MIN_OPEN | MAX_OPEN };
-static const number_rule POSITIVE = { "a number > 0 and < 32768", 0, 32768, MIN_OPEN | MAX_OPEN };
-static const number_rule FOV = { "a number of degrees, 1..179", 1, 179, 0 };
-static const number_rule FRAME_SIDE = { "an integer 1..1024", 1, 1024, INTEGER };
-static const number_rule SEGMENTS = { "an integer 1..256", 1, 256, INTEGER };
-static const number_rule SPHERE_SEGMENTS = { "an integer 3..256", 3, 256, INTEGER };
-static const number_rule SPHERE_RINGS = { "an integer 2..256", 2, 256, INTEGER };
+const tarn_rule TARN_COORDINATE = { "a number, -32768 < v < 32768", -32768, 32768,
+                                    TARN_MIN_OPEN | TARN_MAX_OPEN };
+const tarn_rule TARN_POSITIVE = { "a number > 0 and < 32768", 0, 32768,
+                                  TARN_MIN_OPEN | TARN_MAX_OPEN };
+static const tarn_rule FOV = { "a number of degrees, 1..179", 1, 179, 0 };
+static const tarn_rule FRAME_SIDE = { "an integer 1..1024", 1, 1024, TARN_INTEGER };
+static const tarn_rule SEGMENTS = { "an integer 1..256", 1, 256, TARN_INTEGER };
+static const tarn_rule SPHERE_SEGMENTS = { "an integer 3..256", 3, 256, TARN_INTEGER };
+static const tarn_rule SPHERE_RINGS = { "an integer 2..256", 2, 256, TARN_INTEGER };
 
-static int number_fits(const number_rule *rule, double v)
+static int number_fits(const tarn_rule *rule, double v)
 {
     if (!isfinite(v) || v < rule->min || v > rule->max) return 0;
-    if ((rule->flags & MIN_OPEN) && v == rule->min) return 0;
-    if ((rule->flags & MAX_OPEN) && v == rule->max) return 0;
-    if ((rule->flags & INTEGER) && v != floor(v)) return 0;
+    if ((rule->flags & TARN_MIN_OPEN) && v == rule->min) return 0;
+    if ((rule->flags & TARN_MAX_OPEN) && v == rule->max) return 0;
+    if ((rule->flags & TARN_INTEGER) && v != floor(v)) return 0;
     return 1;
 }
 
-static int read_number(loader *l, const json_t *value, const char *field,
-                       const number_rule *rule, double *out)
+static int read_number(tarn_loader *l, const json_t *value, const char *field,
+                       const tarn_rule *rule, double *out)
 {
     if (!json_is_number(value)) {
-        return fail_field(l, field, "expected a number, got %s", json_type_name(value));
+        return tarn_fail_field(l, field, "expected a number, got %s", tarn_json_type(value));
     }
     double v = json_number_value(value);
-    if (!number_fits(rule, v)) return fail_field(l, field, "expected %s, got %g", rule->what, v);
+    if (!number_fits(rule, v)) {
+        return tarn_fail_field(l, field, "expected %s, got %g", rule->what, v);
+    }
     /* "> 0" must still hold once rounded to Q16.16 */
-    if ((rule->flags & MIN_OPEN) && rule->min == 0 && tarn_q16_from_double(v) <= 0) {
-        return fail_field(l, field, "expected %s, got %g (0 in Q16.16)", rule->what, v);
+    if ((rule->flags & TARN_MIN_OPEN) && rule->min == 0 && tarn_q16_from_double(v) <= 0) {
+        return tarn_fail_field(l, field, "expected %s, got %g (0 in Q16.16)", rule->what, v);
     }
     *out = v;
     return 0;
@@ -118,50 +112,52 @@ static int read_number(loader *l, const json_t *value, const char *field,
 
 /* `key` of `object` (at `parent`): the rule's number, `fallback` when absent, or
  * an error when absent and fallback is NULL. */
-static int get_number(loader *l, const json_t *object, const char *parent, const char *key,
-                      const number_rule *rule, const double *fallback, double *out)
+int tarn_get_number(tarn_loader *l, const json_t *object, const char *parent, const char *key,
+                    const tarn_rule *rule, const double *fallback, double *out)
 {
-    char field[FIELD_PATH_MAX];
-    join_path(field, parent, key);
+    char field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(field, parent, key);
     const json_t *value = json_object_get(object, key);
     if (value) return read_number(l, value, field, rule, out);
-    if (!fallback) return fail_field(l, field, "missing (expected %s)", rule->what);
+    if (!fallback) return tarn_fail_field(l, field, "missing (expected %s)", rule->what);
     *out = *fallback;
     return 0;
 }
 
 /* An array of exactly `n` numbers, each following `rule`. */
-static int get_numbers(loader *l, const json_t *object, const char *parent, const char *key,
-                       size_t n, const number_rule *rule, const double *fallback, double *out)
+int tarn_get_numbers(tarn_loader *l, const json_t *object, const char *parent, const char *key,
+                     size_t n, const tarn_rule *rule, const double *fallback, double *out)
 {
-    char field[FIELD_PATH_MAX];
-    join_path(field, parent, key);
+    char field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(field, parent, key);
     const json_t *value = json_object_get(object, key);
     if (!value) {
-        if (!fallback) return fail_field(l, field, "missing (expected an array of %zu numbers)", n);
+        if (!fallback) {
+            return tarn_fail_field(l, field, "missing (expected an array of %zu numbers)", n);
+        }
         memcpy(out, fallback, n * sizeof *out);
         return 0;
     }
     if (!json_is_array(value)) {
-        return fail_field(l, field, "expected an array of %zu numbers, got %s", n,
-                          json_type_name(value));
+        return tarn_fail_field(l, field, "expected an array of %zu numbers, got %s", n,
+                               tarn_json_type(value));
     }
     if (json_array_size(value) != n) {
-        return fail_field(l, field, "expected an array of %zu numbers, got %zu", n,
-                          json_array_size(value));
+        return tarn_fail_field(l, field, "expected an array of %zu numbers, got %zu", n,
+                               json_array_size(value));
     }
     for (size_t k = 0; k < n; k++) {
-        char element[FIELD_PATH_MAX + 24]; /* room for "[index]" */
+        char element[TARN_FIELD_PATH_MAX + 24]; /* room for "[index]" */
         snprintf(element, sizeof element, "%s[%zu]", field, k);
         if (read_number(l, json_array_get(value, k), element, rule, &out[k])) return -1;
     }
     return 0;
 }
 
-static int get_vec3(loader *l, const json_t *object, const char *parent, const char *key,
+static int get_vec3(tarn_loader *l, const json_t *object, const char *parent, const char *key,
                     const double *fallback, double out[3])
 {
-    return get_numbers(l, object, parent, key, 3, &COORDINATE, fallback, out);
+    return tarn_get_numbers(l, object, parent, key, 3, &TARN_COORDINATE, fallback, out);
 }
 
 static tarn_vec3 vec3_q16(const double v[3])
@@ -172,16 +168,16 @@ static tarn_vec3 vec3_q16(const double v[3])
 }
 
 /* A string field; *out stays NULL when absent and optional. */
-static int get_string(loader *l, const json_t *object, const char *parent, const char *key,
+static int get_string(tarn_loader *l, const json_t *object, const char *parent, const char *key,
                       const char *what, int required, const char **out)
 {
-    char field[FIELD_PATH_MAX];
-    join_path(field, parent, key);
+    char field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(field, parent, key);
     const json_t *value = json_object_get(object, key);
     *out = NULL;
-    if (!value) return required ? fail_field(l, field, "missing (expected %s)", what) : 0;
+    if (!value) return required ? tarn_fail_field(l, field, "missing (expected %s)", what) : 0;
     if (!json_is_string(value)) {
-        return fail_field(l, field, "expected %s, got %s", what, json_type_name(value));
+        return tarn_fail_field(l, field, "expected %s, got %s", what, tarn_json_type(value));
     }
     *out = json_string_value(value);
     return 0;
@@ -196,8 +192,8 @@ static int hex_digit(char c)
 }
 
 /* "#rrggbb" -> 0xRRGGBB */
-static int get_colour(loader *l, const json_t *object, const char *parent, const char *key,
-                      uint32_t fallback, uint32_t *out)
+int tarn_get_colour(tarn_loader *l, const json_t *object, const char *parent, const char *key,
+                    uint32_t fallback, uint32_t *out)
 {
     static const char what[] = "a colour \"#rrggbb\"";
     const char *text;
@@ -212,40 +208,40 @@ static int get_colour(loader *l, const json_t *object, const char *parent, const
         rgb = rgb << 4 | (uint32_t)(digit & 15);
     }
     if (!ok) {
-        char field[FIELD_PATH_MAX];
-        join_path(field, parent, key);
-        return fail_field(l, field, "expected %s, got \"%s\"", what, text);
+        char field[TARN_FIELD_PATH_MAX];
+        tarn_join_path(field, parent, key);
+        return tarn_fail_field(l, field, "expected %s, got \"%s\"", what, text);
     }
     *out = rgb;
     return 0;
 }
 
-static int get_bool(loader *l, const json_t *object, const char *parent, const char *key,
-                    int fallback, int *out)
+int tarn_get_bool(tarn_loader *l, const json_t *object, const char *parent, const char *key,
+                  int fallback, int *out)
 {
     const json_t *value = json_object_get(object, key);
     *out = fallback;
     if (!value) return 0;
     if (!json_is_boolean(value)) {
-        char field[FIELD_PATH_MAX];
-        join_path(field, parent, key);
-        return fail_field(l, field, "expected true or false, got %s", json_type_name(value));
+        char field[TARN_FIELD_PATH_MAX];
+        tarn_join_path(field, parent, key);
+        return tarn_fail_field(l, field, "expected true or false, got %s", tarn_json_type(value));
     }
     *out = json_is_true(value);
     return 0;
 }
 
 /* A nested object; *out stays NULL when absent and optional. */
-static int get_object(loader *l, const json_t *object, const char *parent, const char *key,
-                      const char *what, int required, json_t **out)
+int tarn_get_object(tarn_loader *l, const json_t *object, const char *parent, const char *key,
+                    const char *what, int required, json_t **out)
 {
-    char field[FIELD_PATH_MAX];
-    join_path(field, parent, key);
+    char field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(field, parent, key);
     json_t *value = json_object_get(object, key);
     *out = NULL;
-    if (!value) return required ? fail_field(l, field, "missing (expected %s)", what) : 0;
+    if (!value) return required ? tarn_fail_field(l, field, "missing (expected %s)", what) : 0;
     if (!json_is_object(value)) {
-        return fail_field(l, field, "expected %s, got %s", what, json_type_name(value));
+        return tarn_fail_field(l, field, "expected %s, got %s", what, tarn_json_type(value));
     }
     *out = value;
     return 0;
@@ -269,25 +265,24 @@ static void append_names(char *out, size_t size, const char *const *names)
 
 /* Every key of `object` must be in `common` or `specific` (NULL-terminated lists).
  * `kind` (may be "") says what the object is in the message: " for a sphere". */
-static int check_fields(loader *l, const json_t *object, const char *parent,
-                        const char *const *common, const char *const *specific,
-                        const char *kind)
+int tarn_check_fields(tarn_loader *l, const json_t *object, const char *parent,
+                      const char *const *common, const char *const *specific, const char *kind)
 {
     const char *key;
     const json_t *value;
     json_object_foreach((json_t *)object, key, value) {
         if (name_in(key, common) || name_in(key, specific)) continue;
-        char field[FIELD_PATH_MAX], allowed[256] = "";
-        join_path(field, parent, key);
+        char field[TARN_FIELD_PATH_MAX], allowed[256] = "";
+        tarn_join_path(field, parent, key);
         append_names(allowed, sizeof allowed, common);
         append_names(allowed, sizeof allowed, specific);
-        return fail_field(l, field, "unknown field%s (expected %s)", kind, allowed);
+        return tarn_fail_field(l, field, "unknown field%s (expected %s)", kind, allowed);
     }
     return 0;
 }
 
 /* An asset path relative to the scene file's directory (absolute paths stay). */
-static char *resolve_asset(const loader *l, const char *name)
+static char *resolve_asset(const tarn_loader *l, const char *name)
 {
     const char *dir = name[0] == '/' ? "" : l->dir;
     size_t size = strlen(dir) + strlen(name) + 1;
@@ -297,16 +292,16 @@ static char *resolve_asset(const loader *l, const char *name)
 }
 
 /* A file-name field, resolved; the caller frees *out. */
-static int get_asset_path(loader *l, const json_t *object, const char *parent, const char *key,
-                          const char *what, char **out)
+static int get_asset_path(tarn_loader *l, const json_t *object, const char *parent,
+                          const char *key, const char *what, char **out)
 {
     const char *name;
     *out = NULL;
     if (get_string(l, object, parent, key, what, 1, &name)) return -1;
     if (name[0] == '\0') {
-        char field[FIELD_PATH_MAX];
-        join_path(field, parent, key);
-        return fail_field(l, field, "expected %s, got \"\"", what);
+        char field[TARN_FIELD_PATH_MAX];
+        tarn_join_path(field, parent, key);
+        return tarn_fail_field(l, field, "expected %s, got \"\"", what);
     }
     *out = resolve_asset(l, name);
     return *out ? 0 : tarn_fail(l->err, "%s: out of memory", l->file);
@@ -314,16 +309,18 @@ static int get_asset_path(loader *l, const json_t *object, const char *parent, c
 
 /* ---- frame, camera, light ----------------------------------------------------- */
 
-static int load_frame(loader *l, const json_t *root)
+static int load_frame(tarn_loader *l, const json_t *root)
 {
     static const char *const fields[] = { "width", "height", NULL };
     static const double side = 240;
     json_t *frame;
     double width = side, height = side;
-    if (get_object(l, root, "", "frame", "an object {\"width\", \"height\"}", 0, &frame)) return -1;
-    if (frame && (check_fields(l, frame, "frame", fields, NULL, "") ||
-                  get_number(l, frame, "frame", "width", &FRAME_SIDE, &side, &width) ||
-                  get_number(l, frame, "frame", "height", &FRAME_SIDE, &side, &height))) {
+    if (tarn_get_object(l, root, "", "frame", "an object {\"width\", \"height\"}", 0, &frame)) {
+        return -1;
+    }
+    if (frame && (tarn_check_fields(l, frame, "frame", fields, NULL, "") ||
+                  tarn_get_number(l, frame, "frame", "width", &FRAME_SIDE, &side, &width) ||
+                  tarn_get_number(l, frame, "frame", "height", &FRAME_SIDE, &side, &height))) {
         return -1;
     }
     l->out->width = (uint16_t)width;
@@ -331,20 +328,20 @@ static int load_frame(loader *l, const json_t *root)
     return 0;
 }
 
-static int load_camera(loader *l, const json_t *root)
+static int load_camera(tarn_loader *l, const json_t *root)
 {
     static const char *const fields[] = { "position", "target", "fov", "near", "far", NULL };
     static const double default_near = 0.1, default_far = 100;
     json_t *c;
     double position[3], target[3], fov, near, far;
-    if (get_object(l, root, "", "camera", "an object {\"position\", \"target\", \"fov\"...}", 1,
-                   &c) ||
-        check_fields(l, c, "camera", fields, NULL, "") ||
+    if (tarn_get_object(l, root, "", "camera",
+                        "an object {\"position\", \"target\", \"fov\"...}", 1, &c) ||
+        tarn_check_fields(l, c, "camera", fields, NULL, "") ||
         get_vec3(l, c, "camera", "position", NULL, position) ||
         get_vec3(l, c, "camera", "target", NULL, target) ||
-        get_number(l, c, "camera", "fov", &FOV, NULL, &fov) ||
-        get_number(l, c, "camera", "near", &POSITIVE, &default_near, &near) ||
-        get_number(l, c, "camera", "far", &POSITIVE, &default_far, &far)) {
+        tarn_get_number(l, c, "camera", "fov", &FOV, NULL, &fov) ||
+        tarn_get_number(l, c, "camera", "near", &TARN_POSITIVE, &default_near, &near) ||
+        tarn_get_number(l, c, "camera", "far", &TARN_POSITIVE, &default_far, &far)) {
         return -1;
     }
     tarn_camera *camera = &l->out->scene.camera;
@@ -354,38 +351,38 @@ static int load_camera(loader *l, const json_t *root)
     camera->near = tarn_q16_from_double(near);
     camera->far = tarn_q16_from_double(far);
     if (camera->far <= camera->near) {
-        return fail_field(l, "camera.far",
-                          "expected a number greater than camera.near (%g), got %g",
-                          near, far);
+        return tarn_fail_field(l, "camera.far",
+                               "expected a number greater than camera.near (%g), got %g",
+                               near, far);
     }
     if (memcmp(&camera->position, &camera->target, sizeof camera->position) == 0) {
-        return fail_field(l, "camera.target", "must differ from camera.position");
+        return tarn_fail_field(l, "camera.target", "must differ from camera.position");
     }
     return 0;
 }
 
-static int load_light(loader *l, const json_t *root)
+static int load_light(tarn_loader *l, const json_t *root)
 {
     static const char *const fields[] = { "direction", "colour", "ambient", NULL };
     static const double from_above[3] = { 0, 1, 0 };
     json_t *light;
     double d[3];
     tarn_light *out = &l->out->scene.light;
-    if (get_object(l, root, "", "light", "an object {\"direction\", \"colour\", \"ambient\"}", 0,
-                   &light)) {
+    if (tarn_get_object(l, root, "", "light",
+                        "an object {\"direction\", \"colour\", \"ambient\"}", 0, &light)) {
         return -1;
     }
     /* an absent light (NULL) has no fields, so every one takes its default */
-    if (check_fields(l, light, "light", fields, NULL, "") ||
+    if (tarn_check_fields(l, light, "light", fields, NULL, "") ||
         get_vec3(l, light, "light", "direction", from_above, d) ||
-        get_colour(l, light, "light", "colour", 0xFFFFFF, &out->colour_rgb) ||
-        get_colour(l, light, "light", "ambient", 0x333333, &out->ambient_rgb)) {
+        tarn_get_colour(l, light, "light", "colour", 0xFFFFFF, &out->colour_rgb) ||
+        tarn_get_colour(l, light, "light", "ambient", 0x333333, &out->ambient_rgb)) {
         return -1;
     }
     double length = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(length > 1e-9)) {
-        return fail_field(l, "light.direction", "expected a non-zero vector, got [%g, %g, %g]",
-                          d[0], d[1], d[2]);
+        return tarn_fail_field(l, "light.direction", "expected a non-zero vector, got [%g, %g, %g]",
+                               d[0], d[1], d[2]);
     }
     double unit[3] = { d[0] / length, d[1] / length, d[2] / length };
     out->direction = vec3_q16(unit);
@@ -395,7 +392,7 @@ static int load_light(loader *l, const json_t *root)
 /* ---- materials and textures --------------------------------------------------- */
 
 /* The texture for `path`, loaded once however many materials use it. */
-static int find_or_load_texture(loader *l, const char *path, const tarn_texture **out)
+static int find_or_load_texture(tarn_loader *l, const char *path, const tarn_texture **out)
 {
     tarn_loaded_scene *s = l->out;
     for (size_t k = 0; k < s->texture_count; k++) {
@@ -405,6 +402,9 @@ static int find_or_load_texture(loader *l, const char *path, const tarn_texture 
         }
     }
     size_t k = s->texture_count;
+    if (k == s->texture_capacity) { /* the capacity counts every texture field: a bug */
+        return tarn_fail(l->err, "%s: more textures than the loader made room for", l->file);
+    }
     tarn_image *image = &s->texture_images[k];
     if (tarn_png_read_texture(path, image, l->err)) return -1;
     s->texture_paths[k] = strdup(path);
@@ -417,7 +417,17 @@ static int find_or_load_texture(loader *l, const char *path, const tarn_texture 
     return 0;
 }
 
-static int parse_cull(loader *l, const json_t *m, const char *field, uint8_t *out)
+int tarn_get_texture(tarn_loader *l, const json_t *object, const char *parent, const char *key,
+                     const tarn_texture **out)
+{
+    char *path;
+    if (get_asset_path(l, object, parent, key, "a PNG file name", &path)) return -1;
+    int result = find_or_load_texture(l, path, out);
+    free(path);
+    return result;
+}
+
+static int parse_cull(tarn_loader *l, const json_t *m, const char *field, uint8_t *out)
 {
     static const char *const modes[] = { "back", "none", "front", NULL }; /* tarn_cull order */
     static const char what[] = "one of \"back\", \"none\", \"front\"";
@@ -431,51 +441,58 @@ static int parse_cull(loader *l, const json_t *m, const char *field, uint8_t *ou
             return 0;
         }
     }
-    char cull_field[FIELD_PATH_MAX];
-    join_path(cull_field, field, "cull");
-    return fail_field(l, cull_field, "expected %s, got \"%s\"", what, text);
+    char cull_field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(cull_field, field, "cull");
+    return tarn_fail_field(l, cull_field, "expected %s, got \"%s\"", what, text);
 }
 
-static int load_material(loader *l, const char *name, const json_t *m, tarn_material *out)
+/* `water` is the material's slot in the scene's waters, used if it has a block. */
+static int load_material(tarn_loader *l, const char *name, const json_t *m, tarn_material *out,
+                         tarn_water *water)
 {
-    static const char *const fields[] = { "colour", "texture", "cull", "unlit", NULL };
-    char field[FIELD_PATH_MAX];
-    join_path(field, "materials", name);
+    static const char *const fields[] = { "colour", "texture", "cull", "unlit", "water", NULL };
+    char field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(field, "materials", name);
     if (!json_is_object(m)) {
-        return fail_field(l, field, "expected an object {\"colour\", \"texture\", \"cull\", "
-                                    "\"unlit\"}, got %s", json_type_name(m));
+        return tarn_fail_field(l, field, "expected an object {\"colour\", \"texture\", "
+                                         "\"cull\", \"unlit\", \"water\"}, got %s",
+                               tarn_json_type(m));
     }
     int unlit;
-    if (check_fields(l, m, field, fields, NULL, "") ||
-        get_colour(l, m, field, "colour", 0xFFFFFF, &out->colour_rgb) ||
-        parse_cull(l, m, field, &out->cull) || get_bool(l, m, field, "unlit", 0, &unlit)) {
+    if (tarn_check_fields(l, m, field, fields, NULL, "") ||
+        tarn_get_colour(l, m, field, "colour", 0xFFFFFF, &out->colour_rgb) ||
+        parse_cull(l, m, field, &out->cull) || tarn_get_bool(l, m, field, "unlit", 0, &unlit)) {
         return -1;
     }
     out->unlit = (uint8_t)unlit;
     out->texture = NULL;
-    if (!json_object_get(m, "texture")) return 0;
-    char *path;
-    if (get_asset_path(l, m, field, "texture", "a PNG file name", &path)) return -1;
-    int result = find_or_load_texture(l, path, &out->texture);
-    free(path);
-    return result;
+    out->water = NULL;
+    if (json_object_get(m, "texture") && tarn_get_texture(l, m, field, "texture", &out->texture)) {
+        return -1;
+    }
+    int present;
+    if (tarn_water_load(l, m, field, l->out->width, water, &present)) return -1;
+    if (present) out->water = water;
+    return 0;
 }
 
-static int load_materials(loader *l, const json_t *root)
+static int load_materials(tarn_loader *l, const json_t *root)
 {
     tarn_loaded_scene *s = l->out;
     json_t *materials;
-    if (get_object(l, root, "", "materials", "an object of named materials", 1, &materials)) {
+    if (tarn_get_object(l, root, "", "materials", "an object of named materials", 1, &materials)) {
         return -1;
     }
     size_t n = json_object_size(materials);
+    s->texture_capacity = TEXTURES_PER_MATERIAL * n + 1; /* + the underwater normal map */
     s->materials = calloc(n + 1, sizeof *s->materials);
     s->material_names = calloc(n + 1, sizeof *s->material_names);
-    s->textures = calloc(n + 1, sizeof *s->textures);
-    s->texture_images = calloc(n + 1, sizeof *s->texture_images);
-    s->texture_paths = calloc(n + 1, sizeof *s->texture_paths);
-    if (!s->materials || !s->material_names || !s->textures || !s->texture_images ||
-        !s->texture_paths) {
+    s->waters = calloc(n + 1, sizeof *s->waters);
+    s->textures = calloc(s->texture_capacity, sizeof *s->textures);
+    s->texture_images = calloc(s->texture_capacity, sizeof *s->texture_images);
+    s->texture_paths = calloc(s->texture_capacity, sizeof *s->texture_paths);
+    if (!s->materials || !s->material_names || !s->waters || !s->textures ||
+        !s->texture_images || !s->texture_paths) {
         return tarn_fail(l->err, "%s: out of memory", l->file);
     }
     const char *name;
@@ -484,7 +501,7 @@ static int load_materials(loader *l, const json_t *root)
         size_t k = s->material_count++;
         s->material_names[k] = strdup(name);
         if (!s->material_names[k]) return tarn_fail(l->err, "%s: out of memory", l->file);
-        if (load_material(l, name, m, &s->materials[k])) return -1;
+        if (load_material(l, name, m, &s->materials[k], &s->waters[k])) return -1;
     }
     return 0;
 }
@@ -492,56 +509,56 @@ static int load_materials(loader *l, const json_t *root)
 /* ---- objects ------------------------------------------------------------------ */
 
 /* Builds an object's mesh from its type-specific fields. */
-typedef int (*mesh_builder)(loader *l, const json_t *o, const char *field,
+typedef int (*mesh_builder)(tarn_loader *l, const json_t *o, const char *field,
                             tarn_mesh_buffer *mesh);
 
-static int build_plane(loader *l, const json_t *o, const char *field, tarn_mesh_buffer *mesh)
+static int build_plane(tarn_loader *l, const json_t *o, const char *field, tarn_mesh_buffer *mesh)
 {
     static const double one_by_one[2] = { 1, 1 };
     double size[2], segments[2], uv_scale[2];
-    char what[FIELD_PATH_MAX + 64];
+    char what[TARN_FIELD_PATH_MAX + 64];
     snprintf(what, sizeof what, "%s: %s", l->file, field);
-    if (get_numbers(l, o, field, "size", 2, &POSITIVE, NULL, size) ||
-        get_numbers(l, o, field, "segments", 2, &SEGMENTS, one_by_one, segments) ||
-        get_numbers(l, o, field, "uv_scale", 2, &COORDINATE, one_by_one, uv_scale)) {
+    if (tarn_get_numbers(l, o, field, "size", 2, &TARN_POSITIVE, NULL, size) ||
+        tarn_get_numbers(l, o, field, "segments", 2, &SEGMENTS, one_by_one, segments) ||
+        tarn_get_numbers(l, o, field, "uv_scale", 2, &TARN_COORDINATE, one_by_one, uv_scale)) {
         return -1;
     }
     return tarn_mesh_plane(mesh, size[0], size[1], (uint32_t)segments[0], (uint32_t)segments[1],
                            uv_scale[0], uv_scale[1], what, l->err);
 }
 
-static int build_box(loader *l, const json_t *o, const char *field, tarn_mesh_buffer *mesh)
+static int build_box(tarn_loader *l, const json_t *o, const char *field, tarn_mesh_buffer *mesh)
 {
     double size[3];
-    char what[FIELD_PATH_MAX + 64];
+    char what[TARN_FIELD_PATH_MAX + 64];
     snprintf(what, sizeof what, "%s: %s", l->file, field);
-    if (get_numbers(l, o, field, "size", 3, &POSITIVE, NULL, size)) return -1;
+    if (tarn_get_numbers(l, o, field, "size", 3, &TARN_POSITIVE, NULL, size)) return -1;
     return tarn_mesh_box(mesh, size[0], size[1], size[2], what, l->err);
 }
 
-static int build_sphere(loader *l, const json_t *o, const char *field, tarn_mesh_buffer *mesh)
+static int build_sphere(tarn_loader *l, const json_t *o, const char *field, tarn_mesh_buffer *mesh)
 {
     static const double default_segments = 16, default_rings = 8;
     double radius, segments, rings;
-    char what[FIELD_PATH_MAX + 64];
+    char what[TARN_FIELD_PATH_MAX + 64];
     snprintf(what, sizeof what, "%s: %s", l->file, field);
-    if (get_number(l, o, field, "radius", &POSITIVE, NULL, &radius) ||
-        get_number(l, o, field, "segments", &SPHERE_SEGMENTS, &default_segments, &segments) ||
-        get_number(l, o, field, "rings", &SPHERE_RINGS, &default_rings, &rings)) {
+    if (tarn_get_number(l, o, field, "radius", &TARN_POSITIVE, NULL, &radius) ||
+        tarn_get_number(l, o, field, "segments", &SPHERE_SEGMENTS, &default_segments, &segments) ||
+        tarn_get_number(l, o, field, "rings", &SPHERE_RINGS, &default_rings, &rings)) {
         return -1;
     }
     return tarn_mesh_sphere(mesh, radius, (uint32_t)segments, (uint32_t)rings, what, l->err);
 }
 
-static int build_heightfield(loader *l, const json_t *o, const char *field,
+static int build_heightfield(tarn_loader *l, const json_t *o, const char *field,
                              tarn_mesh_buffer *mesh)
 {
     static const double one_by_one[2] = { 1, 1 };
     double size[2], height, uv_scale[2];
     char *path;
-    if (get_numbers(l, o, field, "size", 2, &POSITIVE, NULL, size) ||
-        get_number(l, o, field, "height", &POSITIVE, NULL, &height) ||
-        get_numbers(l, o, field, "uv_scale", 2, &COORDINATE, one_by_one, uv_scale) ||
+    if (tarn_get_numbers(l, o, field, "size", 2, &TARN_POSITIVE, NULL, size) ||
+        tarn_get_number(l, o, field, "height", &TARN_POSITIVE, NULL, &height) ||
+        tarn_get_numbers(l, o, field, "uv_scale", 2, &TARN_COORDINATE, one_by_one, uv_scale) ||
         get_asset_path(l, o, field, "image", "a PNG file name", &path)) {
         return -1;
     }
@@ -556,7 +573,8 @@ static int build_heightfield(loader *l, const json_t *o, const char *field,
     return result;
 }
 
-static int build_obj_mesh(loader *l, const json_t *o, const char *field, tarn_mesh_buffer *mesh)
+static int build_obj_mesh(tarn_loader *l, const json_t *o, const char *field,
+                          tarn_mesh_buffer *mesh)
 {
     char *path;
     if (get_asset_path(l, o, field, "file", "an OBJ file name", &path)) return -1;
@@ -585,7 +603,7 @@ static const object_type OBJECT_TYPES[] = {
 static const char TYPE_CHOICES[] =
     "one of \"plane\", \"box\", \"sphere\", \"heightfield\", \"mesh\"";
 
-static int find_object_type(loader *l, const json_t *o, const char *field,
+static int find_object_type(tarn_loader *l, const json_t *o, const char *field,
                             const object_type **out)
 {
     const char *type;
@@ -596,12 +614,12 @@ static int find_object_type(loader *l, const json_t *o, const char *field,
             return 0;
         }
     }
-    char type_field[FIELD_PATH_MAX];
-    join_path(type_field, field, "type");
-    return fail_field(l, type_field, "expected %s, got \"%s\"", TYPE_CHOICES, type);
+    char type_field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(type_field, field, "type");
+    return tarn_fail_field(l, type_field, "expected %s, got \"%s\"", TYPE_CHOICES, type);
 }
 
-static int find_material(loader *l, const json_t *o, const char *field,
+static int find_material(tarn_loader *l, const json_t *o, const char *field,
                          const tarn_material **out)
 {
     const char *name;
@@ -612,9 +630,9 @@ static int find_material(loader *l, const json_t *o, const char *field,
             return 0;
         }
     }
-    char material_field[FIELD_PATH_MAX];
-    join_path(material_field, field, "material");
-    return fail_field(l, material_field, "no material named \"%s\" in materials", name);
+    char material_field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(material_field, field, "material");
+    return tarn_fail_field(l, material_field, "no material named \"%s\" in materials", name);
 }
 
 /* R = Rz * Ry * Rx from degrees, in double, each entry then rounded to Q16.16. */
@@ -642,27 +660,27 @@ static void rotation_matrix(const double degrees[3], tarn_q16 out[3][3])
     }
 }
 
-static int load_object(loader *l, const json_t *o, size_t index)
+static int load_object(tarn_loader *l, const json_t *o, size_t index)
 {
     static const char *const common[] = { "type",     "material", "position",
                                           "rotation", "scale",    NULL };
     static const double origin[3] = { 0, 0, 0 }, unit_scale = 1;
-    char field[FIELD_PATH_MAX];
+    char field[TARN_FIELD_PATH_MAX];
     snprintf(field, sizeof field, "objects[%zu]", index);
     if (!json_is_object(o)) {
-        return fail_field(l, field, "expected an object {\"type\", \"material\"...}, got %s",
-                          json_type_name(o));
+        return tarn_fail_field(l, field, "expected an object {\"type\", \"material\"...}, got %s",
+                               tarn_json_type(o));
     }
     tarn_object *object = &l->out->objects[index];
     tarn_mesh_buffer *mesh = &l->out->meshes[index];
     const object_type *type = NULL;
     double position[3], rotation[3], scale;
     if (find_object_type(l, o, field, &type) ||
-        check_fields(l, o, field, common, type->fields, type->kind) ||
+        tarn_check_fields(l, o, field, common, type->fields, type->kind) ||
         find_material(l, o, field, &object->material) ||
         get_vec3(l, o, field, "position", origin, position) ||
         get_vec3(l, o, field, "rotation", origin, rotation) ||
-        get_number(l, o, field, "scale", &POSITIVE, &unit_scale, &scale) ||
+        tarn_get_number(l, o, field, "scale", &TARN_POSITIVE, &unit_scale, &scale) ||
         type->build(l, o, field, mesh) || tarn_mesh_build_clusters(mesh, l->err)) {
         return -1;
     }
@@ -673,18 +691,18 @@ static int load_object(loader *l, const json_t *o, size_t index)
     return 0;
 }
 
-static int load_objects(loader *l, const json_t *root)
+static int load_objects(tarn_loader *l, const json_t *root)
 {
     tarn_loaded_scene *s = l->out;
     const json_t *objects = json_object_get(root, "objects");
-    if (!objects) return fail_field(l, "objects", "missing (expected an array of objects)");
+    if (!objects) return tarn_fail_field(l, "objects", "missing (expected an array of objects)");
     if (!json_is_array(objects)) {
-        return fail_field(l, "objects", "expected an array of objects, got %s",
-                          json_type_name(objects));
+        return tarn_fail_field(l, "objects", "expected an array of objects, got %s",
+                               tarn_json_type(objects));
     }
     size_t n = json_array_size(objects);
     if (n > UINT16_MAX) {
-        return fail_field(l, "objects", "expected at most %u objects, got %zu", UINT16_MAX, n);
+        return tarn_fail_field(l, "objects", "expected at most %u objects, got %zu", UINT16_MAX, n);
     }
     s->objects = calloc(n + 1, sizeof *s->objects);
     s->meshes = calloc(n + 1, sizeof *s->meshes);
@@ -727,7 +745,7 @@ static json_t *parse_json(const char *path, tarn_error *err)
     }
     if (!json_is_object(root)) {
         tarn_fail(err, "%s: expected a JSON object at the top level, got %s", path,
-                  json_type_name(root));
+                  tarn_json_type(root));
         json_decref(root);
         return NULL;
     }
@@ -752,14 +770,22 @@ static int split_path(const char *path, tarn_loaded_scene *out, char **dir)
     return 0;
 }
 
-static int load_root(loader *l, const json_t *root)
+static int load_underwater(tarn_loader *l, const json_t *root)
 {
-    static const char *const fields[] = { "frame", "background", "camera", "light",
-                                          "materials", "objects", NULL };
-    if (check_fields(l, root, "", fields, NULL, "") || load_frame(l, root) ||
-        get_colour(l, root, "", "background", 0x000000, &l->out->scene.background_rgb) ||
+    int present;
+    if (tarn_underwater_load(l, root, &l->out->underwater, &present)) return -1;
+    if (present) l->out->scene.underwater = &l->out->underwater;
+    return 0;
+}
+
+static int load_root(tarn_loader *l, const json_t *root)
+{
+    static const char *const fields[] = { "frame", "background", "camera", "light", "materials",
+                                          "underwater", "objects", NULL };
+    if (tarn_check_fields(l, root, "", fields, NULL, "") || load_frame(l, root) ||
+        tarn_get_colour(l, root, "", "background", 0x000000, &l->out->scene.background_rgb) ||
         load_camera(l, root) || load_light(l, root) || load_materials(l, root) ||
-        load_objects(l, root)) {
+        load_underwater(l, root) || load_objects(l, root)) {
         return -1;
     }
     return 0;
@@ -768,7 +794,7 @@ static int load_root(loader *l, const json_t *root)
 int tarn_scene_load(const char *path, tarn_loaded_scene *out, tarn_error *err)
 {
     memset(out, 0, sizeof *out);
-    loader l = { path, NULL, err, out };
+    tarn_loader l = { path, NULL, err, out };
     if (split_path(path, out, &l.dir)) return tarn_fail(err, "%s: out of memory", path);
     json_t *root = parse_json(path, err);
     int result = root ? load_root(&l, root) : -1;
@@ -791,6 +817,7 @@ void tarn_scene_free(tarn_loaded_scene *s)
     free(s->meshes);
     free(s->materials);
     free(s->material_names);
+    free(s->waters);
     free(s->textures);
     free(s->texture_images);
     free(s->texture_paths);

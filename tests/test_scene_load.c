@@ -20,6 +20,7 @@
 #include "obj_load.h"
 #include "png_io.h"
 #include "scene_load.h"
+#include "water_load.h"
 
 /* ---- helpers ------------------------------------------------------------------ */
 
@@ -752,6 +753,231 @@ static void test_asset_paths(void **state)
     remove_temp_dir(dir);
 }
 
+/* ---- water ---------------------------------------------------------------------- */
+
+/* The one material of `s` with a water block. */
+static const tarn_water *only_water(const tarn_loaded_scene *s)
+{
+    const tarn_water *found = NULL;
+    for (size_t k = 0; k < s->material_count; k++) {
+        if (!s->materials[k].water) continue;
+        assert_null(found);
+        assert_ptr_equal(s->materials[k].water, &s->waters[k]);
+        found = s->materials[k].water;
+    }
+    return found;
+}
+
+/* Writes a width x height PNG of one repeated texel to dir/name. */
+static void write_flat_png(const char *dir, const char *name, uint16_t width, uint16_t height,
+                           const uint8_t texel[3])
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    uint8_t rgb[8 * 8 * 3];
+    assert_true((size_t)width * height * 3 <= sizeof rgb);
+    for (size_t k = 0; k < (size_t)width * height; k++) memcpy(rgb + 3 * k, texel, 3);
+    tarn_error err;
+    if (tarn_png_write_rgb(path, rgb, width, height, &err)) fail_msg("%s", err.message);
+}
+
+static void test_water_fields(void **state)
+{
+    (void)state;
+    static const uint8_t up[3] = { 128, 128, 255 }, grey[3] = { 90, 90, 90 };
+    char *dir = make_temp_dir();
+    write_flat_png(dir, "a.png", 4, 4, up);
+    write_flat_png(dir, "b.png", 2, 2, up);
+    write_flat_png(dir, "foam.png", 8, 8, grey);
+    write_flat_png(dir, "ramp.png", 4, 1, grey);
+    const char *path = write_temp(
+        dir, "w.json",
+        "{\"frame\": {\"width\": 100, \"height\": 80},"
+        " \"camera\": {\"position\": [0, 2, 6], \"target\": [0, 0, 0], \"fov\": 60},"
+        " \"materials\": {\"w\": {\"water\": {"
+        "   \"albedo\": \"#102030\", \"alpha\": 0.25,"
+        "   \"fog\": {\"colour\": \"#4e83a9\", \"density\": 0.15},"
+        "   \"absorption\": {\"colour\": \"#406080\", \"strength\": 1.5, \"squared\": true},"
+        "   \"depth_colour\": {\"shallow\": \"#00ffff\", \"deep\": \"#000080\", \"scale\": 2.5,"
+        "                      \"ramp\": \"ramp.png\"},"
+        "   \"normal_maps\": [{\"image\": \"a.png\", \"scale\": 4, \"speed\": [0.05, -0.02]},"
+        "                     {\"image\": \"b.png\", \"scale\": 0.5}],"
+        "   \"normal_strength\": 2, \"refraction\": 0.125, \"fresnel\": 0.75,"
+        "   \"specular\": {\"intensity\": 0.5, \"power\": 64},"
+        "   \"foam\": {\"texture\": \"foam.png\", \"scale\": 3, \"speed\": [0.01, 0.02],"
+        "              \"distance\": 0.4, \"line_speed\": -0.5, \"lines\": 3,"
+        "              \"colour\": \"#f0f0e0\", \"opacity\": 0.8},"
+        "   \"sparkles\": {\"amount\": 12.5, \"colour\": \"#fffff0\"}}},"
+        "   \"plain\": {}},"
+        " \"underwater\": {\"level\": -1.5, \"distortion\": 0.01,"
+        "   \"normal_map\": {\"image\": \"a.png\", \"scale\": 2, \"speed\": [0.03, 0.05]},"
+        "   \"tint\": {\"colour\": \"#1f6478\", \"density\": 0.2}},"
+        " \"objects\": []}");
+    tarn_loaded_scene s;
+    tarn_error err = { "" };
+    if (tarn_scene_load(path, &s, &err)) fail_msg("%s", err.message);
+    const tarn_water *w = only_water(&s);
+    assert_ptr_equal(w, s.materials[0].water);
+    assert_null(s.materials[1].water);
+    assert_int_equal(w->features, 0x1FF); /* every TARN_WATER_* */
+    assert_int_equal(w->albedo_rgb, 0x102030);
+    assert_int_equal(w->alpha, 16384);
+    assert_int_equal(w->fog_rgb, 0x4E83A9);
+    assert_int_equal(w->fog_density, 9830); /* 0.15 * 65536 = 9830.4 */
+    assert_int_equal(w->absorb_rgb, 0x406080);
+    assert_int_equal(w->absorption, 98304);
+    assert_int_equal(w->absorption_squared, 1);
+    assert_int_equal(w->shallow_rgb, 0x00FFFF);
+    assert_int_equal(w->deep_rgb, 0x000080);
+    assert_int_equal(w->depth_scale, 163840);
+    assert_non_null(w->colour_ramp);
+    assert_int_equal(w->colour_ramp->width, 4);
+    assert_int_equal(w->colour_ramp->height, 1);
+    assert_int_equal(w->normal_a->width, 4);
+    assert_int_equal(w->normal_b->width, 2);
+    assert_int_equal(w->pan_a.scale, 4 * 65536);
+    assert_int_equal(w->pan_a.speed_u, 3277);  /* 3276.8 */
+    assert_int_equal(w->pan_a.speed_v, -1311); /* -1310.72 */
+    assert_int_equal(w->pan_b.scale, 32768);
+    assert_int_equal(w->pan_b.speed_u, 0);
+    assert_int_equal(w->normal_strength, 2 * 65536);
+    /* flat maps: x = y = 1/255, z = 1 each, so N.x = 2 (2/255) / sqrt((4/255)^2 + 1) */
+    assert_int_equal(w->normal_xy_max, 1028);
+    assert_int_equal(w->refraction, 8192);
+    assert_int_equal(w->fresnel, 49152);
+    assert_int_equal(w->specular, 32768);
+    assert_int_equal(w->specular_power, 64);
+    assert_int_equal(w->foam_texture->width, 8);
+    assert_int_equal(w->foam_pan.scale, 3 * 65536);
+    assert_int_equal(w->foam_pan.speed_u, 655);  /* 655.36 */
+    assert_int_equal(w->foam_pan.speed_v, 1311); /* 1310.72 */
+    assert_int_equal(w->foam_distance, 26214);   /* 26214.4 */
+    assert_int_equal(w->foam_line_speed, -32768);
+    assert_int_equal(w->foam_line_count, 3);
+    assert_int_equal(w->foam_rgb, 0xF0F0E0);
+    assert_int_equal(w->foam_opacity, 52429); /* 52428.8 */
+    assert_int_equal(w->sparkle_amount, 819200);
+    assert_int_equal(w->sparkle_rgb, 0xFFFFF0);
+
+    const tarn_underwater *u = s.scene.underwater;
+    assert_ptr_equal(u, &s.underwater);
+    assert_int_equal(u->level, -98304);
+    assert_ptr_equal(u->normal_map, w->normal_a); /* a.png is loaded once */
+    assert_int_equal(u->pan.scale, 2 * 65536);
+    assert_int_equal(u->pan.speed_u, 1966); /* 1966.08 */
+    assert_int_equal(u->pan.speed_v, 3277);
+    assert_int_equal(u->distortion, 655);
+    assert_int_equal(u->tint_rgb, 0x1F6478);
+    assert_int_equal(u->tint_density, 13107); /* 13107.2 */
+    assert_int_equal(s.texture_count, 4);
+    tarn_scene_free(&s);
+    remove_temp_dir(dir);
+}
+
+/* An empty block is clear water: no features, every field at its default. */
+static void test_water_defaults(void **state)
+{
+    (void)state;
+    char *dir = make_temp_dir();
+    const char *path = write_temp(
+        dir, "w.json",
+        "{\"camera\": {\"position\": [0, 2, 6], \"target\": [0, 0, 0], \"fov\": 60},"
+        " \"materials\": {\"clear\": {\"water\": {}},"
+        "                 \"foggy\": {\"water\": {\"fog\": {\"colour\": \"#000000\","
+        "                                                  \"density\": 0}}}},"
+        " \"objects\": []}");
+    tarn_loaded_scene s;
+    tarn_error err = { "" };
+    if (tarn_scene_load(path, &s, &err)) fail_msg("%s", err.message);
+    const tarn_water *clear = s.materials[0].water, *foggy = s.materials[1].water;
+    assert_non_null(clear);
+    assert_int_equal(clear->features, 0);
+    assert_int_equal(clear->albedo_rgb, 0xFFFFFF);
+    assert_int_equal(clear->alpha, 0);
+    assert_int_equal(clear->normal_strength, 65536);
+    assert_int_equal(clear->normal_xy_max, 0);
+    assert_int_equal(clear->specular, 65536);
+    assert_int_equal(clear->specular_power, 32);
+    assert_int_equal(clear->pan_a.scale, 65536);
+    assert_int_equal(clear->foam_pan.scale, 65536);
+    assert_int_equal(clear->foam_opacity, 65536);
+    assert_int_equal(clear->foam_line_count, 0);
+    assert_null(clear->normal_a);
+    assert_null(clear->colour_ramp);
+    assert_int_equal(foggy->features, TARN_WATER_FOG); /* a block present, its flag set */
+    assert_int_equal(foggy->fog_density, 0);
+    assert_null(s.scene.underwater);
+    tarn_scene_free(&s);
+    remove_temp_dir(dir);
+}
+
+/* ---- the normals' bound --------------------------------------------------------- */
+
+static double decoded(uint8_t c)
+{
+    return (2.0 * c - 255.0) / 255.0;
+}
+
+/* max(|N.x|, |N.y|) of step 1 of tarn_water.h for one texel of each map (b may be NULL). */
+static double exact_lean(const uint8_t *a, const uint8_t *b, double s)
+{
+    double x = decoded(a[0]), y = decoded(a[1]), z = decoded(a[2]);
+    if (b) {
+        x += decoded(b[0]);
+        y += decoded(b[1]);
+        z *= decoded(b[2]);
+    }
+    x *= s;
+    y *= s;
+    return fmax(fabs(x), fabs(y)) / sqrt(x * x + y * y + z * z);
+}
+
+/* A map of leaning normals, z the larger the flatter, from a small hash. */
+static void make_normal_texels(uint8_t *rgb, size_t texels, uint32_t seed)
+{
+    for (size_t k = 0; k < texels; k++) {
+        seed = seed * 1664525u + 1013904223u;
+        double x = ((seed >> 8) & 255) / 255.0 - 0.5, y = ((seed >> 16) & 255) / 255.0 - 0.5;
+        double z = sqrt(fmax(0.0, 1 - x * x - y * y));
+        rgb[3 * k] = (uint8_t)lround((x * 0.5 + 0.5) * 255);
+        rgb[3 * k + 1] = (uint8_t)lround((y * 0.5 + 0.5) * 255);
+        rgb[3 * k + 2] = (uint8_t)lround((z * 0.5 + 0.5) * 255);
+    }
+}
+
+static void test_normal_xy_max(void **state)
+{
+    (void)state;
+    enum { SIDE = 8, TEXELS = SIDE * SIDE };
+    uint8_t a_rgb[TEXELS * 3], b_rgb[TEXELS * 3];
+    make_normal_texels(a_rgb, TEXELS, 1);
+    make_normal_texels(b_rgb, TEXELS, 2);
+    const tarn_texture a = { SIDE, SIDE, a_rgb }, b = { SIDE, SIDE, b_rgb };
+    static const double strengths[] = { 0, 0.25, 0.6, 1, 2.5, 8 };
+    tarn_q16 previous_one = -1, previous_two = -1;
+    for (size_t k = 0; k < sizeof strengths / sizeof strengths[0]; k++) {
+        tarn_q16 strength = tarn_q16_from_double(strengths[k]);
+        double s = strength / 65536.0, one = 0, two = 0;
+        for (int i = 0; i < TEXELS; i++) {
+            one = fmax(one, exact_lean(a_rgb + 3 * i, NULL, s));
+            for (int j = 0; j < TEXELS; j++) {
+                two = fmax(two, exact_lean(a_rgb + 3 * i, b_rgb + 3 * j, s));
+            }
+        }
+        tarn_q16 bound_one = tarn_water_normal_xy_max(&a, NULL, strength);
+        tarn_q16 bound_two = tarn_water_normal_xy_max(&a, &b, strength);
+        /* one map: the exact maximum, rounded up; two: an upper bound on every pair */
+        assert_int_equal(bound_one, (tarn_q16)ceil(one * 65536));
+        assert_true(bound_two >= ceil(two * 65536) && bound_two <= 65536);
+        assert_true(bound_one >= previous_one && bound_two >= previous_two);
+        print_message("strength %.2f: one map %.4f (exact %.4f), two %.4f (pairs %.4f)\n", s,
+                      bound_one / 65536.0, one, bound_two / 65536.0, two);
+        previous_one = bound_one;
+        previous_two = bound_two;
+    }
+    assert_int_equal(tarn_water_normal_xy_max(&a, &b, 0), 0);
+}
+
 /* Index of the covered pixel whose centre is nearest (sx, sy). */
 static size_t nearest_covered_pixel(const uint8_t *covered, int width, int height, double sx,
                                     double sy)
@@ -857,6 +1083,9 @@ int main(void)
         cmocka_unit_test(test_pond),
         cmocka_unit_test(test_scene_defaults_and_rotation),
         cmocka_unit_test(test_asset_paths),
+        cmocka_unit_test(test_water_fields),
+        cmocka_unit_test(test_water_defaults),
+        cmocka_unit_test(test_normal_xy_max),
         cmocka_unit_test(test_vertex_colours_render),
         cmocka_unit_test(test_bad_inputs),
     };
