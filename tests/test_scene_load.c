@@ -911,6 +911,64 @@ static void test_water_defaults(void **state)
     remove_temp_dir(dir);
 }
 
+typedef struct {
+    const char *path;
+    uint32_t features;
+    int ramp, underwater; /* a colour ramp; an underwater view */
+} water_scene;
+
+static const water_scene WATER_SCENES[] = {
+    { "scenes/beach.json",
+      TARN_WATER_DEPTH_COLOUR | TARN_WATER_NORMALS | TARN_WATER_FRESNEL | TARN_WATER_FOAM |
+          TARN_WATER_SPARKLES, 1, 0 },
+    { "scenes/murky.json",
+      TARN_WATER_ABSORPTION | TARN_WATER_NORMALS | TARN_WATER_FRESNEL | TARN_WATER_SPECULAR |
+          TARN_WATER_FOAM, 0, 0 },
+    { "scenes/lake.json",
+      TARN_WATER_FOG | TARN_WATER_NORMALS | TARN_WATER_FRESNEL | TARN_WATER_SPECULAR, 0, 0 },
+    { "scenes/underwater.json", TARN_WATER_FOG, 0, 1 },
+    { "scenes/effects/fog.json", TARN_WATER_FOG, 0, 0 },
+    { "scenes/effects/absorption.json", TARN_WATER_ABSORPTION, 0, 0 },
+    { "scenes/effects/depth_colour.json", TARN_WATER_DEPTH_COLOUR, 0, 0 },
+    { "scenes/effects/ramp.json", TARN_WATER_DEPTH_COLOUR, 1, 0 },
+    { "scenes/effects/refraction.json", TARN_WATER_NORMALS | TARN_WATER_REFRACTION, 0, 0 },
+    { "scenes/effects/normals.json", TARN_WATER_NORMALS | TARN_WATER_SPECULAR, 0, 0 },
+    { "scenes/effects/fresnel.json", TARN_WATER_FRESNEL, 0, 0 },
+    { "scenes/effects/foam.json", TARN_WATER_FOAM, 0, 0 },
+    { "scenes/effects/sparkles.json", TARN_WATER_NORMALS | TARN_WATER_SPARKLES, 0, 0 },
+    { "scenes/effects/underwater.json", 0, 0, 1 },
+};
+
+/* Each water scene loads with exactly its features, and its refraction fits the apron. */
+static void test_water_scenes(void **state)
+{
+    (void)state;
+    for (size_t k = 0; k < sizeof WATER_SCENES / sizeof WATER_SCENES[0]; k++) {
+        const water_scene *c = &WATER_SCENES[k];
+        tarn_loaded_scene s;
+        tarn_error err = { "" };
+        if (tarn_scene_load(c->path, &s, &err)) fail_msg("%s", err.message);
+        const tarn_water *w = only_water(&s);
+        if (c->features) {
+            assert_non_null(w);
+            if (w->features != c->features) {
+                fail_msg("%s: features 0x%x, expected 0x%x", c->path, w->features, c->features);
+            }
+            assert_true((w->colour_ramp != NULL) == c->ramp);
+            int32_t reach = tarn_water_reach_pixels(w, s.width);
+            assert_true(reach <= (int32_t)TARN_WATER_APRON_MAX);
+            print_message("%s: normal_xy_max %.4f, refraction %.4f, reach %d pixels at width %u\n",
+                          c->path, w->normal_xy_max / 65536.0, w->refraction / 65536.0, reach,
+                          s.width);
+        } else {
+            assert_null(w);
+        }
+        assert_true((s.scene.underwater != NULL) == c->underwater);
+        if (c->underwater) assert_true(s.scene.camera.position.y < s.scene.underwater->level);
+        tarn_scene_free(&s);
+    }
+}
+
 /* ---- the normals' bound --------------------------------------------------------- */
 
 static double decoded(uint8_t c)
@@ -1085,6 +1143,7 @@ int main(void)
         cmocka_unit_test(test_asset_paths),
         cmocka_unit_test(test_water_fields),
         cmocka_unit_test(test_water_defaults),
+        cmocka_unit_test(test_water_scenes),
         cmocka_unit_test(test_normal_xy_max),
         cmocka_unit_test(test_vertex_colours_render),
         cmocka_unit_test(test_bad_inputs),
