@@ -52,7 +52,9 @@ static void frame_free(frame_image *f)
 static int render_reference(const tarn_loaded_scene *scene, const tarn_frame_config *config,
                             int snapped, frame_image *f, tarn_error *err)
 {
-    tarn_reference_options options = {snapped, config->quality.subpixel_bits};
+    tarn_reference_options options = {.snapped = snapped,
+                                      .subpixel_bits = config->quality.subpixel_bits,
+                                      .time_ms = config->time_ms};
     if (tarn_reference_render(&scene->scene, config->width, config->height, &options, f->rgb,
                               f->covered) != 0)
         return tarn_fail(err, "%s: the reference cannot render this scene at %ux%u",

@@ -8,11 +8,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "reference_water.h"
 #include "tarn_render.h"
 
 #define Q16_SCALE 65536.0
 #define INV_DEPTH_SCALE 1073741824.0 /* Q1.30 */
 #define Q8_8_SCALE 256.0
+#define FRESNEL_SCALE 32768.0 /* Q1.15 */
 
 /* Snapped positions are integers in subpixel units. Beyond 2^51 the difference of
  * two of them would stop being exact in a double. Only extreme scenes get there (a
@@ -34,6 +36,7 @@ typedef struct {
     double inv_depth; /* near/d: linear in screen space, the perspective weight */
     double lit[3];    /* lit colour per channel, 0..255 */
     double uv[2];     /* texture coordinates, 1.0 = one texture width / height */
+    double fresnel;   /* (1 - saturate(n.v))^2, water only */
 } ref_screen_vertex;
 
 /* A vertex in view space (x right, y up, z = depth d forward), before projection.
@@ -42,6 +45,7 @@ typedef struct {
     double view[3];
     double lit[3];
     double uv[2];
+    double fresnel;
 } ref_view_vertex;
 
 typedef struct {
@@ -50,6 +54,9 @@ typedef struct {
     uint8_t *rgb;
     uint8_t *covered; /* may be NULL */
     double *depth;    /* near/d per pixel in Q1.30 units, rounded; 0 = nothing drawn */
+    double *inv_depth; /* near/d per pixel as interpolated, unrounded; 0 = nothing drawn */
+    double near, far;  /* the camera's, world units */
+    const tarn_ref_water_view *water; /* the opaque buffers, during the water pass */
 } ref_target;
 
 typedef struct {
@@ -89,7 +96,7 @@ static dvec3 vec_normalize(dvec3 v)
     return r;
 }
 
-static double channel(uint32_t rgb, int c)
+double tarn_ref_channel(uint32_t rgb, int c)
 {
     return (double)((rgb >> (16 - 8 * c)) & 0xFFu);
 }
@@ -101,7 +108,7 @@ static int is_power_of_two_up_to(unsigned v, unsigned max)
     return v >= 1 && v <= max && (v & (v - 1)) == 0;
 }
 
-static int texture_is_valid(const tarn_texture *t)
+int tarn_ref_texture_is_valid(const tarn_texture *t)
 {
     return t == NULL || (t->rgb != NULL && is_power_of_two_up_to(t->width, TARN_TEXTURE_SIZE_MAX)
                          && is_power_of_two_up_to(t->height, TARN_TEXTURE_SIZE_MAX));
@@ -132,10 +139,13 @@ static int scene_is_valid(const tarn_scene *scene)
     for (unsigned i = 0; i < scene->object_count; i++) {
         const tarn_object *obj = &scene->objects[i];
         if (obj->mesh == NULL || obj->material == NULL) return 0;
-        if (!texture_is_valid(obj->material->texture)) return 0;
-        if (!mesh_is_valid(obj->mesh, !obj->material->unlit)) return 0;
+        const tarn_material *mat = obj->material;
+        if (!tarn_ref_texture_is_valid(mat->texture)) return 0;
+        if (mat->water != NULL && !tarn_ref_water_is_valid(mat->water)) return 0;
+        int fresnel = mat->water != NULL && (mat->water->features & TARN_WATER_FRESNEL);
+        if (!mesh_is_valid(obj->mesh, !mat->unlit || fresnel)) return 0;
     }
-    return 1;
+    return scene->underwater == NULL || tarn_ref_underwater_is_valid(scene->underwater);
 }
 
 /* ---- exact edge tests ------------------------------------------------------------ */
@@ -179,14 +189,14 @@ static ref_edge make_edge(const ref_screen_vertex *a, const ref_screen_vertex *b
 
 /* ---- shading ---------------------------------------------------------------------- */
 
-static double round_to_byte(double v)
+double tarn_ref_round_to_byte(double v)
 {
     double r = floor(v + 0.5);
     return !(r >= 0) ? 0 : (r > 255 ? 255 : r); /* NaN to 0: never an undefined cast */
 }
 
 /* Texel = (floor(u*W) mod W, floor(v*H) mod H), wrapping negatives too. */
-static const uint8_t *sample_texel(const tarn_texture *tex, const double uv[2])
+const uint8_t *tarn_ref_sample_texel(const tarn_texture *tex, const double uv[2])
 {
     double tx = fmod(floor(uv[0] * tex->width), tex->width);
     double ty = fmod(floor(uv[1] * tex->height), tex->height);
@@ -195,20 +205,55 @@ static const uint8_t *sample_texel(const tarn_texture *tex, const double uv[2])
     return tex->rgb + 3 * ((size_t)ty * tex->width + (size_t)tx);
 }
 
-static void shade_pixel(const ref_screen_vertex v[3], const double weight[3],
-                        const tarn_texture *tex, uint8_t out[3])
+/* A covered pixel's attributes. */
+typedef struct {
+    double inv_depth; /* near/d, linear in screen space */
+    double lit[3], uv[2], fresnel; /* perspective-correct */
+} ref_pixel;
+
+static double weighted(const double weight[3], double total, double a, double b, double c)
 {
+    return (weight[0] * a + weight[1] * b + weight[2] * c) / total;
+}
+
+/* `edge` / `area` are the pixel's screen-space barycentrics; weighted by each
+ * vertex's inverse depth and renormalised they interpolate perspective-correctly. */
+static ref_pixel interpolate(const ref_screen_vertex v[3], const double edge[3], double area)
+{
+    double weight[3];
+    for (int k = 0; k < 3; k++) weight[k] = edge[k] / area * v[k].inv_depth;
     double total = weight[0] + weight[1] + weight[2];
-    double uv[2];
+    ref_pixel px;
+    px.inv_depth = total;
     for (int k = 0; k < 2; k++)
-        uv[k] = (weight[0] * v[0].uv[k] + weight[1] * v[1].uv[k] + weight[2] * v[2].uv[k]) / total;
-    const uint8_t *texel = tex != NULL ? sample_texel(tex, uv) : NULL;
+        px.uv[k] = weighted(weight, total, v[0].uv[k], v[1].uv[k], v[2].uv[k]);
+    for (int c = 0; c < 3; c++)
+        px.lit[c] = weighted(weight, total, v[0].lit[c], v[1].lit[c], v[2].lit[c]);
+    px.fresnel = weighted(weight, total, v[0].fresnel, v[1].fresnel, v[2].fresnel);
+    return px;
+}
+
+static void shade_opaque(const ref_pixel *px, const tarn_texture *tex, uint8_t out[3])
+{
+    const uint8_t *texel = tex != NULL ? tarn_ref_sample_texel(tex, px->uv) : NULL;
     for (int c = 0; c < 3; c++) {
-        double lit = (weight[0] * v[0].lit[c] + weight[1] * v[1].lit[c] + weight[2] * v[2].lit[c])
-                     / total;
-        double colour = texel != NULL ? texel[c] * lit / 255.0 : lit;
-        out[c] = (uint8_t)round_to_byte(colour);
+        double colour = texel != NULL ? texel[c] * px->lit[c] / 255.0 : px->lit[c];
+        out[c] = (uint8_t)tarn_ref_round_to_byte(colour);
     }
+}
+
+/* Water reads the opaque pass's buffers, never its own output. Its depth is exact
+ * near / (near/d), not the rounded Q1.30 the depth test uses. */
+static void shade_water(const ref_target *t, const tarn_object *obj, int i, int j,
+                        const ref_pixel *px, uint8_t out[3])
+{
+    tarn_ref_water_surface surface = {
+        .depth = t->near / px->inv_depth,
+        .lit = { px->lit[0], px->lit[1], px->lit[2] },
+        .uv = { px->uv[0], px->uv[1] },
+        .fresnel = px->fresnel,
+    };
+    tarn_ref_shade_water(t->water, obj, i, j, &surface, out);
 }
 
 /* ---- rasterization ---------------------------------------------------------------- */
@@ -263,29 +308,34 @@ static double depth_q30(const ref_screen_vertex v[3], const double edge[3], doub
     return floor((edge[0] * z[0] + edge[1] * z[1] + edge[2] * z[2]) / area + 0.5);
 }
 
+/* The depth buffer holds the opaque pass's depths when the water pass starts, so
+ * water is tested against the opaque surface and against earlier water alike. */
 static void draw_pixel(ref_target *t, int i, int j, const ref_screen_vertex v[3],
-                       const double edge[3], double area, int exact, const tarn_texture *tex)
+                       const double edge[3], double area, int exact, const tarn_object *obj)
 {
-    double weight[3];
-    for (int k = 0; k < 3; k++) weight[k] = edge[k] / area * v[k].inv_depth;
     double depth = depth_q30(v, edge, area, exact);
     size_t p = (size_t)j * t->width + i;
     if (!(depth > t->depth[p])) return; /* closer wins; on a tie the earlier stays */
     t->depth[p] = depth;
-    shade_pixel(v, weight, tex, t->rgb + 3 * p);
+    ref_pixel px = interpolate(v, edge, area);
+    t->inv_depth[p] = px.inv_depth;
+    if (obj->material->water != NULL)
+        shade_water(t, obj, i, j, &px, t->rgb + 3 * p);
+    else
+        shade_opaque(&px, obj->material->texture, t->rgb + 3 * p);
     if (t->covered != NULL) t->covered[p] = 1;
 }
 
 /* Draws one triangle with the top-left rule, perspective-correct attributes and
  * the depth test, culled by its snapped screen winding and the material's mode. */
-static void rasterize_triangle(ref_target *t, const ref_screen_vertex in[3], uint8_t cull,
-                               const tarn_texture *tex)
+static void rasterize_triangle(ref_target *t, const ref_screen_vertex in[3],
+                               const tarn_object *obj)
 {
     ref_edge first = make_edge(&in[0], &in[1]);
     int exact = within_exact_range(in, t);
     double signed_area = edge_value(&first, in[2].x, in[2].y, exact);
     int area_sign = (signed_area > 0) - (signed_area < 0);
-    if (area_sign == 0 || !is_drawn_side(area_sign, cull)) return;
+    if (area_sign == 0 || !is_drawn_side(area_sign, obj->material->cull)) return;
 
     /* Wind to positive area so every edge function is positive inside. */
     int flip = area_sign < 0;
@@ -313,7 +363,7 @@ static void rasterize_triangle(ref_target *t, const ref_screen_vertex in[3], uin
                 e[k] = edge_value(&edge[k], px, py, exact);
                 inside = e[k] > 0 || (e[k] == 0 && edge[k].owns_boundary);
             }
-            if (inside) draw_pixel(t, i, j, v, e, area, exact, tex);
+            if (inside) draw_pixel(t, i, j, v, e, area, exact, obj);
         }
     }
 }
@@ -342,8 +392,8 @@ static void light_vertex(const tarn_light *light, dvec3 normal, double shade[3])
 {
     double n_dot_l = fmax(0.0, vec_dot(normal, vec_from_q16(light->direction)));
     for (int c = 0; c < 3; c++) {
-        double lit = channel(light->ambient_rgb, c) / 255.0
-                     + channel(light->colour_rgb, c) / 255.0 * n_dot_l;
+        double lit = tarn_ref_channel(light->ambient_rgb, c) / 255.0
+                     + tarn_ref_channel(light->colour_rgb, c) / 255.0 * n_dot_l;
         shade[c] = fmin(1.0, lit);
     }
 }
@@ -357,6 +407,17 @@ static dvec3 rotate(const tarn_q16 rot[3][3], dvec3 p)
         *out[row] = vec_dot(axis, p);
     }
     return r;
+}
+
+/* (1 - saturate(n.v))^2: n the unit world normal, v the unit vector from the vertex
+ * toward the camera (none when they coincide: 0). */
+static double vertex_fresnel(const ref_camera *cam, dvec3 normal, dvec3 world)
+{
+    dvec3 to_camera = vec_sub(cam->position, world);
+    if (vec_dot(to_camera, to_camera) == 0) return 0.0;
+    double n_dot_v = vec_dot(vec_normalize(normal), vec_normalize(to_camera));
+    double one_minus = 1.0 - fmin(1.0, fmax(0.0, n_dot_v));
+    return one_minus * one_minus;
 }
 
 static ref_view_vertex transform_vertex(const tarn_scene *scene, const ref_camera *cam,
@@ -375,14 +436,17 @@ static ref_view_vertex transform_vertex(const tarn_scene *scene, const ref_camer
     out.view[1] = vec_dot(rel, cam->up);
     out.view[2] = vec_dot(rel, cam->forward);
 
+    /* Normals are read only where needed: unlit meshes may have none (or too few). */
     double shade[3] = { 1, 1, 1 };
-    if (!mat->unlit) {
-        dvec3 normal = rotate(obj->rotation, vec_from_q16(mesh->normals[index]));
-        light_vertex(&scene->light, normal, shade);
-    }
+    int fresnel = mat->water != NULL && (mat->water->features & TARN_WATER_FRESNEL);
+    dvec3 normal = { 0, 0, 0 };
+    if (!mat->unlit || fresnel) normal = rotate(obj->rotation, vec_from_q16(mesh->normals[index]));
+    if (!mat->unlit) light_vertex(&scene->light, normal, shade);
+    out.fresnel = fresnel ? vertex_fresnel(cam, normal, world) : 0.0;
     for (int c = 0; c < 3; c++) {
-        double vertex_colour = mesh->colours != NULL ? channel(mesh->colours[index], c) : 255.0;
-        out.lit[c] = channel(mat->colour_rgb, c) * vertex_colour / 255.0 * shade[c];
+        double vertex_colour =
+            mesh->colours != NULL ? tarn_ref_channel(mesh->colours[index], c) : 255.0;
+        out.lit[c] = tarn_ref_channel(mat->colour_rgb, c) * vertex_colour / 255.0 * shade[c];
     }
     out.uv[0] = mesh->uvs != NULL ? mesh->uvs[index].u / Q16_SCALE : 0.0;
     out.uv[1] = mesh->uvs != NULL ? mesh->uvs[index].v / Q16_SCALE : 0.0;
@@ -396,6 +460,7 @@ static ref_view_vertex lerp_view_vertex(const ref_view_vertex *a, const ref_view
     for (int k = 0; k < 3; k++) r.view[k] = a->view[k] + (b->view[k] - a->view[k]) * s;
     for (int k = 0; k < 3; k++) r.lit[k] = a->lit[k] + (b->lit[k] - a->lit[k]) * s;
     for (int k = 0; k < 2; k++) r.uv[k] = a->uv[k] + (b->uv[k] - a->uv[k]) * s;
+    r.fresnel = a->fresnel + (b->fresnel - a->fresnel) * s;
     return r;
 }
 
@@ -435,11 +500,12 @@ static ref_screen_vertex project(const ref_view_vertex *v, const ref_camera *cam
     s.inv_depth = cam->near / d;
     memcpy(s.lit, v->lit, sizeof s.lit);
     memcpy(s.uv, v->uv, sizeof s.uv);
+    s.fresnel = v->fresnel;
     return s;
 }
 
 static void draw_view_triangle(ref_target *t, const ref_camera *cam, const ref_view_vertex tri[3],
-                               const tarn_material *mat)
+                               const tarn_object *obj)
 {
     ref_view_vertex near_clipped[CLIP_MAX_VERTICES], clipped[CLIP_MAX_VERTICES];
     int n = clip_polygon_at_depth(tri, 3, cam->near, 1.0, near_clipped);
@@ -448,31 +514,44 @@ static void draw_view_triangle(ref_target *t, const ref_camera *cam, const ref_v
     for (int i = 0; i < n; i++) screen[i] = project(&clipped[i], cam, t);
     for (int i = 1; i + 1 < n; i++) {
         ref_screen_vertex fan[3] = { screen[0], screen[i], screen[i + 1] };
-        rasterize_triangle(t, fan, mat->cull, mat->texture);
+        rasterize_triangle(t, fan, obj);
     }
 }
 
-static void render_unsnapped(const tarn_scene *scene, ref_target *t)
+/* Whether `obj` draws in this pass: opaque objects first, then water. */
+static int in_pass(const tarn_object *obj, int water_pass)
+{
+    return (obj->material->water != NULL) == (water_pass != 0);
+}
+
+static void render_unsnapped(const tarn_scene *scene, ref_target *t, int water_pass)
 {
     ref_camera cam = make_camera(&scene->camera, t->height);
     for (unsigned o = 0; o < scene->object_count; o++) {
         const tarn_object *obj = &scene->objects[o];
         const tarn_mesh *mesh = obj->mesh;
+        if (!in_pass(obj, water_pass)) continue;
         for (unsigned tri = 0; tri < mesh->triangle_count; tri++) {
             ref_view_vertex corner[3];
             for (int k = 0; k < 3; k++)
                 corner[k] = transform_vertex(scene, &cam, obj, mesh->indices[3 * tri + k]);
-            draw_view_triangle(t, &cam, corner, obj->material);
+            draw_view_triangle(t, &cam, corner, obj);
         }
     }
 }
 
 /* ---- snapped mode: the core's own screen triangles -------------------------------- */
 
+typedef struct {
+    ref_target *target;
+    int water_pass;
+} snapped_pass;
+
 static void visit_core_triangle(void *user, const tarn_screen_vertex vertex[3],
                                 const tarn_object *object)
 {
-    ref_target *t = user;
+    const snapped_pass *pass = user;
+    if (!in_pass(object, pass->water_pass)) return;
     ref_screen_vertex v[3];
     for (int k = 0; k < 3; k++) {
         v[k].x = vertex[k].x;
@@ -481,21 +560,99 @@ static void visit_core_triangle(void *user, const tarn_screen_vertex vertex[3],
         for (int c = 0; c < 3; c++) v[k].lit[c] = vertex[k].lit[c] / Q8_8_SCALE;
         v[k].uv[0] = vertex[k].uv.u / Q16_SCALE;
         v[k].uv[1] = vertex[k].uv.v / Q16_SCALE;
+        v[k].fresnel = vertex[k].fresnel / FRESNEL_SCALE;
     }
     /* The core hands triangles over in their original winding and culls them only in
      * its rasterizer, on the snapped winding (whatever tarn_render.h says of the
      * visitor): cull here by the same rule. Were they culled already, it is a no-op. */
-    rasterize_triangle(t, v, object->material->cull, object->material->texture);
+    rasterize_triangle(pass->target, v, object);
 }
 
-static int render_snapped(const tarn_scene *scene, ref_target *t, int subpixel_bits)
+/* The visitor is walked once per pass and keeps that pass's objects, so the
+ * passes hold whatever order the core visits them in. */
+static int render_snapped(const tarn_scene *scene, ref_target *t, int subpixel_bits,
+                          int water_pass)
 {
-    tarn_frame_config config;
-    config.width = (uint16_t)t->width;
-    config.height = (uint16_t)t->height;
-    config.quality = tarn_quality_default();
+    tarn_frame_config config = {
+        .width = (uint16_t)t->width,
+        .height = (uint16_t)t->height,
+        .quality = tarn_quality_default(),
+    };
     config.quality.subpixel_bits = (uint8_t)subpixel_bits;
-    return (int)tarn_visit_screen_triangles(scene, &config, visit_core_triangle, t);
+    snapped_pass pass = { t, water_pass };
+    return (int)tarn_visit_screen_triangles(scene, &config, visit_core_triangle, &pass);
+}
+
+static int render_pass(const tarn_scene *scene, ref_target *t, const tarn_reference_options *opt,
+                       int water_pass)
+{
+    if (opt->snapped) return render_snapped(scene, t, opt->subpixel_bits, water_pass);
+    render_unsnapped(scene, t, water_pass);
+    return TARN_OK;
+}
+
+/* ---- water and underwater ---------------------------------------------------------- */
+
+static int has_water(const tarn_scene *scene)
+{
+    for (unsigned o = 0; o < scene->object_count; o++)
+        if (scene->objects[o].material->water != NULL) return 1;
+    return 0;
+}
+
+/* Linear depth d = near / (near/d) of every pixel; far where nothing was drawn. */
+static void linear_depths(const ref_target *t, double *out)
+{
+    size_t pixels = (size_t)t->width * t->height;
+    for (size_t p = 0; p < pixels; p++)
+        out[p] = t->inv_depth[p] > 0 ? t->near / t->inv_depth[p] : t->far;
+}
+
+/* Keeps copies of the opaque colour and depth for the water to read while it draws
+ * over them. */
+static int render_water(const tarn_scene *scene, ref_target *t, const tarn_reference_options *opt)
+{
+    size_t pixels = (size_t)t->width * t->height;
+    uint8_t *opaque_rgb = malloc(3 * pixels);
+    double *opaque_depth = malloc(pixels * sizeof *opaque_depth);
+    int status = TARN_ERR_MEMORY;
+    if (opaque_rgb != NULL && opaque_depth != NULL) {
+        memcpy(opaque_rgb, t->rgb, 3 * pixels);
+        linear_depths(t, opaque_depth);
+        ref_camera cam = make_camera(&scene->camera, t->height);
+        tarn_ref_water_view view = {
+            .width = t->width, .height = t->height, .rgb = opaque_rgb, .depth = opaque_depth,
+            .time_ms = opt->time_ms, .light = &scene->light,
+            .backward = { -cam.forward.x, -cam.forward.y, -cam.forward.z },
+        };
+        t->water = &view;
+        status = render_pass(scene, t, opt, 1);
+        t->water = NULL;
+    }
+    free(opaque_rgb);
+    free(opaque_depth);
+    return status;
+}
+
+/* The underwater view reads the finished image and the nearest depth, water
+ * included. Only a camera below the water plane sees it. */
+static int render_underwater(const tarn_scene *scene, ref_target *t, uint32_t time_ms)
+{
+    const tarn_underwater *u = scene->underwater;
+    if (u == NULL || !(scene->camera.position.y < u->level)) return TARN_OK;
+    size_t pixels = (size_t)t->width * t->height;
+    uint8_t *above = malloc(3 * pixels);
+    double *depth = malloc(pixels * sizeof *depth);
+    int status = TARN_ERR_MEMORY;
+    if (above != NULL && depth != NULL) {
+        memcpy(above, t->rgb, 3 * pixels);
+        linear_depths(t, depth);
+        tarn_ref_apply_underwater(u, t->width, t->height, time_ms, above, depth, t->rgb);
+        status = TARN_OK;
+    }
+    free(above);
+    free(depth);
+    return status;
 }
 
 /* ---- entry point ------------------------------------------------------------------ */
@@ -504,10 +661,21 @@ static void clear_target(ref_target *t, uint32_t background)
 {
     size_t pixels = (size_t)t->width * t->height;
     for (size_t p = 0; p < pixels; p++) {
-        for (int c = 0; c < 3; c++) t->rgb[3 * p + c] = (uint8_t)channel(background, c);
+        for (int c = 0; c < 3; c++) t->rgb[3 * p + c] = (uint8_t)tarn_ref_channel(background, c);
         t->depth[p] = 0.0;
+        t->inv_depth[p] = 0.0;
     }
     if (t->covered != NULL) memset(t->covered, 0, pixels);
+}
+
+/* Opaque objects, then water over them, then the underwater view. */
+static int render_frame(const tarn_scene *scene, ref_target *t, const tarn_reference_options *opt)
+{
+    clear_target(t, scene->background_rgb);
+    int status = render_pass(scene, t, opt, 0);
+    if (status == TARN_OK && has_water(scene)) status = render_water(scene, t, opt);
+    if (status == TARN_OK) status = render_underwater(scene, t, opt->time_ms);
+    return status;
 }
 
 int tarn_reference_render(const tarn_scene *scene, int width, int height,
@@ -519,16 +687,17 @@ int tarn_reference_render(const tarn_scene *scene, int width, int height,
         return TARN_ERR_CONFIG;
     if (!scene_is_valid(scene)) return TARN_ERR_SCENE;
 
-    ref_target t = { width, height, ldexp(1.0, opt->subpixel_bits), rgb, covered, NULL };
-    t.depth = malloc((size_t)width * height * sizeof *t.depth);
-    if (t.depth == NULL) return TARN_ERR_MEMORY;
-    clear_target(&t, scene->background_rgb);
-
-    int status = TARN_OK;
-    if (opt->snapped)
-        status = render_snapped(scene, &t, opt->subpixel_bits);
-    else
-        render_unsnapped(scene, &t);
+    size_t pixels = (size_t)width * height;
+    ref_target t = {
+        .width = width, .height = height, .subpixel_unit = ldexp(1.0, opt->subpixel_bits),
+        .rgb = rgb, .covered = covered,
+        .depth = malloc(pixels * sizeof *t.depth),
+        .inv_depth = malloc(pixels * sizeof *t.inv_depth),
+        .near = scene->camera.near / Q16_SCALE, .far = scene->camera.far / Q16_SCALE,
+    };
+    int status = TARN_ERR_MEMORY;
+    if (t.depth != NULL && t.inv_depth != NULL) status = render_frame(scene, &t, opt);
     free(t.depth);
+    free(t.inv_depth);
     return status;
 }

@@ -11,7 +11,12 @@
  *    rasterized. Measures everything the core approximates.
  *  - snapped: rasterizes exactly the triangles the core produces
  *    (tarn_visit_screen_triangles), so only rasterization and shading differ; the
- *    coverage must then match the core's pixel for pixel. */
+ *    coverage must then match the core's pixel for pixel.
+ *
+ * A frame is drawn as core/tarn_water.h describes: opaque materials first, then
+ * water materials over them (depth-tested against both, reading only the opaque
+ * colour and depth), then the underwater view when the camera is below its level.
+ * The reference has no tiles: refraction reads the whole frame. */
 #ifndef TARN_HOST_REFERENCE_H
 #define TARN_HOST_REFERENCE_H
 
@@ -21,6 +26,7 @@
 typedef struct {
     int snapped;       /* 1: rasterize the core's snapped triangles */
     int subpixel_bits; /* TARN_SUBPIXEL_BITS_MIN..MAX, as in the core's quality */
+    uint32_t time_ms;  /* the frame's clock, as tarn_frame_config.time_ms (water panning) */
 } tarn_reference_options;
 
 /* Renders `scene` into `rgb` (width*height*3 bytes, rows top to bottom, R G B) and,

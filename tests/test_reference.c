@@ -67,7 +67,7 @@ static tarn_scene scene_of(const tarn_object *objects, uint16_t count)
 
 static int render_mode(const tarn_scene *scene, int snapped)
 {
-    tarn_reference_options opt = { snapped, SUBPIXEL_BITS };
+    tarn_reference_options opt = { .snapped = snapped, .subpixel_bits = SUBPIXEL_BITS };
     return tarn_reference_render(scene, W, H, &opt, rgb, covered);
 }
 
@@ -644,7 +644,7 @@ static void test_bad_input_is_rejected(void **state)
     }
 
     tarn_scene empty = scene_of(NULL, 0);
-    tarn_reference_options opt = { 0, SUBPIXEL_BITS };
+    tarn_reference_options opt = { .snapped = 0, .subpixel_bits = SUBPIXEL_BITS };
     assert_int_equal(tarn_reference_render(&empty, 0, H, &opt, rgb, covered), TARN_ERR_CONFIG);
     opt.subpixel_bits = 9;
     assert_int_equal(tarn_reference_render(&empty, W, H, &opt, rgb, covered), TARN_ERR_CONFIG);
