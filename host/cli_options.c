@@ -1,11 +1,13 @@
 #include "cli_options.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 const char tarn_cli_usage[] =
-    "usage: tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--reference [--snapped]] [QUALITY]\n"
+    "usage: tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]\n"
+    "                   [--reference [--snapped]] [QUALITY]\n"
     "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]\n"
     "       tarn accuracy --math\n"
     "QUALITY: --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
@@ -124,6 +126,25 @@ static int parse_command(const char *word, tarn_cli_options *o, tarn_error *err)
     return 0;
 }
 
+/* --frames N and --fps F. */
+static int parse_sequence_option(const char *name, const char *value, tarn_cli_options *o,
+                                 tarn_error *err)
+{
+    unsigned long n;
+    if (strcmp(name, "--frames") == 0) {
+        if (parse_whole(value, 1, TARN_CLI_FRAMES_MAX, &n) != 0)
+            return tarn_fail(err, "--frames: expected a whole number 1..%u, got '%s'",
+                             TARN_CLI_FRAMES_MAX, value ? value : "");
+        o->frames = (uint16_t)n;
+        return 0;
+    }
+    if (parse_whole(value, 1, TARN_CLI_FPS_MAX, &n) != 0)
+        return tarn_fail(err, "--fps: expected a whole number 1..%u, got '%s'", TARN_CLI_FPS_MAX,
+                         value ? value : "");
+    o->fps = (uint8_t)n;
+    return 0;
+}
+
 /* Options with a value; returns 1 if `name` is none of them. */
 static int parse_valued_option(const char *name, const char *value, tarn_cli_options *o,
                                tarn_error *err)
@@ -132,6 +153,8 @@ static int parse_valued_option(const char *name, const char *value, tarn_cli_opt
     if (strcmp(name, "-o") == 0) o->output_path = value;
     else if (strcmp(name, "--diff") == 0) o->diff_path = value;
     else if (strcmp(name, "--size") == 0) return parse_size(value, o, err);
+    else if (strcmp(name, "--frames") == 0 || strcmp(name, "--fps") == 0)
+        return parse_sequence_option(name, value, o, err);
     else if (strcmp(name, "--time") == 0) {
         if (parse_whole(value, 0, UINT32_MAX, &ms) != 0)
             return tarn_fail(err, "--time: expected milliseconds 0..%lu, got '%s'",
@@ -151,7 +174,28 @@ static int parse_flag(const char *name, tarn_cli_options *o)
     return 0;
 }
 
-static int check_combination(const tarn_cli_options *o, tarn_error *err)
+/* In 64 bits, so that a clock past UINT32_MAX shows instead of wrapping. */
+static uint64_t frame_clock(const tarn_cli_options *o, unsigned index)
+{
+    return o->time_ms + (uint64_t)index * 1000u / (o->fps ? o->fps : 1u);
+}
+
+/* A sequence is for render; its last frame's clock must not wrap. */
+static int check_sequence(tarn_cli_options *o, tarn_error *err)
+{
+    if (o->frames && o->command != TARN_CMD_RENDER)
+        return tarn_fail(err, "--frames applies to render");
+    if (o->fps && !o->frames) return tarn_fail(err, "--fps applies to a sequence: add --frames N");
+    if (!o->frames) return 0;
+    if (!o->fps) o->fps = TARN_CLI_FPS_DEFAULT;
+    uint64_t last = frame_clock(o, o->frames - 1u);
+    if (last > UINT32_MAX)
+        return tarn_fail(err, "--frames: the last frame would be at %llu ms, past %lu",
+                         (unsigned long long)last, (unsigned long)UINT32_MAX);
+    return 0;
+}
+
+static int check_combination(tarn_cli_options *o, tarn_error *err)
 {
     if (o->command == TARN_CMD_ACCURACY)
         return o->math ? 0 : tarn_fail(err, "accuracy: expected --math");
@@ -160,7 +204,7 @@ static int check_combination(const tarn_cli_options *o, tarn_error *err)
         return tarn_fail(err, "render: expected -o OUT.png");
     if (o->snapped && o->command == TARN_CMD_RENDER && !o->reference)
         return tarn_fail(err, "--snapped applies to the reference: add --reference");
-    return 0;
+    return check_sequence(o, err);
 }
 
 int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
@@ -183,4 +227,17 @@ int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
         i++;
     }
     return check_combination(o, err);
+}
+
+int tarn_cli_frame_path(const char *output, unsigned index, char *out, size_t size)
+{
+    size_t length = strlen(output);
+    if (length >= 4 && strcmp(output + length - 4, ".png") == 0) length -= 4;
+    int written = snprintf(out, size, "%.*s-%04u.png", (int)length, output, index);
+    return written >= 0 && (size_t)written < size ? 0 : -1;
+}
+
+uint32_t tarn_cli_frame_time(const tarn_cli_options *o, unsigned index)
+{
+    return (uint32_t)frame_clock(o, index); /* in range: the parser checked the last frame */
 }

@@ -1,6 +1,7 @@
 /* cli_options.h: the command line of the `tarn` tool, parsed and range-checked.
  *
- *   tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--reference [--snapped]] [QUALITY]
+ *   tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]
+ *               [--reference [--snapped]] [QUALITY]
  *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]
  *   tarn accuracy --math
  * QUALITY knobs (defaults from tarn_quality_default()):
@@ -9,6 +10,7 @@
 #ifndef TARN_HOST_CLI_OPTIONS_H
 #define TARN_HOST_CLI_OPTIONS_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include "error.h"
 #include "tarn_render.h"
@@ -22,6 +24,8 @@ typedef struct {
     const char *diff_path;   /* compare: --diff, or NULL */
     uint16_t width, height;  /* 0: the scene's own frame size */
     uint32_t time_ms;
+    uint16_t frames;         /* render --frames: 0 for one frame written to -o itself */
+    uint8_t fps;             /* frame k is at time_ms + floor(k * 1000 / fps) */
     int reference;           /* render with the float reference */
     int snapped;             /* the reference rasterizes the core's snapped triangles */
     int math;                /* accuracy --math */
@@ -30,6 +34,17 @@ typedef struct {
 
 /* 0, or -1 with a one-line message in `err`. */
 int tarn_cli_parse(int argc, char **argv, tarn_cli_options *options, tarn_error *err);
+
+#define TARN_CLI_FRAMES_MAX 10000u
+#define TARN_CLI_FPS_MAX 120u
+#define TARN_CLI_FPS_DEFAULT 30u
+
+/* Frame `index` of a --frames sequence: "out.png" -> "out-0007.png" (a name without
+ * ".png" gains "-0007.png"). 0, or -1 if it does not fit `size` bytes. */
+int tarn_cli_frame_path(const char *output, unsigned index, char *out, size_t size);
+
+/* The clock of frame `index`: time_ms + floor(index * 1000 / fps). */
+uint32_t tarn_cli_frame_time(const tarn_cli_options *options, unsigned index);
 
 extern const char tarn_cli_usage[];
 

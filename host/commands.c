@@ -10,6 +10,9 @@
 #include "reference.h"
 #include "scene_load.h"
 
+/* Room for a sequence frame's file name: -o's name plus "-0000.png". */
+#define FRAME_PATH_MAX 4096
+
 /* Both renderers' output for one frame. */
 typedef struct {
     int width, height;
@@ -77,14 +80,53 @@ static int run_on_scene(const tarn_cli_options *o, scene_action action)
     return failed ? report(&err) : 0;
 }
 
+/* One frame into `f` and then to `path`, by the renderer the options pick. */
+static int render_frame_to(const char *path, const tarn_cli_options *o,
+                           const tarn_loaded_scene *scene, const tarn_frame_config *config,
+                           frame_image *f, tarn_error *err)
+{
+    int failed = o->reference ? render_reference(scene, config, o->snapped, f, err)
+                              : tarn_core_render(&scene->scene, config, f->rgb, f->covered, err);
+    return failed || tarn_png_write_rgb(path, f->rgb, config->width, config->height, err) ? -1 : 0;
+}
+
+/* Frames [0, count) of the sequence, which this run wrote. */
+static void remove_frames(const char *output, unsigned count)
+{
+    char path[FRAME_PATH_MAX];
+    for (unsigned k = 0; k < count; k++) {
+        if (tarn_cli_frame_path(output, k, path, sizeof path) == 0) remove(path);
+    }
+}
+
+/* --frames N: OUT-0000.png onward, each at its own clock. A failure removes the
+ * frames already written, so that no partial sequence is left behind. */
+static int render_sequence(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+                           const tarn_frame_config *config, frame_image *f, tarn_error *err)
+{
+    tarn_frame_config at = *config;
+    char path[FRAME_PATH_MAX];
+    /* every frame's name is as long as the last one's */
+    if (tarn_cli_frame_path(o->output_path, o->frames - 1u, path, sizeof path) != 0)
+        return tarn_fail(err, "-o: '%s' is too long for a frame's file name", o->output_path);
+    for (unsigned k = 0; k < o->frames; k++) {
+        at.time_ms = tarn_cli_frame_time(o, k);
+        tarn_cli_frame_path(o->output_path, k, path, sizeof path);
+        if (render_frame_to(path, o, scene, &at, f, err) != 0) {
+            remove_frames(o->output_path, k);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 static int render_to_png(const tarn_cli_options *o, const tarn_loaded_scene *scene,
                          const tarn_frame_config *config, tarn_error *err)
 {
     frame_image f = {0, 0, NULL, NULL};
     int failed = frame_alloc(&f, config->width, config->height, err) ||
-                 (o->reference ? render_reference(scene, config, o->snapped, &f, err)
-                               : tarn_core_render(&scene->scene, config, f.rgb, f.covered, err)) ||
-                 tarn_png_write_rgb(o->output_path, f.rgb, config->width, config->height, err);
+                 (o->frames ? render_sequence(o, scene, config, &f, err)
+                            : render_frame_to(o->output_path, o, scene, config, &f, err));
     frame_free(&f);
     return failed ? -1 : 0;
 }

@@ -68,6 +68,39 @@ static void test_good_lines_parse(void **state)
     assert_string_equal(o.diff_path, "heat.png");
     assert_int_equal(parse("accuracy --math", &o, &err), 0);
     assert_true(o.math);
+    assert_int_equal(o.frames, 0);
+}
+
+static void test_frame_sequences_parse(void **state)
+{
+    (void)state;
+    tarn_cli_options o;
+    tarn_error err;
+    assert_int_equal(parse("render s.json -o o.png --frames 10000 --fps 120 --time 5", &o, &err),
+                     0);
+    assert_int_equal(o.frames, 10000);
+    assert_int_equal(o.fps, 120);
+    /* frame k at time + floor(k * 1000 / fps) */
+    assert_int_equal(tarn_cli_frame_time(&o, 0), 5);
+    assert_int_equal(tarn_cli_frame_time(&o, 1), 5 + 8);  /* 8.33 */
+    assert_int_equal(tarn_cli_frame_time(&o, 3), 5 + 25);
+    assert_int_equal(tarn_cli_frame_time(&o, 9999), 5 + 83325);
+    assert_int_equal(parse("render s.json -o out.png --frames 2", &o, &err), 0);
+    assert_int_equal(o.fps, 30); /* the default */
+    assert_int_equal(tarn_cli_frame_time(&o, 1), 33);
+    /* the last frame's clock may reach UINT32_MAX but not pass it */
+    assert_int_equal(parse("render s.json -o o.png --frames 2 --fps 1 --time 4294966295", &o,
+                           &err), 0);
+    assert_true(tarn_cli_frame_time(&o, 1) == UINT32_MAX);
+
+    char path[32];
+    assert_int_equal(tarn_cli_frame_path("out.png", 0, path, sizeof path), 0);
+    assert_string_equal(path, "out-0000.png");
+    assert_int_equal(tarn_cli_frame_path("dir.v2/frames", 9999, path, sizeof path), 0);
+    assert_string_equal(path, "dir.v2/frames-9999.png");
+    assert_int_equal(tarn_cli_frame_path("a.png.png", 12, path, sizeof path), 0);
+    assert_string_equal(path, "a.png-0012.png");
+    assert_int_equal(tarn_cli_frame_path("a-long-name.png", 1, path, 16), -1); /* no room */
 }
 
 static void test_bad_lines_name_what_was_expected(void **state)
@@ -101,6 +134,19 @@ static void test_bad_lines_name_what_was_expected(void **state)
     assert_rejected("render s.json -o x.png --snapped", "--snapped applies to the reference");
     assert_rejected("render s.json -o x.png --bogus 1", "unknown option '--bogus'");
     assert_rejected("accuracy", "accuracy: expected --math");
+    assert_rejected("render s.json -o x.png --frames 0",
+                    "--frames: expected a whole number 1..10000");
+    assert_rejected("render s.json -o x.png --frames 10001", "--frames: expected");
+    assert_rejected("render s.json -o x.png --frames 2.5", "--frames: expected");
+    assert_rejected("render s.json -o x.png --frames", "--frames: expected");
+    assert_rejected("render s.json -o x.png --frames 3 --fps 0",
+                    "--fps: expected a whole number 1..120");
+    assert_rejected("render s.json -o x.png --frames 3 --fps 121", "--fps: expected");
+    assert_rejected("render s.json -o x.png --fps 30",
+                    "--fps applies to a sequence: add --frames N");
+    assert_rejected("compare s.json --frames 3", "--frames applies to render");
+    assert_rejected("render s.json -o x.png --frames 3 --fps 1 --time 4294966296",
+                    "--frames: the last frame would be at 4294968296 ms, past 4294967295");
 }
 
 /* Through the real binary: exit status 2, usage on stderr, nothing written. */
@@ -125,12 +171,81 @@ static void test_binary_exits_2_and_writes_nothing(void **state)
     assert_int_equal(rmdir(dir), 0); /* empty: nothing was left behind */
 }
 
+static int run_quiet(const char *command)
+{
+    int status = system(command);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+static size_t file_size(const char *path)
+{
+    struct stat st;
+    assert_int_equal(stat(path, &st), 0);
+    return (size_t)st.st_size;
+}
+
+static int same_file(const char *a, const char *b)
+{
+    size_t size = file_size(a);
+    if (size != file_size(b)) return 0;
+    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
+    assert_non_null(fa);
+    assert_non_null(fb);
+    int same = 1;
+    for (size_t k = 0; k < size && same; k++) same = fgetc(fa) == fgetc(fb);
+    fclose(fa);
+    fclose(fb);
+    return same;
+}
+
+/* --frames 3 on a scene whose normal maps pan: three numbered files, each different;
+ * then a sequence that fails at its second frame leaves none of its frames. */
+static void test_binary_writes_a_sequence(void **state)
+{
+    (void)state;
+    const char *tarn = getenv("TARN_BIN");
+    if (tarn == NULL) skip();
+    char dir[] = "/tmp/tarn-frames-XXXXXX", command[512], frame[3][64];
+    assert_non_null(mkdtemp(dir));
+    snprintf(command, sizeof command,
+             "%s render scenes/effects/normals.json -o %s/out.png --frames 3 --fps 4", tarn, dir);
+    assert_int_equal(run_quiet(command), 0);
+    for (int k = 0; k < 3; k++) snprintf(frame[k], sizeof frame[k], "%s/out-%04d.png", dir, k);
+    assert_false(same_file(frame[0], frame[1]));
+    assert_false(same_file(frame[1], frame[2]));
+    assert_false(same_file(frame[0], frame[2]));
+    char stray[64];
+    snprintf(stray, sizeof stray, "%s/out.png", dir);
+    assert_int_not_equal(access(stray, F_OK), 0); /* only the numbered frames */
+    for (int k = 0; k < 3; k++) assert_int_equal(unlink(frame[k]), 0);
+
+    /* frame 1's name is taken by a directory that cannot be replaced */
+    char blocker[80], inside[96];
+    snprintf(blocker, sizeof blocker, "%s/out-0001.png", dir);
+    snprintf(inside, sizeof inside, "%s/keep", blocker);
+    assert_int_equal(mkdir(blocker, 0755), 0);
+    FILE *f = fopen(inside, "w");
+    assert_non_null(f);
+    fclose(f);
+    snprintf(command, sizeof command,
+             "%s render scenes/effects/normals.json -o %s/out.png --frames 3 2>/dev/null", tarn,
+             dir);
+    assert_int_equal(run_quiet(command), 2);
+    assert_int_not_equal(access(frame[0], F_OK), 0); /* frame 0 was written, then removed */
+    assert_int_not_equal(access(frame[2], F_OK), 0);
+    assert_int_equal(unlink(inside), 0);
+    assert_int_equal(rmdir(blocker), 0);
+    assert_int_equal(rmdir(dir), 0); /* empty: nothing else was left behind */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_good_lines_parse),
         cmocka_unit_test(test_bad_lines_name_what_was_expected),
         cmocka_unit_test(test_binary_exits_2_and_writes_nothing),
+        cmocka_unit_test(test_frame_sequences_parse),
+        cmocka_unit_test(test_binary_writes_a_sequence),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
