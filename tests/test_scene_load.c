@@ -646,7 +646,7 @@ static void test_pond(void **state)
     assert_true(down >= 30 && down <= 40);
 
     assert_int_equal(s.material_count, 6);
-    assert_int_equal(s.texture_count, 1);
+    assert_int_equal(s.texture_count, 4); /* ground, two normal maps, foam */
     assert_int_equal(s.textures[0].width, 64);
     assert_int_equal(s.textures[0].height, 64);
     assert_ptr_equal(s.materials[0].texture, &s.textures[0]);
@@ -675,6 +675,16 @@ static void test_pond(void **state)
     assert_int_equal(s.objects[0].mesh->triangle_count, 63 * 63 * 2);
     check_faces_up(s.objects[11].mesh);
     assert_int_equal(s.objects[11].mesh->triangle_count, 2);
+    /* the seeds' water: fog #4E83A9 at 0.15, refraction 0.25 within the apron at 240 */
+    const tarn_water *water = s.objects[11].material->water;
+    assert_ptr_equal(water, &s.waters[5]);
+    assert_int_equal(water->fog_rgb, 0x4E83A9);
+    assert_int_equal(water->fog_density, 9830);
+    assert_int_equal(water->refraction, 16384);
+    assert_true(tarn_water_reach_pixels(water, 240) <= (int32_t)TARN_WATER_APRON_MAX);
+    assert_ptr_equal(water->normal_a, &s.textures[1]);
+    assert_ptr_equal(water->normal_b, &s.textures[2]);
+    assert_ptr_equal(water->foam_texture, &s.textures[3]);
     print_message("pond: %zu objects, %u triangles\n", s.object_count, triangles);
     tarn_scene_free(&s);
     assert_null(s.objects);
@@ -918,6 +928,9 @@ typedef struct {
 } water_scene;
 
 static const water_scene WATER_SCENES[] = {
+    { "scenes/pond.json",
+      TARN_WATER_FOG | TARN_WATER_NORMALS | TARN_WATER_REFRACTION | TARN_WATER_FRESNEL |
+          TARN_WATER_SPECULAR | TARN_WATER_FOAM, 0, 0 },
     { "scenes/beach.json",
       TARN_WATER_DEPTH_COLOUR | TARN_WATER_NORMALS | TARN_WATER_FRESNEL | TARN_WATER_FOAM |
           TARN_WATER_SPARKLES, 1, 0 },
