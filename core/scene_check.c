@@ -30,7 +30,8 @@ static int optional_texture_valid(const tarn_texture *t)
 static int water_valid(const tarn_water *w)
 {
     if ((w->features & TARN_WATER_NORMALS) && w->normal_a == NULL) return 0;
-    if ((w->features & TARN_WATER_FOAM) && w->foam_texture == NULL) return 0;
+    if ((w->features & TARN_WATER_FOAM) && (w->foam_texture == NULL || w->foam_distance <= 0)) return 0;
+    if ((w->features & TARN_WATER_DEPTH_COLOUR) && w->depth_scale <= 0) return 0;
     return optional_texture_valid(w->normal_a) && optional_texture_valid(w->normal_b) &&
            optional_texture_valid(w->foam_texture) && optional_texture_valid(w->colour_ramp) &&
            w->specular_power >= 1 && w->specular_power <= 256 &&
@@ -46,10 +47,16 @@ static int mesh_valid(const tarn_mesh *m)
     return clusters_valid(m);
 }
 
+static int underwater_valid(const tarn_underwater *u)
+{
+    return u->normal_map != NULL && texture_valid(u->normal_map);
+}
+
 tarn_status tarn_scene_check(const tarn_scene *scene)
 {
     if (scene == NULL || (scene->object_count > 0 && scene->objects == NULL)) return TARN_ERR_SCENE;
     if (scene->camera.near <= 0 || scene->camera.far <= scene->camera.near) return TARN_ERR_SCENE;
+    if (scene->underwater != NULL && !underwater_valid(scene->underwater)) return TARN_ERR_SCENE;
     for (uint32_t i = 0; i < scene->object_count; i++) {
         const tarn_object *o = &scene->objects[i];
         if (o->mesh == NULL || o->material == NULL || !mesh_valid(o->mesh)) return TARN_ERR_SCENE;

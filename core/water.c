@@ -118,10 +118,11 @@ static water_normal surface_normal(const tarn_water_context *w, const tarn_water
     if (n.has_b) decode_normal(panned_texel(water->normal_b, &water->pan_b, w->pan_b, in), b);
     n.a_x = a[0];
     n.b_x = b[0];
-    /* strength (Q16.16 <= 8, taken as Q5.11) times a sum of two Q1.15 components */
-    const int32_t strength_q11 = water->normal_strength >> 5;
-    int32_t v[3] = {((a[0] + b[0]) * strength_q11) >> 11, ((a[1] + b[1]) * strength_q11) >> 11,
-                    (a[2] * b[2]) >> 15};
+    /* strength (Q16.16) times a sum of two Q1.15 components, in Q2.14 with all of
+     * the strength's bits: (a + b) * 2^15 * strength / 2^32 */
+    const uint32_t strength = (uint32_t)water->normal_strength;
+    int32_t v[3] = {tarn_mul_hi_s32_u32((a[0] + b[0]) * 32768, strength),
+                    tarn_mul_hi_s32_u32((a[1] + b[1]) * 32768, strength), (a[2] * b[2]) >> 16};
     /* the largest component to [2^13, 2^14): read as Q2.13, |v| is in [1, 2 sqrt 3) */
     int32_t largest = 0;
     for (int k = 0; k < 3; k++) largest |= v[k] < 0 ? -v[k] : v[k];
@@ -274,8 +275,9 @@ static void add_foam(const tarn_water_context *w, const tarn_water_input *in, ui
     const uint16_t turns = (uint16_t)(water->foam_line_count * (f - w->foam_phase));
     int32_t wave = tarn_sin_q15(turns);
     uint32_t lines = wave > 0 ? ((uint32_t)wave * ((Q16_ONE - f) >> 1)) >> 14 : 0u; /* Q0.16 */
-    const uint32_t t = (uint32_t)panned_texel(water->foam_texture, &water->foam_pan, w->foam_pan, in)[0] * 257u;
-    if ((int32_t)t < (int32_t)f - (int32_t)lines) return;
+    /* foam where red / 255 >= f - lines: compared exactly, red * 2^16 against 255 * (f - lines) */
+    const int32_t red = panned_texel(water->foam_texture, &water->foam_pan, w->foam_pan, in)[0];
+    if (red * 65536 < 255 * ((int32_t)f - (int32_t)lines)) return; /* both below 2^24 */
     const int32_t opacity = (int32_t)((uint32_t)water->foam_opacity >> 1);
     for (int c = 0; c < 3; c++) {
         const int32_t foam = (int32_t)channel_q8(water->foam_rgb, c);

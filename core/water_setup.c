@@ -104,7 +104,9 @@ void tarn_underwater_setup(tarn_underwater_context *u, const tarn_view *view,
     u->recip_steps = config->quality.recip_newton_steps;
     u->pan[0] = tarn_water_pan_offset(under->pan.speed_u, config->time_ms);
     u->pan[1] = tarn_water_pan_offset(under->pan.speed_v, config->time_ms);
-    u->screen_u_per_half = (uint32_t)(((uint64_t)1 << 32) / (2u * config->width));
+    /* rounded up: a pixel centre exactly on a texel edge must land on the texel
+     * above it, as floor() puts it, not a hair below */
+    u->screen_u_per_half = (uint32_t)((((uint64_t)1 << 32) + 2u * config->width - 1u) / (2u * config->width));
     int64_t px = (int64_t)under->distortion * config->width;
     u->distortion_px = px > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)px;
 }
