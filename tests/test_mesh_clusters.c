@@ -88,7 +88,7 @@ static void test_malformed_runs_are_rejected(void **state)
     tarn_loaded_scene *pond = load_pond();
     tarn_mesh *mesh = &pond->meshes[0].mesh;
     tarn_frame_config config = {64, 64, tarn_quality_default(), 0};
-    size_t need = tarn_frame_memory_bytes(&config, NULL);
+    size_t need = tarn_frame_memory_bytes(&config, &pond->scene);
     void *memory = malloc(need);
     mesh->cluster_count--; /* the last triangles are in no run */
     assert_int_equal(tarn_render_frame(&pond->scene, &config, memory, need, NULL, NULL), TARN_ERR_SCENE);
