@@ -152,6 +152,13 @@ static int depth_pass(void *depth, int depth_bits, int32_t offset, uint32_t inv_
     return 1;
 }
 
+/* T / 2^shift rounded to nearest: the water's panned maps multiply u and v by
+ * their scale, which would multiply a truncation's bias too. */
+static uint32_t rounded_shift(uint32_t t, unsigned shift)
+{
+    return shift == 0u ? t : (t + (1u << (shift - 1u))) >> shift;
+}
+
 /* The water pixel's inputs from the interpolated attributes. */
 static tarn_water_input water_input(const attribute_set *set, const uint32_t values[ATTRIBUTES_MAX],
                                     uint32_t inv_depth)
@@ -159,8 +166,8 @@ static tarn_water_input water_input(const attribute_set *set, const uint32_t val
     tarn_water_input in;
     in.inv_depth = inv_depth;
     for (int c = 0; c < 3; c++) in.lit[c] = values[c] >> set->t_shift[c];
-    in.u = (values[ATTRIBUTE_U] >> set->t_shift[ATTRIBUTE_U]) + set->u_base;
-    in.v = (values[ATTRIBUTE_V] >> set->t_shift[ATTRIBUTE_V]) + set->v_base;
+    in.u = rounded_shift(values[ATTRIBUTE_U], set->t_shift[ATTRIBUTE_U]) + set->u_base;
+    in.v = rounded_shift(values[ATTRIBUTE_V], set->t_shift[ATTRIBUTE_V]) + set->v_base;
     in.fresnel = set->count > ATTRIBUTE_FRESNEL ? values[ATTRIBUTE_FRESNEL] >> set->t_shift[ATTRIBUTE_FRESNEL] : 0u;
     return in;
 }

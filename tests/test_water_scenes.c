@@ -1,0 +1,67 @@
+/* test_water_scenes.c: every water scene, and every one-effect scene, against the
+ * float reference at default quality: at least 42 dB and 99% of pixels within 2
+ * levels. The reference rasterizes the core's own snapped triangles, so a failure
+ * here is the water arithmetic, and the one-effect scenes name the effect.
+ * (Transform precision is measured by test_raster.c; docs/figures.md has both.) */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <cmocka.h>
+
+#include "compare.h"
+#include "core_render.h"
+#include "reference.h"
+#include "scene_load.h"
+
+static const char *const scenes[] = {
+    "scenes/pond.json", "scenes/beach.json", "scenes/murky.json", "scenes/lake.json",
+    "scenes/underwater.json", "scenes/effects/fog.json", "scenes/effects/absorption.json",
+    "scenes/effects/depth_colour.json", "scenes/effects/ramp.json", "scenes/effects/refraction.json",
+    "scenes/effects/normals.json", "scenes/effects/fresnel.json", "scenes/effects/foam.json",
+    "scenes/effects/sparkles.json", "scenes/effects/underwater.json",
+};
+
+static tarn_compare_metrics compare_scene(const char *path, uint32_t time_ms)
+{
+    tarn_loaded_scene s;
+    tarn_error err;
+    if (tarn_scene_load(path, &s, &err) != 0) fail_msg("%s", err.message);
+    tarn_frame_config config = {s.width, s.height, tarn_quality_default(), time_ms};
+    const size_t pixels = (size_t)s.width * s.height;
+    uint8_t *core = malloc(3 * pixels), *ref = malloc(3 * pixels);
+    if (tarn_core_render(&s.scene, &config, core, NULL, &err) != 0) fail_msg("%s: %s", path, err.message);
+    tarn_reference_options options = {.snapped = 1, .subpixel_bits = config.quality.subpixel_bits,
+                                      .time_ms = time_ms};
+    assert_int_equal(tarn_reference_render(&s.scene, s.width, s.height, &options, ref, NULL), 0);
+    tarn_compare_metrics m;
+    tarn_compare_images(core, ref, NULL, NULL, s.width, s.height, &m);
+    free(core);
+    free(ref);
+    tarn_scene_free(&s);
+    return m;
+}
+
+static void test_every_scene_within_the_bounds(void **state)
+{
+    (void)state;
+    static const uint32_t times[] = {0, 1234};
+    for (size_t t = 0; t < 2; t++)
+        for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
+            tarn_compare_metrics m = compare_scene(scenes[k], times[t]);
+            print_message("%-34s t=%-5u psnr=%6.2f over2=%.3f%%\n", scenes[k], times[t], m.psnr_db,
+                          100 * m.share_over2);
+            if (m.psnr_db < 42.0 || m.share_over2 > 0.01)
+                fail_msg("%s at %u ms: %.2f dB, %.3f%% of pixels off by more than 2", scenes[k],
+                         times[t], m.psnr_db, 100 * m.share_over2);
+        }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_every_scene_within_the_bounds),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
