@@ -52,6 +52,7 @@ test: deps-test
 	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
 	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
 	@$(MAKE) --no-print-directory core-purity
+	@TARN_BIN=build/release/tarn tests/check_water_cost.sh
 	@cat build/release/summary build/san/summary | \
 		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'
 

@@ -17,6 +17,7 @@ if [ "${1:-demo}" = test ]; then
     want gcc-arm-none-eabi command -v arm-none-eabi-gcc
     want libnewlib-arm-none-eabi test -e /usr/lib/arm-none-eabi/newlib
     want binutils-arm-none-eabi command -v arm-none-eabi-nm
+    want valgrind command -v callgrind_annotate
 fi
 [ -z "$need" ] && exit 0
 

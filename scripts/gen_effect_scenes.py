@@ -97,6 +97,9 @@ def main():
         write(name, scene(water, ABOVE, LIGHTS.get(name, FRONT_LIGHT)))
     # the camera under the surface, which hides the surface itself (its back face)
     write("underwater", scene(None, BELOW, FRONT_LIGHT, UNDERWATER))
+    # the same pool with no water at all: the baseline the effects' costs are read
+    # against, and the proof that a scene without water does no water work
+    write("none", scene(None, ABOVE, FRONT_LIGHT))
 
 
 if __name__ == "__main__":
