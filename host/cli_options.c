@@ -10,6 +10,7 @@ const char tarn_cli_usage[] =
     "                   [--reference [--snapped]] [QUALITY]\n"
     "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]\n"
     "       tarn accuracy --math\n"
+    "       tarn memory SCENE [--size WxH] [QUALITY]\n"
     "QUALITY: --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
     "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n";
 
@@ -122,7 +123,8 @@ static int parse_command(const char *word, tarn_cli_options *o, tarn_error *err)
     if (word && strcmp(word, "render") == 0) o->command = TARN_CMD_RENDER;
     else if (word && strcmp(word, "compare") == 0) o->command = TARN_CMD_COMPARE;
     else if (word && strcmp(word, "accuracy") == 0) o->command = TARN_CMD_ACCURACY;
-    else return tarn_fail(err, "unknown command '%s'; expected render, compare or accuracy", word ? word : "");
+    else if (word && strcmp(word, "memory") == 0) o->command = TARN_CMD_MEMORY;
+    else return tarn_fail(err, "unknown command '%s'; expected render, compare, accuracy or memory", word ? word : "");
     return 0;
 }
 
@@ -211,7 +213,7 @@ int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
 {
     memset(o, 0, sizeof *o);
     o->quality = tarn_quality_default();
-    if (argc < 2) return tarn_fail(err, "expected a command: render, compare or accuracy");
+    if (argc < 2) return tarn_fail(err, "expected a command: render, compare, accuracy or memory");
     if (parse_command(argv[1], o, err) != 0) return -1;
     for (int i = 2; i < argc; i++) {
         const char *arg = argv[i];

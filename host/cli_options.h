@@ -4,6 +4,7 @@
  *               [--reference [--snapped]] [QUALITY]
  *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]
  *   tarn accuracy --math
+ *   tarn memory SCENE [--size WxH] [QUALITY]   (the working memory a frame needs)
  * QUALITY knobs (defaults from tarn_quality_default()):
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
  *   --depth 16|32  --recip-steps N (0..2)  --exp2 N[:nearest|:linear] (8..256) */
@@ -15,7 +16,7 @@
 #include "error.h"
 #include "tarn_render.h"
 
-typedef enum { TARN_CMD_RENDER, TARN_CMD_COMPARE, TARN_CMD_ACCURACY } tarn_command;
+typedef enum { TARN_CMD_RENDER, TARN_CMD_COMPARE, TARN_CMD_ACCURACY, TARN_CMD_MEMORY } tarn_command;
 
 typedef struct {
     tarn_command command;

@@ -68,6 +68,22 @@ static int render_reference(const tarn_loaded_scene *scene, const tarn_frame_con
 typedef int (*scene_action)(const tarn_cli_options *o, const tarn_loaded_scene *scene,
                             const tarn_frame_config *config, tarn_error *err);
 
+/* The loader checks refraction at the scene's own width; a --size can widen the
+ * frame past what the apron holds. */
+static int check_refraction_reach(const char *path, const tarn_loaded_scene *scene,
+                                  const tarn_frame_config *config, tarn_error *err)
+{
+    for (size_t m = 0; m < scene->material_count; m++) {
+        int32_t reach = tarn_water_reach_pixels(scene->materials[m].water, config->width);
+        if (reach > (int32_t)TARN_WATER_APRON_MAX)
+            return tarn_fail(err, "%s: materials.%s.water.refraction reaches %d pixels at width %u; the apron "
+                             "holds %u (lower refraction or normal_strength, or render narrower)",
+                             path, scene->material_names[m], (int)reach, config->width,
+                             TARN_WATER_APRON_MAX);
+    }
+    return 0;
+}
+
 /* Loads the scene, runs the action on it and reports any failure as one line. */
 static int run_on_scene(const tarn_cli_options *o, scene_action action)
 {
@@ -75,7 +91,8 @@ static int run_on_scene(const tarn_cli_options *o, scene_action action)
     tarn_loaded_scene scene;
     if (tarn_scene_load(o->scene_path, &scene, &err) != 0) return report(&err);
     tarn_frame_config config = frame_config(o, &scene);
-    int failed = action(o, &scene, &config, &err);
+    int failed = check_refraction_reach(o->scene_path, &scene, &config, &err) ||
+                 action(o, &scene, &config, &err);
     tarn_scene_free(&scene);
     return failed ? report(&err) : 0;
 }
@@ -174,6 +191,25 @@ static int compare_with_reference(const tarn_cli_options *o, const tarn_loaded_s
 int tarn_command_compare(const tarn_cli_options *o)
 {
     return run_on_scene(o, compare_with_reference);
+}
+
+static int print_memory(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+                        const tarn_frame_config *config, tarn_error *err)
+{
+    (void)o;
+    size_t bytes = tarn_frame_memory_bytes(config, &scene->scene);
+    if (bytes == 0)
+        return tarn_fail(err, "%s: %ux%u with these quality settings: %s", scene->name, config->width,
+                         config->height, tarn_status_text(TARN_ERR_CONFIG));
+    printf("memory scene=%s size=%ux%u tile=%u depth_bits=%u apron=%d bytes=%zu\n", scene->name,
+           config->width, config->height, config->quality.tile_size, config->quality.depth_bits,
+           (int)tarn_frame_apron_pixels(&scene->scene, config), bytes);
+    return 0;
+}
+
+int tarn_command_memory(const tarn_cli_options *o)
+{
+    return run_on_scene(o, print_memory);
 }
 
 int tarn_command_accuracy(const tarn_cli_options *o)

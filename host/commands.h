@@ -9,5 +9,8 @@
 int tarn_command_render(const tarn_cli_options *options);
 int tarn_command_compare(const tarn_cli_options *options);
 int tarn_command_accuracy(const tarn_cli_options *options);
+/* Prints the renderer's working memory for the scene at this size and quality:
+ *   memory scene=NAME size=WxH tile=N depth_bits=N apron=N bytes=N */
+int tarn_command_memory(const tarn_cli_options *options);
 
 #endif

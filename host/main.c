@@ -16,6 +16,7 @@ int main(int argc, char **argv)
     case TARN_CMD_RENDER: return tarn_command_render(&options);
     case TARN_CMD_COMPARE: return tarn_command_compare(&options);
     case TARN_CMD_ACCURACY: return tarn_command_accuracy(&options);
+    case TARN_CMD_MEMORY: return tarn_command_memory(&options);
     }
     return TARN_EXIT_BAD_INPUT;
 }

@@ -68,6 +68,8 @@ static void test_good_lines_parse(void **state)
     assert_string_equal(o.diff_path, "heat.png");
     assert_int_equal(parse("accuracy --math", &o, &err), 0);
     assert_true(o.math);
+    assert_int_equal(parse("memory s.json --tile 16 --depth 16", &o, &err), 0);
+    assert_int_equal(o.command, TARN_CMD_MEMORY);
     assert_int_equal(o.frames, 0);
 }
 
@@ -168,6 +170,11 @@ static void test_binary_exits_2_and_writes_nothing(void **state)
     snprintf(command, sizeof command, "%s render scenes/pond.json -o %s/missing/out.png 2>/dev/null", tarn, dir);
     status = system(command);
     assert_int_equal(WEXITSTATUS(status), 2);
+    /* a --size that widens refraction past the apron: a clear error, no file */
+    snprintf(command, sizeof command, "%s render scenes/pond.json --size 1024x1024 -o %s 2>/dev/null", tarn, out);
+    status = system(command);
+    assert_int_equal(WEXITSTATUS(status), 2);
+    assert_int_not_equal(stat(out, &st), 0);
     assert_int_equal(rmdir(dir), 0); /* empty: nothing was left behind */
 }
 
