@@ -239,6 +239,59 @@ static void test_coplanar_water_and_camera_on_the_surface(void **state)
     free(wet);
 }
 
+/* Flat maps refract nothing; all-extreme maps (every component at its limit) with
+ * the strongest refraction the apron allows, and a grazing view along the surface
+ * to the horizon, render without breaking. */
+static void test_extreme_normal_maps_and_views(void **state)
+{
+    (void)state;
+    water_scene *plain = new_scene(1), *flat = new_scene(1);
+    plain->water.features = flat->water.features = TARN_WATER_FOG;
+    plain->water.fog_density = flat->water.fog_density = TARN_Q16_ONE / 8;
+    constant_normal_map(flat, 128, 128); /* decodes to (0.004, 0.004, 1) */
+    flat->water.normal_xy_max = TARN_Q16_ONE / 200;
+    flat->water.features |= TARN_WATER_REFRACTION;
+    flat->water.refraction = TARN_Q16_ONE;
+    uint8_t *a = render(plain, config_of()), *b = render(flat, config_of());
+    assert_memory_equal(a, b, 3u * W * H);
+    free(a);
+    free(b);
+    static const uint8_t extremes[][3] = {{0, 0, 0}, {255, 255, 0}, {0, 255, 255}, {255, 0, 128}};
+    for (size_t e = 0; e < sizeof extremes / sizeof extremes[0]; e++) {
+        water_scene *wet = new_scene(1);
+        constant_normal_map(wet, extremes[e][0], extremes[e][1]);
+        for (int t = 0; t < 16; t++) wet->normal_texels[3 * t + 2] = extremes[e][2];
+        wet->water.features |= TARN_WATER_REFRACTION | TARN_WATER_SPECULAR | TARN_WATER_SPARKLES;
+        wet->water.refraction = (tarn_q16)(31 * TARN_Q16_ONE / W); /* reach: 31 + 1 = the apron */
+        wet->water.specular = TARN_Q16_ONE;
+        wet->water.sparkle_amount = TARN_Q16_ONE;
+        tarn_frame_config config = config_of();
+        assert_int_equal(tarn_frame_apron_pixels(&wet->b.scene, &config), 32);
+        free(render(wet, config));
+        free(wet);
+    }
+    water_scene *grazing = new_scene(1);
+    builder_init(&grazing->b, 0, 0.001, 0, 0, 0.001, -1); /* a hair above the surface y = 0 */
+    builder_begin_object(&grazing->b, 0x806040, TARN_CULL_NONE);
+    builder_grid(&grazing->b, 0, -1, -500, 1000, 1, 4, 4);
+    builder_begin_object(&grazing->b, 0xFFFFFF, TARN_CULL_NONE);
+    uint16_t v[4];
+    const double corners[4][2] = {{-900, -999}, {900, -999}, {900, -0.2}, {-900, -0.2}};
+    for (int k = 0; k < 4; k++) v[k] = builder_vertex(&grazing->b, corners[k][0], 0, corners[k][1]);
+    builder_triangle(&grazing->b, v[0], v[2], v[1]);
+    builder_triangle(&grazing->b, v[0], v[3], v[2]);
+    grazing->b.materials[1].water = &grazing->water;
+    grazing->water.features = TARN_WATER_FOG | TARN_WATER_FOAM;
+    grazing->water.fog_density = TARN_Q16_ONE;
+    grazing->water.foam_distance = TARN_Q16_ONE;
+    constant_normal_map(grazing, 200, 60);
+    grazing->water.foam_texture = &grazing->normal_map;
+    free(render(grazing, config_of()));
+    free(grazing);
+    free(plain);
+    free(flat);
+}
+
 static void test_opaque_scenes_pay_nothing_for_water(void **state)
 {
     (void)state;
@@ -262,6 +315,7 @@ int main(void)
         cmocka_unit_test(test_tiles_do_not_show_with_the_apron),
         cmocka_unit_test(test_time_near_the_wrap),
         cmocka_unit_test(test_coplanar_water_and_camera_on_the_surface),
+        cmocka_unit_test(test_extreme_normal_maps_and_views),
         cmocka_unit_test(test_opaque_scenes_pay_nothing_for_water),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
