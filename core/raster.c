@@ -94,7 +94,7 @@ static void span_t(const attribute_set *set, const triangle_setup *t, int32_t sp
                    int32_t i, int32_t j, span_cache *cache, uint32_t out[ATTRIBUTES_MAX])
 {
     const unsigned log2_span = 31u - tarn_clz32((uint32_t)span);
-    const int32_t grid = (int32_t)((uint32_t)floor_shift(i, log2_span) << log2_span);
+    const int32_t grid = (int32_t)((uint32_t)tarn_floor_shift(i, log2_span) << log2_span);
     const int32_t start = grid > t->box.x0 ? grid : t->box.x0;
     if (cache->start != start) {
         const int32_t end = grid + span < t->box.x1 ? grid + span : t->box.x1;

@@ -76,10 +76,10 @@ pixel_box tarn_triangle_pixels(const triangle_setup *t)
         if (t->v[k]->y > max_y) max_y = t->v[k]->y;
     }
     pixel_box box;
-    box.x0 = -floor_shift(half - min_x, s); /* ceil((min - half) / 2^s) */
-    box.y0 = -floor_shift(half - min_y, s);
-    box.x1 = floor_shift(max_x - half, s);
-    box.y1 = floor_shift(max_y - half, s);
+    box.x0 = -tarn_floor_shift(half - min_x, s); /* ceil((min - half) / 2^s) */
+    box.y0 = -tarn_floor_shift(half - min_y, s);
+    box.x1 = tarn_floor_shift(max_x - half, s);
+    box.y1 = tarn_floor_shift(max_y - half, s);
     return box;
 }
 
@@ -128,7 +128,7 @@ static void texture_coordinates(const triangle_setup *t, int axis, uint32_t out[
     for (int n = 0; n < 3; n++) c[n] = axis == 0 ? t->v[n]->uv.u : t->v[n]->uv.v;
     low = c[0] < c[1] ? c[0] : c[1];
     low = low < c[2] ? low : c[2];
-    int32_t whole = floor_shift(low, 16);
+    int32_t whole = tarn_floor_shift(low, 16);
     *base = (uint32_t)whole << 16;
     for (int n = 0; n < 3; n++) out[n] = (uint32_t)c[n] - *base;
 }

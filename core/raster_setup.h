@@ -65,12 +65,6 @@ typedef struct {
 
 /* ---- per-pixel helpers shared with setup (32-bit arithmetic only) ------------ */
 
-static inline int32_t floor_shift(int32_t v, unsigned s)
-{
-    /* floor(v / 2^s) without relying on >> of a negative number */
-    return v >= 0 ? (v >> s) : -(int32_t)((((uint32_t)0 - (uint32_t)v) + ((1u << s) - 1u)) >> s);
-}
-
 static inline int32_t pixel_centre(int32_t pixel, unsigned s)
 {
     return (int32_t)((uint32_t)pixel << s) + (int32_t)(1u << (s - 1));

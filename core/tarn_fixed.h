@@ -63,6 +63,13 @@ static inline tarn_q16 tarn_q16_from_int(int32_t v)
     return tarn_sat_i64_to_i32((int64_t)v * 65536);
 }
 
+/* floor(v / 2^s) without relying on >> of a negative number (implementation-defined
+ * in C99): the same on every compiler. s < 32. */
+static inline int32_t tarn_floor_shift(int32_t v, unsigned s)
+{
+    return v >= 0 ? (v >> s) : -(int32_t)((((uint32_t)0 - (uint32_t)v) + ((1u << s) - 1u)) >> s);
+}
+
 static inline int tarn_is_power_of_two(uint32_t v)
 {
     return v != 0u && (v & (v - 1u)) == 0u;

@@ -4,16 +4,6 @@
 
 #include "water.h"
 
-static int32_t floor_shift(int32_t v, unsigned s)
-{
-    return v >= 0 ? (v >> s) : -(int32_t)((((uint32_t)0 - (uint32_t)v) + ((1u << s) - 1u)) >> s);
-}
-
-static int32_t clamp_to(int32_t v, int32_t lo, int32_t hi_exclusive)
-{
-    return v < lo ? lo : (v >= hi_exclusive ? hi_exclusive - 1 : v);
-}
-
 static uint32_t depth_q30(const tarn_underwater_context *u, int32_t offset)
 {
     if (u->depth_bits == 16) return (uint32_t)((const uint16_t *)u->depth)[offset] << 14;
@@ -34,10 +24,10 @@ static int32_t displaced_offset(const tarn_underwater_context *u, int32_t i, int
     for (int k = 0; k < 2; k++) {
         /* N (Q1.15) * pixels per unit normal (Q16.16) / 2^23 -> pixels, Q24.8 */
         int32_t offset_q8 = tarn_mul_hi_s32_u32(tarn_water_normal_component(texel[k]) * 512, u->distortion_px);
-        target[k] += floor_shift(tarn_clamp_i32(offset_q8, -(64 << 8), 64 << 8) + 128, 8);
+        target[k] += tarn_floor_shift(tarn_clamp_i32(offset_q8, -(64 << 8), 64 << 8) + 128, 8);
     }
-    const int32_t x = clamp_to(target[0], u->sample_rect.x0, u->sample_rect.x1);
-    const int32_t y = clamp_to(target[1], u->sample_rect.y0, u->sample_rect.y1);
+    const int32_t x = tarn_clamp_i32(target[0], u->sample_rect.x0, u->sample_rect.x1 - 1);
+    const int32_t y = tarn_clamp_i32(target[1], u->sample_rect.y0, u->sample_rect.y1 - 1);
     return (y - u->origin_y) * u->stride + (x - u->origin_x);
 }
 

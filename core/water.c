@@ -25,11 +25,6 @@ uint32_t tarn_water_repeat_fraction(uint32_t a, uint32_t b)
     return (ah * bl + al * bh + ((al * bl) >> 16)) & 0xFFFFu;
 }
 
-static int32_t floor_shift(int32_t v, unsigned s)
-{
-    return v >= 0 ? (v >> s) : -(int32_t)((((uint32_t)0 - (uint32_t)v) + ((1u << s) - 1u)) >> s);
-}
-
 static uint32_t channel_q8(uint32_t rgb, int c)
 {
     return ((rgb >> (16 - 8 * c)) & 0xFFu) << 8;
@@ -128,7 +123,7 @@ static water_normal surface_normal(const tarn_water_context *w, const tarn_water
     for (int k = 0; k < 3; k++) largest |= v[k] < 0 ? -v[k] : v[k];
     if (largest == 0) return n;
     const int shift = (int)(31u - tarn_clz32((uint32_t)largest)) - 13;
-    for (int k = 0; k < 3; k++) v[k] = shift >= 0 ? floor_shift(v[k], (unsigned)shift) : v[k] * (1 << -shift);
+    for (int k = 0; k < 3; k++) v[k] = shift >= 0 ? tarn_floor_shift(v[k], (unsigned)shift) : v[k] * (1 << -shift);
     const uint32_t length2 = (uint32_t)(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); /* Q4.26, < 2^30 */
     const int32_t inverse = (int32_t)tarn_rsqrt_q16(length2 >> 10);            /* 1/|v|, Q16.16 <= 1 */
     n.x = (v[0] * inverse) >> 14; /* Q2.13 * Q16.16 -> Q1.15 */
@@ -152,11 +147,6 @@ static background_sample sample_background(const tarn_water_context *w, int32_t 
     return s;
 }
 
-static int32_t clamp_to(int32_t v, int32_t lo, int32_t hi_exclusive)
-{
-    return v < lo ? lo : (v >= hi_exclusive ? hi_exclusive - 1 : v);
-}
-
 /* Step 2: the refracted sample, or the pixel's own when it would land in front. */
 static background_sample refracted(const tarn_water_context *w, int32_t i, int32_t j,
                                    const water_normal *n, uint32_t surface_depth)
@@ -172,10 +162,10 @@ static background_sample refracted(const tarn_water_context *w, int32_t i, int32
         int32_t offset_q8 = tarn_mul_hi_s32_u32(normal[k] * 512, w->refraction_px);
         offset_q8 = tarn_clamp_i32(offset_q8, -(64 << 8), 64 << 8);
         offset_q8 = (offset_q8 * (int32_t)(reach >> 1)) / Q15_ONE; /* times saturate(db - ds) */
-        target[k] += floor_shift(offset_q8 + 128, 8);
+        target[k] += tarn_floor_shift(offset_q8 + 128, 8);
     }
-    target[0] = clamp_to(target[0], w->sample_rect.x0, w->sample_rect.x1);
-    target[1] = clamp_to(target[1], w->sample_rect.y0, w->sample_rect.y1);
+    target[0] = tarn_clamp_i32(target[0], w->sample_rect.x0, w->sample_rect.x1 - 1);
+    target[1] = tarn_clamp_i32(target[1], w->sample_rect.y0, w->sample_rect.y1 - 1);
     background_sample shifted = sample_background(w, target[0], target[1]);
     return shifted.depth < surface_depth ? own : shifted;
 }
