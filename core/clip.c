@@ -8,15 +8,15 @@ enum { PLANE_NEAR, PLANE_FAR, PLANE_LEFT, PLANE_RIGHT, PLANE_TOP, PLANE_BOTTOM, 
 /* Signed distance to a plane, positive inside; a plane's units are its own. */
 static int64_t plane_distance(const tarn_view *view, int plane, const tarn_view_vertex *v)
 {
-    const int64_t x_focal = (int64_t)v->x * view->focal_q8;  /* Q24 */
-    const int64_t y_focal = (int64_t)v->y * view->focal_q8;
+    const int64_t x_focal = (int64_t)v->x * view->focal_q12; /* Q28: below 2^59 */
+    const int64_t y_focal = (int64_t)v->y * view->focal_q12;
     switch (plane) {
     case PLANE_NEAR: return (int64_t)v->d - view->near;
     case PLANE_FAR: return (int64_t)view->far - v->d;
-    case PLANE_LEFT: return x_focal + (int64_t)view->half_extent_q8[0] * v->d;
-    case PLANE_RIGHT: return (int64_t)view->half_extent_q8[0] * v->d - x_focal;
-    case PLANE_TOP: return (int64_t)view->half_extent_q8[1] * v->d - y_focal;
-    default: return y_focal + (int64_t)view->half_extent_q8[1] * v->d;
+    case PLANE_LEFT: return x_focal + (int64_t)view->half_extent_q12[0] * v->d;
+    case PLANE_RIGHT: return (int64_t)view->half_extent_q12[0] * v->d - x_focal;
+    case PLANE_TOP: return (int64_t)view->half_extent_q12[1] * v->d - y_focal;
+    default: return y_focal + (int64_t)view->half_extent_q12[1] * v->d;
     }
 }
 

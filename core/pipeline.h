@@ -16,9 +16,9 @@
 typedef struct {
     int32_t basis[3][3];     /* rows: right, up, forward; Q1.30 unit vectors */
     tarn_vec3 eye;           /* Q16.16 world */
-    int32_t focal_q8;        /* focal length in pixels, Q24.8 */
+    int32_t focal_q12;       /* focal length in pixels, Q20.12 */
     tarn_q16 near, far;      /* Q16.16 view depth */
-    int32_t half_extent_q8[2]; /* width/2 + guard, height/2 + guard, pixels Q24.8 */
+    int32_t half_extent_q12[2]; /* width/2 + guard, height/2 + guard, pixels Q20.12 */
     int32_t guard_pixels;
     uint16_t width, height;
     uint8_t subpixel_bits;

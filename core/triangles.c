@@ -8,8 +8,8 @@
  * side * (x*focal - offset*d) >= 0 with x the view x (or -y) and offset the
  * rectangle edge's distance from the frame centre; norm = |(focal, offset)|. */
 typedef struct {
-    int32_t offset_q8[4]; /* pixels from the frame centre, Q24.8: left, right, top, bottom */
-    int64_t norm_q8[4];   /* sqrt(focal^2 + offset^2), Q.8 */
+    int32_t offset_q12[4]; /* pixels from the frame centre, Q20.12: left, right, top, bottom */
+    int64_t norm_q12[4];   /* sqrt(focal^2 + offset^2), Q.12 */
     int use_x[4];         /* 1: the plane bounds x; 0: it bounds -y (screen y runs down) */
     int side[4];          /* +1: inside where x*focal >= offset*d; -1: where <= */
     int active;           /* 0: no rectangle, every cluster is walked */
@@ -24,12 +24,12 @@ static tile_frustum make_tile_frustum(const tarn_view *view, const tarn_pixel_re
     for (int k = 0; k < 4; k++) {
         const int horizontal = k < 2;
         const int32_t centre = horizontal ? view->width : view->height; /* in half pixels */
-        f.offset_q8[k] = edges[k] * 256 - centre * 128;
+        f.offset_q12[k] = edges[k] * 4096 - centre * 2048;
         f.use_x[k] = horizontal;
         f.side[k] = (k % 2 == 0) ? 1 : -1;
-        uint64_t sum = (uint64_t)((int64_t)view->focal_q8 * view->focal_q8) +
-                       (uint64_t)((int64_t)f.offset_q8[k] * f.offset_q8[k]);
-        f.norm_q8[k] = (int64_t)tarn_isqrt_u64(sum) + 1; /* rounded up: conservative */
+        uint64_t sum = (uint64_t)((int64_t)view->focal_q12 * view->focal_q12) +
+                       (uint64_t)((int64_t)f.offset_q12[k] * f.offset_q12[k]);
+        f.norm_q12[k] = (int64_t)tarn_isqrt_u64(sum) + 1; /* rounded up: conservative */
     }
     return f;
 }
@@ -44,8 +44,8 @@ static int sphere_misses_tile(const tarn_view *view, const tile_frustum *f,
     if (!f->active) return 0;
     for (int k = 0; k < 4; k++) {
         const int64_t along = f->use_x[k] ? centre->x : -(int64_t)centre->y;
-        const int64_t signed_q24 = f->side[k] * (along * view->focal_q8 - (int64_t)f->offset_q8[k] * centre->d);
-        if (signed_q24 < -radius_q16 * f->norm_q8[k]) return 1;
+        const int64_t signed_q28 = f->side[k] * (along * view->focal_q12 - (int64_t)f->offset_q12[k] * centre->d);
+        if (signed_q28 < -radius_q16 * f->norm_q12[k]) return 1;
     }
     return 0;
 }

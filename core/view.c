@@ -57,8 +57,8 @@ static void camera_basis(const tarn_camera *camera, int32_t basis[3][3])
     cross_q30(basis[0], basis[2], basis[1]);
 }
 
-/* Focal length in pixels (Q24.8): (height / 2) / tan(fov / 2). */
-static int32_t focal_length_q8(const tarn_camera *camera, uint16_t height)
+/* Focal length in pixels (Q20.12): (height / 2) / tan(fov / 2). */
+static int32_t focal_length_q12(const tarn_camera *camera, uint16_t height)
 {
     const int64_t pi_q32 = 13493037705; /* pi * 2^32, rounded */
     tarn_q16 fov = tarn_clamp_i32(camera->fov_y_degrees, TARN_Q16_ONE, 179 * TARN_Q16_ONE);
@@ -66,7 +66,7 @@ static int32_t focal_length_q8(const tarn_camera *camera, uint16_t height)
     int32_t half_angle = (int32_t)(((int64_t)fov * pi_q32 + (180 << 17)) / (360 << 18));
     int32_t sine, cosine;
     tarn_sin_cos_q30(half_angle, &sine, &cosine);
-    return tarn_sat_i64_to_i32(((int64_t)height * 128 * cosine + sine / 2) / sine);
+    return tarn_sat_i64_to_i32(((int64_t)height * 2048 * cosine + sine / 2) / sine);
 }
 
 static uint32_t channel_q16(uint32_t rgb, int channel)
@@ -89,12 +89,12 @@ void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, t
     view->width = config->width;
     view->height = config->height;
     view->subpixel_bits = config->quality.subpixel_bits;
-    view->focal_q8 = focal_length_q8(camera, config->height);
+    view->focal_q12 = focal_length_q12(camera, config->height);
     view->near = camera->near > 0 ? camera->near : 1;
     view->far = camera->far > view->near ? camera->far : view->near;
     view->guard_pixels = tarn_guard_band_pixels(config);
-    view->half_extent_q8[0] = config->width * 128 + view->guard_pixels * 256;
-    view->half_extent_q8[1] = config->height * 128 + view->guard_pixels * 256;
+    view->half_extent_q12[0] = config->width * 2048 + view->guard_pixels * 4096;
+    view->half_extent_q12[1] = config->height * 2048 + view->guard_pixels * 4096;
     for (int c = 0; c < 3; c++) {
         view->light_q16[c] = channel_q16(scene->light.colour_rgb, c);
         view->ambient_q16[c] = channel_q16(scene->light.ambient_rgb, c);
