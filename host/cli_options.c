@@ -12,7 +12,8 @@ const char tarn_cli_usage[] =
     "       tarn accuracy --math\n"
     "       tarn memory SCENE [--size WxH] [QUALITY]\n"
     "QUALITY: --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
-    "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n";
+    "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n"
+    "         --apron on|off (refraction samples beyond the tile: rendered, or clamped)\n";
 
 /* Whole decimal number in [min, max], nothing else in the text. */
 static int parse_whole(const char *text, unsigned long min, unsigned long max, unsigned long *out)
@@ -112,6 +113,14 @@ static int parse_quality_option(const char *name, const char *value, tarn_qualit
             return 0;
         }
         return tarn_fail(err, "--depth: expected 16 or 32, got '%s'", value ? value : "");
+    }
+    if (strcmp(name, "--apron") == 0) {
+        if (value && (strcmp(value, "on") == 0 || strcmp(value, "off") == 0)) {
+            q->refraction_apron = strcmp(value, "on") == 0;
+            return 0;
+        }
+        return tarn_fail(err, "--apron: expected on (render around each tile: seamless) or off (clamp at "
+                         "the tile: less memory), got '%s'", value ? value : "");
     }
     if (strcmp(name, "--perspective") == 0) return parse_perspective(value, q, err);
     if (strcmp(name, "--exp2") == 0) return parse_exp2(value, q, err);

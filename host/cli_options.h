@@ -7,7 +7,8 @@
  *   tarn memory SCENE [--size WxH] [QUALITY]   (the working memory a frame needs)
  * QUALITY knobs (defaults from tarn_quality_default()):
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
- *   --depth 16|32  --recip-steps N (0..2)  --exp2 N[:nearest|:linear] (8..256) */
+ *   --depth 16|32  --recip-steps N (0..2)  --exp2 N[:nearest|:linear] (8..256)
+ *   --apron on|off */
 #ifndef TARN_HOST_CLI_OPTIONS_H
 #define TARN_HOST_CLI_OPTIONS_H
 

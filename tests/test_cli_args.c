@@ -70,6 +70,8 @@ static void test_good_lines_parse(void **state)
     assert_true(o.math);
     assert_int_equal(parse("memory s.json --tile 16 --depth 16", &o, &err), 0);
     assert_int_equal(o.command, TARN_CMD_MEMORY);
+    assert_int_equal(parse("render s.json -o x.png --apron off", &o, &err), 0);
+    assert_int_equal(o.quality.refraction_apron, 0);
     assert_int_equal(o.frames, 0);
 }
 
@@ -129,6 +131,7 @@ static void test_bad_lines_name_what_was_expected(void **state)
     assert_rejected("render s.json -o x.png --perspective span:128", "--perspective");
     assert_rejected("render s.json -o x.png --perspective exact", "--perspective");
     assert_rejected("render s.json -o x.png --depth 24", "--depth: expected 16 or 32");
+    assert_rejected("render s.json -o x.png --apron maybe", "--apron: expected on");
     assert_rejected("render s.json -o x.png --recip-steps 3", "--recip-steps");
     assert_rejected("render s.json -o x.png --exp2 300", "--exp2");
     assert_rejected("render s.json -o x.png --exp2 48", "--exp2");
