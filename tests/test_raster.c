@@ -337,6 +337,8 @@ static void test_pond_matches_snapped_reference(void **state)
     for (size_t m = 0; m < pond->material_count; m++) pond->materials[m].water = NULL;
     tarn_frame_config config = config_of(240, 240);
     tarn_compare_metrics m = compare_snapped(&pond->scene, &config);
+    print_message("opaque pond, snapped: %.2f dB, max error %d, %ld coverage mismatches\n", m.psnr_db,
+                  m.max_channel_error, m.coverage_mismatches);
     assert_int_equal(m.coverage_mismatches, 0);
     assert_true(m.psnr_db >= 50.0);
     assert_true(m.max_channel_error <= 2);
