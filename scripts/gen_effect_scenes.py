@@ -75,7 +75,9 @@ def scene(water, camera, light, underwater=None):
          "rotation": [0, 30, 0]},
     ]
     if water is not None:
-        objects.append({"type": "plane", "material": "water", "size": [10, 10],
+        # subdivided: a single quad's corners lie far off screen, and the whole
+        # surface's texture coordinates would hang on those clipped vertices
+        objects.append({"type": "plane", "material": "water", "size": [10, 10], "segments": [8, 8],
                         "position": [0, 0, 0]})
     out = {"frame": {"width": 120, "height": 120}, "background": "#87ceeb", "camera": camera,
            "light": light, "materials": materials}
