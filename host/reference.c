@@ -608,20 +608,38 @@ static void linear_depths(const ref_target *t, double *out)
         out[p] = t->inv_depth[p] > 0 ? t->near / t->inv_depth[p] : t->far;
 }
 
-/* Keeps copies of the opaque colour and depth for the water to read while it draws
- * over them. */
-static int render_water(const tarn_scene *scene, ref_target *t, const tarn_reference_options *opt)
+/* A copy of the frame's colour and linear depth as drawn so far: what the water
+ * pass reads while it draws over the frame, and what the underwater view displaces. */
+typedef struct {
+    uint8_t *rgb;
+    double *depth;
+} frame_snapshot;
+
+static int take_snapshot(const ref_target *t, frame_snapshot *snap)
 {
     size_t pixels = (size_t)t->width * t->height;
-    uint8_t *opaque_rgb = malloc(3 * pixels);
-    double *opaque_depth = malloc(pixels * sizeof *opaque_depth);
-    int status = TARN_ERR_MEMORY;
-    if (opaque_rgb != NULL && opaque_depth != NULL) {
-        memcpy(opaque_rgb, t->rgb, 3 * pixels);
-        linear_depths(t, opaque_depth);
+    snap->rgb = malloc(3 * pixels);
+    snap->depth = malloc(pixels * sizeof *snap->depth);
+    if (snap->rgb == NULL || snap->depth == NULL) return TARN_ERR_MEMORY;
+    memcpy(snap->rgb, t->rgb, 3 * pixels);
+    linear_depths(t, snap->depth);
+    return TARN_OK;
+}
+
+static void free_snapshot(frame_snapshot *snap)
+{
+    free(snap->rgb);
+    free(snap->depth);
+}
+
+static int render_water(const tarn_scene *scene, ref_target *t, const tarn_reference_options *opt)
+{
+    frame_snapshot opaque;
+    int status = take_snapshot(t, &opaque);
+    if (status == TARN_OK) {
         ref_camera cam = make_camera(&scene->camera, t->height);
         tarn_ref_water_view view = {
-            .width = t->width, .height = t->height, .rgb = opaque_rgb, .depth = opaque_depth,
+            .width = t->width, .height = t->height, .rgb = opaque.rgb, .depth = opaque.depth,
             .time_ms = opt->time_ms, .light = &scene->light,
             .backward = { -cam.forward.x, -cam.forward.y, -cam.forward.z },
         };
@@ -629,8 +647,7 @@ static int render_water(const tarn_scene *scene, ref_target *t, const tarn_refer
         status = render_pass(scene, t, opt, 1);
         t->water = NULL;
     }
-    free(opaque_rgb);
-    free(opaque_depth);
+    free_snapshot(&opaque);
     return status;
 }
 
@@ -640,18 +657,11 @@ static int render_underwater(const tarn_scene *scene, ref_target *t, uint32_t ti
 {
     const tarn_underwater *u = scene->underwater;
     if (u == NULL || !(scene->camera.position.y < u->level)) return TARN_OK;
-    size_t pixels = (size_t)t->width * t->height;
-    uint8_t *above = malloc(3 * pixels);
-    double *depth = malloc(pixels * sizeof *depth);
-    int status = TARN_ERR_MEMORY;
-    if (above != NULL && depth != NULL) {
-        memcpy(above, t->rgb, 3 * pixels);
-        linear_depths(t, depth);
-        tarn_ref_apply_underwater(u, t->width, t->height, time_ms, above, depth, t->rgb);
-        status = TARN_OK;
-    }
-    free(above);
-    free(depth);
+    frame_snapshot above;
+    int status = take_snapshot(t, &above);
+    if (status == TARN_OK)
+        tarn_ref_apply_underwater(u, t->width, t->height, time_ms, above.rgb, above.depth, t->rgb);
+    free_snapshot(&above);
     return status;
 }
 
