@@ -1,0 +1,94 @@
+/* tarn_panel.h: SPI display controllers (ST7789, ILI9341) as command streams.
+ *
+ * The core speaks to a panel through a transport: command bytes (DC low), data
+ * bytes (DC high), the reset line and delays. Every backend (a board's SPI+DMA, Linux
+ * spidev, an MCP2210 bridge, the emulated boards' byte stream) implements it; the
+ * drivers here are the same code on all of them.
+ *
+ * A frame goes out tile by tile (a window per tile: CASET, RASET, RAMWR, then the
+ * tile's rows) or, the fast path, as full-width bands (one window and one RAMWR per
+ * band of tiles). Pixels are RGB565, high byte first. */
+#ifndef TARN_PANEL_H
+#define TARN_PANEL_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "tarn_render.h"
+
+typedef struct {
+    void *user;
+    /* each returns 0, or non-zero when the link failed (the frame stops) */
+    int (*command)(void *user, uint8_t command);                      /* DC low */
+    int (*data)(void *user, const uint8_t *bytes, size_t count);      /* DC high */
+    int (*reset)(void *user, int asserted);                           /* NULL: no line */
+    int (*delay_ms)(void *user, uint16_t milliseconds);
+} tarn_panel_transport;
+
+typedef enum {
+    TARN_PANEL_ST7789_240X240 = 0, /* the 1.3" and 1.54" modules: 240x320 RAM, 240x240 glass */
+    TARN_PANEL_ST7789_240X320 = 1,
+    TARN_PANEL_ILI9341_320X240 = 2 /* 240x320 RAM used landscape */
+} tarn_panel_model;
+
+typedef struct {
+    uint8_t model;              /* tarn_panel_model */
+    uint8_t rotation;           /* 0..3, quarter turns clockwise */
+    uint16_t width, height;     /* visible pixels in this rotation */
+    uint16_t column_offset;     /* where the glass starts in controller RAM, in this rotation */
+    uint16_t row_offset;
+    uint8_t madctl;             /* the MADCTL byte for this rotation (MY MX MV ML RGB MH) */
+} tarn_panel;
+
+/* The panel as a module of this model is wired and mounted, turned by `rotation`
+ * quarter turns (taken modulo 4). */
+tarn_panel tarn_panel_preset(tarn_panel_model model, unsigned rotation);
+
+/* Hardware reset (when the transport has a reset line), then the controller's init
+ * table: sleep out, 16-bit colour, MADCTL for the rotation, display on. */
+tarn_status tarn_panel_init(const tarn_panel *panel, const tarn_panel_transport *transport);
+
+/* Sends one finished tile into its window. `line` is scratch for one row of the
+ * tile's pixels (2 * tile width bytes at least): rows go out one by one so the
+ * caller needs no frame-sized buffer. With `dither` the RGB565 conversion adds a
+ * 4x4 ordered dither fixed to frame coordinates. TARN_ERR_SINK if the transport
+ * failed, TARN_ERR_CONFIG if the tile lies outside the panel or `line` is short. */
+tarn_status tarn_panel_send_tile(const tarn_panel *panel, const tarn_panel_transport *transport,
+                                 const tarn_tile *tile, int dither, uint8_t *line, size_t line_bytes);
+
+/* RGB565 of a 0x00RRGGBB pixel at frame position (x, y), rounded to nearest, or
+ * ordered-dithered. The host converts frames with this same function so that a
+ * panel's image can be compared with a render byte for byte. */
+uint16_t tarn_rgb565(uint32_t rgb, uint16_t x, uint16_t y, int dither);
+
+/* The controller commands the drivers use, for backends and emulators. */
+enum {
+    TARN_PANEL_NOP = 0x00,
+    TARN_PANEL_SWRESET = 0x01,
+    TARN_PANEL_SLPOUT = 0x11,
+    TARN_PANEL_NORON = 0x13,
+    TARN_PANEL_INVON = 0x21,
+    TARN_PANEL_DISPON = 0x29,
+    TARN_PANEL_CASET = 0x2A,
+    TARN_PANEL_RASET = 0x2B,
+    TARN_PANEL_RAMWR = 0x2C,
+    TARN_PANEL_MADCTL = 0x36,
+    TARN_PANEL_COLMOD = 0x3A,
+    TARN_PANEL_RAMWRC = 0x3C /* write memory continue */
+};
+
+/* The emulated boards send the transport's calls as a byte stream (semihosting or a
+ * UART), decoded on the host by the panel emulator:
+ *   'C' command                     a command byte (DC low)
+ *   'D' len_hi len_lo bytes...      data bytes (DC high), 1..65535 of them
+ *   'R' level                       reset line asserted (1) or released (0)
+ *   'W' ms_hi ms_lo                 a delay
+ *   'E' status                      end of stream; status 0 when the firmware finished */
+enum {
+    TARN_STREAM_COMMAND = 'C',
+    TARN_STREAM_DATA = 'D',
+    TARN_STREAM_RESET = 'R',
+    TARN_STREAM_DELAY = 'W',
+    TARN_STREAM_END = 'E'
+};
+
+#endif
