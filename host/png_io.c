@@ -6,9 +6,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
+#include "atomic_file.h"
 #include "tarn_scene.h"
 
 /* Everything one libpng run owns. libpng reports errors by longjmp, so all of it
@@ -214,55 +213,26 @@ static int encode(png_job *job, const uint8_t *rgb, uint32_t width, uint32_t hei
     return 0;
 }
 
-/* mkstemp creates files readable by the owner only; an output image should get
- * the permissions any other new file would. */
-static int set_default_permissions(int fd)
-{
-    mode_t mask = umask(0);
-    umask(mask);
-    return fchmod(fd, 0666 & ~mask);
-}
-
 int tarn_png_write_rgb(const char *path, const uint8_t *rgb, uint32_t width, uint32_t height,
                        tarn_error *err)
 {
     if (width == 0 || height == 0 || width > PNG_USER_WIDTH_MAX || height > PNG_USER_HEIGHT_MAX) {
         return tarn_fail(err, "%s: cannot write a %ux%u image", path, width, height);
     }
-    size_t temp_size = strlen(path) + sizeof ".tmp.XXXXXX";
-    char *temp_path = malloc(temp_size);
-    if (!temp_path) return tarn_fail(err, "%s: out of memory", path);
-    snprintf(temp_path, temp_size, "%s.tmp.XXXXXX", path);
-
-    int fd = mkstemp(temp_path);
-    if (fd < 0) {
-        int result = tarn_fail(err, "%s: cannot create %s: %s", path, temp_path, strerror(errno));
-        free(temp_path);
-        return result;
-    }
+    tarn_atomic_file out;
+    if (tarn_atomic_open(&out, path, err) != 0) return -1;
     png_job job;
     memset(&job, 0, sizeof job);
     job.path = path;
-    int result = -1;
-    if (set_default_permissions(fd) != 0 || !(job.file = fdopen(fd, "wb"))) {
-        result = tarn_fail(err, "%s: cannot write %s: %s", path, temp_path, strerror(errno));
-        close(fd);
-    } else {
-        job.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &job, on_png_error,
-                                          on_png_warning);
-        if (job.png) job.info = png_create_info_struct(job.png);
-        result = job.info ? encode(&job, rgb, width, height, err)
+    job.file = out.file;
+    job.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &job, on_png_error, on_png_warning);
+    if (job.png) job.info = png_create_info_struct(job.png);
+    int result = job.info ? encode(&job, rgb, width, height, err)
                           : tarn_fail(err, "%s: out of memory", path);
-        if (job.png) png_destroy_write_struct(&job.png, job.info ? &job.info : NULL);
-        if (fclose(job.file) != 0 && result == 0) {
-            result = tarn_fail(err, "%s: cannot write %s: %s", path, temp_path, strerror(errno));
-        }
+    if (job.png) png_destroy_write_struct(&job.png, job.info ? &job.info : NULL);
+    if (result != 0) {
+        tarn_atomic_abandon(&out);
+        return -1;
     }
-    if (result == 0 && rename(temp_path, path) != 0) {
-        result = tarn_fail(err, "%s: cannot rename %s into place: %s", path, temp_path,
-                           strerror(errno));
-    }
-    if (result != 0) unlink(temp_path);
-    free(temp_path);
-    return result;
+    return tarn_atomic_commit(&out, err);
 }
