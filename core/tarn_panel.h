@@ -5,9 +5,10 @@
  * spidev, an MCP2210 bridge, the emulated boards' byte stream) implements it; the
  * drivers here are the same code on all of them.
  *
- * A frame goes out tile by tile (a window per tile: CASET, RASET, RAMWR, then the
- * tile's rows) or, the fast path, as full-width bands (one window and one RAMWR per
- * band of tiles). Pixels are RGB565, high byte first. */
+ * A frame goes out tile by tile: a window per tile (CASET, RASET, RAMWR, then the
+ * tile's rows, one data call each), so no frame-sized buffer is needed anywhere.
+ * Pixels are RGB565, high byte first. docs/panels.md gives the byte counts, the
+ * presets and where their facts come from. */
 #ifndef TARN_PANEL_H
 #define TARN_PANEL_H
 
@@ -15,6 +16,7 @@
 #include <stdint.h>
 #include "tarn_render.h"
 
+/* command and data are required; delay_ms is required by tarn_panel_init only. */
 typedef struct {
     void *user;
     /* each returns 0, or non-zero when the link failed (the frame stops) */
@@ -32,7 +34,9 @@ typedef enum {
 
 typedef struct {
     uint8_t model;              /* tarn_panel_model */
-    uint8_t rotation;           /* 0..3, quarter turns clockwise */
+    uint8_t rotation;           /* 0..3: the picture turns this many quarter turns clockwise
+                                   on the glass (the module turns counterclockwise to
+                                   show it upright); numbered as TFT_eSPI's setRotation */
     uint16_t width, height;     /* visible pixels in this rotation */
     uint16_t column_offset;     /* where the glass starts in controller RAM, in this rotation */
     uint16_t row_offset;
@@ -40,11 +44,14 @@ typedef struct {
 } tarn_panel;
 
 /* The panel as a module of this model is wired and mounted, turned by `rotation`
- * quarter turns (taken modulo 4). */
+ * quarter turns (taken modulo 4). An unknown model gives width 0, which init and
+ * send_tile reject. */
 tarn_panel tarn_panel_preset(tarn_panel_model model, unsigned rotation);
 
 /* Hardware reset (when the transport has a reset line), then the controller's init
- * table: sleep out, 16-bit colour, MADCTL for the rotation, display on. */
+ * table: software reset, sleep out, 16-bit colour, MADCTL for the rotation, display
+ * on (ST7789: and inversion on, which its IPS glass needs). Takes about 0.3 s of
+ * delays. TARN_ERR_SINK if the transport failed. */
 tarn_status tarn_panel_init(const tarn_panel *panel, const tarn_panel_transport *transport);
 
 /* Sends one finished tile into its window. `line` is scratch for one row of the

@@ -1,0 +1,151 @@
+/* panel.c: the panel drivers: presets, init, tile windows and the RGB565 conversion.
+ * The facts per model live in panel_tables.c; this file only walks them. */
+#include "tarn_panel.h"
+
+#include "panel_tables.h"
+
+/* The reset pulse: the datasheets ask for at least 10 us low, then 5 ms before the
+ * first command (120 ms when the controller was awake); we hold and wait generously
+ * because it happens once. */
+#define RESET_HOLD_MS 10u
+#define RESET_RECOVERY_MS 120u
+
+tarn_panel tarn_panel_preset(tarn_panel_model model, unsigned rotation)
+{
+    tarn_panel panel = {0};
+    const tarn_panel_model_facts *facts = tarn_panel_model_facts_of((unsigned)model);
+    if (facts == NULL) return panel; /* width 0: init and send_tile reject it */
+    rotation &= 3u;
+    panel.model = (uint8_t)model;
+    panel.rotation = (uint8_t)rotation;
+    panel.width = (rotation & 1u) ? facts->height : facts->width;
+    panel.height = (rotation & 1u) ? facts->width : facts->height;
+    panel.column_offset = facts->column_offset[rotation];
+    panel.row_offset = facts->row_offset[rotation];
+    panel.madctl = facts->madctl[rotation];
+    return panel;
+}
+
+static int send_command(const tarn_panel_transport *transport, uint8_t command,
+                        const uint8_t *data, size_t count)
+{
+    if (transport->command(transport->user, command) != 0) return -1;
+    return count == 0 ? 0 : transport->data(transport->user, data, count);
+}
+
+static int wait_ms(const tarn_panel_transport *transport, uint16_t milliseconds)
+{
+    return milliseconds == 0 ? 0 : transport->delay_ms(transport->user, milliseconds);
+}
+
+static int reset_pulse(const tarn_panel_transport *transport)
+{
+    if (transport->reset(transport->user, 1) != 0) return -1;
+    if (wait_ms(transport, RESET_HOLD_MS) != 0) return -1;
+    if (transport->reset(transport->user, 0) != 0) return -1;
+    return wait_ms(transport, RESET_RECOVERY_MS);
+}
+
+static int send_init_step(const tarn_panel *panel, const tarn_panel_transport *transport,
+                          const tarn_panel_init_step *step)
+{
+    /* MADCTL is the one step that depends on the rotation; the table holds a placeholder */
+    const uint8_t *data = step->command == TARN_PANEL_MADCTL ? &panel->madctl : step->data;
+    if (send_command(transport, step->command, data, step->length) != 0) return -1;
+    return wait_ms(transport, step->delay_ms);
+}
+
+static int transport_complete(const tarn_panel_transport *transport)
+{
+    return transport != NULL && transport->command != NULL && transport->data != NULL;
+}
+
+tarn_status tarn_panel_init(const tarn_panel *panel, const tarn_panel_transport *transport)
+{
+    const tarn_panel_model_facts *facts = panel ? tarn_panel_model_facts_of(panel->model) : NULL;
+    if (facts == NULL || panel->width == 0 || !transport_complete(transport) ||
+        transport->delay_ms == NULL)
+        return TARN_ERR_CONFIG;
+    if (transport->reset != NULL && reset_pulse(transport) != 0) return TARN_ERR_SINK;
+    for (size_t i = 0; i < facts->init_steps; i++)
+        if (send_init_step(panel, transport, &facts->init[i]) != 0) return TARN_ERR_SINK;
+    return TARN_OK;
+}
+
+static void put_u16_be(uint8_t *out, uint16_t value)
+{
+    out[0] = (uint8_t)(value >> 8);
+    out[1] = (uint8_t)value;
+}
+
+/* CASET or RASET: first and last address, big-endian. */
+static int set_address_range(const tarn_panel_transport *transport, uint8_t command,
+                             uint16_t first, uint16_t count)
+{
+    uint8_t range[4];
+    put_u16_be(range, first);
+    put_u16_be(range + 2, (uint16_t)(first + count - 1u));
+    return send_command(transport, command, range, sizeof range);
+}
+
+static int tile_fits(const tarn_panel *panel, const tarn_tile *tile)
+{
+    return tile->width > 0 && tile->height > 0 && tile->rgb != NULL &&
+           (uint32_t)tile->x + tile->width <= panel->width &&
+           (uint32_t)tile->y + tile->height <= panel->height;
+}
+
+/* One row of the tile as RGB565, high byte first, dithered at frame positions. */
+static void convert_row(uint8_t *line, const uint32_t *rgb, uint16_t width, uint16_t x,
+                        uint16_t y, int dither)
+{
+    for (uint16_t i = 0; i < width; i++)
+        put_u16_be(line + 2u * i, tarn_rgb565(rgb[i], (uint16_t)(x + i), y, dither));
+}
+
+tarn_status tarn_panel_send_tile(const tarn_panel *panel, const tarn_panel_transport *transport,
+                                 const tarn_tile *tile, int dither, uint8_t *line, size_t line_bytes)
+{
+    if (panel == NULL || tile == NULL || line == NULL || !transport_complete(transport) ||
+        !tile_fits(panel, tile) || line_bytes < 2u * (size_t)tile->width)
+        return TARN_ERR_CONFIG;
+    if (set_address_range(transport, TARN_PANEL_CASET,
+                          (uint16_t)(panel->column_offset + tile->x), tile->width) != 0 ||
+        set_address_range(transport, TARN_PANEL_RASET,
+                          (uint16_t)(panel->row_offset + tile->y), tile->height) != 0 ||
+        transport->command(transport->user, TARN_PANEL_RAMWR) != 0)
+        return TARN_ERR_SINK;
+    for (uint16_t row = 0; row < tile->height; row++) {
+        convert_row(line, tile->rgb + (size_t)row * tile->stride, tile->width, tile->x,
+                    (uint16_t)(tile->y + row), dither);
+        if (transport->data(transport->user, line, 2u * (size_t)tile->width) != 0)
+            return TARN_ERR_SINK;
+    }
+    return TARN_OK;
+}
+
+/* Dither thresholds, the 4x4 Bayer matrix indexed by (y & 3) * 4 + (x & 3). */
+static const uint8_t bayer4[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
+
+/* floor((value * levels + threshold) / 255) for value <= 255, levels <= 63 and
+ * threshold < 256: the numerator stays below 16575, where multiplying by 0x8081 and
+ * shifting by 23 divides by 255 exactly (the error stays under 1/255 of a step), so
+ * the Cortex-M0 needs no division. */
+static uint32_t quantise(uint32_t value, uint32_t levels, uint32_t threshold)
+{
+    return ((value * levels + threshold) * 0x8081u) >> 23;
+}
+
+/* Rounding to nearest is the threshold 127 (255 is odd, so there are no ties). The
+ * dither replaces it with 16 * bayer + 8, from 8 to 248: the same as adding between
+ * -0.47 and +0.47 of an output step before rounding, evenly spread over each 4x4 block.
+ * value * levels + threshold never reaches 256 * levels, so the result cannot leave
+ * the channel's range: the saturation is built in. */
+uint16_t tarn_rgb565(uint32_t rgb, uint16_t x, uint16_t y, int dither)
+{
+    uint32_t threshold = dither ? 16u * bayer4[(y & 3u) * 4u + (x & 3u)] + 8u : 127u;
+    uint32_t r = quantise((rgb >> 16) & 0xFFu, 31u, threshold);
+    uint32_t g = quantise((rgb >> 8) & 0xFFu, 63u, threshold);
+    uint32_t b = quantise(rgb & 0xFFu, 31u, threshold);
+    return (uint16_t)((r << 11) | (g << 5) | b);
+}
