@@ -11,6 +11,7 @@ const char tarn_cli_usage[] =
     "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]\n"
     "       tarn accuracy --math\n"
     "       tarn memory SCENE [--size WxH] [QUALITY]\n"
+    "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [QUALITY]\n"
     "QUALITY: --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
     "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n"
     "         --apron on|off (refraction samples beyond the tile: rendered, or clamped)\n";
@@ -133,7 +134,9 @@ static int parse_command(const char *word, tarn_cli_options *o, tarn_error *err)
     else if (word && strcmp(word, "compare") == 0) o->command = TARN_CMD_COMPARE;
     else if (word && strcmp(word, "accuracy") == 0) o->command = TARN_CMD_ACCURACY;
     else if (word && strcmp(word, "memory") == 0) o->command = TARN_CMD_MEMORY;
-    else return tarn_fail(err, "unknown command '%s'; expected render, compare, accuracy or memory", word ? word : "");
+    else if (word && strcmp(word, "bake") == 0) o->command = TARN_CMD_BAKE;
+    else return tarn_fail(err, "unknown command '%s'; expected render, compare, accuracy, memory or bake",
+                          word ? word : "");
     return 0;
 }
 
@@ -163,7 +166,10 @@ static int parse_valued_option(const char *name, const char *value, tarn_cli_opt
     unsigned long ms;
     if (strcmp(name, "-o") == 0) o->output_path = value;
     else if (strcmp(name, "--diff") == 0) o->diff_path = value;
-    else if (strcmp(name, "--size") == 0) return parse_size(value, o, err);
+    else if (strcmp(name, "--name") == 0) {
+        o->name = value; /* checked by bake, so that "" gets the one-line error "3d" gets */
+        return value ? 0 : tarn_fail(err, "--name: expected a C identifier");
+    } else if (strcmp(name, "--size") == 0) return parse_size(value, o, err);
     else if (strcmp(name, "--frames") == 0 || strcmp(name, "--fps") == 0)
         return parse_sequence_option(name, value, o, err);
     else if (strcmp(name, "--time") == 0) {
@@ -213,6 +219,8 @@ static int check_combination(tarn_cli_options *o, tarn_error *err)
     if (o->scene_path == NULL) return tarn_fail(err, "expected a scene file");
     if (o->command == TARN_CMD_RENDER && o->output_path == NULL)
         return tarn_fail(err, "render: expected -o OUT.png");
+    if (o->command == TARN_CMD_BAKE && o->output_path == NULL) return tarn_fail(err, "bake: expected -o OUT.c");
+    if (o->name && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--name applies to bake");
     if (o->snapped && o->command == TARN_CMD_RENDER && !o->reference)
         return tarn_fail(err, "--snapped applies to the reference: add --reference");
     return check_sequence(o, err);
@@ -222,7 +230,9 @@ int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
 {
     memset(o, 0, sizeof *o);
     o->quality = tarn_quality_default();
-    if (argc < 2) return tarn_fail(err, "expected a command: render, compare, accuracy or memory");
+    o->argc = argc;
+    o->argv = argv;
+    if (argc < 2) return tarn_fail(err, "expected a command: render, compare, accuracy, memory or bake");
     if (parse_command(argv[1], o, err) != 0) return -1;
     for (int i = 2; i < argc; i++) {
         const char *arg = argv[i];

@@ -5,6 +5,8 @@
  *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]
  *   tarn accuracy --math
  *   tarn memory SCENE [--size WxH] [QUALITY]   (the working memory a frame needs)
+ *   tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [QUALITY]
+ *                                              (the scene as const C data: host/bake.h)
  * QUALITY knobs (defaults from tarn_quality_default()):
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
  *   --depth 16|32  --recip-steps N (0..2)  --exp2 N[:nearest|:linear] (8..256)
@@ -17,13 +19,20 @@
 #include "error.h"
 #include "tarn_render.h"
 
-typedef enum { TARN_CMD_RENDER, TARN_CMD_COMPARE, TARN_CMD_ACCURACY, TARN_CMD_MEMORY } tarn_command;
+typedef enum {
+    TARN_CMD_RENDER,
+    TARN_CMD_COMPARE,
+    TARN_CMD_ACCURACY,
+    TARN_CMD_MEMORY,
+    TARN_CMD_BAKE
+} tarn_command;
 
 typedef struct {
     tarn_command command;
     const char *scene_path;
-    const char *output_path; /* render: -o */
+    const char *output_path; /* render, bake: -o */
     const char *diff_path;   /* compare: --diff, or NULL */
+    const char *name;        /* bake: --name, or NULL (checked by the bake itself) */
     uint16_t width, height;  /* 0: the scene's own frame size */
     uint32_t time_ms;
     uint16_t frames;         /* render --frames: 0 for one frame written to -o itself */
@@ -32,6 +41,8 @@ typedef struct {
     int snapped;             /* the reference rasterizes the core's snapped triangles */
     int math;                /* accuracy --math */
     tarn_quality quality;
+    int argc;                /* the whole command line, as given */
+    char **argv;
 } tarn_cli_options;
 
 /* 0, or -1 with a one-line message in `err`. */

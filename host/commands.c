@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "accuracy_math.h"
+#include "bake.h"
 #include "compare.h"
 #include "core_render.h"
 #include "png_io.h"
@@ -210,6 +211,25 @@ static int print_memory(const tarn_cli_options *o, const tarn_loaded_scene *scen
 int tarn_command_memory(const tarn_cli_options *o)
 {
     return run_on_scene(o, print_memory);
+}
+
+static int bake_to_c(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+                     const tarn_frame_config *config, tarn_error *err)
+{
+    tarn_bake_options options = {o->scene_path, o->output_path, o->name, *config, o->argc, o->argv};
+    tarn_bake_result result;
+    if (tarn_bake(scene, &options, &result, err) != 0) return -1;
+    printf("bake scene=%s const_bytes=%zu memory_bytes=%zu\n", result.name, result.const_bytes,
+           result.memory_bytes);
+    return 0;
+}
+
+int tarn_command_bake(const tarn_cli_options *o)
+{
+    tarn_error err;
+    /* a bad name is reported before the scene is read */
+    if (o->name && tarn_bake_check_name(o->name, &err) != 0) return report(&err);
+    return run_on_scene(o, bake_to_c);
 }
 
 int tarn_command_accuracy(const tarn_cli_options *o)

@@ -1,4 +1,5 @@
-/* tarn: render scenes to PNG, measure the integer core against the float reference. */
+/* tarn: render scenes to PNG, measure the integer core against the float reference,
+ * bake scenes into C for firmware. */
 #include <stdio.h>
 
 #include "cli_options.h"
@@ -17,6 +18,7 @@ int main(int argc, char **argv)
     case TARN_CMD_COMPARE: return tarn_command_compare(&options);
     case TARN_CMD_ACCURACY: return tarn_command_accuracy(&options);
     case TARN_CMD_MEMORY: return tarn_command_memory(&options);
+    case TARN_CMD_BAKE: return tarn_command_bake(&options);
     }
     return TARN_EXIT_BAD_INPUT;
 }

@@ -1,0 +1,55 @@
+/* bake.h: a loaded scene written out as const C data for firmware.
+ *
+ * `tarn bake scenes/pond.json -o out/pond.c` writes two files:
+ *   out/pond.c  one self-contained C99 source, needing only core/tarn_render.h:
+ *               every mesh, texture, material, water block and object the scene
+ *               uses, as `static const` arrays and structs, and two objects
+ *                 const tarn_scene pond_scene;
+ *                 const tarn_frame_config pond_config;   (frame size and quality)
+ *   out/pond.h  declares both and  #define POND_MEMORY_BYTES N, the working memory
+ *               tarn_frame_memory_bytes gives for that config, so that firmware can
+ *               declare  static uint32_t mem[(POND_MEMORY_BYTES + 3) / 4];
+ * Every integer is the loaded one, printed exactly; nothing the scene does not
+ * reference is written (a texture no used material samples, a mesh that repeats
+ * another's data). The header comment of pond.c counts the const bytes of each
+ * kind as a 32-bit target lays them out.
+ * Both files are written all or nothing (atomic_file.h). */
+#ifndef TARN_HOST_BAKE_H
+#define TARN_HOST_BAKE_H
+
+#include <stddef.h>
+#include "error.h"
+#include "scene_load.h"
+#include "tarn_render.h"
+
+/* Longest NAME: leaves room for the suffixes of every symbol it prefixes. */
+#define TARN_BAKE_NAME_MAX 40u
+
+typedef struct {
+    const char *scene_path;  /* shown in the header comment */
+    const char *output_path; /* must end in ".c"; the header goes beside it as ".h" */
+    const char *name;        /* C identifier prefixing every symbol; NULL: the scene's stem */
+    tarn_frame_config config; /* frame size and quality; its time_ms is baked as 0 */
+    int argc;                /* the command line, shown in the header comment */
+    char *const *argv;
+} tarn_bake_options;
+
+typedef struct {
+    char name[TARN_BAKE_NAME_MAX + 1]; /* the prefix used */
+    size_t const_bytes;                /* every baked object, 32-bit layout */
+    size_t memory_bytes;               /* tarn_frame_memory_bytes of the baked config */
+} tarn_bake_result;
+
+/* 0, or -1 with a one-line `err` and neither file written. */
+int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *options,
+              tarn_bake_result *result, tarn_error *err);
+
+/* 0 if `name` can prefix the baked symbols: a C identifier of at most
+ * TARN_BAKE_NAME_MAX characters outside the renderer's own tarn_ namespace. */
+int tarn_bake_check_name(const char *name, tarn_error *err);
+
+/* A scene file's stem made a valid name: other characters become '_', and a stem
+ * that still would not do gains a "scene_" prefix ("3d-pond" -> "scene_3d_pond"). */
+void tarn_bake_default_name(const char *stem, char out[TARN_BAKE_NAME_MAX + 1]);
+
+#endif
