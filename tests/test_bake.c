@@ -1,0 +1,481 @@
+/* test_bake.c: `tarn bake` loses nothing and writes nothing more.
+ *
+ * The real binary ($TARN_BIN) bakes a scene into a temporary directory; a small
+ * main written here renders the baked scene.c, compiled with the host compiler
+ * together with the core's sources, and the frame must match, byte for byte, the
+ * same scene loaded from JSON and rendered in this process, at two clock times.
+ * The baked file
+ * must also compile for a Cortex-M0 under -pedantic -Werror, with .rodata exactly
+ * the const bytes the baker reports; and every bad input must exit 2 with one line
+ * and leave no file. Run from the repository root (as `make check` does). */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "core_render.h"
+#include "scene_load.h"
+
+#define PATH_SIZE 1024
+#define COMMAND_SIZE 4096
+
+/* Strict enough to catch any warning the baked source could raise. */
+#define STRICT_C99 "-std=c99 -pedantic -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes"
+#define M0_FLAGS "-std=c99 -pedantic -Wall -Wextra -Werror -mcpu=cortex-m0 -mthumb"
+
+static char work_dir[] = "/tmp/tarn_bake_XXXXXX";
+static char root[PATH_SIZE];
+
+static const char *tarn_bin(void)
+{
+    const char *bin = getenv("TARN_BIN");
+    return bin && *bin ? bin : "build/release/tarn";
+}
+
+static int shell(const char *format, ...) __attribute__((format(printf, 1, 2)));
+
+/* Runs a shell command; its exit status, or -1 if it did not exit normally. */
+static int shell(const char *format, ...)
+{
+    char command[COMMAND_SIZE];
+    va_list args;
+    va_start(args, format);
+    int n = vsnprintf(command, sizeof command, format, args);
+    va_end(args);
+    assert_true(n > 0 && (size_t)n < sizeof command);
+    int status = system(command);
+    return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/* The whole file, NUL-terminated; `size` (may be NULL) gets its length. */
+static char *read_all(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) fail_msg("cannot open %s", path);
+    assert_int_equal(fseek(f, 0, SEEK_END), 0);
+    long length = ftell(f);
+    assert_true(length >= 0);
+    rewind(f);
+    char *text = malloc((size_t)length + 1);
+    assert_non_null(text);
+    assert_int_equal(fread(text, 1, (size_t)length, f), (size_t)length);
+    fclose(f);
+    text[length] = '\0';
+    if (size) *size = (size_t)length;
+    return text;
+}
+
+static size_t occurrences(const char *text, const char *needle)
+{
+    size_t n = 0;
+    for (const char *at = strstr(text, needle); at; at = strstr(at + 1, needle)) n++;
+    return n;
+}
+
+static int file_exists(const char *path)
+{
+    struct stat info;
+    return stat(path, &info) == 0;
+}
+
+/* The suite's directory holds the core compiled once, shared by every round trip. */
+static int suite_setup(void **state)
+{
+    (void)state;
+    if (!getcwd(root, sizeof root) || !mkdtemp(work_dir)) return -1;
+    return shell("mkdir %s/core && cd %s/core && cc -std=c99 -O1 -I'%s/core' -c '%s'/core/*.c", work_dir,
+                 work_dir, root, root) == 0 ? 0 : -1;
+}
+
+static int suite_teardown(void **state)
+{
+    (void)state;
+    return shell("rm -rf %s", work_dir) == 0 ? 0 : -1;
+}
+
+/* ---- baking ------------------------------------------------------------------- */
+
+typedef struct {
+    char source[PATH_SIZE]; /* DIR/NAME.c */
+    char header[PATH_SIZE]; /* DIR/NAME.h */
+    size_t const_bytes, memory_bytes;
+} baked;
+
+/* `tarn bake SCENE -o DIR/NAME.c EXTRA` must succeed and report NAME. */
+static void bake(const char *scene, const char *name, const char *extra, baked *out)
+{
+    char stdout_path[PATH_SIZE], expected[256];
+    snprintf(out->source, sizeof out->source, "%s/%s.c", work_dir, name);
+    snprintf(out->header, sizeof out->header, "%s/%s.h", work_dir, name);
+    snprintf(stdout_path, sizeof stdout_path, "%s/%s.stdout", work_dir, name);
+    if (shell("%s bake %s -o %s %s > %s", tarn_bin(), scene, out->source, extra, stdout_path) != 0)
+        fail_msg("tarn bake %s %s failed", scene, extra);
+    char *line = read_all(stdout_path, NULL);
+    unsigned long const_bytes = 0, memory_bytes = 0;
+    snprintf(expected, sizeof expected, "bake scene=%s const_bytes=%%lu memory_bytes=%%lu", name);
+    if (sscanf(line, expected, &const_bytes, &memory_bytes) != 2 || occurrences(line, "\n") != 1)
+        fail_msg("stdout is not one 'bake scene=%s ...' line: %s", name, line);
+    free(line);
+    out->const_bytes = const_bytes;
+    out->memory_bytes = memory_bytes;
+}
+
+/* ---- round trips ---------------------------------------------------------------- */
+
+/* Renders the baked scene, at the clock given on its command line, to raw RGB. */
+static const char main_template[] =
+    "#include <stdio.h>\n"
+    "#include <stdlib.h>\n"
+    "#include \"@NAME@.h\"\n"
+    "\n"
+    "static uint32_t memory[(@MACRO@_MEMORY_BYTES + 3) / 4];\n"
+    "static uint8_t *frame;\n"
+    "static uint16_t frame_width;\n"
+    "\n"
+    "static int copy_tile(void *user, const tarn_tile *tile)\n"
+    "{\n"
+    "    (void)user;\n"
+    "    for (int y = 0; y < tile->height; y++) {\n"
+    "        for (int x = 0; x < tile->width; x++) {\n"
+    "            uint32_t pixel = tile->rgb[(size_t)y * tile->stride + (size_t)x];\n"
+    "            uint8_t *to = frame + 3 * ((size_t)(tile->y + y) * frame_width + (size_t)(tile->x + x));\n"
+    "            to[0] = (uint8_t)(pixel >> 16);\n"
+    "            to[1] = (uint8_t)(pixel >> 8);\n"
+    "            to[2] = (uint8_t)pixel;\n"
+    "        }\n"
+    "    }\n"
+    "    return 0;\n"
+    "}\n"
+    "\n"
+    "int main(int argc, char **argv)\n"
+    "{\n"
+    "    tarn_frame_config config = @NAME@_config;\n"
+    "    if (argc != 3) return 2;\n"
+    "    config.time_ms = (uint32_t)strtoul(argv[2], NULL, 10);\n"
+    "    size_t bytes = 3u * config.width * config.height;\n"
+    "    frame_width = config.width;\n"
+    "    frame = malloc(bytes);\n"
+    "    if (frame == NULL) return 3;\n"
+    "    tarn_status status = tarn_render_frame(&@NAME@_scene, &config, memory, sizeof memory, copy_tile, NULL);\n"
+    "    if (status != TARN_OK) {\n"
+    "        fprintf(stderr, \"%s\\n\", tarn_status_text(status));\n"
+    "        return 4;\n"
+    "    }\n"
+    "    FILE *out = fopen(argv[1], \"wb\");\n"
+    "    if (out == NULL || fwrite(frame, bytes, 1, out) != 1 || fclose(out) != 0) return 5;\n"
+    "    free(frame);\n"
+    "    return 0;\n"
+    "}\n";
+
+/* The template with @NAME@ and @MACRO@ (NAME in capitals) filled in. */
+static void write_main(const char *path, const char *name)
+{
+    char macro[64];
+    size_t n = 0;
+    for (; name[n] && n + 1 < sizeof macro; n++)
+        macro[n] = name[n] >= 'a' && name[n] <= 'z' ? (char)(name[n] - 'a' + 'A') : name[n];
+    macro[n] = '\0';
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    for (const char *c = main_template; *c;) {
+        if (strncmp(c, "@NAME@", 6) == 0) {
+            fputs(name, f);
+            c += 6;
+        } else if (strncmp(c, "@MACRO@", 7) == 0) {
+            fputs(macro, f);
+            c += 7;
+        } else {
+            fputc(*c++, f);
+        }
+    }
+    assert_int_equal(fclose(f), 0);
+}
+
+/* The baked scene's frame at `time_ms`, from the compiled program. */
+static uint8_t *render_baked(const char *program, const char *name, uint32_t time_ms, size_t *size)
+{
+    char frame_path[PATH_SIZE];
+    snprintf(frame_path, sizeof frame_path, "%s/%s-%lu.rgb", work_dir, name, (unsigned long)time_ms);
+    if (shell("%s %s %lu", program, frame_path, (unsigned long)time_ms) != 0)
+        fail_msg("the baked %s did not render at %lu ms", name, (unsigned long)time_ms);
+    return (uint8_t *)read_all(frame_path, size);
+}
+
+static void assert_same_frame(const uint8_t *baked_rgb, const uint8_t *loaded_rgb,
+                              const tarn_frame_config *config, const char *name, uint32_t time_ms)
+{
+    size_t pixels = (size_t)config->width * config->height;
+    for (size_t p = 0; p < pixels; p++) {
+        if (memcmp(baked_rgb + 3 * p, loaded_rgb + 3 * p, 3) != 0)
+            fail_msg("%s at %lu ms: pixel (%zu, %zu) is %02x%02x%02x baked, %02x%02x%02x loaded", name,
+                     (unsigned long)time_ms, p % config->width, p / config->width, baked_rgb[3 * p],
+                     baked_rgb[3 * p + 1], baked_rgb[3 * p + 2], loaded_rgb[3 * p], loaded_rgb[3 * p + 1],
+                     loaded_rgb[3 * p + 2]);
+    }
+}
+
+/* The frame of `scene` loaded from its file, as `tarn render` would draw it. */
+static void render_loaded(const tarn_loaded_scene *scene, const tarn_frame_config *config, uint8_t *rgb)
+{
+    tarn_error err;
+    if (tarn_core_render(&scene->scene, config, rgb, NULL, &err) != 0) fail_msg("%s", err.message);
+}
+
+/* Bakes `scene` (with `extra` options), builds the baked program and compares its
+ * frames with the loaded scene's at 0 ms and at `later_ms`. `config` starts as the
+ * scene's own frame at default quality; `adjust`, if given, applies `extra` to it. */
+static void round_trip(const char *scene_path, const char *name, const char *extra,
+                       void (*adjust)(tarn_frame_config *config), uint32_t later_ms)
+{
+    baked b;
+    bake(scene_path, name, extra, &b);
+    tarn_loaded_scene scene;
+    tarn_error err;
+    if (tarn_scene_load(scene_path, &scene, &err) != 0) fail_msg("%s", err.message);
+    tarn_frame_config config = {scene.width, scene.height, tarn_quality_default(), 0};
+    if (adjust) adjust(&config);
+    assert_int_equal(b.memory_bytes, tarn_frame_memory_bytes(&config, &scene.scene));
+
+    char main_path[PATH_SIZE], program[PATH_SIZE];
+    snprintf(main_path, sizeof main_path, "%s/bake_main_%s.c", work_dir, name);
+    snprintf(program, sizeof program, "%s/bake_main_%s", work_dir, name);
+    write_main(main_path, name);
+    if (shell("cc " STRICT_C99 " -O1 -Icore -I%s -o %s %s %s %s/core/*.o", work_dir, program, main_path,
+              b.source, work_dir) != 0)
+        fail_msg("%s does not build with the host compiler", b.source);
+
+    size_t bytes = 3u * config.width * config.height, got;
+    uint8_t *loaded_rgb = malloc(bytes);
+    assert_non_null(loaded_rgb);
+    const uint32_t times[2] = {0, later_ms};
+    for (int k = 0; k < 2; k++) {
+        config.time_ms = times[k];
+        render_loaded(&scene, &config, loaded_rgb);
+        uint8_t *baked_rgb = render_baked(program, name, times[k], &got);
+        assert_int_equal(got, bytes);
+        assert_same_frame(baked_rgb, loaded_rgb, &config, name, times[k]);
+        free(baked_rgb);
+    }
+    free(loaded_rgb);
+    tarn_scene_free(&scene);
+}
+
+static void test_pond_bakes_without_loss(void **state)
+{
+    (void)state;
+    round_trip("scenes/pond.json", "pond", "", NULL, 2750);
+}
+
+static void test_foam_bakes_without_loss(void **state)
+{
+    (void)state;
+    round_trip("scenes/effects/foam.json", "foam", "", NULL, 4321);
+}
+
+static void small_foam(tarn_frame_config *config)
+{
+    config->width = 100;
+    config->height = 60;
+    config->quality.tile_size = 16;
+    config->quality.depth_bits = 16;
+    config->quality.perspective = TARN_PERSPECTIVE_SPAN;
+    config->quality.perspective_span = 8;
+    config->quality.exp2.entries = 32;
+    config->quality.exp2.interpolate = 0;
+}
+
+/* --size and the quality knobs become the baked config; --name the symbols. */
+static void test_size_quality_and_name_are_baked(void **state)
+{
+    (void)state;
+    round_trip("scenes/effects/foam.json", "foam_small",
+               "--name foam_small --size 100x60 --tile 16 --depth 16 --perspective span:8 --exp2 32:nearest",
+               small_foam, 900);
+}
+
+/* The underwater block and its normal map, and pointers to textures by water. */
+static void test_underwater_bakes_without_loss(void **state)
+{
+    (void)state;
+    round_trip("scenes/effects/underwater.json", "underwater", "", NULL, 1500);
+}
+
+/* tests/bake_unused.json: an unused material with its own texture, and two boxes
+ * of identical mesh data. Only the used texture and material are baked, the mesh
+ * once; and the result still renders the same. */
+static void test_only_what_is_used_is_baked(void **state)
+{
+    (void)state;
+    round_trip("tests/bake_unused.json", "bake_unused", "", NULL, 0);
+    char path[PATH_SIZE];
+    snprintf(path, sizeof path, "%s/bake_unused.c", work_dir);
+    char *source = read_all(path, NULL);
+    assert_int_equal(occurrences(source, "foam.png"), 1);
+    assert_int_equal(occurrences(source, "ground.png"), 0);
+    assert_int_equal(occurrences(source, "static const tarn_texture "), 1);
+    assert_int_equal(occurrences(source, "static const tarn_material "), 1);
+    assert_int_equal(occurrences(source, "static const tarn_mesh "), 1);
+    assert_int_equal(occurrences(source, ".mesh = &bake_unused_mesh_0,"), 2);
+    assert_non_null(strstr(source, "#include \"tarn_render.h\"\n"));
+    assert_non_null(strstr(source, " *   tarn bake tests/bake_unused.json -o "));
+    free(source);
+}
+
+/* The companion header: the memory macro and both declarations. */
+static void test_header_declares_memory_and_objects(void **state)
+{
+    (void)state;
+    baked b;
+    bake("scenes/effects/foam.json", "foam_header", "--name foam_header --size 64x64", &b);
+    char *header = read_all(b.header, NULL);
+    char define[128];
+    snprintf(define, sizeof define, "#define FOAM_HEADER_MEMORY_BYTES %zu\n", b.memory_bytes);
+    assert_non_null(strstr(header, define));
+    assert_non_null(strstr(header, "extern const tarn_scene foam_header_scene;\n"));
+    assert_non_null(strstr(header, "extern const tarn_frame_config foam_header_config;\n"));
+    free(header);
+    char *source = read_all(b.source, NULL);
+    snprintf(define, sizeof define, " *   %-10s %9zu\n", "total", b.const_bytes);
+    assert_non_null(strstr(source, define));
+    assert_non_null(strstr(source, "const tarn_scene foam_header_scene = {\n"));
+    assert_non_null(strstr(source, "const tarn_frame_config foam_header_config = {\n    .width = 64,\n"));
+    free(source);
+}
+
+/* ---- Cortex-M0 ------------------------------------------------------------------ */
+
+/* `arm-none-eabi-gcc` with the flags firmware uses, and .rodata the size reported. */
+static void assert_builds_for_m0(const char *scene_path, const char *name)
+{
+    baked b;
+    char extra[128];
+    snprintf(extra, sizeof extra, "--name %s", name);
+    bake(scene_path, name, extra, &b);
+    char object[PATH_SIZE], sizes[PATH_SIZE];
+    snprintf(object, sizeof object, "%s/%s-m0.o", work_dir, name);
+    snprintf(sizes, sizeof sizes, "%s/%s-m0.size", work_dir, name);
+    if (shell("arm-none-eabi-gcc " M0_FLAGS " -Icore -c %s -o %s", b.source, object) != 0)
+        fail_msg("%s does not compile for Cortex-M0", b.source);
+    if (shell("command -v arm-none-eabi-size > /dev/null") != 0) return;
+    assert_int_equal(shell("arm-none-eabi-size -A %s | awk '$1 == \".rodata\" {print $2}' > %s", object, sizes), 0);
+    char *text = read_all(sizes, NULL);
+    unsigned long rodata = strtoul(text, NULL, 10);
+    free(text);
+    if (rodata != b.const_bytes)
+        fail_msg("%s: .rodata holds %lu bytes, the bake reported const_bytes=%zu", name, rodata, b.const_bytes);
+}
+
+static void test_baked_source_compiles_for_cortex_m0(void **state)
+{
+    (void)state;
+    if (shell("command -v arm-none-eabi-gcc > /dev/null") != 0) {
+        print_message("arm-none-eabi-gcc is not installed: the Cortex-M0 compile is skipped (CI has it)\n");
+        skip();
+    }
+    assert_builds_for_m0("scenes/pond.json", "pond_m0");
+    assert_builds_for_m0("scenes/effects/foam.json", "foam_m0");
+}
+
+/* ---- bad input ------------------------------------------------------------------ */
+
+/* Names in `dir` other than "." and ".." and `allowed` (may be NULL); 0 if none. */
+static int stray_file(const char *dir, const char *allowed, char *name, size_t size)
+{
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    int found = 0;
+    for (struct dirent *e; !found && (e = readdir(d)) != NULL;) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
+        if (allowed && strcmp(e->d_name, allowed) == 0) continue;
+        snprintf(name, size, "%s", e->d_name);
+        found = 1;
+    }
+    closedir(d);
+    return found;
+}
+
+/* `tarn bake ARGS` with -o into `out_dir` must exit 2 with one "tarn: " line
+ * containing `expect`, and leave nothing in `out_dir` but `allowed`. */
+static void assert_bake_refused(const char *args, const char *out_dir, const char *allowed,
+                                const char *expect)
+{
+    char err_path[PATH_SIZE], stray[256];
+    snprintf(err_path, sizeof err_path, "%s/bad.stderr", work_dir);
+    int status = shell("%s bake %s > /dev/null 2> %s", tarn_bin(), args, err_path);
+    char *text = read_all(err_path, NULL);
+    if (status != 2) fail_msg("tarn bake %s: exit status %d, expected 2", args, status);
+    if (strncmp(text, "tarn: ", 6) != 0 || occurrences(text, "\n") != 1 || text[strlen(text) - 1] != '\n')
+        fail_msg("tarn bake %s: stderr is not one 'tarn: ' line: %s", args, text);
+    if (!strstr(text, expect)) fail_msg("tarn bake %s: '%s' lacks '%s'", args, text, expect);
+    if (stray_file(out_dir, allowed, stray, sizeof stray))
+        fail_msg("tarn bake %s: left %s behind", args, stray);
+    free(text);
+}
+
+static void test_bad_input_exits_2_and_writes_nothing(void **state)
+{
+    (void)state;
+    char out[PATH_SIZE], args[COMMAND_SIZE];
+    snprintf(out, sizeof out, "%s/bad_out", work_dir);
+    assert_int_equal(shell("mkdir -p %s && touch %s/plain_file", out, out), 0);
+
+    snprintf(args, sizeof args, "%s/missing.json -o %s/x.c", work_dir, out);
+    assert_bake_refused(args, out, "plain_file", "missing.json: cannot open");
+
+    snprintf(args, sizeof args, "scenes/pond.json -o %s/plain_file/x.c", out);
+    assert_bake_refused(args, out, "plain_file", "cannot create");
+    snprintf(args, sizeof args, "scenes/pond.json -o %s/no_such_dir/x.c", out);
+    assert_bake_refused(args, out, "plain_file", "cannot create");
+
+    static const char *const bad_names[] = {"3d", "my-scene", "''", "tarn_pond", "TARN", "a.b"};
+    for (size_t k = 0; k < sizeof bad_names / sizeof bad_names[0]; k++) {
+        snprintf(args, sizeof args, "scenes/pond.json -o %s/x.c --name %s", out, bad_names[k]);
+        assert_bake_refused(args, out, "plain_file", "--name: ");
+    }
+    snprintf(args, sizeof args, "scenes/pond.json -o %s/x.c --name abcdefghijklmnopqrstuvwxyz_abcdefghijklmnop", out);
+    assert_bake_refused(args, out, "plain_file", "at most 40 characters");
+
+    snprintf(args, sizeof args, "scenes/pond.json -o %s/x.txt", out);
+    assert_bake_refused(args, out, "plain_file", "ending in .c");
+    snprintf(args, sizeof args, "scenes/effects/foam.json -o %s/x.c --size 1024x1024 --subpixel 8", out);
+    assert_bake_refused(args, out, "plain_file", "1024x1024");
+}
+
+/* The header cannot be renamed into place (a non-empty directory has its name):
+ * the source, already renamed, is removed again, so no half of the pair remains. */
+static void test_a_failed_header_removes_the_source(void **state)
+{
+    (void)state;
+    char out[PATH_SIZE], args[COMMAND_SIZE], source[PATH_SIZE + 8];
+    snprintf(out, sizeof out, "%s/pair_out", work_dir);
+    assert_int_equal(shell("mkdir -p %s/x.h && touch %s/x.h/inside", out, out), 0);
+    snprintf(args, sizeof args, "scenes/effects/foam.json -o %s/x.c", out);
+    assert_bake_refused(args, out, "x.h", "cannot rename");
+    snprintf(source, sizeof source, "%s/x.c", out);
+    assert_false(file_exists(source));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_pond_bakes_without_loss),
+        cmocka_unit_test(test_foam_bakes_without_loss),
+        cmocka_unit_test(test_size_quality_and_name_are_baked),
+        cmocka_unit_test(test_underwater_bakes_without_loss),
+        cmocka_unit_test(test_only_what_is_used_is_baked),
+        cmocka_unit_test(test_header_declares_memory_and_objects),
+        cmocka_unit_test(test_baked_source_compiles_for_cortex_m0),
+        cmocka_unit_test(test_bad_input_exits_2_and_writes_nothing),
+        cmocka_unit_test(test_a_failed_header_removes_the_source),
+    };
+    return cmocka_run_group_tests(tests, suite_setup, suite_teardown);
+}
