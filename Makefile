@@ -46,13 +46,17 @@ demo: deps
 	$(TARN) render scenes/pond.json -o pond.png
 	@echo "wrote pond.png"
 
-# The whole suite: a plain build, then the same tests under ASan + UBSan, then the
-# check that core/ stays integer-only on a Cortex-M0.
+# The whole suite: the emulated boards run (their streams are compared with the host
+# by tests/test_firmware.c), a plain build, then the same tests under ASan + UBSan,
+# then the check that core/ stays integer-only on a Cortex-M0, then the firmware's
+# sizes, stack and counter.
 test: deps-test
+	@$(MAKE) --no-print-directory firmware-run BOARD=
 	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
 	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
 	@$(MAKE) --no-print-directory core-purity
 	@TARN_BIN=build/release/tarn tests/check_water_cost.sh
+	@$(MAKE) --no-print-directory firmware-check BOARD=
 	@cat build/release/summary build/san/summary | \
 		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'
 
@@ -84,3 +88,6 @@ clean:
 	rm -rf build pond.png
 
 -include $(shell find build -name '*.d' 2>/dev/null)
+
+# Firmware for the boards in boards/: make firmware [BOARD=name], make bench-target.
+include firmware/firmware.mk

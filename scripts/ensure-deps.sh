@@ -18,6 +18,9 @@ if [ "${1:-demo}" = test ]; then
     want libnewlib-arm-none-eabi test -e /usr/lib/arm-none-eabi/newlib
     want binutils-arm-none-eabi command -v arm-none-eabi-nm
     want valgrind command -v callgrind_annotate
+    want gcc-riscv64-unknown-elf command -v riscv64-unknown-elf-gcc
+    want qemu-system-arm command -v qemu-system-arm
+    want qemu-system-misc command -v qemu-system-riscv32
 fi
 [ -z "$need" ] && exit 0
 

@@ -1,0 +1,13 @@
+/* qemu-m0: QEMU's microbit, an nRF51 (Cortex-M0) whose SysTick runs on the 16 MHz
+ * processor clock. Under -icount shift=0 one instruction takes 1 ns of virtual time,
+ * so one tick is 62.5 instructions: the count has a resolution of 62.5 instructions
+ * (tests/check_firmware.sh checks the ratio with a loop of known length). */
+#include "board.h"
+#include "cortex_m.h"
+
+const char board_name[] = "qemu-m0";
+
+uint64_t board_instructions(void)
+{
+    return systick_ticks() * 125u / 2u;
+}

@@ -1,0 +1,70 @@
+/* qemu-rv32: QEMU sifive_e. The panel stream leaves through UART0 (QEMU: -serial
+ * file:STREAM); the report goes to a host file through semihosting (word 1 of the
+ * command line: -semihosting-config enable=on,target=native,arg=firmware,arg=REPORT),
+ * and a semihosting exit ends the run. The counter is the minstret CSR, which QEMU
+ * derives from -icount: with shift=0 it is the exact number of instructions retired
+ * (mcycle reads the same value; the CLINT's mtime runs at 10 MHz of virtual time). */
+#include "board.h"
+#include "semihosting.h"
+
+const char board_name[] = "qemu-rv32";
+
+#define UART0_TXDATA (*(volatile uint32_t *)0x10013000u)
+#define UART0_TXCTRL (*(volatile uint32_t *)0x10013008u)
+#define UART_TX_FULL 0x80000000u
+
+static int32_t report = -1;
+
+int board_init(void)
+{
+    UART0_TXCTRL = 1u; /* txen, one stop bit */
+    char cmdline[256];
+    const char *words[2] = {"firmware", "report.txt"};
+    (void)semihosting_words(cmdline, sizeof cmdline, words, 2);
+    report = semihosting_open_write(words[1]);
+    return report < 0;
+}
+
+int board_write(const void *bytes, size_t count)
+{
+    const uint8_t *p = bytes;
+    for (size_t i = 0; i < count; i++) {
+        while (UART0_TXDATA & UART_TX_FULL) {}
+        UART0_TXDATA = p[i];
+    }
+    return 0;
+}
+
+uint64_t board_instructions(void)
+{
+    uint32_t hi, lo, again;
+    do {
+        __asm__ volatile("csrr %0, minstreth" : "=r"(hi));
+        __asm__ volatile("csrr %0, minstret" : "=r"(lo));
+        __asm__ volatile("csrr %0, minstreth" : "=r"(again));
+    } while (hi != again);
+    return ((uint64_t)hi << 32) | lo;
+}
+
+extern uint32_t __stack_limit[], __stack_top[];
+#define STACK_PAINT 0x5AA5C33Cu
+
+size_t board_stack_peak(void)
+{
+    const uint32_t *p = __stack_limit;
+    while (p < __stack_top && *p == STACK_PAINT) p++;
+    return (size_t)((const uint8_t *)__stack_top - (const uint8_t *)p);
+}
+
+int board_report(const char *text, size_t count)
+{
+    if (report < 0) return 1;
+    return count == 0 ? 0 : semihosting_write(report, text, count);
+}
+
+void board_exit(int status)
+{
+    if (report >= 0) semihosting_close(report);
+    report = -1;
+    semihosting_exit(status);
+}

@@ -1,0 +1,22 @@
+# qemu-rv32: RISC-V rv32imac on QEMU's sifive_e (16 KB of RAM at 0x80000000, the
+# image in the XIP flash window, as the HiFive1's 16 MB SPI flash would hold it). The
+# full pond fits the flash; RAM takes the quality qemu-m0 uses: refraction apron off,
+# 32-pixel tiles, 16-bit depth (16048 of 16384 bytes). Variables read by
+# firmware/firmware.mk.
+BOARD_ARCH := riscv
+BOARD_CPU := -march=rv32imac_zicsr -mabi=ilp32 -mcmodel=medany
+BOARD_SRC := boards/qemu-rv32/startup.S boards/qemu-rv32/board.c boards/common/semihosting.c
+BOARD_INCLUDE := -Iboards/common
+BOARD_LDSCRIPT := boards/qemu-rv32/link.ld
+BOARD_STACK_BYTES := 3584
+# where the stack starts (startup.S calls main with interrupts off), for
+# firmware/stack_bound.sh
+BOARD_STACK_ENTRY := main
+BOARD_SCENE := scenes/pond.json
+BOARD_BAKE_FLAGS := --apron off --tile 32 --depth 16
+BOARD_QEMU := qemu-system-riscv32
+# $(1): the ELF; $(2): the host file the panel stream goes to (UART0); $(3): the
+# report (semihosting)
+BOARD_RUN = $(BOARD_QEMU) -M sifive_e -nographic -monitor none -serial file:$(2) \
+	-icount shift=0 -semihosting-config enable=on,target=native,arg=firmware,arg=$(3) \
+	-kernel $(1)

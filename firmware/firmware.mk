@@ -1,0 +1,159 @@
+# firmware.mk: the firmware targets, included by the Makefile.
+#
+#   make firmware                 every board in boards/ (each folder with a board.mk)
+#   make firmware BOARD=qemu-m0   one board: bakes its scene with build/release/tarn,
+#                                 builds build/firmware/BOARD/firmware.elf
+#   make firmware-run BOARD=...   also runs an emulated board under QEMU (-icount
+#                                 shift=0): build/firmware/BOARD/panel.stream is what
+#                                 it sent the panel, report.txt its report line
+#   make bench-target             runs every emulated board and prints one line each
+#   make firmware SCENE=my.json BAKE_FLAGS="--tile 16 --depth 16"   another scene
+#
+# docs/firmware.md describes the boards, the stream and the figures.
+
+FW_BOARDS := $(sort $(patsubst boards/%/board.mk,%,$(wildcard boards/*/board.mk)))
+FW_TARN := build/release/tarn
+FW_TIMEOUT ?= 120
+
+.PHONY: firmware firmware-run firmware-check bench-target
+
+ifeq ($(BOARD),)
+
+firmware:
+	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory firmware BOARD=$$b || exit 1; done
+
+firmware-run:
+	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory firmware-run BOARD=$$b || exit 1; done
+
+bench-target:
+	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory -s bench-target BOARD=$$b || exit 1; done
+
+# make test: every board built, run and compared with the host, byte for byte
+firmware-check: firmware-run
+	@tests/check_firmware.sh $(FW_BOARDS)
+
+else ifeq ($(filter $(BOARD),$(FW_BOARDS)),)
+
+firmware firmware-run bench-target firmware-check:
+	@echo "tarn: no board '$(BOARD)'; the boards are: $(FW_BOARDS)" >&2; exit 1
+
+else
+
+include boards/$(BOARD)/board.mk
+
+FW_DIR := build/firmware/$(BOARD)
+FW_SCENE := $(if $(SCENE),$(SCENE),$(BOARD_SCENE))
+FW_BAKE_FLAGS := $(if $(SCENE),$(BAKE_FLAGS),$(if $(BAKE_FLAGS),$(BAKE_FLAGS),$(BOARD_BAKE_FLAGS)))
+FW_SCENE_LABEL := $(basename $(notdir $(FW_SCENE)))
+FW_ELF := $(FW_DIR)/firmware.elf
+
+ifeq ($(BOARD_ARCH),arm)
+FW_CROSS := arm-none-eabi-
+FW_CROSS_PKG := gcc-arm-none-eabi and libnewlib-arm-none-eabi
+FW_LIBS := -lc -lgcc
+FW_LIBC_SRC :=
+else
+FW_CROSS := riscv64-unknown-elf-
+FW_CROSS_PKG := gcc-riscv64-unknown-elf
+# the rv32imac/ilp32 multilib: -march with _zicsr would select the default (rv64) one
+FW_LIBS = $(shell $(FW_CROSS)gcc -march=rv32imac -mabi=ilp32 -print-libgcc-file-name 2>/dev/null)
+FW_LIBC_SRC := firmware/libc/string.c
+FW_LIBC_INCLUDE := -Ifirmware/libc
+endif
+FW_QEMU_PKG := $(if $(filter qemu-system-arm,$(BOARD_QEMU)),qemu-system-arm,qemu-system-misc)
+
+FW_CC := $(FW_CROSS)gcc
+FW_CFLAGS := -std=c99 -Wall -Wextra -Werror -O2 -g -ffreestanding -fno-common \
+	-ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su $(BOARD_CPU) \
+	-Icore -Ifirmware -I$(FW_DIR) $(BOARD_INCLUDE) $(FW_LIBC_INCLUDE)
+FW_SRC := firmware/main.c $(FW_LIBC_SRC) $(BOARD_SRC) $(wildcard core/*.c) $(FW_DIR)/scene.c
+FW_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,$(basename $(patsubst $(FW_DIR)/%,%,$(FW_SRC))))
+
+firmware: $(FW_ELF)
+	@$(FW_CROSS)size $(FW_ELF)
+
+firmware-run: $(FW_DIR)/report.txt
+
+bench-target: $(FW_DIR)/report.txt $(FW_ELF)
+	@tests/check_firmware.sh --bench $(BOARD)
+
+firmware-check: $(FW_DIR)/report.txt
+	@tests/check_firmware.sh $(BOARD)
+
+# what tests/check_firmware.sh and tests/test_firmware.c need to know about the build
+$(FW_DIR)/firmware.conf: boards/$(BOARD)/board.mk firmware/firmware.mk FORCE
+	@mkdir -p $(FW_DIR)
+	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
+		"bake_flags=$(FW_BAKE_FLAGS)" "times=0,1000" "dither=1" "cross=$(FW_CROSS)" \
+		"stack_bytes=$(BOARD_STACK_BYTES)" "stack_entry=$(BOARD_STACK_ENTRY)" "emulated=$(if $(value BOARD_RUN),1,0)" > $@.tmp
+	@if cmp -s $@.tmp $@; then rm $@.tmp; else mv $@.tmp $@; fi
+
+.PHONY: FORCE fw-toolchain fw-qemu
+FORCE:
+
+fw-toolchain:
+	@command -v $(FW_CC) >/dev/null 2>&1 || { echo "tarn: $(FW_CC) not found; install it: sudo apt-get install $(FW_CROSS_PKG)" >&2; exit 1; }
+
+fw-qemu:
+	@command -v $(BOARD_QEMU) >/dev/null 2>&1 || { echo "tarn: $(BOARD_QEMU) not found; install it: sudo apt-get install $(FW_QEMU_PKG)" >&2; exit 1; }
+
+ifneq ($(TARN),$(FW_TARN))
+$(FW_TARN): FORCE
+	@$(MAKE) --no-print-directory BUILD=build/release SAN=0 $(FW_TARN)
+endif
+
+# The scene as const C: scene_scene, scene_config, SCENE_MEMORY_BYTES.
+$(FW_DIR)/scene.c: $(FW_SCENE) $(FW_TARN) $(FW_DIR)/firmware.conf | fw-toolchain
+	@mkdir -p $(FW_DIR)
+	$(FW_TARN) bake $(FW_SCENE) -o $@ --name scene $(FW_BAKE_FLAGS)
+
+$(FW_DIR)/scene.h: $(FW_DIR)/scene.c
+
+$(FW_OBJ): firmware/firmware.mk boards/$(BOARD)/board.mk
+$(FW_DIR)/obj/firmware/main.o: $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
+$(FW_DIR)/obj/firmware/main.o: FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"'
+$(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-distribute-patterns -fno-strict-aliasing
+
+$(FW_DIR)/obj/%.o: %.c | fw-toolchain
+	@mkdir -p $(dir $@)
+	$(FW_CC) $(FW_CFLAGS) $(FW_DEFINES) -MMD -MP -c -o $@ $<
+
+$(FW_DIR)/obj/%.o: $(FW_DIR)/%.c | fw-toolchain
+	@mkdir -p $(dir $@)
+	$(FW_CC) $(FW_CFLAGS) -MMD -MP -c -o $@ $<
+
+$(FW_DIR)/obj/%.o: %.S | fw-toolchain
+	@mkdir -p $(dir $@)
+	$(FW_CC) $(BOARD_CPU) -c -o $@ $<
+
+# A link that overflows a memory region names the region and the bytes over; the
+# note after it says what to change.
+$(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
+	@if ! $(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LDSCRIPT) -Lboards/common \
+		-Wl,--gc-sections -Wl,-Map=$(FW_DIR)/firmware.map \
+		-Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES) \
+		-o $@ $(FW_OBJ) $(FW_LIBS) 2> $(FW_DIR)/link.err; then \
+		cat $(FW_DIR)/link.err >&2; \
+		if grep -q "region .RAM. overflowed" $(FW_DIR)/link.err; then \
+			echo "tarn: $(BOARD) has too little RAM for $(FW_SCENE) [$(FW_BAKE_FLAGS)]: the renderer needs" \
+				"$$(sed -n 's/^#define SCENE_MEMORY_BYTES //p' $(FW_DIR)/scene.h) bytes and the stack $(BOARD_STACK_BYTES);" \
+				"bake with a smaller --tile, --depth 16 or --apron off (tarn memory SCENE QUALITY shows the bytes)" >&2; fi; \
+		if grep -q "region .FLASH. overflowed" $(FW_DIR)/link.err; then \
+			echo "tarn: $(BOARD)'s flash cannot hold $(FW_SCENE): use smaller textures or fewer mesh segments (the header of $(FW_DIR)/scene.c counts the bytes)" >&2; fi; \
+		rm -f $@; exit 1; fi
+	@cat $(FW_DIR)/link.err >&2; rm -f $(FW_DIR)/link.err
+
+# One emulated run. QEMU's exit status is the firmware's.
+$(FW_DIR)/report.txt: $(FW_ELF) | fw-qemu
+	@rm -f $@ $@.tmp $(FW_DIR)/panel.stream $(FW_DIR)/panel.stream.tmp
+	@echo "run $(BOARD) under $(BOARD_QEMU) -icount shift=0"
+	@timeout $(FW_TIMEOUT) $(call BOARD_RUN,$(FW_ELF),$(FW_DIR)/panel.stream.tmp,$@.tmp) \
+		< /dev/null; status=$$?; \
+	if [ $$status -ne 0 ]; then echo "tarn: $(BOARD) exited with status $$status" \
+		"$$( [ $$status -eq 124 ] && echo '(timed out after $(FW_TIMEOUT) s)')" >&2; \
+		cat $@.tmp >&2 2>/dev/null; exit 1; fi
+	@mv $(FW_DIR)/panel.stream.tmp $(FW_DIR)/panel.stream && mv $@.tmp $@
+
+-include $(FW_OBJ:.o=.d)
+
+endif

@@ -1,0 +1,244 @@
+/* main.c: the board-independent firmware. Renders the baked scene with the integer
+ * core and sends every tile to an ST7789 through the panel drivers of core/panel.c,
+ * whose transport here writes the byte stream of tarn_panel.h through the board.
+ *
+ * One run: panel init, frame at FW_TIME_0 ms, frame at FW_TIME_1 ms (both into the
+ * same panel stream), the 'E' record, then the FW_TIME_1 frame once more into a sink
+ * that drops the tiles, and one line of text on the board's report channel:
+ *   target board=B scene=S size=WxH insn_per_pixel=N render_insn_per_pixel=N
+ *          stack_peak_bytes=N frame_insn=N,N,N counter_check=N/2000000
+ * insn_per_pixel is the two streamed frames' instructions (render, RGB565 conversion
+ * and the board's writes of the panel stream) over their pixels, rounded to nearest;
+ * render_insn_per_pixel is the core alone (the third frame); frame_insn gives the
+ * three frames' counts; counter_check is what the counter measured for a loop of
+ * exactly 2000000 instructions (the board's tick-to-instruction ratio, checked).
+ *
+ * build/firmware/BOARD/scene.h comes from `tarn bake SCENE -o scene.c --name scene`:
+ * it declares scene_scene, scene_config and SCENE_MEMORY_BYTES. */
+#include <stddef.h>
+#include <stdint.h>
+#include "board.h"
+#include "scene.h"
+#include "tarn_panel.h"
+#include "tarn_render.h"
+
+#ifndef FW_SCENE_LABEL
+#define FW_SCENE_LABEL "scene"
+#endif
+#ifndef FW_TIME_0
+#define FW_TIME_0 0u
+#endif
+#ifndef FW_TIME_1
+#define FW_TIME_1 1000u
+#endif
+#ifndef FW_DITHER
+#define FW_DITHER 1
+#endif
+
+/* The renderer's working memory: the only large buffer. */
+static uint32_t memory[(SCENE_MEMORY_BYTES + 3u) / 4u];
+/* One tile row in RGB565, for tarn_panel_send_tile. */
+static uint8_t line[2u * TARN_TILE_SIZE_MAX];
+
+static int emit(const void *bytes, size_t count)
+{
+    return board_write(bytes, count);
+}
+
+static int stream_command(void *user, uint8_t command)
+{
+    const uint8_t record[2] = {TARN_STREAM_COMMAND, command};
+    (void)user;
+    return emit(record, sizeof record);
+}
+
+static int stream_data(void *user, const uint8_t *bytes, size_t count)
+{
+    (void)user;
+    while (count > 0) {
+        size_t n = count > 0xFFFFu ? 0xFFFFu : count;
+        const uint8_t record[3] = {TARN_STREAM_DATA, (uint8_t)(n >> 8), (uint8_t)n};
+        if (emit(record, sizeof record) != 0 || emit(bytes, n) != 0) return 1;
+        bytes += n;
+        count -= n;
+    }
+    return 0;
+}
+
+static int stream_reset(void *user, int asserted)
+{
+    const uint8_t record[2] = {TARN_STREAM_RESET, (uint8_t)(asserted ? 1 : 0)};
+    (void)user;
+    return emit(record, sizeof record);
+}
+
+static int stream_delay(void *user, uint16_t milliseconds)
+{
+    const uint8_t record[3] = {TARN_STREAM_DELAY, (uint8_t)(milliseconds >> 8),
+                               (uint8_t)milliseconds};
+    (void)user;
+    return emit(record, sizeof record);
+}
+
+static int stream_end(uint8_t status)
+{
+    const uint8_t record[2] = {TARN_STREAM_END, status};
+    return emit(record, sizeof record);
+}
+
+typedef struct {
+    tarn_panel panel;
+    tarn_panel_transport transport;
+    tarn_status panel_status; /* why the sink stopped a frame */
+} panel_sink;
+
+static int send_tile(void *user, const tarn_tile *tile)
+{
+    panel_sink *sink = user;
+    sink->panel_status = tarn_panel_send_tile(&sink->panel, &sink->transport, tile, FW_DITHER,
+                                              line, sizeof line);
+    return sink->panel_status != TARN_OK;
+}
+
+/* Text without stdio: the report line is assembled here. */
+typedef struct {
+    char text[192];
+    size_t length;
+} report;
+
+static void put_text(report *r, const char *s)
+{
+    while (*s != '\0' && r->length < sizeof r->text) r->text[r->length++] = *s++;
+}
+
+static void put_number(report *r, uint64_t value)
+{
+    char digits[20];
+    size_t n = 0;
+    do {
+        digits[n++] = (char)('0' + (int)(value % 10u));
+        value /= 10u;
+    } while (value != 0);
+    while (n > 0 && r->length < sizeof r->text) r->text[r->length++] = digits[--n];
+}
+
+static int drop_tile(void *user, const tarn_tile *tile)
+{
+    (void)user;
+    (void)tile;
+    return 0;
+}
+
+static int send_report(const report *r)
+{
+    return board_report(r->text, r->length);
+}
+
+static uint64_t per_pixel(uint64_t instructions, uint64_t pixels)
+{
+    return (instructions + pixels / 2u) / pixels;
+}
+
+/* Exactly 2 * n instructions for n >= 1 (plus the call): a yardstick for the board's
+ * counter. */
+static void __attribute__((noinline)) spin(uint32_t n)
+{
+#if defined(__arm__)
+    __asm__ volatile(".syntax unified\n1: subs %0, %0, #1\n bne 1b" : "+l"(n) : : "cc");
+#elif defined(__riscv)
+    __asm__ volatile("1: addi %0, %0, -1\n bnez %0, 1b" : "+r"(n));
+#else
+#error "spin: Arm or RISC-V"
+#endif
+}
+
+#define COUNTER_CHECK_INSTRUCTIONS 2000000u
+
+/* What the counter says COUNTER_CHECK_INSTRUCTIONS take: a long spin minus a spin
+ * of one iteration, which cancels the calls and the counter reads. */
+static uint64_t counter_check(void)
+{
+    uint64_t t0 = board_instructions();
+    spin(1);
+    uint64_t t1 = board_instructions();
+    spin(1u + COUNTER_CHECK_INSTRUCTIONS / 2u);
+    uint64_t t2 = board_instructions();
+    return (t2 - t1) - (t1 - t0);
+}
+
+/* The report line; kept out of main() so that its buffer is not on the stack while
+ * the frames render. Returns main's exit status. */
+static int __attribute__((noinline)) report_run(tarn_status status, const uint64_t frame_instructions[3],
+                                                uint64_t counter)
+{
+    report r = {{0}, 0};
+    if (status != TARN_OK) {
+        put_text(&r, "error board=");
+        put_text(&r, board_name);
+        put_text(&r, " status=");
+        put_text(&r, tarn_status_text(status));
+        put_text(&r, "\n");
+        (void)send_report(&r);
+        return 1;
+    }
+    uint64_t pixels = (uint64_t)scene_config.width * scene_config.height;
+    put_text(&r, "target board=");
+    put_text(&r, board_name);
+    put_text(&r, " scene=" FW_SCENE_LABEL " size=");
+    put_number(&r, scene_config.width);
+    put_text(&r, "x");
+    put_number(&r, scene_config.height);
+    put_text(&r, " insn_per_pixel=");
+    put_number(&r, per_pixel(frame_instructions[0] + frame_instructions[1], 2u * pixels));
+    put_text(&r, " render_insn_per_pixel=");
+    put_number(&r, per_pixel(frame_instructions[2], pixels));
+    put_text(&r, " stack_peak_bytes=");
+    put_number(&r, board_stack_peak());
+    put_text(&r, " frame_insn=");
+    for (unsigned i = 0; i < 3u; i++) {
+        if (i > 0) put_text(&r, ",");
+        put_number(&r, frame_instructions[i]);
+    }
+    put_text(&r, " counter_check=");
+    put_number(&r, counter);
+    put_text(&r, "/");
+    put_number(&r, COUNTER_CHECK_INSTRUCTIONS);
+    put_text(&r, "\n");
+    return send_report(&r) != 0 ? 2 : 0;
+}
+
+int main(void)
+{
+    static const uint32_t times[2] = {FW_TIME_0, FW_TIME_1};
+    static panel_sink sink;
+    uint64_t frame_instructions[3] = {0, 0, 0};
+    tarn_status status;
+
+    if (board_init() != 0) return 2;
+    sink.panel = tarn_panel_preset(TARN_PANEL_ST7789_240X240, 0);
+    sink.transport.user = &sink;
+    sink.transport.command = stream_command;
+    sink.transport.data = stream_data;
+    sink.transport.reset = stream_reset;
+    sink.transport.delay_ms = stream_delay;
+    sink.panel_status = TARN_OK;
+
+    status = tarn_panel_init(&sink.panel, &sink.transport);
+    for (unsigned i = 0; i < 2u && status == TARN_OK; i++) {
+        tarn_frame_config config = scene_config;
+        config.time_ms = times[i];
+        uint64_t start = board_instructions();
+        status = tarn_render_frame(&scene_scene, &config, memory, sizeof memory, send_tile, &sink);
+        frame_instructions[i] = board_instructions() - start;
+        if (status == TARN_ERR_SINK && sink.panel_status != TARN_OK) status = sink.panel_status;
+    }
+    if (stream_end((uint8_t)status) != 0) return 2;
+    if (status == TARN_OK) { /* the core alone: the same frame, tiles dropped */
+        tarn_frame_config config = scene_config;
+        config.time_ms = times[1];
+        uint64_t start = board_instructions();
+        status = tarn_render_frame(&scene_scene, &config, memory, sizeof memory, drop_tile, 0);
+        frame_instructions[2] = board_instructions() - start;
+    }
+    return report_run(status, frame_instructions, counter_check());
+}

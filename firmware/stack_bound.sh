@@ -1,0 +1,118 @@
+#!/bin/sh
+# stack_bound.sh: the deepest stack a firmware build can use, from GCC's call graphs.
+#
+# Usage: firmware/stack_bound.sh CROSS OBJDIR ENTRY [HANDLER:EXTRA_BYTES...]
+#   CROSS    the toolchain prefix (arm-none-eabi-), for readelf
+#   OBJDIR   where the objects and their .ci files are (-fcallgraph-info=su)
+#   ENTRY    the function the stack starts in (reset_handler, main)
+#   HANDLER  an interrupt handler that can preempt at any depth, and the bytes the
+#            hardware pushes before it runs (Cortex-M: 32, plus 4 of alignment)
+# Prints: stack_bytes=N, then the deepest path, one "bytes function" per line.
+#
+# Each function costs its own frame (.ci "N bytes (static)") plus its deepest callee.
+# An indirect call (GCC's __indirect_call node) may reach any function whose address
+# the program takes (a relocation from code or data to a function that is not a
+# call or a branch) and that is not already on the chain: an over-estimate, since
+# a tile sink is counted as reachable from the panel transport and the other way
+# round, but one that needs no list of who calls which pointer. Functions without a call graph (libgcc's and newlib's: memset,
+# __aeabi_uldivmod...) are leaves costing LIBRARY_BYTES each; they are listed.
+# Recursion, or a frame of dynamic size, makes the bound unknown: exit status 1.
+set -eu
+[ $# -ge 3 ] || { echo "usage: $0 CROSS OBJDIR ENTRY [HANDLER:BYTES...]" >&2; exit 2; }
+cross=$1 objdir=$2 entry=$3
+shift 3
+LIBRARY_BYTES=${LIBRARY_BYTES:-64}
+
+cis=$(find "$objdir" -name '*.ci' | sort)
+objs=$(find "$objdir" -name '*.o' | sort)
+[ -n "$cis" ] || { echo "stack_bound: no .ci files in $objdir (build with -fcallgraph-info=su)" >&2; exit 2; }
+
+# Address-taken functions: non-call relocations in code and data sections that name
+# a function's section (.text.NAME, -ffunction-sections) or a function symbol.
+taken=$(for o in $objs; do "${cross}readelf" -rW "$o"; done | awk '
+    /^Relocation section/ {
+        s = $3; gsub(/\047/, "", s)
+        use = (s ~ /^\.rela?\.(text|rodata|data|sdata|srodata)/)
+        next
+    }
+    use && NF >= 5 && $3 !~ /(CALL|JUMP|JAL|BRANCH|RELAX|ALIGN|PCREL_LO12|V4BX|TLS)/ {
+        name = $5
+        sub(/^\.text\./, "", name)
+        print name
+    }' | sort -u)
+
+cat $cis | awk -v entry="$entry" -v handlers="$*" -v taken="$taken" -v library="$LIBRARY_BYTES" '
+function bare(title) { sub(/^.*:/, "", title); return title }
+/^node:/ {
+    title = $0; sub(/^node: \{ title: "/, "", title); sub(/".*$/, "", title)
+    name = bare(title)
+    label = $0; sub(/^.* label: "/, "", label); sub(/".*$/, "", label)
+    if (label ~ /[0-9]+ bytes \(/) {
+        bytes = label; sub(/^.*\\n/, "", bytes)
+        n = bytes + 0
+        if (bytes ~ /dynamic/ && bytes !~ /bounded/) dynamic[name] = 1
+        if (!(name in frame) || n > frame[name]) frame[name] = n
+    }
+    next
+}
+/^edge:/ {
+    s = $0; sub(/^edge: \{ sourcename: "/, "", s); sub(/".*$/, "", s)
+    t = $0; sub(/^.* targetname: "/, "", t); sub(/".*$/, "", t)
+    s = bare(s); t = bare(t)
+    if (!((s, t) in seen)) { seen[s, t] = 1; calls[s] = calls[s] " " t }
+}
+# deepest(f): bytes from entering f to the bottom of its deepest call chain. An
+# indirect call skips the targets already on the chain (a function pointer that
+# leads back into its own caller is not how this firmware works); a result that
+# skipped something depends on the chain, so it is not memoised.
+function deepest(f,    list, n, i, c, d, best, via, k, own, was_tainted, mine) {
+    if (f in memo) return memo[f]
+    if (f in active) { recursive = recursive " " f; return 0 }
+    active[f] = 1
+    was_tainted = tainted; tainted = 0
+    best = 0; via = ""
+    n = split(calls[f], list, " ")
+    for (i = 1; i <= n; i++) {
+        c = list[i]
+        if (c == "__indirect_call") {
+            for (k in address_taken) {
+                if (k in active) { tainted = 1; continue }
+                d = deepest(k)
+                if (d > best) { best = d; via = k }
+            }
+            continue
+        }
+        d = deepest(c)
+        if (d > best) { best = d; via = c }
+    }
+    delete active[f]
+    if (f in frame) own = frame[f]
+    else { own = library; unknown[f] = 1 }
+    if (f in dynamic) dynamics = dynamics " " f
+    mine = tainted
+    tainted = was_tainted || mine
+    if (!mine) memo[f] = own + best
+    next_of[f] = via
+    return own + best
+}
+END {
+    n = split(taken, list, "\n")
+    for (i = 1; i <= n; i++) if (list[i] in frame || list[i] in calls) address_taken[list[i]] = 1
+    if (!(entry in frame)) { print "stack_bound: no function " entry " in the call graph" > "/dev/stderr"; exit 2 }
+    total = deepest(entry)
+    worst_handler = 0; worst_name = ""
+    n = split(handlers, hl, " ")
+    for (i = 1; i <= n; i++) {
+        split(hl[i], part, ":")
+        d = deepest(part[1]) + part[2]
+        if (d > worst_handler) { worst_handler = d; worst_name = hl[i] }
+    }
+    printf "stack_bytes=%d\n", total + worst_handler
+    for (f = entry; f != ""; f = next_of[f]) printf "%6d %s\n", (f in frame) ? frame[f] : library, f
+    if (worst_name != "") printf "%6d interrupt %s (its chain and the pushed bytes)\n", worst_handler, worst_name
+    for (f in unknown) u = u " " f
+    if (u != "") print "library leaves counted as " library " bytes:" u
+    if (recursive != "") { print "recursion through:" recursive; bad = 1 }
+    if (dynamics != "") { print "frames of dynamic size:" dynamics; bad = 1 }
+    exit bad
+}'

@@ -1,0 +1,100 @@
+#!/bin/sh
+# check_firmware.sh: the built and emulated firmware, board by board.
+#
+#   tests/check_firmware.sh BOARD...          checks (make test, after make firmware-run)
+#   tests/check_firmware.sh --bench BOARD...  one line per board (make bench-target):
+#     target board=B scene=S size=WxH insn_per_pixel=N ram_bytes=N flash_bytes=N
+#            stack_bytes=N render_insn_per_pixel=N scene_bytes=N code_bytes=N
+#            stack_peak_bytes=N stack_reserved_bytes=N
+#
+# ram_bytes: .data + .bss + the stack reserved by the linker script; flash_bytes:
+# .text + .data (the image); scene_bytes: the baked scene's const data (symbols
+# scene_*), code_bytes the rest of the image; stack_bytes: the deepest call chain
+# GCC's call graphs allow (firmware/stack_bound.sh), stack_peak_bytes what the run
+# really used (startup paints the stack).
+#
+# Checks, per board: the run finished and reported; the board's counter measured a
+# loop of known length within 0.01%; the stack bound and the measured peak fit the
+# reserved stack; the image links no floating-point helper, allocator or stdio.
+# The byte-for-byte comparison with the host is tests/test_firmware.c.
+set -u
+bench=0
+if [ "${1:-}" = --bench ]; then bench=1; shift; fi
+[ $# -gt 0 ] || { echo "usage: $0 [--bench] BOARD..." >&2; exit 2; }
+
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+field() { # field NAME TEXT: the value of NAME=value in a line of words
+    printf '%s\n' "$2" | tr ' ' '\n' | sed -n "s/^$1=//p" | head -1
+}
+conf() { sed -n "s/^$1=//p" "$dir/firmware.conf"; }
+
+for board in "$@"; do
+    dir=build/firmware/$board
+    elf=$dir/firmware.elf
+    if [ ! -f "$dir/firmware.conf" ] || [ ! -f "$elf" ]; then
+        fail "$board: not built (make firmware BOARD=$board)"
+        continue
+    fi
+    cross=$(conf cross)
+    reserved=$(conf stack_bytes)
+    # Berkeley format: text data bss
+    set -- $("${cross}size" "$elf" | awk 'NR == 2 {print $1, $2, $3}')
+    text=$1 data=$2 bss=$3
+    flash=$((text + data))
+    ram=$((data + bss))
+    scene_bytes=$("${cross}nm" -S --defined-only "$elf" | awk '
+        function hex(s,    i, v) { v = 0; for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(tolower(s), i, 1)) - 1; return v }
+        NF == 4 && $4 ~ /^scene_/ && $3 ~ /^[rRtT]$/ { n += hex($2) }
+        END { print n + 0 }')
+    code=$((flash - scene_bytes))
+    bound_out=$(firmware/stack_bound.sh "$cross" "$dir/obj" $(conf stack_entry))
+    bound_status=$?
+    stack=$(field stack_bytes "$(printf '%s\n' "$bound_out" | head -1)")
+
+    report=$(cat "$dir/report.txt" 2>/dev/null || true)
+    case $report in
+    "target board=$board "*) ;;
+    *)
+        fail "$board: no report from a finished run in $dir/report.txt (make firmware-run BOARD=$board): $report"
+        continue
+        ;;
+    esac
+    peak=$(field stack_peak_bytes "$report")
+
+    if [ $bench = 1 ]; then
+        echo "target board=$board scene=$(field scene "$report") size=$(field size "$report")" \
+            "insn_per_pixel=$(field insn_per_pixel "$report") ram_bytes=$ram flash_bytes=$flash" \
+            "stack_bytes=$stack render_insn_per_pixel=$(field render_insn_per_pixel "$report")" \
+            "scene_bytes=$scene_bytes code_bytes=$code stack_peak_bytes=$peak stack_reserved_bytes=$reserved"
+        continue
+    fi
+
+    echo "== $board: $report"
+    counter=$(field counter_check "$report")
+    measured=${counter%/*} expected=${counter#*/}
+    if [ -n "$counter" ] && [ $((measured - expected)) -le $((expected / 10000)) ] &&
+        [ $((expected - measured)) -le $((expected / 10000)) ]; then pass; else
+        fail "$board: the counter measured $measured instructions for a loop of $expected"; fi
+
+    if [ $bound_status -eq 0 ] && [ -n "$stack" ]; then pass; else
+        fail "$board: no stack bound: $bound_out"; fi
+    if [ -n "$stack" ] && [ "$stack" -le "$reserved" ]; then pass; else
+        fail "$board: the deepest call chain needs $stack bytes of stack, the board reserves $reserved (BOARD_STACK_BYTES):"
+        printf '%s\n' "$bound_out"; fi
+    if [ -n "$peak" ] && [ "$peak" -lt "$reserved" ] && [ "$peak" -le "${stack:-0}" ]; then pass; else
+        fail "$board: the run used $peak bytes of stack; reserved $reserved, bound ${stack:-?}"; fi
+
+    forbidden=$("${cross}nm" "$elf" | awk '{print $NF}' |
+        grep -E '^(__aeabi_[fd][a-z0-9]*|__aeabi_[a-z0-9]+2[fd]|__(add|sub|mul|div)[sd]f3|__float[a-z]*|__fix[a-z]*|malloc|free|calloc|realloc|printf|puts|_sbrk)$' || true)
+    if [ -z "$forbidden" ]; then pass; else
+        fail "$board: the image links $(echo $forbidden)"; fi
+
+    echo "$board: flash $flash bytes ($scene_bytes scene, $code code), RAM $ram bytes, stack bound $stack, peak $peak, reserved $reserved"
+done
+
+[ $bench = 1 ] && exit $((failed > 0))
+echo "firmware: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

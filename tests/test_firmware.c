@@ -1,0 +1,318 @@
+/* test_firmware.c: what each emulated board sent its panel equals the host's integer
+ * render, byte for byte.
+ *
+ * For every board run found in build/firmware/BOARD/ (made by `make firmware-run`,
+ * which `make test` runs first): firmware.conf names the scene, the bake flags, the
+ * two animation times and the dither; panel.stream is the byte stream the board
+ * wrote (ST7789 commands and data, tarn_panel.h) and report.txt its report line.
+ * The stream is replayed into the host panel emulator; the picture after the first
+ * frame's pixels and the one at the end are compared with the host's render of the
+ * same scene, quality and time, converted with tarn_rgb565. The emulator must also
+ * have ignored nothing: no early command, no unknown command, no stray data. */
+#include <dirent.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <cmocka.h>
+
+#include "cli_options.h"
+#include "core_render.h"
+#include "panel_emulator.h"
+#include "panel_stream.h"
+#include "scene_load.h"
+#include "tarn_panel.h"
+
+#define FIRMWARE_DIR "build/firmware"
+#define BOARDS_MAX 16
+#define FLAGS_MAX 16
+
+typedef struct {
+    char board[64];
+    char scene[256];
+    char bake_flags[256];
+    uint32_t times[2];
+    int dither;
+} firmware_conf;
+
+static char *read_file(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) return NULL;
+    size_t capacity = 4096, n = 0;
+    char *bytes = malloc(capacity + 1);
+    for (size_t got; bytes != NULL && (got = fread(bytes + n, 1, capacity - n, f)) > 0;) {
+        n += got;
+        if (n == capacity) {
+            char *grown = realloc(bytes, 2 * capacity + 1);
+            if (grown == NULL) free(bytes);
+            bytes = grown;
+            capacity *= 2;
+        }
+    }
+    fclose(f);
+    if (bytes != NULL) bytes[n] = '\0';
+    if (size != NULL) *size = n;
+    return bytes;
+}
+
+static void copy_value(char *out, size_t size, const char *text, const char *key)
+{
+    size_t key_length = strlen(key);
+    out[0] = '\0';
+    for (const char *line = text; line != NULL && *line != '\0';) {
+        const char *end = strchr(line, '\n');
+        size_t length = end ? (size_t)(end - line) : strlen(line);
+        if (length > key_length && strncmp(line, key, key_length) == 0 && line[key_length] == '=') {
+            size_t n = length - key_length - 1;
+            if (n >= size) n = size - 1;
+            memcpy(out, line + key_length + 1, n);
+            out[n] = '\0';
+            return;
+        }
+        line = end ? end + 1 : NULL;
+    }
+}
+
+static void read_conf(const char *board, firmware_conf *conf)
+{
+    char path[512], value[64];
+    snprintf(path, sizeof path, FIRMWARE_DIR "/%s/firmware.conf", board);
+    char *text = read_file(path, NULL);
+    if (text == NULL) fail_msg("%s: cannot read it", path);
+    memset(conf, 0, sizeof *conf);
+    copy_value(conf->board, sizeof conf->board, text, "board");
+    copy_value(conf->scene, sizeof conf->scene, text, "scene");
+    copy_value(conf->bake_flags, sizeof conf->bake_flags, text, "bake_flags");
+    copy_value(value, sizeof value, text, "times");
+    unsigned t0, t1;
+    if (sscanf(value, "%u,%u", &t0, &t1) != 2) fail_msg("%s: times: expected T0,T1, got '%s'", path, value);
+    conf->times[0] = t0;
+    conf->times[1] = t1;
+    copy_value(value, sizeof value, text, "dither");
+    conf->dither = strcmp(value, "1") == 0;
+    free(text);
+    if (strcmp(conf->board, board) != 0 || conf->scene[0] == '\0')
+        fail_msg("%s: expected board=%s and a scene", path, board);
+}
+
+/* The frame config the bake used: the scene's own size and the bake flags, parsed
+ * the way `tarn bake` parses them. */
+static tarn_frame_config bake_config(const firmware_conf *conf, const tarn_loaded_scene *scene)
+{
+    char flags[sizeof conf->bake_flags];
+    char *argv[FLAGS_MAX + 3] = {"tarn", "memory", (char *)conf->scene};
+    int argc = 3;
+    memcpy(flags, conf->bake_flags, sizeof flags);
+    for (char *word = strtok(flags, " "); word != NULL; word = strtok(NULL, " ")) {
+        if (argc == FLAGS_MAX + 3) fail_msg("%s: too many bake flags", conf->board);
+        argv[argc++] = word;
+    }
+    tarn_cli_options options;
+    tarn_error err;
+    if (tarn_cli_parse(argc, argv, &options, &err) != 0)
+        fail_msg("%s: bake flags '%s': %s", conf->board, conf->bake_flags, err.message);
+    tarn_frame_config config = {options.width ? options.width : scene->width,
+                                options.height ? options.height : scene->height, options.quality, 0};
+    return config;
+}
+
+/* The emulator behind a transport that photographs the picture as soon as the first
+ * frame's last pixel has arrived. */
+typedef struct {
+    tarn_panel_emulator emulator;
+    tarn_panel_transport inner;
+    uint32_t frame_pixels;
+    uint16_t *first; /* the picture after frame_pixels pixels, NULL until then */
+    size_t picture_words;
+} recording_panel;
+
+static int record_command(void *user, uint8_t command)
+{
+    recording_panel *p = user;
+    return p->inner.command(p->inner.user, command);
+}
+
+static int record_data(void *user, const uint8_t *bytes, size_t count)
+{
+    recording_panel *p = user;
+    int status = p->inner.data(p->inner.user, bytes, count);
+    if (p->first == NULL && p->emulator.counts.pixels_written >= p->frame_pixels) {
+        p->first = malloc(p->picture_words * sizeof *p->first);
+        assert_non_null(p->first);
+        tarn_panel_emulator_image(&p->emulator, p->first);
+    }
+    return status;
+}
+
+static int record_reset(void *user, int asserted)
+{
+    recording_panel *p = user;
+    return p->inner.reset(p->inner.user, asserted);
+}
+
+static int record_delay(void *user, uint16_t milliseconds)
+{
+    recording_panel *p = user;
+    return p->inner.delay_ms(p->inner.user, milliseconds);
+}
+
+static time_t modified(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 ? st.st_mtime : (time_t)-1;
+}
+
+/* Compares the panel's picture (panel_width wide) with the host render of the frame
+ * at `time_ms`; prints and counts the pixels that differ. */
+static size_t compare_frame(const firmware_conf *conf, const tarn_loaded_scene *scene,
+                            tarn_frame_config config, uint32_t time_ms, const uint16_t *picture,
+                            uint16_t panel_width)
+{
+    tarn_error err;
+    size_t pixels = (size_t)config.width * config.height, differ = 0;
+    uint8_t *rgb = malloc(3 * pixels);
+    assert_non_null(rgb);
+    config.time_ms = time_ms;
+    if (tarn_core_render(&scene->scene, &config, rgb, NULL, &err) != 0)
+        fail_msg("%s: host render: %s", conf->board, err.message);
+    for (uint16_t y = 0; y < config.height; y++)
+        for (uint16_t x = 0; x < config.width; x++) {
+            const uint8_t *p = rgb + 3 * ((size_t)y * config.width + x);
+            uint16_t want = tarn_rgb565(((uint32_t)p[0] << 16) | ((uint32_t)p[1] << 8) | p[2], x, y,
+                                        conf->dither);
+            uint16_t got = picture[(size_t)y * panel_width + x];
+            if (want != got && differ++ < 5)
+                print_message("%s t=%u: pixel (%u, %u): board 0x%04x, host 0x%04x\n", conf->board,
+                              time_ms, x, y, got, want);
+        }
+    free(rgb);
+    return differ;
+}
+
+static void test_board_matches_host(void **state)
+{
+    const char *board = *state;
+    char path[512];
+    firmware_conf conf;
+    read_conf(board, &conf);
+
+    snprintf(path, sizeof path, FIRMWARE_DIR "/%s/report.txt", board);
+    char *report = read_file(path, NULL);
+    if (report == NULL) fail_msg("%s: no report: run make firmware-run BOARD=%s", path, board);
+    char expected[96];
+    snprintf(expected, sizeof expected, "target board=%s ", board);
+    if (strncmp(report, expected, strlen(expected)) != 0) fail_msg("%s: %s", path, report);
+    print_message("%s", report);
+    free(report);
+
+    char conf_path[512];
+    snprintf(conf_path, sizeof conf_path, FIRMWARE_DIR "/%s/firmware.conf", board);
+    snprintf(path, sizeof path, FIRMWARE_DIR "/%s/panel.stream", board);
+    if (modified(path) < modified(conf_path))
+        fail_msg("%s is older than its build: run make firmware-run BOARD=%s", path, board);
+
+    tarn_loaded_scene scene;
+    tarn_error err;
+    if (tarn_scene_load(conf.scene, &scene, &err) != 0) fail_msg("%s", err.message);
+    tarn_frame_config config = bake_config(&conf, &scene);
+
+    recording_panel *panel = calloc(1, sizeof *panel);
+    assert_non_null(panel);
+    assert_int_equal(tarn_panel_emulator_init(&panel->emulator, TARN_PANEL_ST7789_240X240, 0), 0);
+    panel->inner = tarn_panel_emulator_transport(&panel->emulator);
+    panel->frame_pixels = (uint32_t)config.width * config.height;
+    uint16_t width = tarn_panel_emulator_width(&panel->emulator);
+    panel->picture_words = (size_t)width * tarn_panel_emulator_height(&panel->emulator);
+    tarn_panel_transport transport = {panel, record_command, record_data, record_reset, record_delay};
+    if (tarn_panel_stream_decode_file(path, &transport, &err) != 0) fail_msg("%s", err.message);
+
+    const tarn_panel_emulator_counts *c = &panel->emulator.counts;
+    print_message("%s: %u commands, %u data bytes, %u pixels, %u ms of delays\n", board, c->commands,
+                  c->data_bytes, c->pixels_written, c->delay_ms);
+    assert_int_equal(c->pixels_written, 2u * panel->frame_pixels);
+    assert_int_equal(c->pixels_outside_ram, 0);
+    assert_int_equal(c->pixel_bytes_ignored, 0);
+    assert_int_equal(c->data_ignored, 0);
+    assert_int_equal(c->parameters_incomplete, 0);
+    assert_int_equal(c->unknown_commands, 0);
+    assert_int_equal(c->commands_too_early, 0);
+    assert_true(config.width <= width);
+
+    uint16_t *last = malloc(panel->picture_words * sizeof *last);
+    assert_non_null(last);
+    tarn_panel_emulator_image(&panel->emulator, last);
+    size_t differ0 = compare_frame(&conf, &scene, config, conf.times[0], panel->first, width);
+    size_t differ1 = compare_frame(&conf, &scene, config, conf.times[1], last, width);
+    print_message("%s: %s %ux%u at %u ms and %u ms: %zu and %zu pixels differ from the host\n", board,
+                  conf.scene, config.width, config.height, conf.times[0], conf.times[1], differ0, differ1);
+    size_t changed = 0;
+    for (size_t i = 0; i < panel->picture_words; i++) changed += panel->first[i] != last[i];
+    print_message("%s: %zu pixels change between the two times\n", board, changed);
+    free(last);
+    free(panel->first);
+    free(panel);
+    tarn_scene_free(&scene);
+    assert_int_equal(differ0, 0);
+    assert_int_equal(differ1, 0);
+    assert_true(changed > 0); /* the clock reached the firmware */
+}
+
+static void test_no_board_has_run(void **state)
+{
+    (void)state;
+    print_message("no board runs in " FIRMWARE_DIR ": make firmware-run (make test does it)\n");
+    skip();
+}
+
+/* Boards whose build says they run under an emulator (firmware.conf has emulated=1). */
+static size_t find_boards(char names[][64], size_t max)
+{
+    DIR *dir = opendir(FIRMWARE_DIR);
+    size_t n = 0;
+    if (dir == NULL) return 0;
+    for (struct dirent *e; (e = readdir(dir)) != NULL && n < max;) {
+        char path[512], value[8];
+        if (e->d_name[0] == '.' || strlen(e->d_name) >= 64) continue;
+        snprintf(path, sizeof path, FIRMWARE_DIR "/%s/firmware.conf", e->d_name);
+        char *text = read_file(path, NULL);
+        if (text == NULL) continue;
+        copy_value(value, sizeof value, text, "emulated");
+        free(text);
+        if (strcmp(value, "1") == 0) memcpy(names[n++], e->d_name, strlen(e->d_name) + 1);
+    }
+    closedir(dir);
+    for (size_t i = 1; i < n; i++) /* a stable order */
+        for (size_t j = i; j > 0 && strcmp(names[j - 1], names[j]) > 0; j--) {
+            char t[64];
+            memcpy(t, names[j], 64);
+            memcpy(names[j], names[j - 1], 64);
+            memcpy(names[j - 1], t, 64);
+        }
+    return n;
+}
+
+int main(void)
+{
+    static char boards[BOARDS_MAX][64];
+    static char names[BOARDS_MAX][96];
+    static const char suffix[] = " matches the host";
+    static void *states[BOARDS_MAX];
+    struct CMUnitTest tests[BOARDS_MAX];
+    size_t n = find_boards(boards, BOARDS_MAX);
+    for (size_t i = 0; i < n; i++) {
+        memcpy(names[i], boards[i], 64);
+        memcpy(names[i] + strlen(boards[i]), suffix, sizeof suffix);
+        states[i] = boards[i];
+        tests[i] = (struct CMUnitTest){names[i], test_board_matches_host, NULL, NULL, states[i]};
+    }
+    if (n == 0) {
+        tests[0] = (struct CMUnitTest){"no board has run", test_no_board_has_run, NULL, NULL, NULL};
+        n = 1;
+    }
+    return _cmocka_run_group_tests("firmware", tests, n, NULL, NULL);
+}
