@@ -105,7 +105,8 @@ endif
 # The scene as const C: scene_scene, scene_config, SCENE_MEMORY_BYTES.
 $(FW_DIR)/scene.c: $(FW_SCENE) $(FW_TARN) $(FW_DIR)/firmware.conf | fw-toolchain
 	@mkdir -p $(FW_DIR)
-	$(FW_TARN) bake $(FW_SCENE) -o $@ --name scene $(FW_BAKE_FLAGS)
+	@echo "$(FW_TARN) bake $(FW_SCENE) -o $@ --name scene $(FW_BAKE_FLAGS)" >&2
+	@$(FW_TARN) bake $(FW_SCENE) -o $@ --name scene $(FW_BAKE_FLAGS) >&2
 
 $(FW_DIR)/scene.h: $(FW_DIR)/scene.c
 
@@ -137,7 +138,8 @@ $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
 		if grep -q "region .RAM. overflowed" $(FW_DIR)/link.err; then \
 			echo "tarn: $(BOARD) has too little RAM for $(FW_SCENE) [$(FW_BAKE_FLAGS)]: the renderer needs" \
 				"$$(sed -n 's/^#define SCENE_MEMORY_BYTES //p' $(FW_DIR)/scene.h) bytes and the stack $(BOARD_STACK_BYTES);" \
-				"bake with a smaller --tile, --depth 16 or --apron off (tarn memory SCENE QUALITY shows the bytes)" >&2; fi; \
+				"bake with a smaller --tile (or --depth 16, --apron off where they are not set yet;" \
+				"tarn memory SCENE QUALITY shows the bytes)" >&2; fi; \
 		if grep -q "region .FLASH. overflowed" $(FW_DIR)/link.err; then \
 			echo "tarn: $(BOARD)'s flash cannot hold $(FW_SCENE): use smaller textures or fewer mesh segments (the header of $(FW_DIR)/scene.c counts the bytes)" >&2; fi; \
 		rm -f $@; exit 1; fi
@@ -146,7 +148,7 @@ $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
 # One emulated run. QEMU's exit status is the firmware's.
 $(FW_DIR)/report.txt: $(FW_ELF) | fw-qemu
 	@rm -f $@ $@.tmp $(FW_DIR)/panel.stream $(FW_DIR)/panel.stream.tmp
-	@echo "run $(BOARD) under $(BOARD_QEMU) -icount shift=0"
+	@echo "run $(BOARD) under $(BOARD_QEMU) -icount shift=0" >&2
 	@timeout $(FW_TIMEOUT) $(call BOARD_RUN,$(FW_ELF),$(FW_DIR)/panel.stream.tmp,$@.tmp) \
 		< /dev/null; status=$$?; \
 	if [ $$status -ne 0 ]; then echo "tarn: $(BOARD) exited with status $$status" \
