@@ -60,6 +60,20 @@ enum {
     TARN_WATER_SPARKLES = 1u << 8
 };
 
+/* What of the water code is linked. Firmware compiles core/ with  -include NAME_link.h
+ * (from tarn bake), which sets these to what the baked scene uses, and the code of
+ * every other effect drops out of the image; tarn_render_frame then refuses a scene
+ * that needs a part left out (TARN_ERR_SCENE). Without that file, all is linked. */
+#ifndef TARN_LINK_WATER
+#define TARN_LINK_WATER 1 /* water materials at all */
+#endif
+#ifndef TARN_LINK_WATER_FEATURES
+#define TARN_LINK_WATER_FEATURES 0xFFFFFFFFu /* TARN_WATER_* bits */
+#endif
+#ifndef TARN_LINK_UNDERWATER
+#define TARN_LINK_UNDERWATER 1 /* the underwater view */
+#endif
+
 /* The widest apron any frame renders: a material whose refraction could reach
  * farther is malformed (tarn_water_reach_pixels). */
 #define TARN_WATER_APRON_MAX 32u

@@ -102,13 +102,19 @@ $(FW_TARN): FORCE
 	@$(MAKE) --no-print-directory BUILD=build/release SAN=0 $(FW_TARN)
 endif
 
-# The scene as const C: scene_scene, scene_config, SCENE_MEMORY_BYTES.
+# The scene as const C: scene_scene, scene_config, SCENE_MEMORY_BYTES; scene_link.h
+# holds the TARN_LINK_* switches that leave the effects the scene does not use out of
+# the core's objects.
 $(FW_DIR)/scene.c: $(FW_SCENE) $(FW_TARN) $(FW_DIR)/firmware.conf | fw-toolchain
 	@mkdir -p $(FW_DIR)
 	@echo "$(FW_TARN) bake $(FW_SCENE) -o $@ --name scene $(FW_BAKE_FLAGS)" >&2
 	@$(FW_TARN) bake $(FW_SCENE) -o $@ --name scene $(FW_BAKE_FLAGS) >&2
 
-$(FW_DIR)/scene.h: $(FW_DIR)/scene.c
+$(FW_DIR)/scene.h $(FW_DIR)/scene_link.h: $(FW_DIR)/scene.c
+
+FW_CORE_OBJ := $(filter $(FW_DIR)/obj/core/%,$(FW_OBJ))
+$(FW_CORE_OBJ): $(FW_DIR)/scene_link.h
+$(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h
 
 $(FW_OBJ): firmware/firmware.mk boards/$(BOARD)/board.mk
 $(FW_DIR)/obj/firmware/main.o: $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf

@@ -813,6 +813,7 @@ static void macro_name(const char *name, char out[TARN_BAKE_NAME_MAX + 1])
 
 typedef struct {
     const char *header_path;
+    const char *link_path;
     size_t bytes[BYTES_KINDS];
     size_t const_bytes;
     size_t memory_bytes;
@@ -860,32 +861,66 @@ static void print_header(FILE *out, const bake_plan *p, const tarn_bake_options 
     fputs("#endif\n", out);
 }
 
-/* Both files to temporaries, then renamed into place; a failure removes both. */
+/* 1 if some object's material is water; `features`: the TARN_WATER_* bits they use. */
+static int used_water(const tarn_scene *scene, uint32_t *features)
+{
+    int water = 0;
+    *features = 0;
+    for (uint32_t i = 0; i < scene->object_count; i++) {
+        const tarn_material *m = scene->objects[i].material;
+        if (m == NULL || m->water == NULL) continue;
+        water = 1;
+        *features |= m->water->features;
+    }
+    return water;
+}
+
+static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,
+                              const bake_totals *totals)
+{
+    uint32_t features;
+    const int water = used_water(&p->scene->scene, &features);
+    text_buffer names = {{0}, 0};
+    format_features(&names, features);
+    fputs("/* ", out);
+    comment_text(out, base_name(totals->link_path));
+    fputs(": the parts of the renderer the scene ", out);
+    comment_text(out, o->scene_path);
+    fputs(" uses.\n * Generated; do not edit. Compile core/ with  -include ", out);
+    comment_text(out, base_name(totals->link_path));
+    fputs("  and the code of\n * every effect the scene does not use is left out of the image (tarn_water.h). */\n",
+          out);
+    fprintf(out, "#define TARN_LINK_WATER %d\n", water);
+    fprintf(out, "#define TARN_LINK_WATER_FEATURES (%s)\n", names.text);
+    fprintf(out, "#define TARN_LINK_UNDERWATER %d\n", p->scene->scene.underwater != NULL);
+}
+
+/* The three files to temporaries, then renamed into place; a failure removes all. */
 static int write_outputs(const bake_plan *p, const tarn_bake_options *o, const bake_totals *totals,
                          tarn_error *err)
 {
-    tarn_atomic_file source, header;
-    if (tarn_atomic_open(&source, o->output_path, err) != 0) return -1;
-    if (tarn_atomic_open(&header, totals->header_path, err) != 0) {
-        tarn_atomic_abandon(&source);
+    const char *paths[3] = {o->output_path, totals->header_path, totals->link_path};
+    tarn_atomic_file files[3];
+    size_t opened = 0;
+    for (; opened < 3; opened++)
+        if (tarn_atomic_open(&files[opened], paths[opened], err) != 0) break;
+    emitter e = {files[0].file, p, 0};
+    if (opened == 3) {
+        print_source_comment(files[0].file, p, o, totals);
+        for (size_t k = 0; k < p->item_count; k++) print_item(&e, &p->items[k]);
+        print_header(files[1].file, p, o, totals);
+        print_link_header(files[2].file, p, o, totals);
+    }
+    if (opened < 3 || e.unresolved) {
+        while (opened > 0) tarn_atomic_abandon(&files[--opened]);
+        if (e.unresolved)
+            tarn_fail(err, "%s: internal error: the scene points to data the baker did not plan", o->output_path);
         return -1;
     }
-    emitter e = {source.file, p, 0};
-    print_source_comment(source.file, p, o, totals);
-    for (size_t k = 0; k < p->item_count; k++) print_item(&e, &p->items[k]);
-    print_header(header.file, p, o, totals);
-    if (e.unresolved) {
-        tarn_atomic_abandon(&source);
-        tarn_atomic_abandon(&header);
-        return tarn_fail(err, "%s: internal error: the scene points to data the baker did not plan",
-                         o->output_path);
-    }
-    if (tarn_atomic_commit(&source, err) != 0) {
-        tarn_atomic_abandon(&header);
-        return -1;
-    }
-    if (tarn_atomic_commit(&header, err) != 0) {
-        remove(o->output_path); /* the source alone would be half a bake */
+    for (size_t k = 0; k < 3; k++) {
+        if (tarn_atomic_commit(&files[k], err) == 0) continue;
+        for (size_t later = k + 1; later < 3; later++) tarn_atomic_abandon(&files[later]);
+        while (k > 0) remove(paths[--k]); /* some files alone would be half a bake */
         return -1;
     }
     return 0;
@@ -941,8 +976,9 @@ void tarn_bake_default_name(const char *stem, char out[TARN_BAKE_NAME_MAX + 1])
     memcpy(out, fixed, sizeof fixed);
 }
 
-/* "out/pond.c" -> "out/pond.h", malloc'd; NULL with `err` set unless it ends in .c. */
-static char *header_path_for(const char *output_path, tarn_error *err)
+/* "out/pond.c" -> "out/pond" + suffix ("out/pond.h", "out/pond_link.h"), malloc'd;
+ * NULL with `err` set unless the output ends in .c. */
+static char *path_beside(const char *output_path, const char *suffix, tarn_error *err)
 {
     size_t length = strlen(output_path);
     const char *base = base_name(output_path);
@@ -950,14 +986,14 @@ static char *header_path_for(const char *output_path, tarn_error *err)
         tarn_fail(err, "-o: expected a C file name ending in .c, got '%s'", output_path);
         return NULL;
     }
-    char *header = malloc(length + 1);
-    if (!header) {
+    char *path = malloc(length - 2 + strlen(suffix) + 1);
+    if (!path) {
         tarn_fail(err, "%s: out of memory", output_path);
         return NULL;
     }
-    memcpy(header, output_path, length + 1);
-    header[length - 1] = 'h';
-    return header;
+    memcpy(path, output_path, length - 2);
+    strcpy(path + length - 2, suffix);
+    return path;
 }
 
 static int choose_name(const tarn_loaded_scene *scene, const tarn_bake_options *o,
@@ -988,10 +1024,11 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     if (totals.memory_bytes == 0)
         return tarn_fail(err, "%s: %ux%u with these quality settings: %s", o->scene_path, plan.config.width,
                          plan.config.height, tarn_status_text(TARN_ERR_CONFIG));
-    char *header_path = header_path_for(o->output_path, err);
-    if (!header_path) return -1;
+    char *header_path = path_beside(o->output_path, ".h", err);
+    char *link_path = header_path ? path_beside(o->output_path, "_link.h", err) : NULL;
     totals.header_path = header_path;
-    int failed = plan_build(&plan, err);
+    totals.link_path = link_path;
+    int failed = link_path == NULL || plan_build(&plan, err);
     if (!failed) {
         totals.const_bytes = plan_bytes(&plan, totals.bytes);
         failed = write_outputs(&plan, o, &totals, err);
@@ -1000,5 +1037,6 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     result->memory_bytes = totals.memory_bytes;
     plan_free(&plan);
     free(header_path);
+    free(link_path);
     return failed ? -1 : 0;
 }

@@ -1,6 +1,6 @@
 /* bake.h: a loaded scene written out as const C data for firmware.
  *
- * `tarn bake scenes/pond.json -o out/pond.c` writes two files:
+ * `tarn bake scenes/pond.json -o out/pond.c` writes three files:
  *   out/pond.c  one self-contained C99 source, needing only core/tarn_render.h:
  *               every mesh, texture, material, water block and object the scene
  *               uses, as `static const` arrays and structs, and two objects
@@ -9,11 +9,14 @@
  *   out/pond.h  declares both and  #define POND_MEMORY_BYTES N, the working memory
  *               tarn_frame_memory_bytes gives for that config, so that firmware can
  *               declare  static uint32_t mem[(POND_MEMORY_BYTES + 3) / 4];
+ *   out/pond_link.h  the TARN_LINK_* switches of tarn_render.h for this scene:
+ *               compiled into core/ (-include), they leave out the code of every
+ *               effect the scene does not use;
  * Every integer is the loaded one, printed exactly; nothing the scene does not
  * reference is written (a texture no used material samples, a mesh that repeats
  * another's data). The header comment of pond.c counts the const bytes of each
  * kind as a 32-bit target lays them out.
- * Both files are written all or nothing (atomic_file.h). */
+ * The files are written all or nothing (atomic_file.h). */
 #ifndef TARN_HOST_BAKE_H
 #define TARN_HOST_BAKE_H
 
@@ -27,7 +30,7 @@
 
 typedef struct {
     const char *scene_path;  /* shown in the header comment */
-    const char *output_path; /* must end in ".c"; the header goes beside it as ".h" */
+    const char *output_path; /* must end in ".c"; the headers go beside it */
     const char *name;        /* C identifier prefixing every symbol; NULL: the scene's stem */
     tarn_frame_config config; /* frame size and quality; its time_ms is baked as 0 */
     int argc;                /* the command line, shown in the header comment */
