@@ -95,30 +95,43 @@ static int tile_fits(const tarn_panel *panel, const tarn_tile *tile)
            (uint32_t)tile->y + tile->height <= panel->height;
 }
 
-/* One row of the tile as RGB565, high byte first, dithered at frame positions. */
-static void convert_row(uint8_t *line, const uint32_t *rgb, uint16_t width, uint16_t x,
-                        uint16_t y, int dither)
+/* Rows [first, first + count) of the tile as RGB565, high byte first, dithered at
+ * frame positions, one after another in `out`. */
+static void convert_rows(uint8_t *out, const tarn_tile *tile, uint16_t first, uint16_t count, int dither)
 {
-    for (uint16_t i = 0; i < width; i++)
-        put_u16_be(line + 2u * i, tarn_rgb565(rgb[i], (uint16_t)(x + i), y, dither));
+    for (uint16_t row = first; row < first + count; row++) {
+        const uint32_t *rgb = tile->rgb + (size_t)row * tile->stride;
+        for (uint16_t i = 0; i < tile->width; i++, out += 2)
+            put_u16_be(out, tarn_rgb565(rgb[i], (uint16_t)(tile->x + i), (uint16_t)(tile->y + row), dither));
+    }
 }
 
+static int set_window(const tarn_panel *panel, const tarn_panel_transport *transport, const tarn_tile *tile)
+{
+    return set_address_range(transport, TARN_PANEL_CASET, (uint16_t)(panel->column_offset + tile->x),
+                             tile->width) != 0 ||
+           set_address_range(transport, TARN_PANEL_RASET, (uint16_t)(panel->row_offset + tile->y),
+                             tile->height) != 0 ||
+           transport->command(transport->user, TARN_PANEL_RAMWR) != 0;
+}
+
+/* The first rows are converted before the window is set: a transport that sends
+ * data by DMA and waits for it before its next command gets the conversion done
+ * while the previous tile is still going out. */
 tarn_status tarn_panel_send_tile(const tarn_panel *panel, const tarn_panel_transport *transport,
                                  const tarn_tile *tile, int dither, uint8_t *line, size_t line_bytes)
 {
     if (panel == NULL || tile == NULL || line == NULL || !transport_complete(transport) ||
         !tile_fits(panel, tile) || line_bytes < 2u * (size_t)tile->width)
         return TARN_ERR_CONFIG;
-    if (set_address_range(transport, TARN_PANEL_CASET,
-                          (uint16_t)(panel->column_offset + tile->x), tile->width) != 0 ||
-        set_address_range(transport, TARN_PANEL_RASET,
-                          (uint16_t)(panel->row_offset + tile->y), tile->height) != 0 ||
-        transport->command(transport->user, TARN_PANEL_RAMWR) != 0)
-        return TARN_ERR_SINK;
-    for (uint16_t row = 0; row < tile->height; row++) {
-        convert_row(line, tile->rgb + (size_t)row * tile->stride, tile->width, tile->x,
-                    (uint16_t)(tile->y + row), dither);
-        if (transport->data(transport->user, line, 2u * (size_t)tile->width) != 0)
+    const size_t row_bytes = 2u * (size_t)tile->width;
+    const uint16_t rows_per_call =
+        line_bytes / row_bytes < tile->height ? (uint16_t)(line_bytes / row_bytes) : tile->height;
+    for (uint16_t row = 0; row < tile->height; row = (uint16_t)(row + rows_per_call)) {
+        const uint16_t rows = tile->height - row < rows_per_call ? (uint16_t)(tile->height - row) : rows_per_call;
+        convert_rows(line, tile, row, rows, dither);
+        if ((row == 0 && set_window(panel, transport, tile) != 0) ||
+            transport->data(transport->user, line, row_bytes * rows) != 0)
             return TARN_ERR_SINK;
     }
     return TARN_OK;

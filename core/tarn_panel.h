@@ -54,11 +54,14 @@ tarn_panel tarn_panel_preset(tarn_panel_model model, unsigned rotation);
  * delays. TARN_ERR_SINK if the transport failed. */
 tarn_status tarn_panel_init(const tarn_panel *panel, const tarn_panel_transport *transport);
 
-/* Sends one finished tile into its window. `line` is scratch for one row of the
- * tile's pixels (2 * tile width bytes at least): rows go out one by one so the
- * caller needs no frame-sized buffer. With `dither` the RGB565 conversion adds a
- * 4x4 ordered dither fixed to frame coordinates. TARN_ERR_SINK if the transport
- * failed, TARN_ERR_CONFIG if the tile lies outside the panel or `line` is short. */
+/* Sends one finished tile into its window. `line` is scratch for the RGB565 pixels
+ * (2 * tile width bytes at least): the rows go out in as few data calls as it holds,
+ * so one row suffices and no frame-sized buffer is needed anywhere, while a buffer
+ * of the whole tile sends it in a single data call (for DMA: alternate two such
+ * buffers, and let the transport wait for the previous transfer before its next
+ * command). With `dither` the RGB565 conversion adds a 4x4 ordered dither fixed to
+ * frame coordinates. TARN_ERR_SINK if the transport failed, TARN_ERR_CONFIG if the
+ * tile lies outside the panel or `line` is short. */
 tarn_status tarn_panel_send_tile(const tarn_panel *panel, const tarn_panel_transport *transport,
                                  const tarn_tile *tile, int dither, uint8_t *line, size_t line_bytes);
 
