@@ -41,7 +41,8 @@ else
 
 include boards/$(BOARD)/board.mk
 
-FW_DIR := build/firmware/$(BOARD)
+# FW_BUILD_DIR: another build directory, for builds of other scenes beside the board's own
+FW_DIR := $(if $(FW_BUILD_DIR),$(FW_BUILD_DIR),build/firmware/$(BOARD))
 FW_SCENE := $(if $(SCENE),$(SCENE),$(BOARD_SCENE))
 FW_BAKE_FLAGS := $(if $(SCENE),$(BAKE_FLAGS),$(if $(BAKE_FLAGS),$(BAKE_FLAGS),$(BOARD_BAKE_FLAGS)))
 FW_SCENE_LABEL := $(basename $(notdir $(FW_SCENE)))
