@@ -98,8 +98,8 @@ static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene 
     frame_layout l;
     const int apron_on = config->quality.refraction_apron != 0;
     l.tile = config->quality.tile_size;
-    l.underwater = tarn_underwater_active(scene);
-    l.water = scene_has_water(scene) || l.underwater;
+    l.underwater = TARN_LINK_UNDERWATER && tarn_underwater_active(scene);
+    l.water = (TARN_LINK_WATER && scene_has_water(scene)) || l.underwater;
     l.under_apron = l.underwater && apron_on
         ? tarn_clamp_i32(tarn_underwater_reach_pixels(scene->underwater, config->width), 0, TARN_WATER_APRON_MAX)
         : 0;
@@ -248,7 +248,7 @@ static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, 
                   f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
     tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, &o->rect, raster_into_tile, o);
     const tarn_tile_target *out = o;
-    if (f->layout.water) {
+    if ((TARN_LINK_WATER || TARN_LINK_UNDERWATER) && f->layout.water) {
         draw_water(f, x, y, &frame);
         out = &f->water;
     }
@@ -256,7 +256,7 @@ static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, 
     tarn_tile tile = {(uint16_t)x, (uint16_t)y, (uint16_t)(tile_rect.x1 - x), (uint16_t)(tile_rect.y1 - y),
                       out->colour + first, (const uint8_t *)out->depth + (size_t)first * f->layout.depth_bytes,
                       (uint16_t)out->stride, f->config->quality.depth_bits};
-    if (f->layout.underwater) {
+    if (TARN_LINK_UNDERWATER && f->layout.underwater) {
         draw_underwater(f, &tile_rect);
         tile.rgb = f->final;
         tile.stride = (uint16_t)size;
@@ -282,7 +282,7 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
     f.view = &view;
     f.layout = layout_of(config, scene);
     carve_buffers(&f, memory);
-    if (f.layout.underwater) tarn_underwater_setup(&f.underwater, &view, config, scene->underwater);
+    if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn_underwater_setup(&f.underwater, &view, config, scene->underwater);
     for (int32_t y = 0; y < config->height; y += f.layout.tile)
         for (int32_t x = 0; x < config->width; x += f.layout.tile)
             if (draw_tile(&f, x, y, sink, user) != 0) return TARN_ERR_SINK;

@@ -196,7 +196,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
                 span_t(set, t, quality->perspective_span, quality->recip_newton_steps, i, j, &cache, values);
             else
                 exact_t(set, t, i, j, quality->recip_newton_steps, values);
-            if (tile->water != NULL) {
+            if (TARN_LINK_WATER && tile->water != NULL) {
                 const tarn_water_input in = water_input(set, values, depth.quotient);
                 tile->colour[row + i] = tarn_water_shade(tile->water, i, j, &in);
             } else {
@@ -224,7 +224,7 @@ static attribute_request request_for(tarn_tile_target *tile, const tarn_object *
 {
     const tarn_material *material = object->material;
     attribute_request request = {NULL, 0, 0};
-    if (material->water != NULL) {
+    if (TARN_LINK_WATER && material->water != NULL) {
         if (tile->water->object != object)
             tarn_water_context_setup(tile->water, tile->view, tile->config, object);
         request.uv = 1;

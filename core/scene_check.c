@@ -25,10 +25,12 @@ static int optional_texture_valid(const tarn_texture *t)
     return t == NULL || texture_valid(t);
 }
 
-/* Every texture a feature samples must be there; the apron limit is checked
- * against the frame width when a frame is drawn. */
+/* A water material this build can draw: its effects linked (TARN_LINK_*), and every
+ * texture a feature samples there; the apron limit is checked against the frame
+ * width when a frame is drawn. */
 static int water_valid(const tarn_water *w)
 {
+    if (!TARN_LINK_WATER || (w->features & ~(uint32_t)TARN_LINK_WATER_FEATURES) != 0) return 0;
     if ((w->features & TARN_WATER_NORMALS) && w->normal_a == NULL) return 0;
     if ((w->features & TARN_WATER_FOAM) && (w->foam_texture == NULL || w->foam_distance <= 0)) return 0;
     if ((w->features & TARN_WATER_DEPTH_COLOUR) && w->depth_scale <= 0) return 0;
@@ -49,7 +51,7 @@ static int mesh_valid(const tarn_mesh *m)
 
 static int underwater_valid(const tarn_underwater *u)
 {
-    return u->normal_map != NULL && texture_valid(u->normal_map);
+    return TARN_LINK_UNDERWATER && u->normal_map != NULL && texture_valid(u->normal_map);
 }
 
 tarn_status tarn_scene_check(const tarn_scene *scene)

@@ -47,7 +47,8 @@ typedef enum {
     TARN_OK = 0,
     TARN_ERR_CONFIG,  /* a frame or quality field is out of range */
     TARN_ERR_MEMORY,  /* the memory given is smaller than tarn_frame_memory_bytes() */
-    TARN_ERR_SCENE,   /* the scene is malformed (null arrays, index past the end...) */
+    TARN_ERR_SCENE,   /* the scene is malformed (null arrays, index past the end...), or
+                         needs an effect this build left out (TARN_LINK_*, tarn_water.h) */
     TARN_ERR_SINK     /* the tile sink asked to stop */
 } tarn_status;
 

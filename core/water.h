@@ -62,8 +62,70 @@ uint32_t tarn_water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, u
 /* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.16. */
 uint16_t tarn_water_pan_offset(tarn_q16 speed, uint32_t time_ms);
 
-/* The colour (0x00RRGGBB) of water pixel (i, j). */
+/* The colour (0x00RRGGBB) of water pixel (i, j): the steps of tarn_water.h, each
+ * effect called only when the material has it and the build links it. */
 uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j,
                           const tarn_water_input *in);
+
+/* ---- what the steps share (water.c) ---- */
+
+/* A 0xRRGGBB colour's channel c (0 red, 1 green, 2 blue) in Q8.8. */
+static inline uint32_t tarn_water_channel_q8(uint32_t rgb, int c)
+{
+    return ((rgb >> (16 - 8 * c)) & 0xFFu) << 8;
+}
+
+/* The texel of a panning texture under the pixel's uv, at the frame's pan offset. */
+static inline const uint8_t *tarn_water_panned_texel(const tarn_texture *t, const tarn_panning *pan,
+                                                     const uint16_t offset[2], const tarn_water_input *in)
+{
+    uint32_t u = (tarn_water_repeat_fraction(in->u, (uint32_t)pan->scale) + offset[0]) & 0xFFFFu;
+    uint32_t v = (tarn_water_repeat_fraction(in->v, (uint32_t)pan->scale) + offset[1]) & 0xFFFFu;
+    return tarn_water_texel_at(t, u, v);
+}
+
+/* 2^(-rate * x) for rate, x >= 0 (Q16.16), Q0.16, through the frame's exp2 table. */
+uint32_t tarn_water_decay(const tarn_water_context *w, uint32_t rate, uint32_t x);
+
+typedef struct {
+    uint32_t colour[3]; /* the background B, Q8.8 */
+    uint32_t depth;     /* its linear depth db, Q16.16 world units */
+} tarn_water_sample;
+
+/* The opaque background at frame pixel (i, j). */
+tarn_water_sample tarn_water_background(const tarn_water_context *w, int32_t i, int32_t j);
+
+typedef struct {
+    int32_t x, y, z;  /* N, Q1.15 */
+    int32_t a_x, b_x; /* the maps' own x components, for sparkles */
+    int has_b;
+} tarn_water_normal;
+
+/* (0, 0, 1): the surface without normal maps. */
+static inline tarn_water_normal tarn_water_flat_normal(void)
+{
+    const tarn_water_normal n = {0, 0, 32768, 0, 0, 0};
+    return n;
+}
+
+/* ---- the effects, a file each: with TARN_LINK_WATER_FEATURES, the ones a scene
+ * does not use are never called and so never linked ---- */
+
+/* Step 1 (water_normals.c, TARN_WATER_NORMALS). */
+tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const tarn_water_input *in);
+/* Step 2 (water_refraction.c, TARN_WATER_REFRACTION): the refracted sample, or `own`
+ * (the pixel's background) where the refracted one would lie in front of the water. */
+tarn_water_sample tarn_water_refract(const tarn_water_context *w, int32_t i, int32_t j,
+                                     const tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth);
+/* Steps 4 and 5 (water_fog.c), over `diff` (Q16.16 world units) of water. */
+void tarn_water_fog(const tarn_water_context *w, uint32_t diff, uint32_t colour[3]);
+void tarn_water_absorb(const tarn_water_context *w, uint32_t diff, uint32_t colour[3]);
+/* Step 6's depth colour and step 7's fresnel raise of alpha (Q1.15) (water_surface.c). */
+void tarn_water_depth_colour(const tarn_water_context *w, uint32_t diff, uint32_t out[3]);
+uint32_t tarn_water_fresnel_alpha(const tarn_water_context *w, const tarn_water_input *in, uint32_t alpha);
+/* Steps 8, 9 and 10 (water_highlights.c, water_foam.c). Colours are Q8.8. */
+void tarn_water_specular(const tarn_water_context *w, const tarn_water_normal *n, uint32_t colour[3]);
+void tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff, uint32_t colour[3]);
+void tarn_water_sparkles(const tarn_water_context *w, const tarn_water_normal *n, uint32_t colour[3]);
 
 #endif

@@ -1,0 +1,25 @@
+/* water_foam.c: step 9 of tarn_water.h, the foam band along the shore and its moving
+ * lines (TARN_WATER_FOAM). */
+#include "water.h"
+
+#define Q16_ONE 65536u
+#define Q15_ONE 32768
+
+void tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff, uint32_t colour[3])
+{
+    const tarn_water *water = w->water;
+    if (water->foam_texture == NULL) return;
+    uint32_t f = tarn_water_mul_q16(diff, w->inv_foam_distance);
+    if (f >= Q16_ONE) return;
+    const uint16_t turns = (uint16_t)(water->foam_line_count * (f - w->foam_phase));
+    int32_t wave = tarn_sin_q15(turns);
+    uint32_t lines = wave > 0 ? ((uint32_t)wave * ((Q16_ONE - f) >> 1)) >> 14 : 0u; /* Q0.16 */
+    /* foam where red / 255 >= f - lines: compared exactly, red * 2^16 against 255 * (f - lines) */
+    const int32_t red = tarn_water_panned_texel(water->foam_texture, &water->foam_pan, w->foam_pan, in)[0];
+    if (red * 65536 < 255 * ((int32_t)f - (int32_t)lines)) return; /* both below 2^24 */
+    const int32_t opacity = (int32_t)((uint32_t)water->foam_opacity >> 1);
+    for (int c = 0; c < 3; c++) {
+        const int32_t foam = (int32_t)tarn_water_channel_q8(water->foam_rgb, c);
+        colour[c] = (uint32_t)((int32_t)colour[c] + ((foam - (int32_t)colour[c]) * opacity) / Q15_ONE);
+    }
+}

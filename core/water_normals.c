@@ -1,0 +1,41 @@
+/* water_normals.c: step 1 of tarn_water.h, the surface normal from the two panning
+ * normal maps (TARN_WATER_NORMALS). */
+#include "water.h"
+
+#define Q15_ONE 32768
+
+static void decode_normal(const uint8_t *texel, int32_t out[3])
+{
+    for (int k = 0; k < 3; k++) out[k] = tarn_water_normal_component(texel[k]);
+}
+
+/* Step 1: N = normalize(strength * (a.xy + b.xy), a.z * b.z). */
+tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const tarn_water_input *in)
+{
+    const tarn_water *water = w->water;
+    tarn_water_normal n = tarn_water_flat_normal();
+    if (water->normal_a == NULL) return n;
+    int32_t a[3], b[3] = {0, 0, Q15_ONE};
+    decode_normal(tarn_water_panned_texel(water->normal_a, &water->pan_a, w->pan_a, in), a);
+    n.has_b = water->normal_b != NULL;
+    if (n.has_b) decode_normal(tarn_water_panned_texel(water->normal_b, &water->pan_b, w->pan_b, in), b);
+    n.a_x = a[0];
+    n.b_x = b[0];
+    /* strength (Q16.16) times a sum of two Q1.15 components, in Q2.14 with all of
+     * the strength's bits: (a + b) * 2^15 * strength / 2^32 */
+    const uint32_t strength = (uint32_t)water->normal_strength;
+    int32_t v[3] = {tarn_mul_hi_s32_u32((a[0] + b[0]) * 32768, strength),
+                    tarn_mul_hi_s32_u32((a[1] + b[1]) * 32768, strength), (a[2] * b[2]) >> 16};
+    /* the largest component to [2^13, 2^14): read as Q2.13, |v| is in [1, 2 sqrt 3) */
+    int32_t largest = 0;
+    for (int k = 0; k < 3; k++) largest |= v[k] < 0 ? -v[k] : v[k];
+    if (largest == 0) return n;
+    const int shift = (int)(31u - tarn_clz32((uint32_t)largest)) - 13;
+    for (int k = 0; k < 3; k++) v[k] = shift >= 0 ? tarn_floor_shift(v[k], (unsigned)shift) : v[k] * (1 << -shift);
+    const uint32_t length2 = (uint32_t)(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); /* Q4.26, < 2^30 */
+    const int32_t inverse = (int32_t)tarn_rsqrt_q16(length2 >> 10);            /* 1/|v|, Q16.16 <= 1 */
+    n.x = (v[0] * inverse) >> 14; /* Q2.13 * Q16.16 -> Q1.15 */
+    n.y = (v[1] * inverse) >> 14;
+    n.z = (v[2] * inverse) >> 14;
+    return n;
+}

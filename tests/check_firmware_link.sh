@@ -1,0 +1,59 @@
+#!/bin/sh
+# check_firmware_link.sh: an effect a scene does not use is not linked.
+#
+# Builds the qemu-m0 firmware for several scenes (each in its own directory under
+# build/firmware-link/, the board's own build untouched) and reads the images' symbols
+# with arm-none-eabi-nm: each effect's function (core/water_*.c, core/underwater.c)
+# must be in the image exactly when the scene uses that effect. The expectations are
+# written out here, not read from the baked scene_link.h, so that a bake that links
+# too much (or too little) fails. Prints the code bytes of each image (flash minus
+# the baked scene's const data), which is what each effect costs in flash.
+set -u
+board=qemu-m0
+flags="--apron off --tile 16 --depth 16"
+effects="tarn_water_shade tarn_water_surface_normal tarn_water_refract tarn_water_fog tarn_water_absorb
+tarn_water_depth_colour tarn_water_fresnel_alpha tarn_water_specular tarn_water_foam tarn_water_sparkles
+tarn_underwater_tile"
+passed=0
+failed=0
+
+# check SCENE EXPECTED...: build, then compare the effect symbols with EXPECTED
+check() {
+    scene=$1
+    shift
+    dir=build/firmware-link/$(basename "$scene" .json)
+    if ! make --no-print-directory -s firmware BOARD=$board FW_BUILD_DIR="$dir" SCENE="$scene" \
+        BAKE_FLAGS="$flags" > "$dir.log" 2>&1; then
+        cat "$dir.log"
+        echo "FAIL: $scene: the $board build failed"
+        failed=$((failed + 1))
+        return
+    fi
+    linked=$(arm-none-eabi-nm --defined-only "$dir/firmware.elf" | awk '{print $3}' | sort)
+    for symbol in $effects; do
+        want=0
+        for expected in "$@"; do [ "$expected" = "$symbol" ] && want=1; done
+        have=0
+        printf '%s\n' "$linked" | grep -qx "$symbol" && have=1
+        if [ $want -ne $have ]; then
+            echo "FAIL: $scene: $symbol is $( [ $have -eq 1 ] && echo linked || echo missing)," \
+                "expected $( [ $want -eq 1 ] && echo linked || echo 'left out')"
+            failed=$((failed + 1))
+        else
+            passed=$((passed + 1))
+        fi
+    done
+    set -- $(arm-none-eabi-size "$dir/firmware.elf" | awk 'NR == 2 {print $1, $2}')
+    scene_bytes=$(arm-none-eabi-nm -S -t d --defined-only "$dir/firmware.elf" | awk '
+        NF == 4 && $4 ~ /^scene_/ { n += $2 } END { print n + 0 }')
+    echo "firmware-link board=$board scene=$(basename "$scene" .json) code_bytes=$(($1 + $2 - scene_bytes))"
+}
+
+check scenes/effects/none.json
+check scenes/effects/fog.json tarn_water_shade tarn_water_fog
+check scenes/effects/foam.json tarn_water_shade tarn_water_foam
+check scenes/effects/sparkles.json tarn_water_shade tarn_water_surface_normal tarn_water_sparkles
+check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal tarn_water_refract
+check scenes/effects/underwater.json tarn_underwater_tile
+echo "firmware-link: $passed passed, $failed failed"
+[ $failed -eq 0 ]
