@@ -16,7 +16,7 @@ tarn_quality tarn_quality_default(void)
     q.perspective_span = 16;
     q.depth_bits = 32;
     q.tile_size = 32;
-    q.refraction_apron = 1;
+    q.refraction_apron = TARN_APRON_FULL;
     return q;
 }
 
@@ -42,7 +42,7 @@ static int quality_in_range(const tarn_quality *q)
            tarn_is_power_of_two(q->perspective_span) && q->perspective_span >= 2 && q->perspective_span <= 64 &&
            (q->depth_bits == 16 || q->depth_bits == 32) &&
            q->tile_size >= TARN_TILE_SIZE_MIN && q->tile_size <= TARN_TILE_SIZE_MAX &&
-           q->refraction_apron <= 1;
+           (q->refraction_apron <= TARN_WATER_APRON_MAX || q->refraction_apron == TARN_APRON_FULL);
 }
 
 tarn_status tarn_config_check(const tarn_frame_config *config)
@@ -66,16 +66,23 @@ static int scene_has_water(const tarn_scene *scene)
     return 0;
 }
 
+/* A reach in pixels, cut to the quality's apron width and to TARN_WATER_APRON_MAX. */
+static int32_t apron_limit(int32_t reach, const tarn_quality *q)
+{
+    const int32_t limit = q->refraction_apron == TARN_APRON_FULL ? (int32_t)TARN_WATER_APRON_MAX : q->refraction_apron;
+    return tarn_clamp_i32(reach, 0, limit);
+}
+
 int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config *config)
 {
     int32_t apron = 0;
-    if (scene == NULL || !config->quality.refraction_apron) return 0;
+    if (scene == NULL) return 0;
     for (uint32_t i = 0; i < scene->object_count; i++) {
         const tarn_material *m = scene->objects[i].material;
         int32_t reach = m != NULL ? tarn_water_reach_pixels(m->water, config->width) : 0;
         if (reach > apron) apron = reach;
     }
-    return apron > (int32_t)TARN_WATER_APRON_MAX ? (int32_t)TARN_WATER_APRON_MAX : apron;
+    return apron_limit(apron, &config->quality);
 }
 
 /* The buffers of one frame, carved from the caller's memory: the opaque pass's
@@ -96,12 +103,11 @@ typedef struct {
 static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene *scene)
 {
     frame_layout l;
-    const int apron_on = config->quality.refraction_apron != 0;
     l.tile = config->quality.tile_size;
     l.underwater = TARN_LINK_UNDERWATER && tarn_underwater_active(scene);
     l.water = (TARN_LINK_WATER && scene_has_water(scene)) || l.underwater;
-    l.under_apron = l.underwater && apron_on
-        ? tarn_clamp_i32(tarn_underwater_reach_pixels(scene->underwater, config->width), 0, TARN_WATER_APRON_MAX)
+    l.under_apron = l.underwater
+        ? apron_limit(tarn_underwater_reach_pixels(scene->underwater, config->width), &config->quality)
         : 0;
     l.apron = l.water ? tarn_frame_apron_pixels(scene, config) + l.under_apron : 0;
     l.region = l.tile + 2 * l.apron;
@@ -218,7 +224,7 @@ static void draw_water(frame_state *f, int32_t x, int32_t y, const tarn_pixel_re
     c->background_rect.x0 = f->opaque.origin_x;
     c->background_rect.y0 = f->opaque.origin_y;
     c->background_stride = f->opaque.stride;
-    c->sample_rect = f->config->quality.refraction_apron ? f->opaque.rect : w->rect;
+    c->sample_rect = f->opaque.rect; /* the tile and whatever apron it has */
     tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, &w->rect, raster_into_tile, w);
 }
 

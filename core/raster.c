@@ -140,10 +140,9 @@ static int depth_pass(void *depth, int depth_bits, int32_t offset, uint32_t inv_
     if (inv_depth > T_ONE) inv_depth = T_ONE;
     if (depth_bits == 16) {
         uint16_t *d = (uint16_t *)depth + offset;
-        uint32_t value = inv_depth >> 14;
-        value = value < 1u ? 1u : (value > 0xFFFFu ? 0xFFFFu : value);
+        const uint16_t value = tarn_depth16_encode(inv_depth);
         if (value <= *d) return 0;
-        *d = (uint16_t)value;
+        *d = value;
         return 1;
     }
     uint32_t *d = (uint32_t *)depth + offset;

@@ -66,6 +66,8 @@ typedef enum {
 #define TARN_TILE_SIZE_MAX 64u
 #define TARN_FRAME_SIZE_MAX 1024u
 
+#define TARN_APRON_FULL 255u
+
 /* Every speed/accuracy knob. docs/figures.md gives each one's measured cost and error. */
 typedef struct {
     tarn_exp2_config exp2;      /* exp2 table size and interpolation (fog, absorption) */
@@ -75,9 +77,13 @@ typedef struct {
     uint8_t perspective_span;   /* 2..64, a power of two; SPAN mode only */
     uint8_t depth_bits;         /* 16 or 32 bits per depth-buffer entry */
     uint8_t tile_size;          /* 8..64 pixels, square tiles; does not change the image */
-    uint8_t refraction_apron;   /* 1: render the opaque scene around each tile as far as
-                                   refraction reaches (seamless); 0: clamp refracted
-                                   samples to the tile (less memory, seams at tile edges) */
+    uint8_t refraction_apron;   /* pixels of opaque scene rendered around each tile for
+                                   refraction (and the underwater view) to sample, at
+                                   most: TARN_APRON_FULL renders as far as they reach
+                                   (seamless, the default); 1..TARN_WATER_APRON_MAX
+                                   saves memory and time, and samples beyond clamp to it;
+                                   0 clamps them to the tile. Clamped samples can show
+                                   seams at tile edges. */
 } tarn_quality;
 
 tarn_quality tarn_quality_default(void);
@@ -91,8 +97,8 @@ typedef struct {
 /* Pixels the guard band extends beyond each frame edge. */
 int32_t tarn_guard_band_pixels(const tarn_frame_config *config);
 
-/* Pixels of opaque scene rendered around each tile: the farthest any water
- * material's refraction reaches at this width (0 with refraction_apron off). */
+/* Pixels of opaque scene rendered around each tile for refraction: the farthest any
+ * water material's refraction reaches at this width, cut to refraction_apron. */
 int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config *config);
 
 /* Bytes of working memory a frame of this scene needs, or 0 if the config is
@@ -104,11 +110,32 @@ int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config
  * for an opaque-only budget. */
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene);
 
+/* The 16-bit depth buffer holds near/d (Q1.30, 1..2^30) as a small float: a 4-bit
+ * exponent over a 12-bit mantissa with its leading one implied, truncated. Codes
+ * order as the values do, so depth tests compare codes. The relative step is 2^-12
+ * everywhere above near/d = 2^-14 (d < 16384 near): a plain Q0.16 would step by
+ * 2^16/(near/d) relative, 1/655 at d = 100 near, too coarse for water's depth
+ * differences. Code 0 is "no triangle"; a drawn pixel's code is at least 1. */
+static inline uint16_t tarn_depth16_encode(uint32_t inv_depth_q30)
+{
+    if (inv_depth_q30 < (1u << 16)) return inv_depth_q30 < 16u ? 1u : (uint16_t)(inv_depth_q30 >> 4);
+    const unsigned top = 31u - tarn_clz32(inv_depth_q30); /* 16..30 */
+    return (uint16_t)(((top - 15u) << 12) | ((inv_depth_q30 >> (top - 12u)) & 0xFFFu));
+}
+
+/* near/d in Q1.30 of a code, the bottom of the range that encodes to it. */
+static inline uint32_t tarn_depth16_decode(uint16_t code)
+{
+    const unsigned exponent = code >> 12;
+    const uint32_t mantissa = code & 0xFFFu;
+    return exponent == 0u ? mantissa << 4 : (mantissa + 4096u) << (exponent + 3u);
+}
+
 typedef struct {
     uint16_t x, y, width, height; /* the tile's rectangle in the frame, pixels */
     const uint32_t *rgb;          /* 0x00RRGGBB pixels, rows `stride` pixels apart */
-    const void *depth;            /* near/d per pixel (uint16_t Q0.16 or uint32_t Q1.30 by
-                                     depth_bits), same layout; 0 where no triangle drew.
+    const void *depth;            /* near/d per pixel (uint16_t tarn_depth16 code or uint32_t
+                                     Q1.30 by depth_bits), same layout; 0 where no triangle drew.
                                      NULL under the underwater view, whose displaced
                                      pixels have no single depth */
     uint16_t stride;

@@ -6,7 +6,7 @@
 
 static uint32_t depth_q30(const tarn_underwater_context *u, int32_t offset)
 {
-    if (u->depth_bits == 16) return (uint32_t)((const uint16_t *)u->depth)[offset] << 14;
+    if (u->depth_bits == 16) return tarn_depth16_decode(((const uint16_t *)u->depth)[offset]);
     return ((const uint32_t *)u->depth)[offset];
 }
 

@@ -60,7 +60,7 @@ static uint32_t linear_depth(const tarn_water_context *w, uint32_t iz_q30)
 
 static uint32_t background_depth_q30(const tarn_water_context *w, int32_t offset)
 {
-    if (w->depth_bits == 16) return (uint32_t)((const uint16_t *)w->background_depth)[offset] << 14;
+    if (w->depth_bits == 16) return tarn_depth16_decode(((const uint16_t *)w->background_depth)[offset]);
     return ((const uint32_t *)w->background_depth)[offset];
 }
 

@@ -14,7 +14,8 @@ const char tarn_cli_usage[] =
     "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [QUALITY]\n"
     "QUALITY: --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
     "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n"
-    "         --apron on|off (refraction samples beyond the tile: rendered, or clamped)\n";
+    "         --apron on|off|N (opaque scene rendered around each tile for refraction: as far\n"
+    "         as it reaches, none, or at most N pixels, 0..32; samples beyond clamp)\n";
 
 /* Whole decimal number in [min, max], nothing else in the text. */
 static int parse_whole(const char *text, unsigned long min, unsigned long max, unsigned long *out)
@@ -99,6 +100,19 @@ static int parse_knob(const char *name, const char *text, unsigned long min, uns
     return 0;
 }
 
+static int parse_apron(const char *value, tarn_quality *q, tarn_error *err)
+{
+    unsigned long pixels;
+    if (value && strcmp(value, "on") == 0) q->refraction_apron = TARN_APRON_FULL;
+    else if (value && strcmp(value, "off") == 0) q->refraction_apron = 0;
+    else if (parse_whole(value, 0, TARN_WATER_APRON_MAX, &pixels) == 0) q->refraction_apron = (uint8_t)pixels;
+    else
+        return tarn_fail(err, "--apron: expected on (render around each tile as far as refraction reaches: "
+                         "seamless), off (clamp at the tile: least memory) or a width in pixels 0..%u, got '%s'",
+                         TARN_WATER_APRON_MAX, value ? value : "");
+    return 0;
+}
+
 static int parse_quality_option(const char *name, const char *value, tarn_quality *q,
                                 tarn_error *err)
 {
@@ -115,14 +129,7 @@ static int parse_quality_option(const char *name, const char *value, tarn_qualit
         }
         return tarn_fail(err, "--depth: expected 16 or 32, got '%s'", value ? value : "");
     }
-    if (strcmp(name, "--apron") == 0) {
-        if (value && (strcmp(value, "on") == 0 || strcmp(value, "off") == 0)) {
-            q->refraction_apron = strcmp(value, "on") == 0;
-            return 0;
-        }
-        return tarn_fail(err, "--apron: expected on (render around each tile: seamless) or off (clamp at "
-                         "the tile: less memory), got '%s'", value ? value : "");
-    }
+    if (strcmp(name, "--apron") == 0) return parse_apron(value, q, err);
     if (strcmp(name, "--perspective") == 0) return parse_perspective(value, q, err);
     if (strcmp(name, "--exp2") == 0) return parse_exp2(value, q, err);
     return 1; /* not a quality option */

@@ -72,6 +72,10 @@ static void test_good_lines_parse(void **state)
     assert_int_equal(o.command, TARN_CMD_MEMORY);
     assert_int_equal(parse("render s.json -o x.png --apron off", &o, &err), 0);
     assert_int_equal(o.quality.refraction_apron, 0);
+    assert_int_equal(parse("render s.json -o x.png --apron 12", &o, &err), 0);
+    assert_int_equal(o.quality.refraction_apron, 12);
+    assert_int_equal(parse("render s.json -o x.png --apron on", &o, &err), 0);
+    assert_int_equal(o.quality.refraction_apron, TARN_APRON_FULL);
     assert_int_equal(o.frames, 0);
 }
 
@@ -132,6 +136,8 @@ static void test_bad_lines_name_what_was_expected(void **state)
     assert_rejected("render s.json -o x.png --perspective exact", "--perspective");
     assert_rejected("render s.json -o x.png --depth 24", "--depth: expected 16 or 32");
     assert_rejected("render s.json -o x.png --apron maybe", "--apron: expected on");
+    assert_rejected("render s.json -o x.png --apron 33", "--apron: expected on");
+    assert_rejected("render s.json -o x.png --apron -1", "--apron: expected on");
     assert_rejected("render s.json -o x.png --recip-steps 3", "--recip-steps");
     assert_rejected("render s.json -o x.png --exp2 300", "--exp2");
     assert_rejected("render s.json -o x.png --exp2 48", "--exp2");

@@ -16,6 +16,7 @@
 
 #include "accuracy_math.h"
 #include "tarn_math.h"
+#include "tarn_render.h"
 
 #define EXP2_CONFIGS 6 /* table sizes 8, 16, ..., 256 */
 
@@ -305,6 +306,27 @@ static void rsqrt_limits(void **state)
     assert_int_equal(tarn_rsqrt_q16(UINT32_MAX - 1u), 256);
 }
 
+/* Every code of the 16-bit depth: decoding then encoding gives it back, codes
+ * decode to strictly increasing values, and the value just below the next code's
+ * still encodes to this one: the encoding is monotone over all of 1..2^30, with a
+ * relative step of at most 2^-12 above 2^16. */
+static void depth16_codes_are_monotone_and_fine(void **state)
+{
+    (void)state;
+    const uint16_t top = tarn_depth16_encode(1u << 30);
+    assert_int_equal(top, 0xF000);
+    assert_int_equal(tarn_depth16_encode(0), 1);
+    assert_int_equal(tarn_depth16_encode(1), 1);
+    assert_int_equal(tarn_depth16_encode(0x3FFFFFFFu), 0xEFFF);
+    for (uint32_t code = 1; code < top; code++) {
+        const uint32_t low = tarn_depth16_decode((uint16_t)code), next = tarn_depth16_decode((uint16_t)(code + 1));
+        assert_true(next > low);
+        assert_int_equal(tarn_depth16_encode(low), code);
+        assert_int_equal(tarn_depth16_encode(next - 1u), code);
+        if (low >= (1u << 16)) assert_true((uint64_t)(next - low) << 12 <= low);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -322,6 +344,7 @@ int main(void)
         cmocka_unit_test(isqrt_is_exact),
         cmocka_unit_test(rsqrt_sweep_within_documented_bound),
         cmocka_unit_test(rsqrt_limits),
+        cmocka_unit_test(depth16_codes_are_monotone_and_fine),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

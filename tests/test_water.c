@@ -187,12 +187,28 @@ static void test_tiles_do_not_show_with_the_apron(void **state)
         assert_memory_equal(whole, tiled, 3u * W * H);
         free(tiled);
     }
-    /* without the apron, samples clamp to the tile: seams appear, nothing breaks */
-    config.quality.refraction_apron = 0;
+    /* an apron as wide as the reach is the full apron; without the apron, samples
+     * clamp to the tile: seams appear, nothing breaks; a narrower apron lies between */
     config.quality.tile_size = 8;
+    const int32_t reach = tarn_frame_apron_pixels(&wet->b.scene, &config);
+    assert_true(reach > 2);
+    const size_t full_bytes = tarn_frame_memory_bytes(&config, &wet->b.scene);
+    config.quality.refraction_apron = (uint8_t)reach;
+    assert_int_equal(tarn_frame_memory_bytes(&config, &wet->b.scene), full_bytes);
+    uint8_t *as_wide = render(wet, config);
+    assert_memory_equal(whole, as_wide, 3u * W * H);
+    config.quality.refraction_apron = 0;
     uint8_t *clamped = render(wet, config);
     assert_memory_not_equal(whole, clamped, 3u * W * H);
+    config.quality.refraction_apron = (uint8_t)(reach / 2);
+    assert_int_equal(tarn_frame_apron_pixels(&wet->b.scene, &config), reach / 2);
+    assert_true(tarn_frame_memory_bytes(&config, &wet->b.scene) < full_bytes);
+    uint8_t *narrow = render(wet, config);
+    assert_memory_not_equal(whole, narrow, 3u * W * H);
+    assert_memory_not_equal(clamped, narrow, 3u * W * H);
+    free(narrow);
     free(clamped);
+    free(as_wide);
     free(whole);
     free(wet);
 }
