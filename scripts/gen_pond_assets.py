@@ -7,8 +7,10 @@ The outputs are committed, so building tarn never needs Python; rerun this only 
 change them. Everything is deterministic (an integer hash, no random module), and
 the script needs nothing beyond the standard library.
 
-  pit.png     64x64 gray heightfield: a flat rim, a sloping shore down to a shelf,
+  pit.png     48x48 gray heightfield: a flat rim, a sloping shore down to a shelf,
               then a steep drop to a deep, slightly uneven bottom. White = rim.
+              48 rather than 64 samples a side: the whole pond then fits the
+              256 KB flash of the Cortex-M0 board with its firmware.
   ground.png  64x64 RGB, tileable: sand with patches of grass and speckles.
   plant.obj   a tuft of five curved, tapering blades (no normals: tarn computes
               smooth ones), about 1.2 units across and 1.3 tall, rooted at the origin.
@@ -63,8 +65,11 @@ def smoothstep(edge0, edge1, v):
 
 
 def pit_height(x, y, size):
-    """Height in 0..1 (1 = rim) of pixel (x, y) of a size x size heightfield."""
+    """Height in 0..1 (1 = rim) of pixel (x, y) of a size x size heightfield. The
+    noise is laid out on a 64-unit square whatever the size, so that the shape
+    does not depend on the resolution."""
     u, v = (x + 0.5) / size * 2 - 1, (y + 0.5) / size * 2 - 1
+    x, y = (u + 1) * 32 - 0.5, (v + 1) * 32 - 0.5  # the 64-unit square
     wobble = (value_noise(x, y, 16, 64, 7) - 0.5) * 0.12   # an irregular outline
     r = (abs(u) ** 2.5 + abs(v) ** 2.5) ** (1 / 2.5) + wobble  # a rounded square
     rim, shelf, bottom = 1.0, 0.62, 0.03
@@ -77,7 +82,7 @@ def pit_height(x, y, size):
     return bottom + value_noise(x, y, 8, 64, 11) * 0.04
 
 
-def make_pit(path, size=64):
+def make_pit(path, size=48):
     rows = [bytes(round(255 * pit_height(x, y, size)) for x in range(size)) for y in range(size)]
     write_png(path, size, size, rows, 0)
 
