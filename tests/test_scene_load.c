@@ -670,7 +670,8 @@ static void test_pond(void **state)
     }
     assert_int_equal(spheres, 2);
     assert_true(plants >= 4);
-    /* the pit: 48x48 vertices, so that the pond fits the Cortex-M0 board's flash; the water: a 12 x 12 grid at the end of the list */
+    /* the pit: 48x48 vertices, so that the pond fits the Cortex-M0 board's flash; the
+     * water: a 12 x 12 grid at the end of the list */
     assert_int_equal(s.objects[0].mesh->vertex_count, 48 * 48);
     assert_int_equal(s.objects[0].mesh->triangle_count, 47 * 47 * 2);
     check_faces_up(s.objects[11].mesh);
