@@ -96,22 +96,24 @@ static int tile_fits(const tarn_panel *panel, const tarn_tile *tile)
 }
 
 /* Rows [first, first + count) of the tile as RGB565, high byte first, dithered at
- * frame positions, one after another in `out`. */
-static void convert_rows(uint8_t *out, const tarn_tile *tile, uint16_t first, uint16_t count, int dither)
+ * frame positions, `out_stride` bytes apart in `out`. */
+static void convert_rows(uint8_t *out, size_t out_stride, const tarn_tile *tile, uint16_t first,
+                         uint16_t count, int dither)
 {
-    for (uint16_t row = first; row < first + count; row++) {
+    for (uint16_t row = first; row < first + count; row++, out += out_stride) {
         const uint32_t *rgb = tile->rgb + (size_t)row * tile->stride;
-        for (uint16_t i = 0; i < tile->width; i++, out += 2)
-            put_u16_be(out, tarn_rgb565(rgb[i], (uint16_t)(tile->x + i), (uint16_t)(tile->y + row), dither));
+        for (uint16_t i = 0; i < tile->width; i++)
+            put_u16_be(out + 2u * i,
+                       tarn_rgb565(rgb[i], (uint16_t)(tile->x + i), (uint16_t)(tile->y + row), dither));
     }
 }
 
-static int set_window(const tarn_panel *panel, const tarn_panel_transport *transport, const tarn_tile *tile)
+/* CASET, RASET and RAMWR for the rectangle at (x, y), in panel coordinates. */
+static int set_window(const tarn_panel *panel, const tarn_panel_transport *transport, uint16_t x,
+                      uint16_t y, uint16_t width, uint16_t height)
 {
-    return set_address_range(transport, TARN_PANEL_CASET, (uint16_t)(panel->column_offset + tile->x),
-                             tile->width) != 0 ||
-           set_address_range(transport, TARN_PANEL_RASET, (uint16_t)(panel->row_offset + tile->y),
-                             tile->height) != 0 ||
+    return set_address_range(transport, TARN_PANEL_CASET, (uint16_t)(panel->column_offset + x), width) != 0 ||
+           set_address_range(transport, TARN_PANEL_RASET, (uint16_t)(panel->row_offset + y), height) != 0 ||
            transport->command(transport->user, TARN_PANEL_RAMWR) != 0;
 }
 
@@ -129,12 +131,86 @@ tarn_status tarn_panel_send_tile(const tarn_panel *panel, const tarn_panel_trans
         line_bytes / row_bytes < tile->height ? (uint16_t)(line_bytes / row_bytes) : tile->height;
     for (uint16_t row = 0; row < tile->height; row = (uint16_t)(row + rows_per_call)) {
         const uint16_t rows = tile->height - row < rows_per_call ? (uint16_t)(tile->height - row) : rows_per_call;
-        convert_rows(line, tile, row, rows, dither);
-        if ((row == 0 && set_window(panel, transport, tile) != 0) ||
+        convert_rows(line, row_bytes, tile, row, rows, dither);
+        if ((row == 0 && set_window(panel, transport, tile->x, tile->y, tile->width, tile->height) != 0) ||
             transport->data(transport->user, line, row_bytes * rows) != 0)
             return TARN_ERR_SINK;
     }
     return TARN_OK;
+}
+
+/* ---- Bands: a row of tiles, full panel width, continuing one RAMWR ---- */
+
+#define BAND_NO_WRITE 0xFFFFu /* next_row when no RAMWR is open */
+
+size_t tarn_panel_band_bytes(const tarn_panel *panel, unsigned tile_size)
+{
+    return panel == NULL ? 0 : 2u * (size_t)panel->width * tile_size;
+}
+
+tarn_status tarn_panel_band_init(tarn_panel_band *band, const tarn_panel *panel,
+                                 const tarn_panel_transport *transport, int dither, uint8_t *buffer,
+                                 size_t buffer_bytes)
+{
+    if (band == NULL || panel == NULL || panel->width == 0 || buffer == NULL ||
+        !transport_complete(transport) || buffer_bytes < 2u * (size_t)panel->width)
+        return TARN_ERR_CONFIG;
+    band->panel = panel;
+    band->transport = transport;
+    band->buffer = buffer;
+    band->buffer_bytes = buffer_bytes;
+    band->dither = dither;
+    band->y = band->height = band->columns_done = 0;
+    band->next_row = BAND_NO_WRITE;
+    return TARN_OK;
+}
+
+/* The tile is the next one of the band in progress, or starts a band at the left edge. */
+static int band_accepts(const tarn_panel_band *band, const tarn_tile *tile)
+{
+    if (!tile_fits(band->panel, tile) ||
+        2u * (size_t)band->panel->width * tile->height > band->buffer_bytes)
+        return 0;
+    if (band->columns_done == 0) return tile->x == 0;
+    return tile->x == band->columns_done && tile->y == band->y && tile->height == band->height;
+}
+
+/* The collected band as pixel data. Its rows continue the open RAMWR when they come
+ * right after the last band's, so a frame sent top to bottom needs a single window
+ * (rows to the panel's bottom) and the controller's address counter does the rest. */
+static int send_band(tarn_panel_band *band)
+{
+    const tarn_panel *panel = band->panel;
+    const tarn_panel_transport *transport = band->transport;
+    if (band->y != band->next_row &&
+        set_window(panel, transport, 0, band->y, panel->width, (uint16_t)(panel->height - band->y)) != 0)
+        return -1;
+    band->next_row = BAND_NO_WRITE; /* until the data went out */
+    if (transport->data(transport->user, band->buffer, 2u * (size_t)panel->width * band->height) != 0)
+        return -1;
+    const uint16_t next = (uint16_t)(band->y + band->height);
+    band->next_row = next < panel->height ? next : BAND_NO_WRITE;
+    return 0;
+}
+
+tarn_status tarn_panel_band_add_tile(tarn_panel_band *band, const tarn_tile *tile)
+{
+    if (band == NULL || band->buffer == NULL || tile == NULL) return TARN_ERR_CONFIG;
+    if (!band_accepts(band, tile)) {
+        band->columns_done = 0; /* the next band starts afresh, with its own window */
+        band->next_row = BAND_NO_WRITE;
+        return TARN_ERR_CONFIG;
+    }
+    if (band->columns_done == 0) {
+        band->y = tile->y;
+        band->height = tile->height;
+    }
+    const size_t row_bytes = 2u * (size_t)band->panel->width;
+    convert_rows(band->buffer + 2u * (size_t)tile->x, row_bytes, tile, 0, tile->height, band->dither);
+    band->columns_done = (uint16_t)(band->columns_done + tile->width);
+    if (band->columns_done < band->panel->width) return TARN_OK;
+    band->columns_done = 0;
+    return send_band(band) == 0 ? TARN_OK : TARN_ERR_SINK;
 }
 
 /* Dither thresholds, the 4x4 Bayer matrix indexed by (y & 3) * 4 + (x & 3). */

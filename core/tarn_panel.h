@@ -65,6 +65,37 @@ tarn_status tarn_panel_init(const tarn_panel *panel, const tarn_panel_transport 
 tarn_status tarn_panel_send_tile(const tarn_panel *panel, const tarn_panel_transport *transport,
                                  const tarn_tile *tile, int dither, uint8_t *line, size_t line_bytes);
 
+/* The fast path: bands. A band is a row of tiles (the sink gets them left to right,
+ * top to bottom), collected as full-width RGB565 rows and sent as one data call; the
+ * first band of a frame opens one window down to the panel's bottom and each later
+ * band continues the same RAMWR, so a whole frame costs 11 bytes besides its pixels
+ * and the caller needs one band of RGB565, never a frame. A band that does not
+ * follow the last one gets a window of its own. The frame must be the panel's size. */
+typedef struct {
+    const tarn_panel *panel;
+    const tarn_panel_transport *transport;
+    uint8_t *buffer;            /* RGB565 of the band being collected */
+    size_t buffer_bytes;
+    int dither;
+    uint16_t y, height;         /* the band being collected */
+    uint16_t columns_done;      /* where its next tile starts; 0: no band in progress */
+    uint16_t next_row;          /* the row the open RAMWR continues at, 0xFFFF: none */
+} tarn_panel_band;
+
+/* Bytes a band of tiles `tile_size` high needs: 2 * panel width * tile_size. */
+size_t tarn_panel_band_bytes(const tarn_panel *panel, unsigned tile_size);
+
+/* TARN_ERR_CONFIG for an unknown panel, an incomplete transport or a buffer shorter
+ * than one row. The band keeps pointers to panel, transport and buffer. */
+tarn_status tarn_panel_band_init(tarn_panel_band *band, const tarn_panel *panel,
+                                 const tarn_panel_transport *transport, int dither, uint8_t *buffer,
+                                 size_t buffer_bytes);
+
+/* Converts the tile into the band; sends the band when the tile completes it.
+ * TARN_ERR_CONFIG (and nothing sent) for a tile out of order, outside the panel, or
+ * taller than the buffer holds; TARN_ERR_SINK if the transport failed. */
+tarn_status tarn_panel_band_add_tile(tarn_panel_band *band, const tarn_tile *tile);
+
 /* RGB565 of a 0x00RRGGBB pixel at frame position (x, y), rounded to nearest, or
  * ordered-dithered. The host converts frames with this same function so that a
  * panel's image can be compared with a render byte for byte. */

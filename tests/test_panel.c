@@ -305,6 +305,8 @@ typedef struct {
     tarn_panel_emulator *emulator;
     tarn_panel_transport transport;
     int dither;
+    tarn_panel_band band;   /* the band path's state and RGB565 buffer */
+    uint8_t band_buffer[2 * 320 * TARN_TILE_SIZE_MAX];
 } target;
 
 /* The tile sink of tarn_render_frame: every tile to every target. */
@@ -326,6 +328,16 @@ static int send_to_every_target(void *user, const tarn_tile *tile)
     return 0;
 }
 
+/* The same, through the band path. */
+static int send_bands_to_every_target(void *user, const tarn_tile *tile)
+{
+    fan_out *f = user;
+    for (size_t i = 0; i < f->count; i++) {
+        if (tarn_panel_band_add_tile(&f->targets[i].band, tile) != TARN_OK) return 1;
+    }
+    return 0;
+}
+
 /* A fresh emulator for the target's model and rotation, initialised by the driver,
  * its RAM poisoned so that pixels nobody wrote stand out. */
 static void power_up(target *t, tarn_panel panel, int dither)
@@ -342,6 +354,9 @@ static void power_up(target *t, tarn_panel panel, int dither)
                          c.data_ignored + c.pixel_bytes_ignored, 0);
     for (size_t i = 0; i < TARN_PANEL_RAM_ROWS * TARN_PANEL_RAM_COLUMNS; i++)
         t->emulator->ram[i] = POISON;
+    assert_int_equal(tarn_panel_band_init(&t->band, &t->panel, &t->transport, dither, t->band_buffer,
+                                          sizeof t->band_buffer),
+                     TARN_OK);
 }
 
 typedef struct {
@@ -368,7 +383,8 @@ static void free_reference(reference_frame *ref)
     tarn_scene_free(&ref->scene);
 }
 
-static tarn_status render_to(const reference_frame *ref, unsigned tile_size, fan_out *sink)
+static tarn_status render_through(const reference_frame *ref, unsigned tile_size, tarn_tile_sink sink_tile,
+                                  fan_out *sink)
 {
     tarn_frame_config config = {ref->width, ref->height, tarn_quality_default(), 0};
     config.quality.tile_size = (uint8_t)tile_size;
@@ -376,9 +392,14 @@ static tarn_status render_to(const reference_frame *ref, unsigned tile_size, fan
     assert_true(bytes > 0);
     void *memory = malloc(bytes);
     tarn_status status = tarn_render_frame(&ref->scene.scene, &config, memory, bytes,
-                                           send_to_every_target, sink);
+                                           sink_tile, sink);
     free(memory);
     return status;
+}
+
+static tarn_status render_to(const reference_frame *ref, unsigned tile_size, fan_out *sink)
+{
+    return render_through(ref, tile_size, send_to_every_target, sink);
 }
 
 /* Pixels where the target's glass differs from the reference frame in RGB565. */
@@ -425,21 +446,22 @@ static void free_targets(target *targets, size_t count)
     for (size_t i = 0; i < count; i++) free(targets[i].emulator);
 }
 
-static void test_every_panel_shows_the_frame(void **state)
+/* Every model and rotation, every tile size, with and without dither, tile by tile
+ * (`send` = send_to_every_target) or in bands. */
+static void every_panel_shows_the_frame(tarn_tile_sink sink_tile)
 {
-    (void)state;
     static const uint16_t sizes[][2] = {{240, 240}, {240, 320}, {320, 240}};
     size_t checked = 0;
     for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
         reference_frame ref;
         render_reference(&ref, sizes[s][0], sizes[s][1]);
-        target targets[16];
-        memset(targets, 0, sizeof targets);
+        target *targets = calloc(16, sizeof *targets);
+        assert_non_null(targets);
         fan_out sink = {targets, targets_of_size(targets, ref.width, ref.height), {0}};
         assert_true(sink.count > 0);
         for (size_t k = 0; k < sizeof tile_sizes / sizeof tile_sizes[0]; k++) {
             for (size_t i = 0; i < sink.count; i++) power_up(&targets[i], targets[i].panel, targets[i].dither);
-            assert_int_equal(render_to(&ref, tile_sizes[k], &sink), TARN_OK);
+            assert_int_equal(render_through(&ref, tile_sizes[k], sink_tile, &sink), TARN_OK);
             for (size_t i = 0; i < sink.count; i++) {
                 const target *t = &targets[i];
                 size_t differing = pixels_differing(&ref, t);
@@ -452,9 +474,79 @@ static void test_every_panel_shows_the_frame(void **state)
             }
         }
         free_targets(targets, sink.count);
+        free(targets);
         free_reference(&ref);
     }
     assert_int_equal(checked, 3 * 4 * 8); /* 12 model-rotations, 2 dithers, 4 tile sizes */
+}
+
+static void test_every_panel_shows_the_frame(void **state)
+{
+    (void)state;
+    every_panel_shows_the_frame(send_to_every_target);
+}
+
+static void test_every_panel_shows_the_frame_in_bands(void **state)
+{
+    (void)state;
+    every_panel_shows_the_frame(send_bands_to_every_target);
+}
+
+/* Bands cost one window a frame: 11 bytes besides the pixels, at every tile size;
+ * and a second frame opens its own window again. */
+static void test_bands_send_one_window_a_frame(void **state)
+{
+    (void)state;
+    reference_frame ref;
+    render_reference(&ref, 240, 240);
+    target *t = calloc(1, sizeof *t);
+    assert_non_null(t);
+    power_up(t, tarn_panel_preset(TARN_PANEL_ST7789_240X240, 3), 0);
+    fan_out sink = {t, 1, {0}};
+    for (size_t k = 0; k < sizeof tile_sizes / sizeof tile_sizes[0]; k++) {
+        for (int frame = 0; frame < 2; frame++) {
+            tarn_panel_emulator_counts before = t->emulator->counts;
+            assert_int_equal(render_through(&ref, tile_sizes[k], send_bands_to_every_target, &sink), TARN_OK);
+            uint32_t wire = (t->emulator->counts.commands - before.commands) +
+                            (t->emulator->counts.data_bytes - before.data_bytes);
+            assert_int_equal(wire, 2u * 240u * 240u + 11u);
+            assert_int_equal(t->emulator->counts.commands - before.commands, 3);
+        }
+        assert_int_equal(pixels_differing(&ref, t), 0);
+    }
+    free(t->emulator);
+    free(t);
+    free_reference(&ref);
+}
+
+/* Tiles out of order, or taller than the buffer, are refused and send nothing; the
+ * next band starts over with a window of its own. */
+static void test_bands_refuse_tiles_out_of_order(void **state)
+{
+    (void)state;
+    target *t = calloc(1, sizeof *t);
+    assert_non_null(t);
+    power_up(t, tarn_panel_preset(TARN_PANEL_ST7789_240X240, 0), 0);
+    static const uint32_t pixels[64 * 64];
+    tarn_tile first = {0, 0, 120, 16, pixels, NULL, 120, 32};
+    tarn_tile skips = {200, 0, 40, 16, pixels, NULL, 40, 32};
+    tarn_tile second = {120, 0, 120, 16, pixels, NULL, 120, 32};
+    tarn_tile not_left = {16, 16, 16, 16, pixels, NULL, 16, 32};
+    tarn_panel_emulator_counts before = t->emulator->counts;
+    assert_int_equal(tarn_panel_band_add_tile(&t->band, &not_left), TARN_ERR_CONFIG);
+    assert_int_equal(tarn_panel_band_add_tile(&t->band, &first), TARN_OK);
+    assert_int_equal(tarn_panel_band_add_tile(&t->band, &skips), TARN_ERR_CONFIG);
+    assert_int_equal(t->emulator->counts.commands, before.commands);
+    assert_int_equal(tarn_panel_band_add_tile(&t->band, &first), TARN_OK);
+    assert_int_equal(tarn_panel_band_add_tile(&t->band, &second), TARN_OK);
+    assert_int_equal(t->emulator->counts.pixels_written, 240u * 16u);
+    tarn_panel_band small;
+    uint8_t buffer[2 * 240 * 8];
+    assert_int_equal(tarn_panel_band_init(&small, &t->panel, &t->transport, 0, buffer, sizeof buffer), TARN_OK);
+    assert_int_equal(tarn_panel_band_add_tile(&small, &first), TARN_ERR_CONFIG); /* 16 rows, room for 8 */
+    assert_int_equal(tarn_panel_band_init(&small, &t->panel, &t->transport, 0, buffer, 100), TARN_ERR_CONFIG);
+    free(t->emulator);
+    free(t);
 }
 
 /* A driver that gets an offset or a MADCTL bit wrong draws a different picture. */
@@ -496,7 +588,7 @@ static void test_wrong_offsets_and_madctl_show(void **state)
 static void encode_frame(const reference_frame *ref, tarn_panel panel, unsigned tile_size,
                          tarn_panel_stream_writer *writer, size_t *frame_bytes)
 {
-    target t = {panel, NULL, tarn_panel_stream_transport(writer), 0};
+    target t = {panel, NULL, tarn_panel_stream_transport(writer), 0, {0}, {0}};
     assert_int_equal(tarn_panel_init(&panel, &t.transport), TARN_OK);
     size_t before = writer->count;
     fan_out sink = {&t, 1, {0}};
@@ -508,7 +600,7 @@ static void encode_frame(const reference_frame *ref, tarn_panel panel, unsigned 
 /* Bytes a frame puts on the SPI wire: commands and data, after init. */
 static uint32_t wire_bytes_of_frame(const reference_frame *ref, tarn_panel panel, unsigned tile_size)
 {
-    target t = {{0}, NULL, {0}, 0};
+    target t = {{0}, NULL, {0}, 0, {0}, {0}};
     power_up(&t, panel, 0);
     tarn_panel_emulator_counts before = t.emulator->counts;
     fan_out sink = {&t, 1, {0}};
@@ -529,7 +621,7 @@ static void test_stream_round_trips_a_frame(void **state)
         tarn_panel_stream_writer writer = {0};
         size_t stream_bytes;
         encode_frame(&ref, panel, tile, &writer, &stream_bytes);
-        target t = {panel, new_emulator(panel.model, panel.rotation), {0}, 0};
+        target t = {panel, new_emulator(panel.model, panel.rotation), {0}, 0, {0}, {0}};
         t.transport = tarn_panel_emulator_transport(t.emulator);
         tarn_error err;
         if (tarn_panel_stream_decode(writer.bytes, writer.count, &t.transport, &err) != 0)
@@ -658,7 +750,7 @@ static void test_transport_failure_stops_tile_and_frame(void **state)
     (void)state;
     reference_frame ref;
     render_reference(&ref, 240, 240);
-    target t = {{0}, NULL, {0}, 0};
+    target t = {{0}, NULL, {0}, 0, {0}, {0}};
     power_up(&t, tarn_panel_preset(TARN_PANEL_ST7789_240X240, 0), 0);
     failing_link link = {t.transport, 0, 0};
     t.transport = (tarn_panel_transport){&link, failing_command, failing_data, NULL, forward_delay};
@@ -688,7 +780,7 @@ static void test_transport_failure_stops_tile_and_frame(void **state)
 static void test_tiles_outside_the_panel_are_rejected(void **state)
 {
     (void)state;
-    target t = {{0}, NULL, {0}, 0};
+    target t = {{0}, NULL, {0}, 0, {0}, {0}};
     power_up(&t, tarn_panel_preset(TARN_PANEL_ST7789_240X240, 0), 0);
     tarn_panel_emulator_counts before = t.emulator->counts;
     static const uint32_t pixels[16 * 16];
@@ -722,6 +814,9 @@ int main(void)
         cmocka_unit_test(test_emulator_needs_the_datasheet_waits),
         cmocka_unit_test(test_emulator_maps_addresses_through_madctl),
         cmocka_unit_test(test_every_panel_shows_the_frame),
+        cmocka_unit_test(test_every_panel_shows_the_frame_in_bands),
+        cmocka_unit_test(test_bands_send_one_window_a_frame),
+        cmocka_unit_test(test_bands_refuse_tiles_out_of_order),
         cmocka_unit_test(test_wrong_offsets_and_madctl_show),
         cmocka_unit_test(test_stream_round_trips_a_frame),
         cmocka_unit_test(test_stream_errors_name_the_byte),
