@@ -1,5 +1,6 @@
 /* frame.c: configuration, working memory and the tile loop. */
 #include "pipeline.h"
+#include "raster_setup.h"
 #include "underwater.h"
 #include "water.h"
 
@@ -92,6 +93,7 @@ int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config
 typedef struct {
     int32_t tile;
     int32_t under_apron;  /* pixels the underwater displacement reaches */
+    int32_t refraction_apron; /* pixels refraction reaches */
     int32_t apron;        /* the opaque pass's: refraction plus underwater */
     int32_t region;       /* tile + 2 * apron, pixels per side */
     int32_t water_region; /* tile + 2 * under_apron */
@@ -109,7 +111,8 @@ static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene 
     l.under_apron = l.underwater
         ? apron_limit(tarn_underwater_reach_pixels(scene->underwater, config->width), &config->quality)
         : 0;
-    l.apron = l.water ? tarn_frame_apron_pixels(scene, config) + l.under_apron : 0;
+    l.refraction_apron = l.water ? tarn_frame_apron_pixels(scene, config) : 0;
+    l.apron = l.refraction_apron + l.under_apron;
     l.region = l.tile + 2 * l.apron;
     l.water_region = l.tile + 2 * l.under_apron;
     l.depth_bytes = config->quality.depth_bits / 8u;
@@ -137,11 +140,15 @@ static void raster_into_tile(void *ctx, const tarn_screen_vertex vertex[3], cons
     tarn_raster_triangle(ctx, vertex, object);
 }
 
-static void clear_buffers(uint32_t *colour, void *depth, size_t pixels, uint32_t background,
-                          size_t depth_bytes)
+/* The target's pixels in its rect to the background colour and "no triangle". */
+static void clear_rect(tarn_tile_target *t, uint32_t background, size_t depth_bytes)
 {
-    for (size_t i = 0; i < pixels; i++) colour[i] = background;
-    memset(depth, 0, pixels * depth_bytes);
+    const size_t count = (size_t)(t->rect.x1 - t->rect.x0);
+    for (int32_t j = t->rect.y0; j < t->rect.y1; j++) {
+        const int32_t first = (j - t->origin_y) * t->stride + (t->rect.x0 - t->origin_x);
+        for (size_t i = 0; i < count; i++) t->colour[(size_t)first + i] = background;
+        memset((uint8_t *)t->depth + (size_t)first * depth_bytes, 0, count * depth_bytes);
+    }
 }
 
 /* Copies the tile's own pixels out of the opaque buffers: the water pass starts
@@ -224,7 +231,8 @@ static void draw_water(frame_state *f, int32_t x, int32_t y, const tarn_pixel_re
     c->background_rect.x0 = f->opaque.origin_x;
     c->background_rect.y0 = f->opaque.origin_y;
     c->background_stride = f->opaque.stride;
-    c->sample_rect = f->opaque.rect; /* the tile and whatever apron it has */
+    c->offset_limit = f->layout.refraction_apron;
+    c->sample_rect = f->opaque.rect; /* binds at the frame's edges only (opaque_rect) */
     tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, &w->rect, raster_into_tile, w);
 }
 
@@ -237,8 +245,60 @@ static void draw_underwater(frame_state *f, const tarn_pixel_rect *tile_rect)
     u->origin_x = f->water.origin_x;
     u->origin_y = f->water.origin_y;
     u->stride = f->water.stride;
+    u->offset_limit = f->layout.under_apron;
     u->sample_rect = f->water.rect;
     tarn_underwater_tile(u, tile_rect, f->final, f->layout.tile);
+}
+
+static int rect_empty(const tarn_pixel_rect *r)
+{
+    return r->x0 >= r->x1 || r->y0 >= r->y1;
+}
+
+static tarn_pixel_rect rect_union(tarn_pixel_rect a, tarn_pixel_rect b)
+{
+    if (rect_empty(&a)) return b;
+    if (rect_empty(&b)) return a;
+    tarn_pixel_rect r = {a.x0 < b.x0 ? a.x0 : b.x0, a.y0 < b.y0 ? a.y0 : b.y0,
+                         a.x1 > b.x1 ? a.x1 : b.x1, a.y1 > b.y1 ? a.y1 : b.y1};
+    return r;
+}
+
+typedef struct {
+    tarn_pixel_rect within; /* the tile */
+    tarn_pixel_rect extent; /* pixels of it water triangles may cover; empty at first */
+    unsigned subpixel_bits;
+} water_extent;
+
+static void add_water_extent(void *ctx, const tarn_screen_vertex vertex[3], const tarn_object *object)
+{
+    water_extent *e = ctx;
+    triangle_setup t;
+    if (!tarn_orient_triangle(vertex, object->material->cull, e->subpixel_bits, &t)) return;
+    const pixel_box box = tarn_triangle_pixels(&t);
+    const tarn_pixel_rect r = {box.x0, box.y0, box.x1 + 1, box.y1 + 1};
+    e->extent = rect_union(e->extent, intersect(r, e->within));
+}
+
+/* The pixels the opaque pass must draw for a tile: the tile, and the apron only as
+ * far as the tile's water can sample it. Refracted samples move at most the
+ * refraction apron from their water pixel, so beyond that from every water pixel
+ * nothing is read; a tile without water needs no apron at all. The image is the
+ * same as with the whole apron drawn; only the cost differs. The underwater view
+ * displaces every pixel, so it keeps the whole apron. */
+static tarn_pixel_rect opaque_rect(const frame_state *f, const tarn_pixel_rect *tile_rect,
+                                   const tarn_pixel_rect *frame, int *has_water)
+{
+    const tarn_pixel_rect whole = around(tile_rect->x0, tile_rect->y0, f->layout.tile, f->layout.apron, frame);
+    *has_water = f->layout.water;
+    if (!f->layout.water || f->layout.underwater) return whole;
+    water_extent e = {*tile_rect, {0, 0, 0, 0}, f->config->quality.subpixel_bits};
+    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, tile_rect, add_water_extent, &e);
+    *has_water = !rect_empty(&e.extent);
+    if (!*has_water) return *tile_rect;
+    const int32_t a = f->layout.refraction_apron;
+    const tarn_pixel_rect reach = {e.extent.x0 - a, e.extent.y0 - a, e.extent.x1 + a, e.extent.y1 + a};
+    return rect_union(*tile_rect, intersect(reach, whole));
 }
 
 static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, void *user)
@@ -247,14 +307,14 @@ static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, 
     const tarn_pixel_rect frame = {0, 0, f->config->width, f->config->height};
     const tarn_pixel_rect tile_rect = around(x, y, size, 0, &frame);
     tarn_tile_target *o = &f->opaque;
+    int has_water;
     o->origin_x = x - f->layout.apron;
     o->origin_y = y - f->layout.apron;
-    o->rect = around(x, y, size, f->layout.apron, &frame);
-    clear_buffers(o->colour, o->depth, (size_t)f->layout.region * (size_t)f->layout.region,
-                  f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
+    o->rect = opaque_rect(f, &tile_rect, &frame, &has_water);
+    clear_rect(o, f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
     tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, &o->rect, raster_into_tile, o);
     const tarn_tile_target *out = o;
-    if ((TARN_LINK_WATER || TARN_LINK_UNDERWATER) && f->layout.water) {
+    if ((TARN_LINK_WATER || TARN_LINK_UNDERWATER) && has_water) {
         draw_water(f, x, y, &frame);
         out = &f->water;
     }

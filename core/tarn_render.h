@@ -77,13 +77,13 @@ typedef struct {
     uint8_t perspective_span;   /* 2..64, a power of two; SPAN mode only */
     uint8_t depth_bits;         /* 16 or 32 bits per depth-buffer entry */
     uint8_t tile_size;          /* 8..64 pixels, square tiles; does not change the image */
-    uint8_t refraction_apron;   /* pixels of opaque scene rendered around each tile for
-                                   refraction (and the underwater view) to sample, at
-                                   most: TARN_APRON_FULL renders as far as they reach
-                                   (seamless, the default); 1..TARN_WATER_APRON_MAX
-                                   saves memory and time, and samples beyond clamp to it;
-                                   0 clamps them to the tile. Clamped samples can show
-                                   seams at tile edges. */
+    uint8_t refraction_apron;   /* how far (pixels, each axis) a refracted or underwater
+                                   sample may move from its pixel, and so how much opaque
+                                   scene each tile renders around its water:
+                                   TARN_APRON_FULL as far as the materials reach (the
+                                   default); 1..TARN_WATER_APRON_MAX caps the move, which
+                                   saves memory and time; 0 moves nothing. The image
+                                   never depends on the tile size. */
 } tarn_quality;
 
 tarn_quality tarn_quality_default(void);

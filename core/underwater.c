@@ -24,7 +24,8 @@ static int32_t displaced_offset(const tarn_underwater_context *u, int32_t i, int
     for (int k = 0; k < 2; k++) {
         /* N (Q1.15) * pixels per unit normal (Q16.16) / 2^23 -> pixels, Q24.8 */
         int32_t offset_q8 = tarn_mul_hi_s32_u32(tarn_water_normal_component(texel[k]) * 512, u->distortion_px);
-        target[k] += tarn_floor_shift(tarn_clamp_i32(offset_q8, -(64 << 8), 64 << 8) + 128, 8);
+        const int32_t offset = tarn_floor_shift(tarn_clamp_i32(offset_q8, -(64 << 8), 64 << 8) + 128, 8);
+        target[k] += tarn_clamp_i32(offset, -u->offset_limit, u->offset_limit);
     }
     const int32_t x = tarn_clamp_i32(target[0], u->sample_rect.x0, u->sample_rect.x1 - 1);
     const int32_t y = tarn_clamp_i32(target[1], u->sample_rect.y0, u->sample_rect.y1 - 1);

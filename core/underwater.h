@@ -19,7 +19,8 @@ typedef struct {
     const void *depth;
     uint8_t depth_bits;
     int32_t origin_x, origin_y, stride;
-    tarn_pixel_rect sample_rect; /* where displaced samples may land */
+    int32_t offset_limit;        /* pixels a sample may move, each axis: the underwater apron */
+    tarn_pixel_rect sample_rect; /* where displaced samples may land: the frame */
 } tarn_underwater_context;
 
 /* 1 when the view is under water: the scene has an underwater block and the

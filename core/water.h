@@ -33,7 +33,9 @@ typedef struct tarn_water_context {
     uint8_t depth_bits;
     tarn_pixel_rect background_rect; /* frame pixels the background buffers hold */
     int32_t background_stride;
-    tarn_pixel_rect sample_rect;     /* where refracted samples may land */
+    int32_t offset_limit;            /* pixels a refracted sample may move, each axis:
+                                        the frame's refraction apron */
+    tarn_pixel_rect sample_rect;     /* where refracted samples may land: the frame */
 } tarn_water_context;
 
 /* Per-frame and per-object constants; buffers are set by the caller. */

@@ -18,7 +18,7 @@ tarn_water_sample tarn_water_refract(const tarn_water_context *w, int32_t i, int
         int32_t offset_q8 = tarn_mul_hi_s32_u32(normal[k] * 512, w->refraction_px);
         offset_q8 = tarn_clamp_i32(offset_q8, -(64 << 8), 64 << 8);
         offset_q8 = (offset_q8 * (int32_t)(reach >> 1)) / Q15_ONE; /* times saturate(db - ds) */
-        target[k] += tarn_floor_shift(offset_q8 + 128, 8);
+        target[k] += tarn_clamp_i32(tarn_floor_shift(offset_q8 + 128, 8), -w->offset_limit, w->offset_limit);
     }
     target[0] = tarn_clamp_i32(target[0], w->sample_rect.x0, w->sample_rect.x1 - 1);
     target[1] = tarn_clamp_i32(target[1], w->sample_rect.y0, w->sample_rect.y1 - 1);

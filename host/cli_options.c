@@ -14,8 +14,8 @@ const char tarn_cli_usage[] =
     "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [QUALITY]\n"
     "QUALITY: --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
     "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n"
-    "         --apron on|off|N (opaque scene rendered around each tile for refraction: as far\n"
-    "         as it reaches, none, or at most N pixels, 0..32; samples beyond clamp)\n";
+    "         --apron on|off|N (how far refraction may move a sample, so how much opaque scene\n"
+    "         each tile renders around its water: as far as it reaches, not at all, or N pixels 0..32)\n";
 
 /* Whole decimal number in [min, max], nothing else in the text. */
 static int parse_whole(const char *text, unsigned long min, unsigned long max, unsigned long *out)
@@ -107,8 +107,8 @@ static int parse_apron(const char *value, tarn_quality *q, tarn_error *err)
     else if (value && strcmp(value, "off") == 0) q->refraction_apron = 0;
     else if (parse_whole(value, 0, TARN_WATER_APRON_MAX, &pixels) == 0) q->refraction_apron = (uint8_t)pixels;
     else
-        return tarn_fail(err, "--apron: expected on (render around each tile as far as refraction reaches: "
-                         "seamless), off (clamp at the tile: least memory) or a width in pixels 0..%u, got '%s'",
+        return tarn_fail(err, "--apron: expected on (refraction moves samples as far as it reaches), off "
+                         "(moves nothing: least memory) or a limit in pixels 0..%u, got '%s'",
                          TARN_WATER_APRON_MAX, value ? value : "");
     return 0;
 }

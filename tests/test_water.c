@@ -187,8 +187,9 @@ static void test_tiles_do_not_show_with_the_apron(void **state)
         assert_memory_equal(whole, tiled, 3u * W * H);
         free(tiled);
     }
-    /* an apron as wide as the reach is the full apron; without the apron, samples
-     * clamp to the tile: seams appear, nothing breaks; a narrower apron lies between */
+    /* an apron as wide as the reach is the full apron; a narrower one caps every
+     * refracted sample's move at its width, the same at every tile size (no seams);
+     * with none, refraction moves nothing */
     config.quality.tile_size = 8;
     const int32_t reach = tarn_frame_apron_pixels(&wet->b.scene, &config);
     assert_true(reach > 2);
@@ -200,12 +201,23 @@ static void test_tiles_do_not_show_with_the_apron(void **state)
     config.quality.refraction_apron = 0;
     uint8_t *clamped = render(wet, config);
     assert_memory_not_equal(whole, clamped, 3u * W * H);
+    wet->water.features &= ~(uint32_t)TARN_WATER_REFRACTION;
+    uint8_t *unrefracted = render(wet, config);
+    assert_memory_equal(unrefracted, clamped, 3u * W * H);
+    wet->water.features |= TARN_WATER_REFRACTION;
+    free(unrefracted);
     config.quality.refraction_apron = (uint8_t)(reach / 2);
     assert_int_equal(tarn_frame_apron_pixels(&wet->b.scene, &config), reach / 2);
     assert_true(tarn_frame_memory_bytes(&config, &wet->b.scene) < full_bytes);
     uint8_t *narrow = render(wet, config);
     assert_memory_not_equal(whole, narrow, 3u * W * H);
     assert_memory_not_equal(clamped, narrow, 3u * W * H);
+    for (size_t t = 0; t < sizeof tiles; t++) {
+        config.quality.tile_size = tiles[t];
+        uint8_t *tiled = render(wet, config);
+        assert_memory_equal(narrow, tiled, 3u * W * H);
+        free(tiled);
+    }
     free(narrow);
     free(clamped);
     free(as_wide);
