@@ -9,6 +9,9 @@
 #   make bench-target             runs every emulated board and prints one line each
 #   make firmware SCENE=my.json BAKE_FLAGS="--tile 16 --depth 16"   another scene
 #
+# A board whose board.mk gives no BOARD_RUN is a real board: it is built (and
+# size-, stack- and float-checked by firmware-check) but never run here.
+#
 # docs/firmware.md describes the boards, the stream and the figures.
 
 FW_BOARDS := $(sort $(patsubst boards/%/board.mk,%,$(wildcard boards/*/board.mk)))
@@ -67,12 +70,31 @@ FW_CC := $(FW_CROSS)gcc
 FW_CFLAGS := -std=c99 -Wall -Wextra -Werror -O2 -g -ffreestanding -fno-common \
 	-ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su $(BOARD_CPU) \
 	-Icore -Ifirmware -I$(FW_DIR) $(BOARD_INCLUDE) $(FW_LIBC_INCLUDE)
-FW_SRC := firmware/main.c $(FW_LIBC_SRC) $(BOARD_SRC) $(wildcard core/*.c) $(FW_DIR)/scene.c
+# The program: an emulated board runs the measured run and sends the panel stream
+# through its writes; a real board shows the scene forever through SPI and DMA.
+ifneq ($(value BOARD_RUN),)
+FW_PROGRAM_SRC := firmware/main.c firmware/stream_transport.c
+else
+FW_PROGRAM_SRC := firmware/display_main.c firmware/dma_transport.c
+endif
+FW_SRC := $(FW_PROGRAM_SRC) firmware/panel_sink.c $(FW_LIBC_SRC) $(BOARD_SRC) \
+	$(wildcard core/*.c) $(FW_DIR)/scene.c
 FW_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,$(basename $(patsubst $(FW_DIR)/%,%,$(FW_SRC))))
 
-firmware: $(FW_ELF)
+# A board that boots through a second stage (RP2040: BOARD_BOOT2, its 252 bytes of
+# code) gets it checksummed by a host tool and placed in the .boot2 section; a board
+# with BOARD_UF2_FAMILY gets firmware.uf2 besides firmware.elf.
+FW_TOOLS := build/tools
+FW_HOST_CC := cc
+ifneq ($(BOARD_BOOT2),)
+FW_OBJ += $(FW_DIR)/obj/boot2_crc.o
+endif
+FW_OUTPUTS := $(FW_ELF) $(if $(BOARD_UF2_FAMILY),$(FW_DIR)/firmware.uf2)
+
+firmware: $(FW_OUTPUTS)
 	@$(FW_CROSS)size $(FW_ELF)
 
+ifneq ($(value BOARD_RUN),)
 firmware-run: $(FW_DIR)/report.txt
 
 bench-target: $(FW_DIR)/report.txt $(FW_ELF)
@@ -80,6 +102,17 @@ bench-target: $(FW_DIR)/report.txt $(FW_ELF)
 
 firmware-check: $(FW_DIR)/report.txt
 	@tests/check_firmware.sh $(BOARD)
+else
+# a real board: built, never run here
+firmware-run: $(FW_OUTPUTS)
+	@echo "$(BOARD) is a real board: built ($(FW_OUTPUTS)), not run" >&2
+
+bench-target: $(FW_OUTPUTS)
+	@echo "$(BOARD) is a real board: no emulated run to measure" >&2
+
+firmware-check: $(FW_OUTPUTS) $(FW_DIR)/firmware.conf
+	@tests/check_firmware.sh $(BOARD)
+endif
 
 # what tests/check_firmware.sh and tests/test_firmware.c need to know about the build
 $(FW_DIR)/firmware.conf: boards/$(BOARD)/board.mk firmware/firmware.mk FORCE
@@ -118,7 +151,7 @@ $(FW_CORE_OBJ): $(FW_DIR)/scene_link.h
 $(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h
 
 $(FW_OBJ): firmware/firmware.mk boards/$(BOARD)/board.mk
-$(FW_DIR)/obj/firmware/main.o: $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
+$(FW_DIR)/obj/firmware/main.o $(FW_DIR)/obj/firmware/display_main.o: $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
 $(FW_DIR)/obj/firmware/main.o: FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"'
 $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-distribute-patterns -fno-strict-aliasing
 
@@ -151,6 +184,34 @@ $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
 			echo "tarn: $(BOARD)'s flash cannot hold $(FW_SCENE): use smaller textures or fewer mesh segments (the header of $(FW_DIR)/scene.c counts the bytes)" >&2; fi; \
 		rm -f $@; exit 1; fi
 	@cat $(FW_DIR)/link.err >&2; rm -f $(FW_DIR)/link.err
+
+# The host tools (firmware/tools/): the boot2 checksum and the UF2 writer.
+$(FW_TOOLS)/%: firmware/tools/%.c
+	@mkdir -p $(dir $@)
+	$(FW_HOST_CC) -std=c99 -Wall -Wextra -Werror -O2 -o $@ $<
+
+# boot2: assembled and linked where the bootrom runs it (it is position-independent
+# anyway), cut to its bytes, then padded to 252 with the CRC32 the bootrom checks
+# appended, as a .boot2 section.
+$(FW_DIR)/boot2.bin: $(BOARD_BOOT2) boards/$(BOARD)/board.mk | fw-toolchain
+	@mkdir -p $(dir $@)
+	$(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -Wl,-Ttext=0x20041f00 -Wl,-e,boot2_entry -o $(FW_DIR)/boot2.elf $<
+	$(FW_CROSS)objcopy -O binary -j .text $(FW_DIR)/boot2.elf $@
+
+$(FW_TOOLS)/boot2_crc: firmware/tools/crc32_boot2.h
+
+$(FW_DIR)/boot2_crc.S: $(FW_DIR)/boot2.bin $(FW_TOOLS)/boot2_crc
+	$(FW_TOOLS)/boot2_crc $< $@
+
+$(FW_DIR)/obj/boot2_crc.o: $(FW_DIR)/boot2_crc.S | fw-toolchain
+	@mkdir -p $(dir $@)
+	$(FW_CC) $(BOARD_CPU) -c -o $@ $<
+
+# UF2 for a bootloader that takes files (RP2040: hold BOOTSEL, copy the file): the
+# flash image from its lowest load address, in 256-byte blocks.
+$(FW_DIR)/firmware.uf2: $(FW_ELF) $(FW_TOOLS)/uf2
+	$(FW_CROSS)objcopy -O binary $(FW_ELF) $(FW_DIR)/firmware.bin
+	$(FW_TOOLS)/uf2 $(FW_DIR)/firmware.bin $(BOARD_FLASH_BASE) $(BOARD_UF2_FAMILY) $@
 
 # One emulated run. QEMU's exit status is the firmware's.
 $(FW_DIR)/report.txt: $(FW_ELF) | fw-qemu

@@ -1,6 +1,7 @@
-/* main.c: the board-independent firmware. Renders the baked scene with the integer
- * core and sends every tile to an ST7789 through the panel drivers of core/panel.c,
- * whose transport here writes the byte stream of tarn_panel.h through the board.
+/* main.c: the measured run of the emulated boards. Renders the baked scene with the
+ * integer core and sends every tile to an ST7789 through the panel drivers of
+ * core/panel.c, whose transport (stream_transport.c) writes the byte stream of
+ * tarn_panel.h through the board. The real boards run display_main.c instead.
  *
  * One run: panel init, frame at FW_TIME_0 ms, frame at FW_TIME_1 ms (both into the
  * same panel stream), the 'E' record, then the FW_TIME_1 frame once more into a sink
@@ -18,7 +19,9 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "board.h"
+#include "panel_sink.h"
 #include "scene.h"
+#include "stream_transport.h"
 #include "tarn_panel.h"
 #include "tarn_render.h"
 
@@ -37,68 +40,8 @@
 
 /* The renderer's working memory: the only large buffer. */
 static uint32_t memory[(SCENE_MEMORY_BYTES + 3u) / 4u];
-/* One tile row in RGB565, for tarn_panel_send_tile. */
+/* One tile row in RGB565: the panel stream needs no more. */
 static uint8_t line[2u * TARN_TILE_SIZE_MAX];
-
-static int emit(const void *bytes, size_t count)
-{
-    return board_write(bytes, count);
-}
-
-static int stream_command(void *user, uint8_t command)
-{
-    const uint8_t record[2] = {TARN_STREAM_COMMAND, command};
-    (void)user;
-    return emit(record, sizeof record);
-}
-
-static int stream_data(void *user, const uint8_t *bytes, size_t count)
-{
-    (void)user;
-    while (count > 0) {
-        size_t n = count > 0xFFFFu ? 0xFFFFu : count;
-        const uint8_t record[3] = {TARN_STREAM_DATA, (uint8_t)(n >> 8), (uint8_t)n};
-        if (emit(record, sizeof record) != 0 || emit(bytes, n) != 0) return 1;
-        bytes += n;
-        count -= n;
-    }
-    return 0;
-}
-
-static int stream_reset(void *user, int asserted)
-{
-    const uint8_t record[2] = {TARN_STREAM_RESET, (uint8_t)(asserted ? 1 : 0)};
-    (void)user;
-    return emit(record, sizeof record);
-}
-
-static int stream_delay(void *user, uint16_t milliseconds)
-{
-    const uint8_t record[3] = {TARN_STREAM_DELAY, (uint8_t)(milliseconds >> 8),
-                               (uint8_t)milliseconds};
-    (void)user;
-    return emit(record, sizeof record);
-}
-
-static int stream_end(uint8_t status)
-{
-    const uint8_t record[2] = {TARN_STREAM_END, status};
-    return emit(record, sizeof record);
-}
-
-typedef struct {
-    tarn_panel panel;
-    tarn_panel_transport transport;
-    tarn_status panel_status; /* why the sink stopped a frame */
-} panel_sink;
-
-static int send_tile(void *user, const tarn_tile *tile)
-{
-    panel_sink *sink = user;
-    sink->panel_status = tarn_panel_send_tile(&sink->panel, &sink->transport, tile, FW_DITHER,
-                                              line, sizeof line);
-    return sink->panel_status != TARN_OK;
-}
 
 /* Text without stdio: the report line is assembled here. */
 typedef struct {
@@ -215,24 +158,21 @@ int main(void)
     tarn_status status;
 
     if (board_init() != 0) return 2;
-    sink.panel = tarn_panel_preset(TARN_PANEL_ST7789_240X240, 0);
-    sink.transport.user = &sink;
-    sink.transport.command = stream_command;
-    sink.transport.data = stream_data;
-    sink.transport.reset = stream_reset;
-    sink.transport.delay_ms = stream_delay;
-    sink.panel_status = TARN_OK;
+    const tarn_panel_transport *transport = board_panel_transport();
+    panel_sink_init(&sink, tarn_panel_preset(TARN_PANEL_ST7789_240X240, 0), transport, line, 0,
+                    sizeof line, FW_DITHER);
 
-    status = tarn_panel_init(&sink.panel, &sink.transport);
+    status = tarn_panel_init(&sink.panel, transport);
     for (unsigned i = 0; i < 2u && status == TARN_OK; i++) {
         tarn_frame_config config = scene_config;
         config.time_ms = times[i];
         uint64_t start = board_instructions();
-        status = tarn_render_frame(&scene_scene, &config, memory, sizeof memory, send_tile, &sink);
+        status = tarn_render_frame(&scene_scene, &config, memory, sizeof memory,
+                                   panel_sink_send_tile, &sink);
         frame_instructions[i] = board_instructions() - start;
-        if (status == TARN_ERR_SINK && sink.panel_status != TARN_OK) status = sink.panel_status;
+        status = panel_sink_frame_status(&sink, status);
     }
-    if (stream_end((uint8_t)status) != 0) return 2;
+    if (stream_transport_end((uint8_t)status) != 0) return 2;
     if (status == TARN_OK) { /* the core alone: the same frame, tiles dropped */
         tarn_frame_config config = scene_config;
         config.time_ms = times[1];
