@@ -31,9 +31,12 @@ firmware-run:
 bench-target:
 	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory -s bench-target BOARD=$$b || exit 1; done
 
-# make test: every board built, run and compared with the host, byte for byte
+# make test: every board built, run and compared with the host, byte for byte; the
+# real boards built and checked, and their bad builds (too little RAM, no compiler)
+# failing as they should
 firmware-check: firmware-run
 	@tests/check_firmware.sh $(FW_BOARDS)
+	@tests/check_real_boards.sh
 
 else ifeq ($(filter $(BOARD),$(FW_BOARDS)),)
 

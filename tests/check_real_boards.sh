@@ -1,0 +1,45 @@
+#!/bin/sh
+# check_real_boards.sh: what a user sees when a real board's build cannot work
+# (make firmware-check runs it after check_firmware.sh; tests/test_real_boards.c
+# checks the images that do build).
+#
+# - A scene too large for the board's RAM: the STM32F411 (128 KB) and the pond at
+#   --tile 64, whose renderer alone needs 163,840 bytes. The link must fail, say by
+#   how many bytes RAM overflowed and what to change, and leave no firmware.elf.
+# - A missing cross compiler: the build must stop before anything else, naming the
+#   compiler and the package that has it.
+#
+# Both build into build/firmware-bad/, so the real builds stay as they are.
+set -u
+board=stm32f411-st7789
+dir=build/firmware-bad/$board
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+
+rm -rf "$dir"
+out=$(make --no-print-directory firmware BOARD=$board FW_DIR=$dir BAKE_FLAGS="--tile 64" 2>&1)
+status=$?
+overflow=$(printf '%s\n' "$out" | grep -E "region .RAM. overflowed by [0-9]+ bytes" | head -1)
+note=$(printf '%s\n' "$out" | grep -E "^tarn: $board has too little RAM for scenes/pond.json \[--tile 64\]: the renderer needs 163840 bytes and the stack 8192; bake with a smaller --tile" | head -1)
+if [ $status -ne 0 ] && [ -n "$overflow" ] && [ -n "$note" ] && [ ! -e "$dir/firmware.elf" ]; then
+    pass
+    echo "$board, pond --tile 64: ${overflow##*: }"
+else
+    fail "$board with the pond at --tile 64 should fail to link, saying by how much and what to change (status $status):"
+    printf '%s\n' "$out" | grep -v "gcc -std" | tail -5
+fi
+
+out=$(make --no-print-directory firmware BOARD=$board FW_DIR=$dir FW_CROSS=no-such-arm-none-eabi- 2>&1)
+status=$?
+if [ $status -ne 0 ] && printf '%s\n' "$out" |
+    grep -q "^tarn: no-such-arm-none-eabi-gcc not found; install it: sudo apt-get install gcc-arm-none-eabi"; then
+    pass
+else
+    fail "$board without its compiler should stop naming it (status $status): $out"
+fi
+
+rm -rf build/firmware-bad
+echo "real boards, bad builds: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
