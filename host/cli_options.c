@@ -12,6 +12,7 @@ const char tarn_cli_usage[] =
     "       tarn accuracy --math\n"
     "       tarn memory SCENE [--size WxH] [QUALITY]\n"
     "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [QUALITY]\n"
+    "       tarn show SCENE --display DISPLAY --panel MODEL [...]   (tarn show --help)\n"
     "QUALITY: --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
     "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n"
     "         --apron on|off|N (how far refraction may move a sample, so how much opaque scene\n"
@@ -268,4 +269,10 @@ int tarn_cli_frame_path(const char *output, unsigned index, char *out, size_t si
 uint32_t tarn_cli_frame_time(const tarn_cli_options *o, unsigned index)
 {
     return (uint32_t)frame_clock(o, index); /* in range: the parser checked the last frame */
+}
+
+int tarn_cli_parse_quality_option(const char *name, const char *value, tarn_quality *quality,
+                                  tarn_error *err)
+{
+    return parse_quality_option(name, value, quality, err);
 }

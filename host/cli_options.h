@@ -59,6 +59,12 @@ int tarn_cli_frame_path(const char *output, unsigned index, char *out, size_t si
 /* The clock of frame `index`: time_ms + floor(index * 1000 / fps). */
 uint32_t tarn_cli_frame_time(const tarn_cli_options *options, unsigned index);
 
+/* One QUALITY option for commands with parsers of their own (tarn show): 0 when
+ * `name` was applied to `quality`, -1 with `err` set for a bad value, 1 when `name`
+ * is not a quality option. */
+int tarn_cli_parse_quality_option(const char *name, const char *value, tarn_quality *quality,
+                                  tarn_error *err);
+
 extern const char tarn_cli_usage[];
 
 #endif

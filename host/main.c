@@ -2,13 +2,17 @@
  * bake scenes into C for firmware. */
 #include <stdio.h>
 
+#include <string.h>
+
 #include "cli_options.h"
 #include "commands.h"
+#include "show.h"
 
 int main(int argc, char **argv)
 {
     tarn_cli_options options;
     tarn_error err;
+    if (argc >= 2 && strcmp(argv[1], "show") == 0) return tarn_command_show(argc, argv);
     if (tarn_cli_parse(argc, argv, &options, &err) != 0) {
         fprintf(stderr, "tarn: %s\n%s", err.message, tarn_cli_usage);
         return TARN_EXIT_BAD_INPUT;

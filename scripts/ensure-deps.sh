@@ -12,6 +12,8 @@ want make command -v make
 want gcc command -v gcc
 want libpng-dev pkg-config --exists libpng
 want libjansson-dev pkg-config --exists jansson
+want libgpiod-dev pkg-config --exists libgpiod       # tarn show: DC/reset lines, GPIO bit-bang
+want libhidapi-dev pkg-config --exists hidapi-hidraw # tarn show: the MCP2210 bridge
 if [ "${1:-demo}" = test ]; then
     want libcmocka-dev pkg-config --exists cmocka
     want gcc-arm-none-eabi command -v arm-none-eabi-gcc

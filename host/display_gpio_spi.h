@@ -1,0 +1,27 @@
+/* display_gpio_spi.h: SPI bit-banged on GPIO lines, for boards whose SPI controller
+ * is taken. Mode 0, MSB first: MOSI is set (only when it changes), SCK rises (the
+ * panel samples), SCK falls. Each edge is a GPIO ioctl through libgpiod, so the
+ * link runs at the speed of system calls: `tarn show` measures and prints it. */
+#ifndef TARN_HOST_DISPLAY_GPIO_SPI_H
+#define TARN_HOST_DISPLAY_GPIO_SPI_H
+
+#include "gpio_lines.h"
+#include "link_counts.h"
+#include "tarn_panel.h"
+
+typedef struct {
+    tarn_gpio_line *sck, *mosi, *cs, *dc, *reset; /* reset may hold no line */
+    tarn_delay_fn delay;
+    void *delay_user;
+    int mosi_level, dc_level;                     /* -1: not driven yet */
+    tarn_link_counts counts;                      /* transfers = line sets; no link_ns model */
+    tarn_error error;                             /* why the last call failed */
+} tarn_gpio_spi;
+
+/* Lines already requested by the caller; SCK low, CS high. */
+void tarn_gpio_spi_init(tarn_gpio_spi *spi, tarn_gpio_line *sck, tarn_gpio_line *mosi, tarn_gpio_line *cs,
+                        tarn_gpio_line *dc, tarn_gpio_line *reset);
+
+tarn_panel_transport tarn_gpio_spi_transport(tarn_gpio_spi *spi);
+
+#endif
