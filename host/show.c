@@ -93,8 +93,6 @@ static int animate(show_run *r, tarn_error *err)
 {
     const tarn_show_options *o = r->options;
     double start = now_s();
-    if (render_into(r, 0, r->frames[0]) != 0)
-        return tarn_fail(err, "%s: render failed: %s", o->scene_path, tarn_status_text(r->job.status));
     for (uint32_t k = 0; (o->frames == 0 || k < o->frames) && !interrupted; k++) {
         int more = o->frames == 0 || k + 1 < o->frames;
         pthread_t renderer;
@@ -183,12 +181,23 @@ static int prepare(show_run *r, const tarn_loaded_scene *scene, tarn_error *err)
     if (r->job.memory_bytes == 0)
         return tarn_fail(err, "%s: cannot render at the panel's %ux%u with these quality settings", o->scene_path,
                          o->panel.width, o->panel.height);
+    for (size_t m = 0; m < scene->material_count; m++) {
+        int32_t reach = tarn_water_reach_pixels(scene->materials[m].water, o->panel.width);
+        if (reach > (int32_t)TARN_WATER_APRON_MAX)
+            return tarn_fail(err, "%s: materials.%s.water.refraction reaches %d pixels on the %s's %u columns; "
+                             "the apron holds %u (pick a narrower panel or rotation, or lower refraction)",
+                             o->scene_path, scene->material_names[m], (int)reach, o->panel_name, o->panel.width,
+                             TARN_WATER_APRON_MAX);
+    }
     size_t pixels = (size_t)o->panel.width * o->panel.height;
     r->job.memory = malloc(r->job.memory_bytes);
     r->frames[0] = malloc(pixels * sizeof(uint32_t));
     r->frames[1] = malloc(pixels * sizeof(uint32_t));
     if (r->job.memory == NULL || r->frames[0] == NULL || r->frames[1] == NULL)
         return tarn_fail(err, "out of memory for two %ux%u frames", o->panel.width, o->panel.height);
+    /* the first frame renders before any device is touched */
+    if (render_into(r, 0, r->frames[0]) != 0)
+        return tarn_fail(err, "%s: render failed: %s", o->scene_path, tarn_status_text(r->job.status));
     return 0;
 }
 
