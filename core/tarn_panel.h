@@ -6,8 +6,9 @@
  * drivers here are the same code on all of them.
  *
  * A frame goes out tile by tile: a window per tile (CASET, RASET, RAMWR, then the
- * tile's rows, one data call each), so no frame-sized buffer is needed anywhere.
- * Pixels are RGB565, high byte first. docs/panels.md gives the byte counts, the
+ * tile's rows), or, the fast path, in bands: a row of tiles collected full-width and
+ * sent inside one RAMWR for the whole frame. No frame-sized buffer is needed
+ * anywhere. Pixels are RGB565, high byte first. docs/panels.md gives the byte counts, the
  * presets and where their facts come from. */
 #ifndef TARN_PANEL_H
 #define TARN_PANEL_H
