@@ -22,6 +22,7 @@ check() {
     scene=$1
     shift
     dir=build/firmware-link/$(basename "$scene" .json)
+    mkdir -p "$dir"
     if ! make --no-print-directory -s firmware BOARD=$board FW_BUILD_DIR="$dir" SCENE="$scene" \
         BAKE_FLAGS="$flags" > "$dir.log" 2>&1; then
         cat "$dir.log"
