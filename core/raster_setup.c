@@ -4,19 +4,11 @@
  * raster.c. */
 #include "raster_setup.h"
 
-static int64_t round_div_i64(int64_t num, int64_t den) /* den > 0 */
+static exact_value floor_divmod(int64_t num, const tarn_divisor *den)
 {
-    return num >= 0 ? (num + den / 2) / den : -((-num + den / 2) / den);
-}
-
-static exact_value floor_divmod(int64_t num, int64_t den) /* den > 0 */
-{
-    int64_t q = num / den, r = num % den;
-    if (r < 0) {
-        r += den;
-        q--;
-    }
-    exact_value v = {(uint32_t)q, (uint32_t)r};
+    uint32_t r;
+    const int64_t q = tarn_divide_floor_i64(num, den, &r);
+    exact_value v = {(uint32_t)q, r};
     return v;
 }
 
@@ -84,16 +76,16 @@ pixel_box tarn_triangle_pixels(const triangle_setup *t)
 }
 
 /* A plane through the three vertex values (each within [0, 2^30]). */
-static plane make_plane(const triangle_setup *t, const int64_t value[3])
+static plane make_plane(const triangle_setup *t, const tarn_divisor *area2, const int64_t value[3])
 {
     const unsigned s = t->subpixel_bits;
     const edge *e1 = &t->edges[1], *e2 = &t->edges[2];
     const int64_t d1 = value[1] - value[0], d2 = value[2] - value[0];
     const int32_t px = pixel_centre(t->box.x0, s), py = pixel_centre(t->box.y0, s);
-    int64_t at_anchor = value[0] + round_div_i64(edge_unbiased_at(e1, px, py) * d1 +
-                                                 edge_unbiased_at(e2, px, py) * d2, t->area2);
-    int64_t step_x = round_div_i64(((int64_t)e1->a * d1 + (int64_t)e2->a * d2) * ((int64_t)1 << s), t->area2);
-    int64_t step_y = round_div_i64(((int64_t)e1->b * d1 + (int64_t)e2->b * d2) * ((int64_t)1 << s), t->area2);
+    int64_t at_anchor = value[0] + tarn_divide_round_i64(edge_unbiased_at(e1, px, py) * d1 +
+                                                         edge_unbiased_at(e2, px, py) * d2, area2);
+    int64_t step_x = tarn_divide_round_i64(((int64_t)e1->a * d1 + (int64_t)e2->a * d2) * ((int64_t)1 << s), area2);
+    int64_t step_y = tarn_divide_round_i64(((int64_t)e1->b * d1 + (int64_t)e2->b * d2) * ((int64_t)1 << s), area2);
     plane p = {(uint32_t)at_anchor, (uint32_t)step_x, (uint32_t)step_y};
     return p;
 }
@@ -118,7 +110,7 @@ static void add_attribute(attribute_set *set, const triangle_setup *t, const uin
             : (int64_t)(((uint64_t)scaled * q[n]) >> 30);
     }
     set->t_shift[k] = shift;
-    set->premultiplied[k] = make_plane(t, premultiplied);
+    set->premultiplied[k] = make_plane(t, &set->depth.den, premultiplied);
 }
 
 /* Texture coordinates less their whole repeats (which do not move a texel). */
@@ -143,15 +135,15 @@ static int64_t depth_numerator_step(const triangle_setup *t, int32_t a1, int32_t
 static exact_plane make_exact_depth_plane(const triangle_setup *t)
 {
     exact_plane p;
-    p.den = (uint32_t)t->area2;
-    p.step_x = floor_divmod(depth_numerator_step(t, t->edges[1].a, t->edges[2].a), t->area2);
-    p.step_y = floor_divmod(depth_numerator_step(t, t->edges[1].b, t->edges[2].b), t->area2);
+    p.den = tarn_divisor_of((uint32_t)t->area2);
+    p.step_x = floor_divmod(depth_numerator_step(t, t->edges[1].a, t->edges[2].a), &p.den);
+    p.step_y = floor_divmod(depth_numerator_step(t, t->edges[1].b, t->edges[2].b), &p.den);
     return p;
 }
 
 /* Exact depth at pixel (i, j): (area2*z0 + E1*(z1 - z0) + E2*(z2 - z0) + area2/2) / area2,
  * each term below 2^61 inside the guard box. */
-exact_value tarn_exact_depth_at(const triangle_setup *t, int32_t i, int32_t j)
+exact_value tarn_exact_depth_at(const triangle_setup *t, const exact_plane *depth, int32_t i, int32_t j)
 {
     const unsigned s = t->subpixel_bits;
     const int32_t px = pixel_centre(i, s), py = pixel_centre(j, s);
@@ -159,7 +151,7 @@ exact_value tarn_exact_depth_at(const triangle_setup *t, int32_t i, int32_t j)
     int64_t num = t->area2 * z0 + t->area2 / 2 +
                   edge_unbiased_at(&t->edges[1], px, py) * ((int64_t)t->v[1]->inv_depth - z0) +
                   edge_unbiased_at(&t->edges[2], px, py) * ((int64_t)t->v[2]->inv_depth - z0);
-    return floor_divmod(num, t->area2);
+    return floor_divmod(num, &depth->den);
 }
 
 void tarn_setup_attributes(const triangle_setup *t, const attribute_request *request,
@@ -181,7 +173,7 @@ void tarn_setup_attributes(const triangle_setup *t, const attribute_request *req
         if (q[n] < set->q_min) set->q_min = q[n];
         if (q[n] > set->q_max) set->q_max = q[n];
     }
-    set->q = make_plane(t, q_values);
+    set->q = make_plane(t, &set->depth.den, q_values);
     for (int c = 0; c < 3; c++) {
         uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
         add_attribute(set, t, lit, q);

@@ -46,7 +46,7 @@ typedef struct {
 } exact_value;
 
 typedef struct {
-    uint32_t den; /* area2 */
+    tarn_divisor den; /* area2 */
     exact_value step_x, step_y;
 } exact_plane;
 
@@ -80,8 +80,9 @@ static inline uint32_t plane_at(const plane *p, const triangle_setup *t, int32_t
     return p->anchor + p->step_x * (uint32_t)(i - t->box.x0) + p->step_y * (uint32_t)(j - t->box.y0);
 }
 
-static inline void exact_step(exact_value *v, const exact_value *step, uint32_t den)
+static inline void exact_step(exact_value *v, const exact_value *step, const tarn_divisor *divisor)
 {
+    const uint32_t den = divisor->divisor;
     v->quotient += step->quotient;
     if (v->remainder >= den - step->remainder) {
         v->remainder -= den - step->remainder;
@@ -108,6 +109,6 @@ typedef struct {
 void tarn_setup_attributes(const triangle_setup *t, const attribute_request *request,
                            uint8_t perspective, attribute_set *set);
 /* Exact depth at pixel (i, j), to be stepped from there with exact_step. */
-exact_value tarn_exact_depth_at(const triangle_setup *t, int32_t i, int32_t j);
+exact_value tarn_exact_depth_at(const triangle_setup *t, const exact_plane *depth, int32_t i, int32_t j);
 
 #endif

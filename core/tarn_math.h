@@ -64,6 +64,36 @@ uint32_t tarn_recip_u32(uint32_t x, unsigned newton_steps);
  * set is shifted up until it has it; m = 0 saturates to UINT32_MAX. */
 uint32_t tarn_recip_q30(uint32_t mantissa, unsigned newton_steps);
 
+/* ---- exact division by a 32-bit divisor ------------------------------------------
+ * For per-triangle and per-vertex work on CPUs without a divide instruction (the
+ * Cortex-M0), where the compiler's 64-bit division costs several hundred
+ * instructions. Prepare a divisor once, then divide any number of numerators by
+ * it: the quotient is estimated from the divisor's reciprocal (tarn_recip_q30, two
+ * Newton steps, lowered so that it never overshoots), and each round divides what
+ * is left, 28 bits at a time, until the remainder is below the divisor. The result
+ * is exact: the same quotient and remainder as the / and % operators. |n| < 2^63
+ * for the signed forms. Linking these instead of the compiler's 64-bit division
+ * also keeps that (about 1.2 KB on the Cortex-M0) out of the firmware. */
+typedef struct {
+    uint32_t divisor;
+    uint32_t recip;  /* at most 2^62 / (divisor << shift) */
+    unsigned shift;  /* leading zeros of divisor */
+} tarn_divisor;
+
+/* divisor > 0 (0 acts as 1). */
+tarn_divisor tarn_divisor_of(uint32_t divisor);
+/* floor(n / divisor), and n mod divisor into *remainder when it is not NULL. */
+uint64_t tarn_divide_u64(uint64_t n, const tarn_divisor *d, uint32_t *remainder);
+/* n / divisor rounded to nearest, halves away from zero (as (|n| + d/2) / d). */
+int64_t tarn_divide_round_i64(int64_t n, const tarn_divisor *d);
+/* floor(n / divisor) for a signed n, with the remainder in [0, divisor) into
+ * *remainder when it is not NULL. */
+int64_t tarn_divide_floor_i64(int64_t n, const tarn_divisor *d, uint32_t *remainder);
+/* n / divisor truncated toward zero, as C's / operator. */
+int64_t tarn_divide_trunc_i64(int64_t n, const tarn_divisor *d);
+/* The same for a divisor used once: prepares it, then divides. */
+int64_t tarn_divide_once_i64(int64_t n, uint32_t divisor);
+
 /* ---- sine and cosine --------------------------------------------------------------
  * Angle in turns as Q0.16 wrapped (65536 = one full turn, so any uint16_t is valid);
  * result Q1.15 in [-32767, 32767]. Quarter-wave table (257 entries) with linear

@@ -37,7 +37,8 @@ int32_t tarn_cos_q15(uint16_t angle_turns_q16)
 
 /* Horner form of the Taylor series: term k multiplies by -x^2 / ((2k)(2k+1)) for
  * sine, -x^2 / ((2k-1)(2k)) for cosine. Eight terms reach x^17/17!, below 2^-34
- * at pi/2; 64-bit products and constant divisions, once a frame at most. */
+ * at pi/2; 64-bit products and constant divisions (tarn_divide, which the
+ * Cortex-M0 build links anyway), once a frame at most. */
 #define SERIES_TERMS 8
 
 void tarn_sin_cos_q30(int32_t radians_q30, int32_t *sine_q30, int32_t *cosine_q30)
@@ -47,8 +48,8 @@ void tarn_sin_cos_q30(int32_t radians_q30, int32_t *sine_q30, int32_t *cosine_q3
     const int64_t x2 = tarn_round_shift_i64(x * x, 30);
     int64_t sine = (int64_t)1 << 30, cosine = (int64_t)1 << 30;
     for (int64_t k = SERIES_TERMS; k >= 1; k--) {
-        sine = ((int64_t)1 << 30) - tarn_round_shift_i64(x2 * sine, 30) / ((2 * k) * (2 * k + 1));
-        cosine = ((int64_t)1 << 30) - tarn_round_shift_i64(x2 * cosine, 30) / ((2 * k - 1) * (2 * k));
+        sine = ((int64_t)1 << 30) - tarn_divide_once_i64(tarn_round_shift_i64(x2 * sine, 30), (uint32_t)((2 * k) * (2 * k + 1)));
+        cosine = ((int64_t)1 << 30) - tarn_divide_once_i64(tarn_round_shift_i64(x2 * cosine, 30), (uint32_t)((2 * k - 1) * (2 * k)));
     }
     *sine_q30 = (int32_t)tarn_round_shift_i64(x * sine, 30);
     *cosine_q30 = (int32_t)tarn_clamp_i32((int32_t)cosine, 0, 1 << 30);

@@ -121,8 +121,11 @@ static int32_t fresnel_q15(const tarn_object_xform *xform, const tarn_vec3 *norm
     }
     int64_t length = (int64_t)tarn_isqrt_u64(length2); /* Q16.16 */
     if (length == 0) return 0;
-    /* n.v = -(n.p)/|p|, as Q1.15, clamped to [-1, 1] */
-    int64_t n_dot_v = -n_dot_p / length / 2;
+    /* n.v = -(n.p)/|p|, as Q1.15 (truncated, as C's / would), clamped to [-1, 1] */
+    const tarn_divisor divisor = tarn_divisor_of((uint32_t)length);
+    const uint64_t quotient = tarn_divide_u64(n_dot_p < 0 ? (uint64_t)0 - (uint64_t)n_dot_p : (uint64_t)n_dot_p,
+                                              &divisor, NULL) / 2u;
+    int64_t n_dot_v = n_dot_p > 0 ? -(int64_t)quotient : (int64_t)quotient;
     n_dot_v = n_dot_v > 32768 ? 32768 : (n_dot_v < -32768 ? -32768 : n_dot_v);
     int64_t one_minus = 32768 - n_dot_v; /* 0..65536 */
     if (one_minus > 32768) one_minus = 32768; /* saturate(1 - n.v) */

@@ -1,8 +1,8 @@
 /* water_setup.c: what a water context holds for one object in one tile (pan
  * offsets from the frame's time, the half vector in the object's tangent frame,
  * reciprocals of the material's distances), and the underwater view's per-frame
- * constants. 64-bit products and divisions are fine here; water.c and
- * underwater.c, per pixel, have neither. */
+ * constants. 64-bit products are fine here, and divisions through tarn_divide_*;
+ * water.c and underwater.c, per pixel, have neither. */
 #include "water.h"
 #include "underwater.h"
 
@@ -12,7 +12,8 @@
 uint16_t tarn_water_pan_offset(tarn_q16 speed, uint32_t time_ms)
 {
     int64_t travelled = (int64_t)speed * time_ms; /* |speed| <= 2^20: below 2^52 */
-    int64_t q16 = travelled >= 0 ? travelled / 1000 : -((-travelled + 999) / 1000);
+    const tarn_divisor thousand = tarn_divisor_of(1000);
+    int64_t q16 = tarn_divide_floor_i64(travelled, &thousand, NULL);
     return (uint16_t)((uint64_t)q16 & 0xFFFFu);
 }
 
@@ -20,7 +21,7 @@ uint16_t tarn_water_pan_offset(tarn_q16 speed, uint32_t time_ms)
 static uint32_t reciprocal_q16(tarn_q16 x)
 {
     if (x <= 0) return UINT32_MAX;
-    int64_t r = ((int64_t)1 << 32) / x;
+    int64_t r = tarn_divide_once_i64((int64_t)1 << 32, (uint32_t)x);
     return r > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)r;
 }
 
@@ -32,12 +33,13 @@ static void half_vector(const tarn_view *view, const tarn_object *object, int32_
                     (int64_t)view->light_dir.z - (view->basis[2][2] >> 14)}; /* Q16.16 */
     uint64_t length2 = 0;
     for (int k = 0; k < 3; k++) length2 += (uint64_t)(h[k] * h[k]);
-    const int64_t length = (int64_t)tarn_isqrt_u64(length2);
+    const int64_t length = (int64_t)tarn_isqrt_u64(length2); /* below 2^32 */
+    const tarn_divisor by_length = tarn_divisor_of((uint32_t)length);
     static const int axis_of[3] = {0, 2, 1}; /* tangent u = object x, v = object z, up = object y */
     for (int k = 0; k < 3; k++) {
         int64_t along = 0;
         for (int r = 0; r < 3; r++) along += h[r] * object->rotation[r][axis_of[k]]; /* Q32 */
-        out[k] = length > 0 ? (int32_t)(along / length / 2) : (k == 2 ? Q15_ONE : 0);
+        out[k] = length > 0 ? (int32_t)(tarn_divide_trunc_i64(along, &by_length) / 2) : (k == 2 ? Q15_ONE : 0);
     }
 }
 
@@ -66,7 +68,7 @@ void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
     w->inv_foam_distance = reciprocal_q16(water->foam_distance);
     int64_t px = (int64_t)water->refraction * config->width;
     w->refraction_px = px > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)px;
-    int64_t threshold = water->sparkle_amount > 0 ? ((int64_t)1 << 46) / water->sparkle_amount : INT64_MAX;
+    int64_t threshold = water->sparkle_amount > 0 ? tarn_divide_once_i64((int64_t)1 << 46, (uint32_t)water->sparkle_amount) : INT64_MAX;
     w->sparkle_threshold = threshold > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)threshold;
 }
 
@@ -106,7 +108,8 @@ void tarn_underwater_setup(tarn_underwater_context *u, const tarn_view *view,
     u->pan[1] = tarn_water_pan_offset(under->pan.speed_v, config->time_ms);
     /* rounded up: a pixel centre exactly on a texel edge must land on the texel
      * above it, as floor() puts it, not a hair below */
-    u->screen_u_per_half = (uint32_t)((((uint64_t)1 << 32) + 2u * config->width - 1u) / (2u * config->width));
+    u->screen_u_per_half = (uint32_t)tarn_divide_once_i64(((int64_t)1 << 32) + 2 * config->width - 1,
+                                                           2u * config->width);
     int64_t px = (int64_t)under->distortion * config->width;
     u->distortion_px = px > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)px;
 }

@@ -54,13 +54,17 @@ static void put_text(report *r, const char *s)
     while (*s != '\0' && r->length < sizeof r->text) r->text[r->length++] = *s++;
 }
 
+/* Divisions through the core's tarn_divide, so the image links no 64-bit division
+ * of the compiler's own (tests/check_firmware.sh counts the code bytes). */
 static void put_number(report *r, uint64_t value)
 {
+    const tarn_divisor ten = tarn_divisor_of(10);
     char digits[20];
     size_t n = 0;
     do {
-        digits[n++] = (char)('0' + (int)(value % 10u));
-        value /= 10u;
+        uint32_t digit;
+        value = tarn_divide_u64(value, &ten, &digit);
+        digits[n++] = (char)('0' + (int)digit);
     } while (value != 0);
     while (n > 0 && r->length < sizeof r->text) r->text[r->length++] = digits[--n];
 }
@@ -77,9 +81,10 @@ static int send_report(const report *r)
     return board_report(r->text, r->length);
 }
 
-static uint64_t per_pixel(uint64_t instructions, uint64_t pixels)
+static uint64_t per_pixel(uint64_t instructions, uint32_t pixels)
 {
-    return (instructions + pixels / 2u) / pixels;
+    const tarn_divisor divisor = tarn_divisor_of(pixels);
+    return tarn_divide_u64(instructions + pixels / 2u, &divisor, NULL);
 }
 
 /* Exactly 2 * n instructions for n >= 1 (plus the call): a yardstick for the board's

@@ -195,6 +195,61 @@ static void recip_q30_limits(void **state)
     assert_int_equal(tarn_recip_u32(6, 2), (tarn_recip_q30(3u << 30, 2) + 1u) >> 1);
 }
 
+static uint64_t next_random(uint64_t *state)
+{
+    *state ^= *state << 13;
+    *state ^= *state >> 7;
+    *state ^= *state << 17;
+    return *state;
+}
+
+static void assert_division_exact(uint64_t n, uint32_t divisor)
+{
+    const tarn_divisor d = tarn_divisor_of(divisor);
+    uint32_t remainder = UINT32_MAX;
+    assert_true(tarn_divide_u64(n, &d, &remainder) == n / divisor);
+    assert_int_equal(remainder, n % divisor);
+    const int64_t s = (int64_t)(n >> 2) * ((n & 1u) ? -1 : 1); /* |s| < 2^62 */
+    const int64_t floor_q = s / divisor - (s % divisor < 0);
+    assert_true(tarn_divide_floor_i64(s, &d, &remainder) == floor_q);
+    assert_true((int64_t)remainder == s - floor_q * (int64_t)divisor);
+    const int64_t half = divisor / 2;
+    const int64_t rounded = s >= 0 ? (s + half) / divisor : -((-s + half) / divisor);
+    assert_true(tarn_divide_round_i64(s, &d) == rounded);
+}
+
+/* Division by a prepared divisor equals / and %: every kind of divisor (1, powers of
+ * two, their neighbours, the largest, random ones) against numerators of every
+ * size, and the reciprocal never overshoots, which keeps each round's estimate at
+ * or below the quotient. */
+static void divide_is_exact(void **state)
+{
+    (void)state;
+    uint64_t seed = 0x9E3779B97F4A7C15u;
+    uint32_t divisors[200];
+    size_t count = 0;
+    for (unsigned b = 0; b < 32; b++) {
+        divisors[count++] = 1u << b;
+        divisors[count++] = (1u << b) + 1u;
+        divisors[count++] = (1u << b) * 3u / 2u + 1u;
+    }
+    divisors[count++] = UINT32_MAX;
+    while (count < sizeof divisors / sizeof divisors[0])
+        divisors[count++] = (uint32_t)(next_random(&seed) >> (32 + next_random(&seed) % 32)) | 1u;
+    for (size_t i = 0; i < count; i++) {
+        const tarn_divisor d = tarn_divisor_of(divisors[i]);
+        if (divisors[i] > 1u) assert_true(d.recip <= ((uint64_t)1 << 62) / (divisors[i] << d.shift));
+        assert_division_exact(0, divisors[i]);
+        assert_division_exact(divisors[i] - 1u, divisors[i]);
+        assert_division_exact(divisors[i], divisors[i]);
+        assert_division_exact(UINT64_MAX, divisors[i]);
+        for (int k = 0; k < 200; k++) assert_division_exact(next_random(&seed) >> (k % 64), divisors[i]);
+    }
+    for (uint32_t m = 1u << 31; m >= (1u << 31); m += 1u << 20) /* every seed region of the table */
+        assert_true(tarn_divisor_of(m).recip <= ((uint64_t)1 << 62) / m);
+    assert_int_equal(tarn_divisor_of(0).divisor, 1);
+}
+
 /* More steps than TARN_RECIP_STEPS_MAX act as TARN_RECIP_STEPS_MAX (bounded time). */
 static void recip_extra_steps_clamp(void **state)
 {
@@ -338,6 +393,7 @@ int main(void)
         cmocka_unit_test(recip_limits),
         cmocka_unit_test(recip_q30_limits),
         cmocka_unit_test(recip_extra_steps_clamp),
+        cmocka_unit_test(divide_is_exact),
         cmocka_unit_test(sin_cos_every_angle_within_documented_bound),
         cmocka_unit_test(sin_cos_exact_points_range_and_symmetry),
         cmocka_unit_test(sin_cos_q30_within_four_units),
