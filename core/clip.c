@@ -35,7 +35,8 @@ static int64_t ratio_q30(int64_t num, int64_t den)
         num >>= 1;
         den >>= 1;
     }
-    return (num * ((int64_t)1 << 30)) / den;
+    const tarn_divisor divisor = tarn_divisor_of((uint32_t)den);
+    return (int64_t)tarn_divide_u64((uint64_t)num << 30, &divisor, NULL);
 }
 
 static int32_t lerp_q30(int32_t from, int32_t to, int64_t t_q30)
@@ -91,4 +92,22 @@ int tarn_clip_polygon(const tarn_view *view, unsigned planes,
     for (int plane = 0; plane < PLANE_COUNT && count > 0; plane++)
         if (planes & (1u << plane)) count = clip_against(view, plane, polygon, count);
     return count;
+}
+
+/* A function of its own, not inlined into the walk: the polygon stays off the
+ * stack of the common, unclipped path. */
+void tarn_clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_vertex v[3],
+                        const tarn_object *object, tarn_triangle_sink sink, void *ctx)
+{
+    tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX] = {v[0], v[1], v[2]};
+    const int count = tarn_clip_polygon(view, planes, polygon, 3);
+    if (count < 3) return;
+    tarn_screen_vertex fan[3];
+    tarn_project(view, &polygon[0], &fan[0]);
+    tarn_project(view, &polygon[1], &fan[2]);
+    for (int i = 2; i < count; i++) {
+        fan[1] = fan[2];
+        tarn_project(view, &polygon[i], &fan[2]);
+        sink(ctx, fan, object);
+    }
 }

@@ -1,4 +1,5 @@
 /* frame.c: configuration, working memory and the tile loop. */
+#include "cluster_bins.h"
 #include "pipeline.h"
 #include "raster_setup.h"
 #include "underwater.h"
@@ -18,6 +19,7 @@ tarn_quality tarn_quality_default(void)
     q.depth_bits = 32;
     q.tile_size = 32;
     q.refraction_apron = TARN_APRON_FULL;
+    q.cluster_bins = 1;
     return q;
 }
 
@@ -40,10 +42,12 @@ static int quality_in_range(const tarn_quality *q)
            q->recip_newton_steps <= TARN_RECIP_STEPS_MAX &&
            q->subpixel_bits >= TARN_SUBPIXEL_BITS_MIN && q->subpixel_bits <= TARN_SUBPIXEL_BITS_MAX &&
            q->perspective <= TARN_PERSPECTIVE_PIXEL &&
+           (TARN_LINK_PERSPECTIVE_SPAN || q->perspective != TARN_PERSPECTIVE_SPAN) &&
            tarn_is_power_of_two(q->perspective_span) && q->perspective_span >= 2 && q->perspective_span <= 64 &&
            (q->depth_bits == 16 || q->depth_bits == 32) &&
            q->tile_size >= TARN_TILE_SIZE_MIN && q->tile_size <= TARN_TILE_SIZE_MAX &&
-           (q->refraction_apron <= TARN_WATER_APRON_MAX || q->refraction_apron == TARN_APRON_FULL);
+           (q->refraction_apron <= TARN_WATER_APRON_MAX || q->refraction_apron == TARN_APRON_FULL) &&
+           q->cluster_bins <= 1;
 }
 
 tarn_status tarn_config_check(const tarn_frame_config *config)
@@ -100,6 +104,7 @@ typedef struct {
     int water;            /* a water pass runs */
     int underwater;
     size_t depth_bytes;
+    uint32_t bins;        /* cluster bins, 0 without */
 } frame_layout;
 
 static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene *scene)
@@ -116,6 +121,7 @@ static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene 
     l.region = l.tile + 2 * l.apron;
     l.water_region = l.tile + 2 * l.under_apron;
     l.depth_bytes = config->quality.depth_bits / 8u;
+    l.bins = scene != NULL && config->quality.cluster_bins ? tarn_cluster_bin_count(scene) : 0u;
     return l;
 }
 
@@ -125,7 +131,7 @@ static size_t layout_bytes(const frame_layout *l)
     const size_t water = (size_t)l->water_region * (size_t)l->water_region;
     const size_t tile = (size_t)l->tile * (size_t)l->tile;
     return region * (4u + l->depth_bytes) + (l->water ? water * (4u + l->depth_bytes) : 0u) +
-           (l->underwater ? tile * 4u : 0u);
+           (l->underwater ? tile * 4u : 0u) + (size_t)l->bins * sizeof(tarn_cluster_bin);
 }
 
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
@@ -172,6 +178,7 @@ typedef struct {
     frame_layout layout;
     tarn_tile_target opaque, water;
     uint32_t *final;              /* the underwater pass's tile */
+    tarn_cluster_bin *bins;       /* this frame's, or NULL */
     tarn_water_context water_context;
     tarn_underwater_context underwater;
 } frame_state;
@@ -191,6 +198,8 @@ static void carve_buffers(frame_state *f, void *memory)
     f->opaque.depth = next;
     next += region * l->depth_bytes;
     f->water.depth = next;
+    next += water * l->depth_bytes;
+    f->bins = l->bins != 0u ? (tarn_cluster_bin *)(void *)next : NULL;
     f->opaque.stride = l->region;
     f->water.stride = l->water_region;
     f->opaque.quality = f->water.quality = &f->config->quality;
@@ -233,7 +242,7 @@ static void draw_water(frame_state *f, int32_t x, int32_t y, const tarn_pixel_re
     c->background_stride = f->opaque.stride;
     c->offset_limit = f->layout.refraction_apron;
     c->sample_rect = f->opaque.rect; /* binds at the frame's edges only (opaque_rect) */
-    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, &w->rect, raster_into_tile, w);
+    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, &w->rect, raster_into_tile, w);
 }
 
 static void draw_underwater(frame_state *f, const tarn_pixel_rect *tile_rect)
@@ -293,7 +302,7 @@ static tarn_pixel_rect opaque_rect(const frame_state *f, const tarn_pixel_rect *
     *has_water = f->layout.water;
     if (!f->layout.water || f->layout.underwater) return whole;
     water_extent e = {*tile_rect, {0, 0, 0, 0}, f->config->quality.subpixel_bits};
-    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, tile_rect, add_water_extent, &e);
+    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, tile_rect, add_water_extent, &e);
     *has_water = !rect_empty(&e.extent);
     if (!*has_water) return *tile_rect;
     const int32_t a = f->layout.refraction_apron;
@@ -312,7 +321,7 @@ static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, 
     o->origin_y = y - f->layout.apron;
     o->rect = opaque_rect(f, &tile_rect, &frame, &has_water);
     clear_rect(o, f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
-    tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, &o->rect, raster_into_tile, o);
+    tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, f->bins, &o->rect, raster_into_tile, o);
     const tarn_tile_target *out = o;
     if ((TARN_LINK_WATER || TARN_LINK_UNDERWATER) && has_water) {
         draw_water(f, x, y, &frame);
@@ -348,6 +357,7 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
     f.view = &view;
     f.layout = layout_of(config, scene);
     carve_buffers(&f, memory);
+    if (f.bins != NULL) tarn_bin_clusters(scene, &view, f.bins);
     if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn_underwater_setup(&f.underwater, &view, config, scene->underwater);
     for (int32_t y = 0; y < config->height; y += f.layout.tile)
         for (int32_t x = 0; x < config->width; x += f.layout.tile)
@@ -375,7 +385,7 @@ tarn_status tarn_visit_screen_triangles(const tarn_scene *scene, const tarn_fram
     tarn_view view;
     tarn_view_setup(scene, config, &view);
     visit_context ctx = {visit, user};
-    tarn_walk_triangles(scene, &view, TARN_WALK_OPAQUE, NULL, forward_to_visitor, &ctx);
-    tarn_walk_triangles(scene, &view, TARN_WALK_WATER, NULL, forward_to_visitor, &ctx);
+    tarn_walk_triangles(scene, &view, TARN_WALK_OPAQUE, NULL, NULL, forward_to_visitor, &ctx);
+    tarn_walk_triangles(scene, &view, TARN_WALK_WATER, NULL, NULL, forward_to_visitor, &ctx);
     return TARN_OK;
 }

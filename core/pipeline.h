@@ -18,6 +18,9 @@ typedef struct {
     tarn_vec3 eye;           /* Q16.16 world */
     int32_t focal_q12;       /* focal length in pixels, Q20.12 */
     tarn_q16 near, far;      /* Q16.16 view depth */
+    /* focal_q12 and near as mantissa * 2^-shift (top bit set), for the projection */
+    uint32_t focal_mantissa, near_mantissa;
+    unsigned focal_shift, near_shift;
     int32_t half_extent_q12[2]; /* width/2 + guard, height/2 + guard, pixels Q20.12 */
     int32_t guard_pixels;
     uint16_t width, height;
@@ -65,13 +68,21 @@ unsigned tarn_clip_outcode(const tarn_view *view, const tarn_view_vertex *v);
 int tarn_clip_polygon(const tarn_view *view, unsigned planes,
                       tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX], int count);
 
-/* Position, inverse depth and attributes; the second copies only the attributes. */
-void tarn_project(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out);
-void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out);
-
 /* Called for each screen triangle, in drawing order. */
 typedef void (*tarn_triangle_sink)(void *ctx, const tarn_screen_vertex vertex[3],
                                    const tarn_object *object);
+
+/* Clips the triangle (view vertices with their attributes) against the planes in
+ * `planes` and hands what is left to the sink as a fan of screen triangles. */
+void tarn_clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_vertex v[3],
+                        const tarn_object *object, tarn_triangle_sink sink, void *ctx);
+
+/* Position, inverse depth and attributes; tarn_project_position only the first two,
+ * tarn_project_attributes only the attributes. */
+void tarn_project(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out);
+void tarn_project_position(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out);
+void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out);
+
 
 typedef struct {
     int32_t x0, y0, x1, y1; /* pixel rectangle [x0, x1) x [y0, y1) */
@@ -82,10 +93,15 @@ typedef enum {
     TARN_WALK_WATER   /* water objects only */
 } tarn_walk_pass;
 
+typedef struct tarn_cluster_bin tarn_cluster_bin; /* cluster_bins.h */
+
 /* Walks the triangles of the pass's objects in scene order; triangles whose screen
- * bounds miss `only_rect` (when not NULL) are skipped as early as possible. */
+ * bounds miss `only_rect` (when not NULL) are skipped as early as possible, whole
+ * clusters first: by their bins when `bins` (this frame's, tarn_bin_clusters) is
+ * not NULL, else by their bounding spheres. */
 void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view, tarn_walk_pass pass,
-                         const tarn_pixel_rect *only_rect, tarn_triangle_sink sink, void *ctx);
+                         const tarn_cluster_bin *bins, const tarn_pixel_rect *only_rect,
+                         tarn_triangle_sink sink, void *ctx);
 
 struct tarn_water_context; /* water.h */
 

@@ -191,7 +191,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
         if ((e[0] | e[1] | e[2]) >= 0 &&
             depth_pass(tile->depth, quality->depth_bits, row + i, depth.quotient)) {
             uint32_t values[ATTRIBUTES_MAX];
-            if (set->perspective == TARN_PERSPECTIVE_SPAN)
+            if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN)
                 span_t(set, t, quality->perspective_span, quality->recip_newton_steps, i, j, &cache, values);
             else
                 exact_t(set, t, i, j, quality->recip_newton_steps, values);
@@ -203,7 +203,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
             }
         }
         for (int k = 0; k < 3; k++) e[k] += e_step[k];
-        exact_step(&depth, &set->depth.step_x, set->depth.den);
+        exact_step(&depth, &set->depth.step_x, &set->depth.den);
     }
 }
 
@@ -250,9 +250,9 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     const attribute_request request = request_for(tile, object);
     attribute_set set;
     tarn_setup_attributes(&t, &request, perspective_mode(tile->quality, &t.box), &set);
-    exact_value depth = tarn_exact_depth_at(&t, draw.x0, draw.y0);
+    exact_value depth = tarn_exact_depth_at(&t, &set.depth, draw.x0, draw.y0);
     for (int32_t j = draw.y0; j <= draw.y1; j++) {
         raster_row(tile, &t, &set, request.texture, j, draw.x0, draw.x1, depth);
-        exact_step(&depth, &set.depth.step_y, set.depth.den);
+        exact_step(&depth, &set.depth.step_y, &set.depth.den);
     }
 }

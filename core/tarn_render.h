@@ -84,9 +84,21 @@ typedef struct {
                                    default); 1..TARN_WATER_APRON_MAX caps the move, which
                                    saves memory and time; 0 moves nothing. The image
                                    never depends on the tile size. */
+    uint8_t cluster_bins;       /* 1: find each cluster's screen box once a frame, so a
+                                   tile walks only the clusters that meet it (4 bytes of
+                                   memory a cluster); 0: each tile tests every cluster's
+                                   bounding sphere. Does not change the image. */
 } tarn_quality;
 
 tarn_quality tarn_quality_default(void);
+
+/* Whether the span perspective mode's code is linked. tarn bake's NAME_link.h sets
+ * it to 0 when the baked quality does not use that mode, which leaves about 1 KB
+ * out of a Cortex-M0 image; a config asking for the mode is then refused
+ * (TARN_ERR_CONFIG). Without that file it is linked. */
+#ifndef TARN_LINK_PERSPECTIVE_SPAN
+#define TARN_LINK_PERSPECTIVE_SPAN 1
+#endif
 
 typedef struct {
     uint16_t width, height; /* pixels, 1..TARN_FRAME_SIZE_MAX */

@@ -2,7 +2,8 @@
  * and culling-free emission; the rasterizer culls, since culling needs the
  * snapped screen winding. For a tile, whole clusters whose bounding sphere misses
  * the tile's slice of the view are skipped before any of their vertices is touched. */
-#include "pipeline.h"
+#include "cluster_bins.h"
+#include "vertex_cache.h"
 
 /* The four planes through the eye bounding a pixel rectangle, as
  * side * (x*focal - offset*d) >= 0 with x the view x (or -y) and offset the
@@ -66,80 +67,91 @@ static int bounds_miss_rect(const tarn_screen_vertex s[3], unsigned subpixel_bit
            max_y < rect->y0 * one || min_y >= rect->y1 * one;
 }
 
-static void emit_clipped(const tarn_view *view, unsigned planes, const tarn_view_vertex v[3],
-                         const tarn_object *object, tarn_triangle_sink sink, void *ctx)
-{
-    tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX] = {v[0], v[1], v[2]};
-    int count = tarn_clip_polygon(view, planes, polygon, 3);
-    tarn_screen_vertex screen[TARN_CLIP_POLYGON_MAX];
-    for (int i = 0; i < count; i++) tarn_project(view, &polygon[i], &screen[i]);
-    for (int i = 1; i + 1 < count; i++) {
-        const tarn_screen_vertex fan[3] = {screen[0], screen[i], screen[i + 1]};
-        sink(ctx, fan, object);
-    }
-}
-
-static void walk_run(const tarn_view *view, const tarn_object_xform *xform, const tarn_object *object,
-                     uint32_t first, uint32_t end, const tarn_pixel_rect *only_rect,
+static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
+                     const tarn_pixel_rect *only_rect, tarn_vertex_cache *cache,
                      tarn_triangle_sink sink, void *ctx)
 {
+    const tarn_view *view = cache->view;
     const tarn_mesh *mesh = object->mesh;
     for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
-        tarn_view_vertex v[3] = {{0}};
+        tarn_cached_vertex c[3];
         unsigned outside_all = ~0u, outside_any = 0;
         for (int k = 0; k < 3; k++) {
-            tarn_vertex_position(xform, &mesh->positions[index[k]], &v[k]);
-            unsigned code = tarn_clip_outcode(view, &v[k]);
-            outside_all &= code;
-            outside_any |= code;
+            c[k] = tarn_cached_position(cache, index[k]);
+            outside_all &= c[k].outcode;
+            outside_any |= c[k].outcode;
         }
         if (outside_all) continue; /* wholly outside one plane */
+        tarn_view_vertex v[3];
+        for (int k = 0; k < 3; k++) v[k] = tarn_cached_view_vertex(&c[k]);
         if (outside_any) {
-            for (int k = 0; k < 3; k++) tarn_vertex_shade(view, xform, mesh, index[k], &v[k]);
-            emit_clipped(view, outside_any, v, object, sink, ctx);
+            for (int k = 0; k < 3; k++) tarn_vertex_shade(view, cache->xform, mesh, index[k], &v[k]);
+            tarn_clip_and_emit(view, outside_any, v, object, sink, ctx);
             continue;
         }
         tarn_screen_vertex screen[3];
-        for (int k = 0; k < 3; k++) tarn_project(view, &v[k], &screen[k]);
+        for (int k = 0; k < 3; k++) tarn_cached_projection(cache, &c[k], &screen[k]);
         if (only_rect && bounds_miss_rect(screen, view->subpixel_bits, only_rect)) continue;
         for (int k = 0; k < 3; k++) {
-            tarn_vertex_shade(view, xform, mesh, index[k], &v[k]);
+            tarn_vertex_shade(view, cache->xform, mesh, index[k], &v[k]);
             tarn_project_attributes(&v[k], &screen[k]);
         }
         sink(ctx, screen, object);
     }
 }
 
+/* Whether a cluster may draw into the rectangle: its bin when the frame has them,
+ * and its bounding sphere where the bin could not tell (a cluster cut by the near
+ * plane) or there are no bins. */
+static int cluster_may_touch(const tarn_view *view, const tarn_object_xform *xform,
+                             const tarn_object *object, const tarn_cluster *cluster,
+                             const tile_frustum *frustum, const tarn_cluster_bin *bin,
+                             const tarn_pixel_rect *only_rect)
+{
+    if (bin != NULL && only_rect != NULL) {
+        if (!tarn_cluster_bin_touches(bin, only_rect)) return 0;
+        if (!tarn_cluster_bin_is_whole(bin)) return 1;
+    }
+    tarn_view_vertex centre;
+    tarn_vertex_position(xform, &cluster->centre, &centre);
+    /* at most Q16.16's range, so that radius * plane norm stays within 64 bits */
+    int64_t radius = tarn_sat_i64_to_i32(tarn_round_shift_i64((int64_t)cluster->radius * object->scale, 16) + 1);
+    return !sphere_misses_tile(view, frustum, &centre, radius);
+}
+
 static void walk_object(const tarn_view *view, const tarn_object *object, const tile_frustum *frustum,
-                        const tarn_pixel_rect *only_rect, tarn_triangle_sink sink, void *ctx)
+                        const tarn_cluster_bin *bins, const tarn_pixel_rect *only_rect,
+                        tarn_triangle_sink sink, void *ctx)
 {
     const tarn_mesh *mesh = object->mesh;
     tarn_object_xform xform;
     tarn_object_xform_setup(view, object, &xform);
+    tarn_vertex_cache cache;
+    tarn_vertex_cache_init(&cache, view, &xform, mesh);
     if (mesh->clusters == NULL) {
-        walk_run(view, &xform, object, 0, mesh->triangle_count, only_rect, sink, ctx);
+        if (bins == NULL || only_rect == NULL || tarn_cluster_bin_touches(&bins[0], only_rect))
+            walk_run(object, 0, mesh->triangle_count, only_rect, &cache, sink, ctx);
         return;
     }
     for (uint32_t c = 0; c < mesh->cluster_count; c++) {
         const tarn_cluster *cluster = &mesh->clusters[c];
-        tarn_view_vertex centre;
-        tarn_vertex_position(&xform, &cluster->centre, &centre);
-        /* at most Q16.16's range, so that radius * plane norm stays within 64 bits */
-        int64_t radius = tarn_sat_i64_to_i32(tarn_round_shift_i64((int64_t)cluster->radius * object->scale, 16) + 1);
-        if (sphere_misses_tile(view, frustum, &centre, radius)) continue;
-        walk_run(view, &xform, object, cluster->first_triangle,
-                 (uint32_t)cluster->first_triangle + cluster->triangle_count, only_rect, sink, ctx);
+        if (!cluster_may_touch(view, &xform, object, cluster, frustum, bins ? &bins[c] : NULL, only_rect))
+            continue;
+        walk_run(object, cluster->first_triangle, (uint32_t)cluster->first_triangle + cluster->triangle_count,
+                 only_rect, &cache, sink, ctx);
     }
 }
 
 void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view, tarn_walk_pass pass,
-                         const tarn_pixel_rect *only_rect, tarn_triangle_sink sink, void *ctx)
+                         const tarn_cluster_bin *bins, const tarn_pixel_rect *only_rect,
+                         tarn_triangle_sink sink, void *ctx)
 {
     const tile_frustum frustum = make_tile_frustum(view, only_rect);
     for (uint32_t i = 0; i < scene->object_count; i++) {
         const tarn_object *object = &scene->objects[i];
-        if ((object->material->water != NULL) != (pass == TARN_WALK_WATER)) continue;
-        walk_object(view, object, &frustum, only_rect, sink, ctx);
+        if ((object->material->water != NULL) == (pass == TARN_WALK_WATER))
+            walk_object(view, object, &frustum, bins, only_rect, sink, ctx);
+        if (bins != NULL) bins += tarn_cluster_bins_of(object->mesh);
     }
 }

@@ -16,10 +16,11 @@ static int normalise_q30(const int64_t v[3], int32_t out[3])
     }
     uint64_t sum = 0;
     for (int i = 0; i < 3; i++) sum += (uint64_t)(c[i] * c[i]);
-    int64_t length = (int64_t)tarn_isqrt_u64(sum);
+    int64_t length = (int64_t)tarn_isqrt_u64(sum); /* below 2^32 */
     if (length == 0) return 0;
+    const tarn_divisor divisor = tarn_divisor_of((uint32_t)length);
     for (int i = 0; i < 3; i++)
-        out[i] = (int32_t)(c[i] * ((int64_t)1 << 30) / length);
+        out[i] = (int32_t)tarn_divide_trunc_i64(c[i] * ((int64_t)1 << 30), &divisor);
     return 1;
 }
 
@@ -63,10 +64,10 @@ static int32_t focal_length_q12(const tarn_camera *camera, uint16_t height)
     const int64_t pi_q32 = 13493037705; /* pi * 2^32, rounded */
     tarn_q16 fov = tarn_clamp_i32(camera->fov_y_degrees, TARN_Q16_ONE, 179 * TARN_Q16_ONE);
     /* half the fov in radians, Q2.30: fov_q16 * pi / 360 */
-    int32_t half_angle = (int32_t)(((int64_t)fov * pi_q32 + (180 << 17)) / (360 << 18));
+    int32_t half_angle = (int32_t)tarn_divide_once_i64((int64_t)fov * pi_q32 + (180 << 17), 360u << 18);
     int32_t sine, cosine;
     tarn_sin_cos_q30(half_angle, &sine, &cosine);
-    return tarn_sat_i64_to_i32(((int64_t)height * 2048 * cosine + sine / 2) / sine);
+    return tarn_sat_i64_to_i32(tarn_divide_once_i64((int64_t)height * 2048 * cosine + sine / 2, (uint32_t)sine));
 }
 
 static uint32_t channel_q16(uint32_t rgb, int channel)
@@ -90,8 +91,13 @@ void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, t
     view->height = config->height;
     view->subpixel_bits = config->quality.subpixel_bits;
     view->focal_q12 = focal_length_q12(camera, config->height);
+    if (view->focal_q12 < 1) view->focal_q12 = 1; /* keeps the normalisation below defined */
     view->near = camera->near > 0 ? camera->near : 1;
     view->far = camera->far > view->near ? camera->far : view->near;
+    view->focal_shift = tarn_clz32((uint32_t)view->focal_q12);
+    view->focal_mantissa = (uint32_t)view->focal_q12 << view->focal_shift;
+    view->near_shift = tarn_clz32((uint32_t)view->near);
+    view->near_mantissa = (uint32_t)view->near << view->near_shift;
     view->guard_pixels = tarn_guard_band_pixels(config);
     view->half_extent_q12[0] = config->width * 2048 + view->guard_pixels * 4096;
     view->half_extent_q12[1] = config->height * 2048 + view->guard_pixels * 4096;

@@ -157,7 +157,7 @@ static const bake_field quality_fields[] = {
     FIELD(tarn_quality, recip_newton_steps, T_U8), FIELD(tarn_quality, subpixel_bits, T_U8),
     FIELD(tarn_quality, perspective, T_U8),        FIELD(tarn_quality, perspective_span, T_U8),
     FIELD(tarn_quality, depth_bits, T_U8),         FIELD(tarn_quality, tile_size, T_U8),
-    FIELD(tarn_quality, refraction_apron, T_U8)};
+    FIELD(tarn_quality, refraction_apron, T_U8),   FIELD(tarn_quality, cluster_bins, T_U8)};
 static const bake_type T_QUALITY = STRUCT(tarn_quality, quality_fields, 0);
 
 static const bake_field config_fields[] = {
@@ -893,6 +893,7 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     fprintf(out, "#define TARN_LINK_WATER %d\n", water);
     fprintf(out, "#define TARN_LINK_WATER_FEATURES (%s)\n", names.text);
     fprintf(out, "#define TARN_LINK_UNDERWATER %d\n", p->scene->scene.underwater != NULL);
+    fprintf(out, "#define TARN_LINK_PERSPECTIVE_SPAN %d\n", p->config.quality.perspective == TARN_PERSPECTIVE_SPAN);
 }
 
 /* The three files to temporaries, then renamed into place; a failure removes all. */

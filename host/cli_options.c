@@ -16,7 +16,8 @@ const char tarn_cli_usage[] =
     "QUALITY: --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
     "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n"
     "         --apron on|off|N (how far refraction may move a sample, so how much opaque scene\n"
-    "         each tile renders around its water: as far as it reaches, not at all, or N pixels 0..32)\n";
+    "         each tile renders around its water: as far as it reaches, not at all, or N pixels 0..32)\n"
+    "         --bins on|off (find each cluster's screen box once a frame, 4 bytes a cluster)\n";
 
 /* Whole decimal number in [min, max], nothing else in the text. */
 static int parse_whole(const char *text, unsigned long min, unsigned long max, unsigned long *out)
@@ -114,6 +115,16 @@ static int parse_apron(const char *value, tarn_quality *q, tarn_error *err)
     return 0;
 }
 
+static int parse_bins(const char *value, tarn_quality *q, tarn_error *err)
+{
+    if (value && strcmp(value, "on") == 0) q->cluster_bins = 1;
+    else if (value && strcmp(value, "off") == 0) q->cluster_bins = 0;
+    else
+        return tarn_fail(err, "--bins: expected on (find each cluster's screen box once a frame) or off "
+                         "(each tile tests every cluster's sphere: least memory), got '%s'", value ? value : "");
+    return 0;
+}
+
 static int parse_quality_option(const char *name, const char *value, tarn_quality *q,
                                 tarn_error *err)
 {
@@ -131,6 +142,7 @@ static int parse_quality_option(const char *name, const char *value, tarn_qualit
         return tarn_fail(err, "--depth: expected 16 or 32, got '%s'", value ? value : "");
     }
     if (strcmp(name, "--apron") == 0) return parse_apron(value, q, err);
+    if (strcmp(name, "--bins") == 0) return parse_bins(value, q, err);
     if (strcmp(name, "--perspective") == 0) return parse_perspective(value, q, err);
     if (strcmp(name, "--exp2") == 0) return parse_exp2(value, q, err);
     return 1; /* not a quality option */

@@ -328,6 +328,53 @@ static void test_tile_size_does_not_change_the_image(void **state)
     unload(pond);
 }
 
+/* Renders the scene with and without cluster bins, at two tile sizes; the four
+ * images must be the same, and bins must cost 4 bytes a cluster. */
+static void assert_bins_change_nothing(const tarn_loaded_scene *loaded, const tarn_scene *scene)
+{
+    tarn_frame_config config = config_of(160, 120);
+    frame_buffers first = frame_new(160, 120), other = frame_new(160, 120);
+    render_core(scene, &config, &first);
+    uint32_t clusters = 0;
+    for (size_t i = 0; i < loaded->object_count; i++)
+        clusters += loaded->meshes[i].mesh.clusters ? loaded->meshes[i].mesh.cluster_count : 1u;
+    static const uint8_t tiles[] = {16, 32};
+    for (size_t t = 0; t < sizeof tiles; t++)
+        for (uint8_t bins = 0; bins <= 1; bins++) {
+            config.quality.tile_size = tiles[t];
+            config.quality.cluster_bins = bins;
+            render_core(scene, &config, &other);
+            assert_memory_equal(first.rgb, other.rgb, 160 * 120 * 3);
+        }
+    const size_t with_bins = tarn_frame_memory_bytes(&config, scene);
+    config.quality.cluster_bins = 0;
+    assert_int_equal(with_bins - tarn_frame_memory_bytes(&config, scene), 4u * clusters);
+    frame_free(&first);
+    frame_free(&other);
+}
+
+static void test_cluster_bins_do_not_change_the_image(void **state)
+{
+    (void)state;
+    static const char *const scenes[] = {"scenes/pond.json", "scenes/beach.json", "scenes/lake.json",
+                                         "scenes/underwater.json"};
+    tarn_loaded_scene *s = malloc(sizeof *s);
+    tarn_error err;
+    for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
+        if (tarn_scene_load(scenes[i], s, &err) != 0) fail_msg("%s", err.message);
+        assert_bins_change_nothing(s, &s->scene);
+        /* level with the ground, the near plane cuts the clusters under the camera:
+         * their bins fall back on spheres */
+        tarn_scene low = s->scene;
+        low.camera.position.y = low.camera.target.y = s->objects[0].position.y + TARN_Q16_ONE / 2;
+        low.camera.position.z = TARN_Q16_ONE * 8;
+        low.camera.target.z = 0;
+        assert_bins_change_nothing(s, &low);
+        tarn_scene_free(s);
+    }
+    free(s);
+}
+
 /* The opaque pond (its water drawn as an ordinary surface): rasterization and
  * shading alone against the reference. */
 static void test_pond_matches_snapped_reference(void **state)
@@ -589,6 +636,8 @@ static void test_configs_out_of_range_are_rejected(void **state)
     assert_int_equal(tarn_frame_memory_bytes(&bad, NULL), 0);
     bad = config; bad.quality.perspective_span = 12;
     assert_int_equal(tarn_frame_memory_bytes(&bad, NULL), 0);
+    bad = config; bad.quality.cluster_bins = 2;
+    assert_int_equal(tarn_frame_memory_bytes(&bad, NULL), 0);
 
     uint32_t small[16];
     scene_builder *b = malloc(sizeof *b);
@@ -613,6 +662,7 @@ int main(void)
         cmocka_unit_test(test_top_left_rule_on_pixel_centres),
         cmocka_unit_test(test_clipped_meshes_stay_watertight),
         cmocka_unit_test(test_tile_size_does_not_change_the_image),
+        cmocka_unit_test(test_cluster_bins_do_not_change_the_image),
         cmocka_unit_test(test_pond_matches_snapped_reference),
         cmocka_unit_test(test_unsnapped_mismatches_lie_on_edges),
         cmocka_unit_test(test_extreme_triangles),

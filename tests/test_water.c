@@ -326,8 +326,12 @@ static void test_opaque_scenes_pay_nothing_for_water(void **state)
     water_scene *dry = new_scene(0), *wet = new_scene(1);
     tarn_frame_config config = config_of();
     const size_t tile = (size_t)config.quality.tile_size * config.quality.tile_size;
+    config.quality.cluster_bins = 0;
     assert_int_equal(tarn_frame_memory_bytes(&config, &dry->b.scene), tile * 8u);
     assert_true(tarn_frame_memory_bytes(&config, &wet->b.scene) > tile * 8u);
+    /* bins: 4 bytes for each of the builder's meshes, which have no clusters */
+    config.quality.cluster_bins = 1;
+    assert_int_equal(tarn_frame_memory_bytes(&config, &dry->b.scene), tile * 8u + 4u * dry->b.scene.object_count);
     free(dry);
     free(wet);
 }

@@ -1,0 +1,121 @@
+/* cluster_bins.c: see cluster_bins.h. The box of a cluster is exact for its
+ * unclipped triangles (the walk projects the same vertices to the same positions)
+ * and one pixel wider where a triangle is cut by the far plane or the guard band:
+ * the cut polygon lies inside the triangle, and its new vertices round at most
+ * that far. */
+#include "cluster_bins.h"
+#include "raster_setup.h"
+#include "vertex_cache.h"
+
+#define NEAR_PLANE_BIT 1u /* tarn_clip_outcode's bit 0 */
+
+static const tarn_cluster_bin bin_whole = {0, 0, 255, 255};
+static const tarn_cluster_bin bin_empty = {255, 255, 0, 0};
+
+uint32_t tarn_cluster_bins_of(const tarn_mesh *mesh)
+{
+    return mesh->clusters != NULL ? mesh->cluster_count : 1u;
+}
+
+uint32_t tarn_cluster_bin_count(const tarn_scene *scene)
+{
+    uint32_t count = 0;
+    for (uint32_t i = 0; i < scene->object_count; i++) count += tarn_cluster_bins_of(scene->objects[i].mesh);
+    return count;
+}
+
+int tarn_cluster_bin_touches(const tarn_cluster_bin *bin, const tarn_pixel_rect *rect)
+{
+    if (bin->x0 > bin->x1) return 0;
+    return ((int32_t)bin->x0 << TARN_BIN_CELL_SHIFT) < rect->x1 &&
+           ((int32_t)(bin->x1 + 1) << TARN_BIN_CELL_SHIFT) > rect->x0 &&
+           ((int32_t)bin->y0 << TARN_BIN_CELL_SHIFT) < rect->y1 &&
+           ((int32_t)(bin->y1 + 1) << TARN_BIN_CELL_SHIFT) > rect->y0;
+}
+
+int tarn_cluster_bin_is_whole(const tarn_cluster_bin *bin)
+{
+    return bin->x0 == 0 && bin->y0 == 0 && bin->x1 == 255 && bin->y1 == 255;
+}
+
+typedef struct {
+    int32_t x0, y0, x1, y1; /* subpixels, inclusive; x0 > x1 while empty */
+    int32_t margin;         /* pixels: 1 once a triangle was clipped */
+} subpixel_box;
+
+static void extend(subpixel_box *box, const tarn_screen_vertex screen[3])
+{
+    for (int k = 0; k < 3; k++) {
+        if (screen[k].x < box->x0) box->x0 = screen[k].x;
+        if (screen[k].x > box->x1) box->x1 = screen[k].x;
+        if (screen[k].y < box->y0) box->y0 = screen[k].y;
+        if (screen[k].y > box->y1) box->y1 = screen[k].y;
+    }
+}
+
+/* Pixels whose centres the box may cover, widened by its margin, in frame cells. */
+static tarn_cluster_bin to_cells(const subpixel_box *box, const tarn_view *view)
+{
+    if (box->x0 > box->x1) return bin_empty;
+    const unsigned s = view->subpixel_bits;
+    const int32_t half = (int32_t)1 << (s - 1u);
+    const int32_t x0 = tarn_clamp_i32(-tarn_floor_shift(half - box->x0, s) - box->margin, 0, view->width - 1);
+    const int32_t y0 = tarn_clamp_i32(-tarn_floor_shift(half - box->y0, s) - box->margin, 0, view->height - 1);
+    const int32_t x1 = tarn_clamp_i32(tarn_floor_shift(box->x1 - half, s) + box->margin, 0, view->width - 1);
+    const int32_t y1 = tarn_clamp_i32(tarn_floor_shift(box->y1 - half, s) + box->margin, 0, view->height - 1);
+    if (x0 > x1 || y0 > y1) return bin_empty;
+    const tarn_cluster_bin bin = {(uint8_t)(x0 >> TARN_BIN_CELL_SHIFT), (uint8_t)(y0 >> TARN_BIN_CELL_SHIFT),
+                                  (uint8_t)(x1 >> TARN_BIN_CELL_SHIFT), (uint8_t)(y1 >> TARN_BIN_CELL_SHIFT)};
+    return bin;
+}
+
+/* The bin of triangles [first, end) of the cache's mesh: what the walk would hand
+ * the rasterizer, less the triangles it would cull. */
+static tarn_cluster_bin bin_run(tarn_vertex_cache *cache, const tarn_object *object, uint32_t first,
+                                uint32_t end)
+{
+    const tarn_mesh *mesh = object->mesh;
+    subpixel_box box = {INT32_MAX, INT32_MAX, INT32_MIN, INT32_MIN, 0};
+    for (uint32_t t = first; t < end; t++) {
+        const uint16_t *index = &mesh->indices[3 * t];
+        tarn_cached_vertex c[3];
+        unsigned outside_all = ~0u, outside_any = 0;
+        for (int k = 0; k < 3; k++) {
+            c[k] = tarn_cached_position(cache, index[k]);
+            outside_all &= c[k].outcode;
+            outside_any |= c[k].outcode;
+        }
+        if (outside_all) continue;
+        if (outside_any & NEAR_PLANE_BIT) return bin_whole;
+        tarn_screen_vertex screen[3];
+        for (int k = 0; k < 3; k++) tarn_cached_projection(cache, &c[k], &screen[k]);
+        triangle_setup setup;
+        if (outside_any == 0 &&
+            !tarn_orient_triangle(screen, object->material->cull, cache->view->subpixel_bits, &setup))
+            continue;
+        if (outside_any) box.margin = 1;
+        extend(&box, screen);
+    }
+    return to_cells(&box, cache->view);
+}
+
+void tarn_bin_clusters(const tarn_scene *scene, const tarn_view *view, tarn_cluster_bin *bins)
+{
+    for (uint32_t i = 0; i < scene->object_count; i++) {
+        const tarn_object *object = &scene->objects[i];
+        const tarn_mesh *mesh = object->mesh;
+        tarn_object_xform xform;
+        tarn_object_xform_setup(view, object, &xform);
+        tarn_vertex_cache cache;
+        tarn_vertex_cache_init(&cache, view, &xform, mesh);
+        if (mesh->clusters == NULL) {
+            *bins++ = bin_run(&cache, object, 0, mesh->triangle_count);
+            continue;
+        }
+        for (uint32_t c = 0; c < mesh->cluster_count; c++) {
+            const tarn_cluster *cluster = &mesh->clusters[c];
+            *bins++ = bin_run(&cache, object, cluster->first_triangle,
+                              (uint32_t)cluster->first_triangle + cluster->triangle_count);
+        }
+    }
+}

@@ -1,0 +1,59 @@
+/* vertex_cache.c: see vertex_cache.h. */
+#include "vertex_cache.h"
+
+void tarn_vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
+                            const tarn_object_xform *xform, const tarn_mesh *mesh)
+{
+    cache->view = view;
+    cache->xform = xform;
+    cache->mesh = mesh;
+    for (uint32_t i = 0; i < TARN_VERTEX_CACHE_SLOTS; i++) cache->slot[i].state = 0;
+}
+
+static tarn_cached_vertex *cache_slot(tarn_vertex_cache *cache, uint16_t index)
+{
+    /* Fibonacci hashing spreads a grid's rows, whose indices differ by the row length */
+    return &cache->slot[((uint32_t)index * 40503u >> 11) & (TARN_VERTEX_CACHE_SLOTS - 1u)];
+}
+
+tarn_cached_vertex tarn_cached_position(tarn_vertex_cache *cache, uint16_t index)
+{
+    tarn_cached_vertex *slot = cache_slot(cache, index);
+    if ((slot->state & TARN_CACHED_FILLED) && slot->index == index) return *slot;
+    tarn_view_vertex v;
+    tarn_vertex_position(cache->xform, &cache->mesh->positions[index], &v);
+    slot->index = index;
+    slot->state = TARN_CACHED_FILLED;
+    slot->outcode = (uint8_t)tarn_clip_outcode(cache->view, &v);
+    slot->x = v.x;
+    slot->y = v.y;
+    slot->d = v.d;
+    return *slot;
+}
+
+tarn_view_vertex tarn_cached_view_vertex(const tarn_cached_vertex *vertex)
+{
+    tarn_view_vertex v = {0};
+    v.x = vertex->x;
+    v.y = vertex->y;
+    v.d = vertex->d;
+    return v;
+}
+
+void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex,
+                            tarn_screen_vertex *screen)
+{
+    if (!(vertex->state & TARN_CACHED_PROJECTED)) {
+        const tarn_view_vertex v = tarn_cached_view_vertex(vertex);
+        tarn_project_position(cache->view, &v, screen);
+        vertex->screen_x = screen->x;
+        vertex->screen_y = screen->y;
+        vertex->inv_depth = screen->inv_depth;
+        vertex->state |= TARN_CACHED_PROJECTED;
+        tarn_cached_vertex *slot = cache_slot(cache, vertex->index);
+        if ((slot->state & TARN_CACHED_FILLED) && slot->index == vertex->index) *slot = *vertex;
+    }
+    screen->x = vertex->screen_x;
+    screen->y = vertex->screen_y;
+    screen->inv_depth = vertex->inv_depth;
+}

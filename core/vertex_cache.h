@@ -1,0 +1,52 @@
+/* vertex_cache.h: a small cache of transformed and projected vertices for one
+ * object's walk (private to core/).
+ *
+ * Most vertices are shared by several triangles (six, inside a grid), and
+ * neighbouring clusters share their borders. Keyed by the vertex index, the cache
+ * keeps each vertex's view position, clip outcode and, once needed, its screen
+ * position, so a walk transforms and projects a vertex about once instead of once
+ * per triangle. Direct-mapped: a colliding vertex simply replaces the older one.
+ * It lives on the stack of the walk that uses it. */
+#ifndef TARN_VERTEX_CACHE_H
+#define TARN_VERTEX_CACHE_H
+
+#include "pipeline.h"
+
+#define TARN_VERTEX_CACHE_SLOTS 16u /* a power of two, 28 bytes each */
+
+#define TARN_CACHED_FILLED 1u    /* the slot holds vertex `index` */
+#define TARN_CACHED_PROJECTED 2u /* screen_x, screen_y and inv_depth are set */
+
+typedef struct {
+    uint16_t index;
+    uint8_t state;     /* TARN_CACHED_* bits */
+    uint8_t outcode;   /* tarn_clip_outcode */
+    tarn_q16 x, y, d;  /* view space */
+    int32_t screen_x, screen_y;
+    uint32_t inv_depth;
+} tarn_cached_vertex;
+
+typedef struct {
+    const tarn_view *view;
+    const tarn_object_xform *xform;
+    const tarn_mesh *mesh;
+    tarn_cached_vertex slot[TARN_VERTEX_CACHE_SLOTS];
+} tarn_vertex_cache;
+
+/* An empty cache for one object's vertices. */
+void tarn_vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
+                            const tarn_object_xform *xform, const tarn_mesh *mesh);
+
+/* The vertex's view position and outcode, from the cache or computed into it. */
+tarn_cached_vertex tarn_cached_position(tarn_vertex_cache *cache, uint16_t index);
+
+/* The screen position and inverse depth of a vertex inside every clip plane, into
+ * `screen` (its attributes untouched); computed once and kept in `vertex` and, while
+ * it still holds the vertex, its slot. */
+void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex,
+                            tarn_screen_vertex *screen);
+
+/* The view vertex (position only) of a cached vertex, ready for shading. */
+tarn_view_vertex tarn_cached_view_vertex(const tarn_cached_vertex *vertex);
+
+#endif
