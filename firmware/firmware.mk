@@ -122,7 +122,8 @@ $(FW_DIR)/firmware.conf: boards/$(BOARD)/board.mk firmware/firmware.mk FORCE
 	@mkdir -p $(FW_DIR)
 	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
 		"bake_flags=$(FW_BAKE_FLAGS)" "times=0,1000" "dither=1" "cross=$(FW_CROSS)" \
-		"stack_bytes=$(BOARD_STACK_BYTES)" "stack_entry=$(BOARD_STACK_ENTRY)" "emulated=$(if $(value BOARD_RUN),1,0)" > $@.tmp
+		"stack_bytes=$(BOARD_STACK_BYTES)" "stack_entry=$(BOARD_STACK_ENTRY)" "emulated=$(if $(value BOARD_RUN),1,0)" \
+		"code_bytes_max=$(BOARD_CODE_BYTES_MAX)" > $@.tmp
 	@if cmp -s $@.tmp $@; then rm $@.tmp; else mv $@.tmp $@; fi
 
 .PHONY: FORCE fw-toolchain fw-qemu

@@ -15,7 +15,8 @@
 #
 # Checks, per board: the run finished and reported; the board's counter measured a
 # loop of known length within 0.01%; the stack bound and the measured peak fit the
-# reserved stack; the image links no floating-point helper, allocator or stdio.
+# reserved stack; the image links no floating-point helper, allocator or stdio; the
+# code (the image less the scene) fits the board's BOARD_CODE_BYTES_MAX, if it has one.
 # A real board (firmware.conf: emulated=0) is never run: it gets the stack bound
 # and the link checks only (tests/test_real_boards.c checks its image).
 # The byte-for-byte comparison with the host is tests/test_firmware.c.
@@ -103,6 +104,10 @@ for board in "$@"; do
         grep -E '^(__aeabi_[fd][a-z0-9]*|__aeabi_[a-z0-9]+2[fd]|__(add|sub|mul|div)[sd]f3|__float[a-z]*|__fix[a-z]*|malloc|free|calloc|realloc|printf|puts|_sbrk)$' || true)
     if [ -z "$forbidden" ]; then pass; else
         fail "$board: the image links $(echo $forbidden)"; fi
+
+    code_max=$(conf code_bytes_max)
+    if [ -z "$code_max" ] || [ "$code" -le "$code_max" ]; then pass; else
+        fail "$board: the code takes $code bytes of flash besides the scene, over the board's $code_max"; fi
 
     echo "$board: flash $flash bytes ($scene_bytes scene, $code code), RAM $ram bytes, stack bound $stack, peak ${peak:-(not run)}, reserved $reserved"
 done

@@ -1,5 +1,6 @@
 #!/bin/sh
-# check_firmware_link.sh: an effect a scene does not use is not linked.
+# check_firmware_link.sh: an effect a scene does not use is not linked, nor the span
+# perspective mode when the baked quality does not use it.
 #
 # Builds the qemu-m0 firmware for several scenes (each in its own directory under
 # build/firmware-link/, the board's own build untouched) and reads the images' symbols
@@ -13,7 +14,7 @@ board=qemu-m0
 flags="--apron off --tile 16 --depth 16"
 effects="tarn_water_shade tarn_water_surface_normal tarn_water_refract tarn_water_fog tarn_water_absorb
 tarn_water_depth_colour tarn_water_fresnel_alpha tarn_water_specular tarn_water_foam tarn_water_sparkles
-tarn_underwater_tile"
+tarn_underwater_tile span_end"
 passed=0
 failed=0
 
@@ -21,10 +22,10 @@ failed=0
 check() {
     scene=$1
     shift
-    dir=build/firmware-link/$(basename "$scene" .json)
+    dir=build/firmware-link/$(basename "$scene" .json)$extra_name
     mkdir -p "$dir"
     if ! make --no-print-directory -s firmware BOARD=$board FW_BUILD_DIR="$dir" SCENE="$scene" \
-        BAKE_FLAGS="$flags" > "$dir.log" 2>&1; then
+        BAKE_FLAGS="$flags$extra_flags" > "$dir.log" 2>&1; then
         cat "$dir.log"
         echo "FAIL: $scene: the $board build failed"
         failed=$((failed + 1))
@@ -47,14 +48,17 @@ check() {
     set -- $(arm-none-eabi-size "$dir/firmware.elf" | awk 'NR == 2 {print $1, $2}')
     scene_bytes=$(arm-none-eabi-nm -S -t d --defined-only "$dir/firmware.elf" | awk '
         NF == 4 && $4 ~ /^scene_/ { n += $2 } END { print n + 0 }')
-    echo "firmware-link board=$board scene=$(basename "$scene" .json) code_bytes=$(($1 + $2 - scene_bytes))"
+    echo "firmware-link board=$board scene=$(basename "$scene" .json)$extra_name code_bytes=$(($1 + $2 - scene_bytes))"
 }
 
+extra_name= extra_flags=
 check scenes/effects/none.json
 check scenes/effects/fog.json tarn_water_shade tarn_water_fog
 check scenes/effects/foam.json tarn_water_shade tarn_water_foam
 check scenes/effects/sparkles.json tarn_water_shade tarn_water_surface_normal tarn_water_sparkles
 check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal tarn_water_refract
 check scenes/effects/underwater.json tarn_underwater_tile
+extra_name=-span extra_flags=" --perspective span:16"
+check scenes/effects/fog.json tarn_water_shade tarn_water_fog span_end
 echo "firmware-link: $passed passed, $failed failed"
 [ $failed -eq 0 ]

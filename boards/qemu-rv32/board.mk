@@ -8,12 +8,12 @@ BOARD_CPU := -march=rv32imac_zicsr -mabi=ilp32 -mcmodel=medany
 BOARD_SRC := boards/qemu-rv32/startup.S boards/qemu-rv32/board.c boards/common/semihosting.c
 BOARD_INCLUDE := -Iboards/common
 BOARD_LDSCRIPT := boards/qemu-rv32/link.ld
-BOARD_STACK_BYTES := 3584
+BOARD_STACK_BYTES := 4096
 # where the stack starts (startup.S calls main with interrupts off), for
 # firmware/stack_bound.sh
 BOARD_STACK_ENTRY := main
 BOARD_SCENE := scenes/pond.json
-BOARD_BAKE_FLAGS := --apron off --tile 32 --depth 16
+BOARD_BAKE_FLAGS := --apron off --tile 28 --depth 16
 BOARD_QEMU := qemu-system-riscv32
 # $(1): the ELF; $(2): the host file the panel stream goes to (UART0); $(3): the
 # report (semihosting)
