@@ -72,6 +72,24 @@ int64_t tarn_divide_floor_i64(int64_t n, const tarn_divisor *d, uint32_t *remain
     return -(int64_t)q - (r != 0u);
 }
 
+int64_t tarn_divide_round_approx_i64(int64_t n, const tarn_divisor *d)
+{
+    const uint64_t m = magnitude(n);
+    uint64_t q;
+    if (d->divisor == 1u) {
+        q = m;
+    } else {
+        /* (m * recip + half) >> (62 - shift), with the low product's bits below 2^32
+         * dropped (they are worth less than one unit of the result) */
+        const unsigned down = 30u - d->shift; /* 0..29 */
+        const uint64_t high = tarn_mul_u32_wide((uint32_t)(m >> 32), d->recip);
+        const uint64_t low = tarn_mul_u32_wide((uint32_t)m, d->recip);
+        const uint64_t half = down > 0u ? (uint64_t)1 << (down - 1u) : 0u;
+        q = (high + (low >> 32) + half) >> down;
+    }
+    return n < 0 ? -(int64_t)q : (int64_t)q;
+}
+
 int64_t tarn_divide_trunc_i64(int64_t n, const tarn_divisor *d)
 {
     const uint64_t q = tarn_divide_u64(magnitude(n), d, NULL);

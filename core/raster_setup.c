@@ -75,17 +75,20 @@ pixel_box tarn_triangle_pixels(const triangle_setup *t)
     return box;
 }
 
-/* A plane through the three vertex values (each within [0, 2^30]). */
+/* A plane through the three vertex values (each within [0, 2^30]). Its anchor and
+ * steps divide by the area in one multiply each (tarn_divide_round_approx_i64): an
+ * attribute plane is an approximation already, and the exact division cost the
+ * Cortex-M0 several thousand instructions a triangle. */
 static plane make_plane(const triangle_setup *t, const tarn_divisor *area2, const int64_t value[3])
 {
     const unsigned s = t->subpixel_bits;
     const edge *e1 = &t->edges[1], *e2 = &t->edges[2];
     const int64_t d1 = value[1] - value[0], d2 = value[2] - value[0];
     const int32_t px = pixel_centre(t->box.x0, s), py = pixel_centre(t->box.y0, s);
-    int64_t at_anchor = value[0] + tarn_divide_round_i64(edge_unbiased_at(e1, px, py) * d1 +
-                                                         edge_unbiased_at(e2, px, py) * d2, area2);
-    int64_t step_x = tarn_divide_round_i64(((int64_t)e1->a * d1 + (int64_t)e2->a * d2) * ((int64_t)1 << s), area2);
-    int64_t step_y = tarn_divide_round_i64(((int64_t)e1->b * d1 + (int64_t)e2->b * d2) * ((int64_t)1 << s), area2);
+    int64_t at_anchor = value[0] + tarn_divide_round_approx_i64(edge_unbiased_at(e1, px, py) * d1 +
+                                                                edge_unbiased_at(e2, px, py) * d2, area2);
+    int64_t step_x = tarn_divide_round_approx_i64(((int64_t)e1->a * d1 + (int64_t)e2->a * d2) * ((int64_t)1 << s), area2);
+    int64_t step_y = tarn_divide_round_approx_i64(((int64_t)e1->b * d1 + (int64_t)e2->b * d2) * ((int64_t)1 << s), area2);
     plane p = {(uint32_t)at_anchor, (uint32_t)step_x, (uint32_t)step_y};
     return p;
 }
