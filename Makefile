@@ -36,7 +36,7 @@ TEST_SUPPORT_OBJ := $(TEST_SUPPORT_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TARN := $(BUILD)/tarn
 
-.PHONY: all demo test check deps deps-test core-purity clean
+.PHONY: all demo test check deps deps-test core-purity bench-panels clean
 .DELETE_ON_ERROR:
 .SECONDARY:
 
@@ -73,6 +73,11 @@ check: $(TARN) $(TEST_BIN)
 
 core-purity:
 	@BUILD=build/m0 tests/check_core_purity.sh
+
+# Bytes per frame, bytes per second and fps of every panel link, from counted bytes
+# at the link's clock (docs/panels.md); make bench-target has the boards' figures.
+bench-panels: $(TARN)
+	@TARN_BIN=$(TARN) scripts/bench-panels.sh
 
 $(TARN): $(BUILD)/host/main.o $(HOST_OBJ) $(CORE_OBJ)
 	$(CC) $(OPT) -o $@ $^ $(HOST_LIBS)

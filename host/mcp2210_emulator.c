@@ -96,9 +96,14 @@ static void transfer_spi(tarn_mcp2210_emulator *e, const uint8_t *command, uint8
         reply[1] = TARN_MCP2210_BUSY;
         return;
     }
+    if (e->finish_pending && command[1] != 0) { /* still clocking the last transaction */
+        e->busy_answers++;
+        reply[1] = TARN_MCP2210_BUSY;
+        return;
+    }
     reply[1] = TARN_MCP2210_OK;
     reply[2] = 0; /* no received bytes: the panel has no MISO here */
-    if (e->finish_pending && command[1] == 0) {
+    if (e->finish_pending) {
         e->finish_pending = 0;
         reply[3] = TARN_MCP2210_ENGINE_FINISHED;
         return;
@@ -147,6 +152,7 @@ static void answer(tarn_mcp2210_emulator *e, const uint8_t *command, uint8_t *re
         set_chip_settings(e, command);
         break;
     case TARN_MCP2210_SET_GPIO_VALUE: /* 3.2.8: only GPIO pins take the value */
+        e->gpio_while_clocking += e->finish_pending != 0;
         e->gpio_values = get_u16_le(command + 4) & 0x01FF;
         drive_gpio(e);
         put_u16_le(reply + 4, e->gpio_values);
@@ -154,8 +160,9 @@ static void answer(tarn_mcp2210_emulator *e, const uint8_t *command, uint8_t *re
     case TARN_MCP2210_GET_GPIO_VALUE:
         put_u16_le(reply + 4, e->gpio_values);
         break;
-    case TARN_MCP2210_SET_SPI_SETTINGS:
-        set_spi_settings(e, command, reply);
+    case TARN_MCP2210_SET_SPI_SETTINGS: /* 0xF8: transfer in progress, settings not written */
+        if (e->finish_pending) reply[1] = TARN_MCP2210_BUSY;
+        else set_spi_settings(e, command, reply);
         break;
     case TARN_MCP2210_GET_SPI_SETTINGS:
         reply[2] = 17;

@@ -36,12 +36,17 @@ typedef struct {
     /* faults */
     unsigned busy_next;      /* answer the next this many 0x42 reports with 0xF8 */
     unsigned busy_every;     /* and every busy_every-th one (0: never) */
-    int finish_late;         /* the last chunk answers 0x30; the next poll 0x10 */
+    int finish_late;         /* the last chunk answers 0x30; the engine goes on clocking
+                                until a poll (0x42 of 0 bytes) answers 0x10. Meanwhile
+                                new data and 0x40 answer 0xF8, as the datasheet says
+                                of a transfer in progress */
     int external_master;     /* the bus belongs to someone else: 0x42 answers 0xF7 */
     uint64_t unplug_after;   /* reports accepted before the device vanishes (0: never) */
 
     /* counts */
     uint64_t reports, transfer_reports, busy_answers;
+    unsigned gpio_while_clocking; /* 0x30s while the engine still clocked: on the real
+                                     chip D/CX would change under the last byte */
     int gone;
 } tarn_mcp2210_emulator;
 

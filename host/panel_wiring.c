@@ -24,6 +24,7 @@ void tarn_panel_wiring_init(tarn_panel_wiring *w, tarn_panel_transport panel)
     }
     w->spidev_bufsiz = TARN_SPIDEV_BUFSIZ_DEFAULT;
     w->slowest_pixel_hz = UINT32_MAX;
+    w->spi_mode = -1;
 }
 
 tarn_gpio_line tarn_panel_wiring_line(tarn_panel_wiring *w, tarn_wire wire)
@@ -84,8 +85,11 @@ int tarn_panel_wiring_spidev_ioctl(void *user, int fd, unsigned long request, vo
     tarn_panel_wiring *w = user;
     (void)fd;
     w->ioctls++;
-    if (request == SPI_IOC_WR_MODE || request == SPI_IOC_WR_BITS_PER_WORD || request == SPI_IOC_WR_MAX_SPEED_HZ)
+    if (request == SPI_IOC_WR_MODE) {
+        w->spi_mode = *(const uint8_t *)arg;
         return 0;
+    }
+    if (request == SPI_IOC_WR_BITS_PER_WORD || request == SPI_IOC_WR_MAX_SPEED_HZ) return 0;
     if (request != SPI_IOC_MESSAGE(1)) {
         errno = ENOTTY;
         return -1;
@@ -99,6 +103,8 @@ int tarn_panel_wiring_spidev_ioctl(void *user, int fd, unsigned long request, vo
     if (!w->level[TARN_WIRE_DC] && t->speed_hz > w->fastest_command_hz) w->fastest_command_hz = t->speed_hz;
     if (w->level[TARN_WIRE_DC] && t->len > TARN_SPIDEV_PARAMETER_BYTES_MAX && t->speed_hz < w->slowest_pixel_hz)
         w->slowest_pixel_hz = t->speed_hz;
+    if (w->level[TARN_WIRE_DC] && t->len <= TARN_SPIDEV_PARAMETER_BYTES_MAX && t->speed_hz > w->fastest_parameter_hz)
+        w->fastest_parameter_hz = t->speed_hz;
     w->level[TARN_WIRE_CS] = 0; /* the driver selects the device for the message */
     int status = tarn_panel_wiring_spi(w, (const uint8_t *)(uintptr_t)t->tx_buf, t->len);
     w->level[TARN_WIRE_CS] = 1;

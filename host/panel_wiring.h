@@ -41,6 +41,8 @@ struct tarn_panel_wiring {
     uint64_t line_sets, bytes, command_bytes, ioctls;
     size_t largest_transfer;
     uint32_t slowest_pixel_hz, fastest_command_hz; /* of transfers longer than 16 bytes; of command bytes */
+    uint32_t fastest_parameter_hz;  /* of data transfers of 16 bytes or fewer (CASET, MADCTL...) */
+    int spi_mode;                   /* what SPI_IOC_WR_MODE asked for; -1 before */
     int failed;                     /* a panel call failed */
 };
 

@@ -239,7 +239,8 @@ int tarn_command_show(int argc, char **argv)
         return 0;
     }
     if (tarn_show_parse(argc, argv, &options, &err) != 0) {
-        fprintf(stderr, "tarn: %s\n%s", err.message, tarn_show_usage);
+        /* one line, as every error of tarn show: the usage is a --help away */
+        fprintf(stderr, "tarn: %s (tarn show --help lists the options)\n", err.message);
         return 2;
     }
     tarn_loaded_scene scene;

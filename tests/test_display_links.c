@@ -16,6 +16,7 @@
 #include <cmocka.h>
 
 #include <dirent.h>
+#include <png.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -164,6 +165,69 @@ static void shows_every_frame_through(tarn_display_kind via, const unsigned *til
     }
 }
 
+#define SHOW_PNG "build/test_show.png"
+#define SHOW_OUT "build/test_show.out"
+
+/* The whole file a command wrote, NUL-terminated (at most 4 KB). */
+static void read_text(const char *path, char *text, size_t size)
+{
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t length = fread(text, 1, size - 1, f);
+    fclose(f);
+    text[length] = '\0';
+}
+
+/* tarn show end to end, through the real binary: three frames animated through the
+ * spidev backend into the emulator, the figures reported, and the picture written
+ * is the last frame (time 100 + 2 frames at 10 fps = 300 ms) through tarn_rgb565
+ * with dither, pixel for pixel, and not the first. */
+static void test_show_animates_into_the_emulator(void **state)
+{
+    (void)state;
+    const char *tarn = getenv("TARN_BIN") != NULL ? getenv("TARN_BIN") : "build/release/tarn";
+    remove(SHOW_PNG);
+    char command[1024];
+    snprintf(command, sizeof command,
+             "%s show " SCENE_PATH " --panel st7789-240x240 --display emulator:" SHOW_PNG
+             " --via spidev --frames 3 --fps 10 --time 100 --dither > " SHOW_OUT,
+             tarn);
+    assert_int_equal(system(command), 0);
+    char text[4096];
+    read_text(SHOW_OUT, text, sizeof text);
+    assert_non_null(strstr(text, "show panel=st7789-240x240"));
+    assert_non_null(strstr(text, " frames=3 "));
+    assert_non_null(strstr(text, " bytes_per_frame="));
+    assert_non_null(strstr(text, " link_fps="));
+    png_image image;
+    memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+    assert_true(png_image_begin_read_from_file(&image, SHOW_PNG));
+    assert_int_equal(image.width, 240);
+    assert_int_equal(image.height, 240);
+    image.format = PNG_FORMAT_RGB;
+    uint8_t *rgb = malloc(PNG_IMAGE_SIZE(image));
+    assert_true(png_image_finish_read(&image, NULL, rgb, 0, NULL));
+    frame last = render(240, 240, 300), first = render(240, 240, 100);
+    size_t differing_last = 0, differing_first = 0;
+    for (uint16_t y = 0; y < 240; y++)
+        for (uint16_t x = 0; x < 240; x++) {
+            const size_t p = (size_t)y * 240 + x;
+            uint8_t want[3], other[3];
+            tarn_rgb565_to_rgb888(tarn_rgb565(last.rgb[p], x, y, 1), want);
+            tarn_rgb565_to_rgb888(tarn_rgb565(first.rgb[p], x, y, 1), other);
+            differing_last += memcmp(rgb + 3 * p, want, 3) != 0;
+            differing_first += memcmp(rgb + 3 * p, other, 3) != 0;
+        }
+    assert_int_equal(differing_last, 0);
+    assert_true(differing_first > 1000);
+    free(rgb);
+    free(last.rgb);
+    free(first.rgb);
+    remove(SHOW_PNG);
+    remove(SHOW_OUT);
+}
+
 static void test_spidev_shows_the_frame(void **state)
 {
     (void)state;
@@ -198,6 +262,8 @@ static void test_spidev_splits_and_clocks(void **state)
     assert_int_equal(w->largest_transfer, TARN_SPIDEV_BUFSIZ_DEFAULT);
     assert_int_equal(w->slowest_pixel_hz, 62500000);
     assert_true(w->fastest_command_hz > 0 && w->fastest_command_hz <= 10000000);
+    assert_true(w->fastest_parameter_hz > 0 && w->fastest_parameter_hz <= 10000000); /* CASET, RASET */
+    assert_int_equal(w->spi_mode, 0); /* what the module samples (panel_wiring.h) */
     /* 7 bands of 15 360 bytes (4 transfers each), one of 7 680 (2), CASET and RASET
      * (a command and its parameters each) and RAMWR */
     assert_int_equal(l->display.counts->transfers - before, 7 * 4 + 2 + 5);
@@ -265,10 +331,12 @@ static void test_mcp2210_recovers_from_busy_replies(void **state)
     tarn_mcp2210_emulator *e = &l->display.mcp2210_emulator;
     e->busy_next = 50;  /* a run of busy answers */
     e->busy_every = 7;  /* and one every few reports after that */
-    e->finish_late = 1; /* and the engine ends a poll after the last chunk */
+    e->finish_late = 1; /* and the engine still clocks after the last chunk, until polled */
     assert_int_equal(tarn_frame_sender_send(&l->sender, f.rgb), TARN_OK);
     assert_int_equal(pixels_differing(&l->display, &f), 0);
     assert_true(e->busy_answers > 50);
+    assert_int_equal(e->gpio_while_clocking, 0); /* D/CX waits for the engine */
+    assert_int_equal(e->spi_mode, 0);
     assert_int_equal(l->display.counts->busy_replies, e->busy_answers);
     close_link(l);
     free(f.rgb);
@@ -383,6 +451,7 @@ static void test_gpio_real_error_paths(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_show_animates_into_the_emulator),
         cmocka_unit_test(test_spidev_shows_the_frame),
         cmocka_unit_test(test_mcp2210_shows_the_frame),
         cmocka_unit_test(test_gpio_spi_shows_the_frame),
