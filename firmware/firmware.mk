@@ -7,6 +7,8 @@
 #                                 shift=0): build/firmware/BOARD/panel.stream is what
 #                                 it sent the panel, report.txt its report line
 #   make bench-target             runs every emulated board and prints one line each
+#   make profile-target BOARD=qemu-m0 [SAMPLES=N]   where an emulated Arm board's
+#                                 instructions go, by function and source line
 #   make firmware SCENE=my.json BAKE_FLAGS="--tile 16 --depth 16"   another scene
 #
 # A board whose board.mk gives no BOARD_RUN is a real board: it is built (and
@@ -18,9 +20,12 @@ FW_BOARDS := $(sort $(patsubst boards/%/board.mk,%,$(wildcard boards/*/board.mk)
 FW_TARN := build/release/tarn
 FW_TIMEOUT ?= 120
 
-.PHONY: firmware firmware-run firmware-check bench-target
+.PHONY: firmware firmware-run firmware-check bench-target profile-target
 
 ifeq ($(BOARD),)
+
+profile-target:
+	@echo "tarn: make profile-target needs BOARD=qemu-m0 or BOARD=qemu-m3" >&2; exit 1
 
 firmware:
 	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory firmware BOARD=$$b || exit 1; done
@@ -40,7 +45,7 @@ firmware-check: firmware-run
 
 else ifeq ($(filter $(BOARD),$(FW_BOARDS)),)
 
-firmware firmware-run bench-target firmware-check:
+firmware firmware-run bench-target firmware-check profile-target:
 	@echo "tarn: no board '$(BOARD)'; the boards are: $(FW_BOARDS)" >&2; exit 1
 
 else
@@ -105,12 +110,21 @@ bench-target: $(FW_DIR)/report.txt $(FW_ELF)
 
 firmware-check: $(FW_DIR)/report.txt
 	@tests/check_firmware.sh $(BOARD)
+
+ifeq ($(BOARD_ARCH),arm)
+profile-target: $(FW_ELF) | fw-qemu
+	@scripts/profile-target.py --samples $(or $(SAMPLES),3000) $(FW_ELF) -- \
+		$(call BOARD_RUN,$(FW_ELF),$(FW_DIR)/profile.stream,$(FW_DIR)/profile.report)
+else
+profile-target:
+	@echo "tarn: profile-target reads Arm registers; $(BOARD) is $(BOARD_ARCH)" >&2; exit 1
+endif
 else
 # a real board: built, never run here
 firmware-run: $(FW_OUTPUTS)
 	@echo "$(BOARD) is a real board: built ($(FW_OUTPUTS)), not run" >&2
 
-bench-target: $(FW_OUTPUTS)
+bench-target profile-target: $(FW_OUTPUTS)
 	@echo "$(BOARD) is a real board: no emulated run to measure" >&2
 
 firmware-check: $(FW_OUTPUTS) $(FW_DIR)/firmware.conf
