@@ -46,13 +46,15 @@ static int reset_pulse(const tarn_panel_transport *transport)
     return wait_ms(transport, RESET_RECOVERY_MS);
 }
 
-static int send_init_step(const tarn_panel *panel, const tarn_panel_transport *transport,
-                          const tarn_panel_init_step *step)
+/* One packed step (panel_tables.h); returns its size in bytes, or 0 on failure. */
+static size_t send_init_step(const tarn_panel *panel, const tarn_panel_transport *transport,
+                             const uint8_t *step)
 {
+    const uint8_t command = step[0], length = step[1], delay_ms = step[2];
     /* MADCTL is the one step that depends on the rotation; the table holds a placeholder */
-    const uint8_t *data = step->command == TARN_PANEL_MADCTL ? &panel->madctl : step->data;
-    if (send_command(transport, step->command, data, step->length) != 0) return -1;
-    return wait_ms(transport, step->delay_ms);
+    const uint8_t *data = command == TARN_PANEL_MADCTL ? &panel->madctl : step + TARN_PANEL_STEP_HEADER;
+    if (send_command(transport, command, data, length) != 0 || wait_ms(transport, delay_ms) != 0) return 0;
+    return TARN_PANEL_STEP_HEADER + length;
 }
 
 static int transport_complete(const tarn_panel_transport *transport)
@@ -67,8 +69,11 @@ tarn_status tarn_panel_init(const tarn_panel *panel, const tarn_panel_transport 
         transport->delay_ms == NULL)
         return TARN_ERR_CONFIG;
     if (transport->reset != NULL && reset_pulse(transport) != 0) return TARN_ERR_SINK;
-    for (size_t i = 0; i < facts->init_steps; i++)
-        if (send_init_step(panel, transport, &facts->init[i]) != 0) return TARN_ERR_SINK;
+    for (size_t at = 0; at < facts->init_bytes;) {
+        const size_t step = send_init_step(panel, transport, facts->init + at);
+        if (step == 0) return TARN_ERR_SINK;
+        at += step;
+    }
     return TARN_OK;
 }
 

@@ -50,44 +50,44 @@ enum {
 };
 
 /* The MADCTL steps carry a placeholder byte: panel.c sends the rotation's own. */
-static const tarn_panel_init_step st7789_init[] = {
-    {TARN_PANEL_SWRESET, 0, 150, {0}},
-    {TARN_PANEL_SLPOUT, 0, 120, {0}},
-    {TARN_PANEL_COLMOD, 1, 10, {0x55}}, /* 16 bits per pixel, RGB565 */
-    {TARN_PANEL_MADCTL, 1, 0, {0}},
-    {TARN_PANEL_INVON, 0, 10, {0}},
-    {TARN_PANEL_NORON, 0, 10, {0}},
-    {TARN_PANEL_DISPON, 0, 10, {0}},
+static const uint8_t st7789_init[] = {
+    TARN_PANEL_SWRESET, 0, 150,
+    TARN_PANEL_SLPOUT, 0, 120,
+    TARN_PANEL_COLMOD, 1, 10, 0x55,
+    TARN_PANEL_MADCTL, 1, 0, 0,
+    TARN_PANEL_INVON, 0, 10,
+    TARN_PANEL_NORON, 0, 10,
+    TARN_PANEL_DISPON, 0, 10,
 };
 
-static const tarn_panel_init_step ili9341_init[] = {
-    {TARN_PANEL_SWRESET, 0, 150, {0}},
-    {ILI9341_POWER_CONTROL_B, 3, 0, {0x00, 0xC1, 0x30}},
-    {ILI9341_POWER_ON_SEQUENCE, 4, 0, {0x64, 0x03, 0x12, 0x81}},
-    {ILI9341_DRIVER_TIMING_A, 3, 0, {0x85, 0x00, 0x78}},
-    {ILI9341_POWER_CONTROL_A, 5, 0, {0x39, 0x2C, 0x00, 0x34, 0x02}},
-    {ILI9341_PUMP_RATIO, 1, 0, {0x20}},
-    {ILI9341_DRIVER_TIMING_B, 2, 0, {0x00, 0x00}},
-    {ILI9341_POWER_CONTROL_1, 1, 0, {0x23}},
-    {ILI9341_POWER_CONTROL_2, 1, 0, {0x10}},
-    {ILI9341_VCOM_CONTROL_1, 2, 0, {0x3E, 0x28}},
-    {ILI9341_VCOM_CONTROL_2, 1, 0, {0x86}},
-    {TARN_PANEL_MADCTL, 1, 0, {0}},
-    {ILI9341_VERTICAL_SCROLL_START, 1, 0, {0x00}},
-    {TARN_PANEL_COLMOD, 1, 0, {0x55}},
-    {ILI9341_FRAME_RATE, 2, 0, {0x00, 0x18}},
-    {ILI9341_DISPLAY_FUNCTION, 3, 0, {0x08, 0x82, 0x27}},
-    {ILI9341_GAMMA_3_ENABLE, 1, 0, {0x00}},
-    {ILI9341_GAMMA_SET, 1, 0, {0x01}},
-    {ILI9341_POSITIVE_GAMMA, 15, 0,
-     {0x0F, 0x31, 0x2B, 0x0C, 0x0E, 0x08, 0x4E, 0xF1, 0x37, 0x07, 0x10, 0x03, 0x0E, 0x09, 0x00}},
-    {ILI9341_NEGATIVE_GAMMA, 15, 0,
-     {0x00, 0x0E, 0x14, 0x03, 0x11, 0x07, 0x31, 0xC1, 0x48, 0x08, 0x0F, 0x0C, 0x31, 0x36, 0x0F}},
-    {TARN_PANEL_SLPOUT, 0, 120, {0}},
-    {TARN_PANEL_DISPON, 0, 120, {0}},
+static const uint8_t ili9341_init[] = {
+    TARN_PANEL_SWRESET, 0, 150,
+    ILI9341_POWER_CONTROL_B, 3, 0, 0x00, 0xC1, 0x30,
+    ILI9341_POWER_ON_SEQUENCE, 4, 0, 0x64, 0x03, 0x12, 0x81,
+    ILI9341_DRIVER_TIMING_A, 3, 0, 0x85, 0x00, 0x78,
+    ILI9341_POWER_CONTROL_A, 5, 0, 0x39, 0x2C, 0x00, 0x34, 0x02,
+    ILI9341_PUMP_RATIO, 1, 0, 0x20,
+    ILI9341_DRIVER_TIMING_B, 2, 0, 0x00, 0x00,
+    ILI9341_POWER_CONTROL_1, 1, 0, 0x23,
+    ILI9341_POWER_CONTROL_2, 1, 0, 0x10,
+    ILI9341_VCOM_CONTROL_1, 2, 0, 0x3E, 0x28,
+    ILI9341_VCOM_CONTROL_2, 1, 0, 0x86,
+    TARN_PANEL_MADCTL, 1, 0, 0,
+    ILI9341_VERTICAL_SCROLL_START, 1, 0, 0x00,
+    TARN_PANEL_COLMOD, 1, 0, 0x55,
+    ILI9341_FRAME_RATE, 2, 0, 0x00, 0x18,
+    ILI9341_DISPLAY_FUNCTION, 3, 0, 0x08, 0x82, 0x27,
+    ILI9341_GAMMA_3_ENABLE, 1, 0, 0x00,
+    ILI9341_GAMMA_SET, 1, 0, 0x01,
+    ILI9341_POSITIVE_GAMMA, 15, 0,
+        0x0F, 0x31, 0x2B, 0x0C, 0x0E, 0x08, 0x4E, 0xF1, 0x37, 0x07, 0x10, 0x03, 0x0E, 0x09, 0x00,
+    ILI9341_NEGATIVE_GAMMA, 15, 0,
+        0x00, 0x0E, 0x14, 0x03, 0x11, 0x07, 0x31, 0xC1, 0x48, 0x08, 0x0F, 0x0C, 0x31, 0x36, 0x0F,
+    TARN_PANEL_SLPOUT, 0, 120,
+    TARN_PANEL_DISPON, 0, 120,
 };
 
-#define STEPS(table) (table), (sizeof(table) / sizeof((table)[0]))
+#define PACKED(table) (table), sizeof(table)
 
 /* ST7789 rotations as TFT_eSPI numbers them; both ST7789 modules share the MADCTLs. */
 #define ST7789_MADCTL {MADCTL_RGB, MADCTL_MX | MADCTL_MV | MADCTL_RGB, \
@@ -95,14 +95,14 @@ static const tarn_panel_init_step ili9341_init[] = {
 
 static const tarn_panel_model_facts models[] = {
     [TARN_PANEL_ST7789_240X240] = {240, 240, ST7789_MADCTL, {0, 0, 0, 80}, {0, 0, 80, 0},
-                                   STEPS(st7789_init)},
+                                   PACKED(st7789_init)},
     [TARN_PANEL_ST7789_240X320] = {240, 320, ST7789_MADCTL, {0, 0, 0, 0}, {0, 0, 0, 0},
-                                   STEPS(st7789_init)},
+                                   PACKED(st7789_init)},
     [TARN_PANEL_ILI9341_320X240] = {320, 240,
                                     {MADCTL_MV | MADCTL_BGR, MADCTL_MY | MADCTL_BGR,
                                      MADCTL_MX | MADCTL_MY | MADCTL_MV | MADCTL_BGR,
                                      MADCTL_MX | MADCTL_BGR},
-                                    {0, 0, 0, 0}, {0, 0, 0, 0}, STEPS(ili9341_init)},
+                                    {0, 0, 0, 0}, {0, 0, 0, 0}, PACKED(ili9341_init)},
 };
 
 const tarn_panel_model_facts *tarn_panel_model_facts_of(unsigned model)
