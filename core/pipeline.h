@@ -47,7 +47,8 @@ typedef struct {
     uint32_t tint_q16[3];   /* material colour / 255 per channel, Q0.16 */
     int unlit;              /* the material ignores the light */
     int32_t normal_to_view[3][3]; /* basis * rotation, Q1.30: normals into view space */
-    int water;              /* the material is water: vertices carry the fresnel term */
+    int fresnel;            /* the material is water with the fresnel effect: vertices
+                               carry the fresnel term (0 otherwise; nothing reads it) */
 } tarn_object_xform;
 
 #define TARN_CLIP_POLYGON_MAX 9 /* a triangle cut by six planes has at most 3 + 6 corners */
@@ -60,6 +61,8 @@ void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *objec
                           tarn_view_vertex *out);
 void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
                        const tarn_mesh *mesh, uint16_t index, tarn_view_vertex *out);
+/* The vertex's texture coordinates, (0, 0) for a mesh without them. */
+tarn_uv tarn_vertex_uv(const tarn_mesh *mesh, uint16_t index);
 
 /* Bit i set: the vertex is outside clip plane i (near, far, left, right, top, bottom). */
 unsigned tarn_clip_outcode(const tarn_view *view, const tarn_view_vertex *v);

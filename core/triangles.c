@@ -86,7 +86,7 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
         tarn_view_vertex v[3];
         for (int k = 0; k < 3; k++) v[k] = tarn_cached_view_vertex(&c[k]);
         if (outside_any) {
-            for (int k = 0; k < 3; k++) tarn_vertex_shade(view, cache->xform, mesh, index[k], &v[k]);
+            for (int k = 0; k < 3; k++) tarn_cached_shading(cache, &c[k], &v[k]);
             tarn_clip_and_emit(view, outside_any, v, object, sink, ctx);
             continue;
         }
@@ -94,7 +94,7 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
         for (int k = 0; k < 3; k++) tarn_cached_projection(cache, &c[k], &screen[k]);
         if (only_rect && bounds_miss_rect(screen, view->subpixel_bits, only_rect)) continue;
         for (int k = 0; k < 3; k++) {
-            tarn_vertex_shade(view, cache->xform, mesh, index[k], &v[k]);
+            tarn_cached_shading(cache, &c[k], &v[k]);
             tarn_project_attributes(&v[k], &screen[k]);
         }
         sink(ctx, screen, object);
@@ -120,11 +120,20 @@ static int cluster_may_touch(const tarn_view *view, const tarn_object_xform *xfo
     return !sphere_misses_tile(view, frustum, &centre, radius);
 }
 
+static int any_bin_touches(const tarn_cluster_bin *bins, uint32_t count, const tarn_pixel_rect *rect)
+{
+    for (uint32_t i = 0; i < count; i++)
+        if (tarn_cluster_bin_touches(&bins[i], rect)) return 1;
+    return 0;
+}
+
 static void walk_object(const tarn_view *view, const tarn_object *object, const tile_frustum *frustum,
                         const tarn_cluster_bin *bins, const tarn_pixel_rect *only_rect,
                         tarn_triangle_sink sink, void *ctx)
 {
     const tarn_mesh *mesh = object->mesh;
+    if (bins != NULL && only_rect != NULL && !any_bin_touches(bins, tarn_cluster_bins_of(mesh), only_rect))
+        return; /* before the object's setup, which costs as much as a few vertices */
     tarn_object_xform xform;
     tarn_object_xform_setup(view, object, &xform);
     tarn_vertex_cache cache;

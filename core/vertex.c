@@ -66,8 +66,10 @@ void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
                              tarn_object_xform *xform)
 {
     object_to_view_matrix(view, object, xform);
-    xform->water = object->material->water != NULL;
-    if (xform->water) normal_to_view_matrix(view, object, xform);
+    const tarn_water *water = object->material->water;
+    xform->fresnel = TARN_LINK_WATER && water != NULL && (TARN_LINK_WATER_FEATURES & TARN_WATER_FRESNEL) &&
+                     (water->features & TARN_WATER_FRESNEL);
+    if (xform->fresnel) normal_to_view_matrix(view, object, xform);
     object_origin_in_view(view, object, xform);
     /* The rotation is orthonormal: object-space light = rotation^T * light. */
     const tarn_q16 light[3] = {view->light_dir.x, view->light_dir.y, view->light_dir.z};
@@ -146,11 +148,12 @@ void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
         uint32_t vertex_channel = (vertex_rgb >> (16 - 8 * c)) & 0xFFu;
         out->lit[c] = (int32_t)((vertex_channel * factor + 128u) >> 8); /* Q8.8 */
     }
-    if (mesh->uvs) {
-        out->uv = mesh->uvs[index];
-    } else {
-        out->uv.u = 0;
-        out->uv.v = 0;
-    }
-    out->fresnel = xform->water ? fresnel_q15(xform, n, out) : 0;
+    out->uv = tarn_vertex_uv(mesh, index);
+    out->fresnel = xform->fresnel ? fresnel_q15(xform, n, out) : 0;
+}
+
+tarn_uv tarn_vertex_uv(const tarn_mesh *mesh, uint16_t index)
+{
+    const tarn_uv none = {0, 0};
+    return mesh->uvs != NULL ? mesh->uvs[index] : none;
 }

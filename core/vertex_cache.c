@@ -40,6 +40,13 @@ tarn_view_vertex tarn_cached_view_vertex(const tarn_cached_vertex *vertex)
     return v;
 }
 
+/* The slot that still holds the vertex, or NULL once another took it over. */
+static tarn_cached_vertex *holding_slot(tarn_vertex_cache *cache, const tarn_cached_vertex *vertex)
+{
+    tarn_cached_vertex *slot = cache_slot(cache, vertex->index);
+    return (slot->state & TARN_CACHED_FILLED) && slot->index == vertex->index ? slot : NULL;
+}
+
 void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex,
                             tarn_screen_vertex *screen)
 {
@@ -50,10 +57,36 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
         vertex->screen_y = screen->y;
         vertex->inv_depth = screen->inv_depth;
         vertex->state |= TARN_CACHED_PROJECTED;
-        tarn_cached_vertex *slot = cache_slot(cache, vertex->index);
-        if ((slot->state & TARN_CACHED_FILLED) && slot->index == vertex->index) *slot = *vertex;
+        tarn_cached_vertex *slot = holding_slot(cache, vertex);
+        if (slot != NULL) {
+            slot->screen_x = vertex->screen_x;
+            slot->screen_y = vertex->screen_y;
+            slot->inv_depth = vertex->inv_depth;
+            slot->state |= TARN_CACHED_PROJECTED;
+        }
     }
     screen->x = vertex->screen_x;
     screen->y = vertex->screen_y;
     screen->inv_depth = vertex->inv_depth;
+}
+
+void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_view_vertex *v)
+{
+    const tarn_mesh *mesh = cache->mesh;
+    if (!(vertex->state & TARN_CACHED_SHADED)) {
+        tarn_vertex_shade(cache->view, cache->xform, mesh, vertex->index, v);
+        for (int c = 0; c < 3; c++) vertex->lit[c] = (uint16_t)v->lit[c];
+        vertex->fresnel = (uint16_t)v->fresnel;
+        vertex->state |= TARN_CACHED_SHADED;
+        tarn_cached_vertex *slot = holding_slot(cache, vertex);
+        if (slot != NULL) {
+            for (int c = 0; c < 3; c++) slot->lit[c] = vertex->lit[c];
+            slot->fresnel = vertex->fresnel;
+            slot->state |= TARN_CACHED_SHADED;
+        }
+        return;
+    }
+    for (int c = 0; c < 3; c++) v->lit[c] = vertex->lit[c];
+    v->fresnel = vertex->fresnel;
+    v->uv = tarn_vertex_uv(mesh, vertex->index);
 }

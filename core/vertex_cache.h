@@ -4,18 +4,19 @@
  * Most vertices are shared by several triangles (six, inside a grid), and
  * neighbouring clusters share their borders. Keyed by the vertex index, the cache
  * keeps each vertex's view position, clip outcode and, once needed, its screen
- * position, so a walk transforms and projects a vertex about once instead of once
- * per triangle. Direct-mapped: a colliding vertex simply replaces the older one.
+ * position and its shading, so a walk transforms, projects and lights a vertex
+ * about once instead of once per triangle. Direct-mapped: a colliding vertex simply replaces the older one.
  * It lives on the stack of the walk that uses it. */
 #ifndef TARN_VERTEX_CACHE_H
 #define TARN_VERTEX_CACHE_H
 
 #include "pipeline.h"
 
-#define TARN_VERTEX_CACHE_SLOTS 16u /* a power of two, 28 bytes each */
+#define TARN_VERTEX_CACHE_SLOTS 16u /* a power of two, 36 bytes each */
 
 #define TARN_CACHED_FILLED 1u    /* the slot holds vertex `index` */
 #define TARN_CACHED_PROJECTED 2u /* screen_x, screen_y and inv_depth are set */
+#define TARN_CACHED_SHADED 4u    /* lit and fresnel are set */
 
 typedef struct {
     uint16_t index;
@@ -24,6 +25,8 @@ typedef struct {
     tarn_q16 x, y, d;  /* view space */
     int32_t screen_x, screen_y;
     uint32_t inv_depth;
+    uint16_t lit[3];   /* tarn_vertex_shade's, Q8.8: always within 0..65280 */
+    uint16_t fresnel;  /* Q1.15, 0..32768 */
 } tarn_cached_vertex;
 
 typedef struct {
@@ -48,5 +51,10 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
 
 /* The view vertex (position only) of a cached vertex, ready for shading. */
 tarn_view_vertex tarn_cached_view_vertex(const tarn_cached_vertex *vertex);
+
+/* The vertex's shading (lit colour, fresnel, texture coordinates) into `v`, whose
+ * position is the vertex's; computed once and kept as tarn_cached_projection keeps
+ * the screen position. */
+void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_view_vertex *v);
 
 #endif
