@@ -2,7 +2,7 @@
  *
  * Usage:
  *     tarn_frame_config cfg = { 240, 240, tarn_quality_default(), time_ms };
- *     size_t need = tarn_frame_memory_bytes(&cfg);      0 means the config is invalid
+ *     size_t need = tarn_frame_memory_bytes(&cfg, &scene);   0 means the config is invalid
  *     static uint32_t mem[...];                          at least `need` bytes, 4-aligned
  *     tarn_render_frame(&scene, &cfg, mem, sizeof mem, my_sink, my_ctx);
  * The sink receives each finished tile, left to right, top to bottom.
@@ -118,8 +118,9 @@ int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config
  * ((max(width,height) + 2*guard band) << subpixel_bits must stay below 2^15 so that
  * edge functions fit 32 bits). Opaque scenes need tile_size^2 * (4 + depth_bits/8);
  * with water, the opaque buffers grow by the apron on every side and the tile
- * gains a second colour and depth buffer for the water pass. `scene` may be NULL
- * for an opaque-only budget. */
+ * gains a second colour and depth buffer for the water pass; cluster bins add 4
+ * bytes for each cluster of the scene's meshes (one for a mesh without clusters).
+ * `scene` may be NULL for an opaque-only budget without bins. */
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene);
 
 /* The 16-bit depth buffer holds near/d (Q1.30, 1..2^30) as a small float: a 4-bit
