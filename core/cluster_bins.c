@@ -79,12 +79,8 @@ static tarn_cluster_bin bin_run(tarn_vertex_cache *cache, const tarn_object *obj
     for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
         tarn_cached_vertex c[3];
-        unsigned outside_all = ~0u, outside_any = 0;
-        for (int k = 0; k < 3; k++) {
-            c[k] = tarn_cached_position(cache, index[k]);
-            outside_all &= c[k].outcode;
-            outside_any |= c[k].outcode;
-        }
+        unsigned outside_any;
+        const unsigned outside_all = tarn_cached_triangle(cache, index, c, &outside_any);
         if (outside_all) continue;
         if (outside_any & NEAR_PLANE_BIT) return bin_whole;
         tarn_screen_vertex screen[3];

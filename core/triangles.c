@@ -76,12 +76,8 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
     for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
         tarn_cached_vertex c[3];
-        unsigned outside_all = ~0u, outside_any = 0;
-        for (int k = 0; k < 3; k++) {
-            c[k] = tarn_cached_position(cache, index[k]);
-            outside_all &= c[k].outcode;
-            outside_any |= c[k].outcode;
-        }
+        unsigned outside_any;
+        const unsigned outside_all = tarn_cached_triangle(cache, index, c, &outside_any);
         if (outside_all) continue; /* wholly outside one plane */
         tarn_view_vertex v[3];
         for (int k = 0; k < 3; k++) v[k] = tarn_cached_view_vertex(&c[k]);

@@ -31,6 +31,19 @@ tarn_cached_vertex tarn_cached_position(tarn_vertex_cache *cache, uint16_t index
     return *slot;
 }
 
+unsigned tarn_cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3], tarn_cached_vertex c[3],
+                              unsigned *outside_any)
+{
+    unsigned all = ~0u, any = 0;
+    for (int k = 0; k < 3; k++) {
+        c[k] = tarn_cached_position(cache, index[k]);
+        all &= c[k].outcode;
+        any |= c[k].outcode;
+    }
+    *outside_any = any;
+    return all;
+}
+
 tarn_view_vertex tarn_cached_view_vertex(const tarn_cached_vertex *vertex)
 {
     tarn_view_vertex v = {0};
