@@ -27,7 +27,9 @@ TEST_LIBS := $(shell pkg-config --libs cmocka 2>/dev/null)
 CORE_SRC := $(wildcard core/*.c)
 HOST_SRC := $(filter-out host/main.c host/gpio_lines_gpiod%.c host/gpio_lines_none.c host/mcp2210_hidapi%.c,\
 	$(wildcard host/*.c)) $(GPIO_LINES_SRC) $(MCP2210_USB_SRC)
-TEST_SRC := $(wildcard tests/test_*.c)
+# test_gpio_lines_gpiod1.c emulates libgpiod 1.x at its calls: only with that backend
+TEST_SRC := $(filter-out $(if $(filter %gpiod1.c,$(GPIO_LINES_SRC)),,tests/test_gpio_lines_gpiod1.c),\
+	$(wildcard tests/test_*.c))
 TEST_SUPPORT_SRC := $(filter-out $(TEST_SRC),$(wildcard tests/*.c))
 
 CORE_OBJ := $(CORE_SRC:%.c=$(BUILD)/%.o)
