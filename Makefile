@@ -58,7 +58,8 @@ demo: deps
 # The whole suite: the emulated boards run (their streams are compared with the host
 # by tests/test_firmware.c), a plain build, then the same tests under ASan + UBSan,
 # then the check that core/ stays integer-only on a Cortex-M0, then the firmware's
-# sizes, stack and counter.
+# sizes, stack and counter, then the fuzz targets' seed corpora and a short run of
+# each (tests/fuzz/fuzz.mk).
 test: deps-test
 	@$(MAKE) --no-print-directory firmware-run BOARD=
 	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
@@ -67,6 +68,7 @@ test: deps-test
 	@TARN_BIN=build/release/tarn tests/check_water_cost.sh
 	@$(MAKE) --no-print-directory firmware-check BOARD=
 	@tests/check_firmware_link.sh
+	@$(MAKE) --no-print-directory fuzz-replay
 	@cat build/release/summary build/san/summary | \
 		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'
 
@@ -106,3 +108,6 @@ clean:
 
 # Firmware for the boards in boards/: make firmware [BOARD=name], make bench-target.
 include firmware/firmware.mk
+
+# Fuzzing with libFuzzer: make fuzz, make fuzz-replay.
+include tests/fuzz/fuzz.mk

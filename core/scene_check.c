@@ -42,7 +42,8 @@ static int water_valid(const tarn_water *w)
 
 static int mesh_valid(const tarn_mesh *m)
 {
-    if (m->triangle_count == 0) return 1;
+    /* the clusters even of a mesh without triangles: the walk follows their runs */
+    if (m->triangle_count == 0) return clusters_valid(m);
     if (m->positions == NULL || m->normals == NULL || m->indices == NULL) return 0;
     for (uint32_t i = 0; i < 3u * m->triangle_count; i++)
         if (m->indices[i] >= m->vertex_count) return 0;

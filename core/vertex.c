@@ -67,7 +67,7 @@ void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
 {
     object_to_view_matrix(view, object, xform);
     const tarn_water *water = object->material->water;
-    xform->fresnel = TARN_LINK_WATER && water != NULL && (TARN_LINK_WATER_FEATURES & TARN_WATER_FRESNEL) &&
+    xform->fresnel = TARN_LINK_WATER && water != NULL && (TARN_LINK_WATER_FEATURES & TARN_WATER_FRESNEL) != 0 &&
                      (water->features & TARN_WATER_FRESNEL);
     if (xform->fresnel) normal_to_view_matrix(view, object, xform);
     object_origin_in_view(view, object, xform);

@@ -23,6 +23,8 @@ if [ "${1:-demo}" = test ]; then
     want gcc-riscv64-unknown-elf command -v riscv64-unknown-elf-gcc
     want qemu-system-arm command -v qemu-system-arm
     want qemu-system-misc command -v qemu-system-riscv32
+    want clang command -v clang                          # make fuzz, make fuzz-replay
+    want libclang-rt-14-dev sh -c 'ls /usr/lib/llvm-14/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a' 
 fi
 [ -z "$need" ] && exit 0
 

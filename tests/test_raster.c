@@ -649,6 +649,22 @@ static void test_configs_out_of_range_are_rejected(void **state)
     size_t need = tarn_frame_memory_bytes(&config, NULL);
     void *memory = malloc(need);
     assert_int_equal(tarn_render_frame(&b->scene, &config, memory, need, NULL, NULL), TARN_ERR_SCENE);
+    /* a mesh without triangles whose cluster still runs over some (found by
+     * fuzz_core: the walk followed the run past the indices) */
+    b->indices[0] = 0;
+    tarn_mesh *mesh = (tarn_mesh *)b->scene.objects[0].mesh;
+    const tarn_cluster run = {{0, 0, 0}, TARN_Q16_ONE, 0, 5};
+    const uint16_t triangles = mesh->triangle_count;
+    mesh->triangle_count = 0;
+    mesh->clusters = &run;
+    mesh->cluster_count = 1;
+    free(memory);
+    need = tarn_frame_memory_bytes(&config, &b->scene);
+    memory = malloc(need);
+    assert_int_equal(tarn_render_frame(&b->scene, &config, memory, need, NULL, NULL), TARN_ERR_SCENE);
+    mesh->triangle_count = triangles;
+    mesh->clusters = NULL;
+    mesh->cluster_count = 0;
     free(memory);
     free(b);
 }
