@@ -22,7 +22,7 @@ HOST_PKGS := libpng jansson $(if $(GPIOD_VERSION),libgpiod) $(HIDAPI_PKG)
 HOST_CFLAGS := -std=c99 $(WARN) $(OPT) -D_POSIX_C_SOURCE=200809L -Icore -Ihost \
 	$(shell pkg-config --cflags $(HOST_PKGS) 2>/dev/null)
 HOST_LIBS := $(shell pkg-config --libs $(HOST_PKGS) 2>/dev/null) -lm -pthread
-TEST_LIBS := $(shell pkg-config --libs cmocka 2>/dev/null)
+TEST_LIBS := $(shell pkg-config --libs cmocka zlib 2>/dev/null)
 
 CORE_SRC := $(wildcard core/*.c)
 HOST_SRC := $(filter-out host/main.c host/gpio_lines_gpiod%.c host/gpio_lines_none.c host/mcp2210_hidapi%.c,\

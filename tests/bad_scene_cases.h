@@ -13,14 +13,22 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include "png_io.h"
 
 typedef enum {
-    BAD_TEXT = 0,     /* `text` as is */
-    BAD_PNG,          /* a valid width x height RGB PNG */
-    BAD_PNG_TRUNCATED /* the same, cut off half way */
+    BAD_TEXT = 0,      /* `text` as is */
+    BAD_PNG,           /* a valid width x height RGB PNG */
+    BAD_PNG_TRUNCATED, /* the same, cut off half way */
+    BAD_PNG_HEADER,    /* a PNG whose header claims width x height (0 or 65535 too), with an
+                          empty IDAT: the size must be refused before anything is
+                          allocated for the pixels */
+    BAD_DEEP_JSON,     /* `width` nested arrays */
+    BAD_SYMLINK,       /* a symbolic link to `text` */
+    BAD_DIRECTORY      /* a directory where a file should be */
 } bad_file_kind;
 
 typedef struct {
@@ -365,9 +373,75 @@ static const bad_scene_case BAD_SCENE_CASES[] = {
       ":5: bad face corner; expected v, v/vt, v//vn or v/vt/vn" },
     { "OBJ without faces", BAD_MESH_SCENE, BAD_OBJ(BAD_QUAD), "leaf.obj",
       ": no faces; a mesh needs at least one" },
+    /* hostile input: what an attacker or a broken tool would write */
+    { "JSON nested 60000 deep", NULL, { { "bad.json", BAD_DEEP_JSON, NULL, 60000, 0 } }, "bad.json",
+      ":1:2049: maximum parsing depth reached near '['" },
+    { "coordinate 1e308", BAD_CAMERA_SCENE("\"position\": [1e308, 2, 6], \"target\": [0, 0, 0], \"fov\": 60"),
+      { { 0 } }, "bad.json", ": camera.position[0]: expected a number, -32768 < v < 32768, got 1e+308" },
+    { "coordinate -1e308", BAD_CAMERA_SCENE("\"position\": [0, -1e308, 6], \"target\": [0, 0, 0], \"fov\": 60"),
+      { { 0 } }, "bad.json", ": camera.position[1]: expected a number, -32768 < v < 32768, got -1e+308" },
+    { "negative size", BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"box\", \"size\": [-1, 1, 1]")), { { 0 } },
+      "bad.json", ": objects[0].size[0]: expected a number > 0 and < 32768, got -1" },
+    { "texture 65535x65535", BAD_TEXTURE_SCENE, { { "tex.png", BAD_PNG_HEADER, NULL, 65535, 65535 } }, "tex.png",
+      ": texture is 65535x65535; expected power-of-two sides up to 1024" },
+    { "texture 0x0", BAD_TEXTURE_SCENE, { { "tex.png", BAD_PNG_HEADER, NULL, 0, 0 } }, "tex.png", ": bad PNG: Invalid IHDR data" },
+    { "heightfield 65535x65535", BAD_HEIGHTFIELD_SCENE, { { "pit.png", BAD_PNG_HEADER, NULL, 65535, 65535 } },
+      "pit.png", ": heightfield image is 65535x65535; expected sides 2..256" },
+    { "texture a directory", BAD_TEXTURE_SCENE, { { "tex.png", BAD_DIRECTORY, NULL, 0, 0 } }, "tex.png", ": cannot read: Is a directory" },
+    { "texture a dangling link", BAD_TEXTURE_SCENE, { { "tex.png", BAD_SYMLINK, "nowhere.png", 0, 0 } },
+      "tex.png", ": cannot open: No such file or directory" },
+    { "scene a directory", NULL, { { "bad.json", BAD_DIRECTORY, NULL, 0, 0 } }, "bad.json", ": is a directory, not a scene file" },
+    { "mesh a link to itself", BAD_MESH_SCENE, { { "leaf.obj", BAD_SYMLINK, "leaf.obj", 0, 0 } }, "leaf.obj",
+      ": cannot open: Too many levels of symbolic links" },
 };
 
 #define BAD_SCENE_CASE_COUNT (sizeof BAD_SCENE_CASES / sizeof BAD_SCENE_CASES[0])
+
+static inline void bad_put_u32_be(uint8_t *out, uint32_t v)
+{
+    out[0] = (uint8_t)(v >> 24);
+    out[1] = (uint8_t)(v >> 16);
+    out[2] = (uint8_t)(v >> 8);
+    out[3] = (uint8_t)v;
+}
+
+/* A chunk of no data: length, type, CRC. */
+static inline void bad_put_empty_chunk(uint8_t *out, const char *type)
+{
+    bad_put_u32_be(out, 0);
+    memcpy(out + 4, type, 4);
+    bad_put_u32_be(out + 8, (uint32_t)crc32(0, out + 4, 4));
+}
+
+/* The PNG signature, an IHDR chunk claiming width x height RGB8, an empty IDAT and
+ * IEND. */
+static inline int bad_write_png_header(const char *path, uint32_t width, uint32_t height)
+{
+    uint8_t png[8 + 25 + 12 + 12] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    uint8_t *ihdr = png + 8;
+    bad_put_u32_be(ihdr, 13);
+    memcpy(ihdr + 4, "IHDR", 4);
+    bad_put_u32_be(ihdr + 8, width);
+    bad_put_u32_be(ihdr + 12, height);
+    ihdr[16] = 8; /* bit depth */
+    ihdr[17] = 2; /* RGB */
+    bad_put_u32_be(ihdr + 21, (uint32_t)crc32(0, ihdr + 4, 17));
+    bad_put_empty_chunk(ihdr + 25, "IDAT");
+    bad_put_empty_chunk(ihdr + 37, "IEND");
+    FILE *f = fopen(path, "wb");
+    if (!f) return -1;
+    int ok = fwrite(png, 1, sizeof png, f) == sizeof png;
+    return (fclose(f) == 0 && ok) ? 0 : -1;
+}
+
+static inline int bad_write_deep_json(const char *path, unsigned depth)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) return -1;
+    for (unsigned k = 0; k < depth; k++) fputc('[', f);
+    for (unsigned k = 0; k < depth; k++) fputc(']', f);
+    return fclose(f);
+}
 
 static inline int bad_write_text(const char *path, const char *text)
 {
@@ -383,6 +457,10 @@ static inline int bad_write_file(const char *dir, const bad_file *file)
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", dir, file->name);
     if (file->kind == BAD_TEXT) return bad_write_text(path, file->text);
+    if (file->kind == BAD_PNG_HEADER) return bad_write_png_header(path, file->width, file->height);
+    if (file->kind == BAD_DEEP_JSON) return bad_write_deep_json(path, file->width);
+    if (file->kind == BAD_SYMLINK) return symlink(file->text, path);
+    if (file->kind == BAD_DIRECTORY) return mkdir(path, 0700);
     size_t bytes = (size_t)file->width * file->height * 3;
     uint8_t *rgb = malloc(bytes);
     if (!rgb) return -1;
@@ -420,7 +498,7 @@ static inline void bad_case_remove_dir(const char *dir)
         if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
         char path[1024];
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        unlink(path);
+        if (unlink(path) != 0) rmdir(path); /* a case's directory */
     }
     if (d) closedir(d);
     rmdir(dir);

@@ -134,10 +134,48 @@ static void test_cli_bad_inputs(void **state)
     assert_int_equal(failures, 0);
 }
 
+/* Outputs that cannot be written: into a directory that does not exist, onto a
+ * directory, for `render` and `bake`. Exit status 2, one line that starts with the
+ * output path, and nothing left behind: no temporary file beside the target. */
+static void test_cli_unwritable_outputs(void **state)
+{
+    (void)state;
+    const char *tarn = getenv("TARN_BIN");
+    if (!tarn || access(tarn, X_OK) != 0) skip();
+    char dir[] = "/tmp/tarn_cli_out_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    char missing_png[1100], missing_c[1100], a_directory[1100];
+    snprintf(missing_png, sizeof missing_png, "%s/no-such-dir/out.png", dir);
+    snprintf(missing_c, sizeof missing_c, "%s/no-such-dir/out.c", dir);
+    snprintf(a_directory, sizeof a_directory, "%s/taken.png", dir);
+    assert_int_equal(mkdir(a_directory, 0700), 0);
+    const char *const cases[][2] = {{"render", missing_png}, {"bake", missing_c}, {"render", a_directory}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char *const argv[] = {(char *)tarn, (char *)cases[k][0], "scenes/effects/none.json", "-o",
+                              (char *)cases[k][1], NULL};
+        run_result r;
+        run(argv, &r);
+        char start[1200];
+        snprintf(start, sizeof start, "tarn: %s: cannot ", cases[k][1]);
+        const char *newline = strchr(r.stderr_text, '\n');
+        if (r.status != TARN_EXIT_BAD_INPUT || strncmp(r.stderr_text, start, strlen(start)) != 0 ||
+            newline == NULL || newline[1] != '\0')
+            fail_msg("%s -o %s: status %d, stderr %s", cases[k][0], cases[k][1], r.status, r.stderr_text);
+    }
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    for (struct dirent *e; (e = readdir(d)) != NULL;)
+        if (e->d_name[0] != '.' && strcmp(e->d_name, "taken.png") != 0) fail_msg("%s was left behind", e->d_name);
+    closedir(d);
+    rmdir(a_directory);
+    rmdir(dir);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cli_bad_inputs),
+        cmocka_unit_test(test_cli_unwritable_outputs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
