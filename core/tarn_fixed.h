@@ -32,17 +32,13 @@ static inline int32_t tarn_clamp_i32(int32_t v, int32_t lo, int32_t hi)
     return v < lo ? lo : (v > hi ? hi : v);
 }
 
-/* Arithmetic shift right of a signed 64-bit value, rounding to nearest (ties up).
- * Written with division-free operations so the result does not depend on how a
- * compiler treats >> of negative values. */
-static inline int64_t tarn_round_shift_i64(int64_t v, unsigned shift)
-{
-    if (shift == 0) return v;
-    int64_t half = (int64_t)1 << (shift - 1);
-    int64_t biased = v + half;
-    /* floor division by 2^shift, valid for negative values too */
-    return biased >= 0 ? (biased >> shift) : -((-biased + ((int64_t)1 << shift) - 1) >> shift);
-}
+/* Arithmetic shift right of a signed 64-bit value, rounding to nearest (ties up),
+ * for shift < 64, over the whole int64_t range. Written with division-free
+ * operations so the result does not depend on how a compiler treats >> of negative
+ * values. A function of its own (core/fixed.c) rather than inline: it runs per
+ * vertex, not per pixel, and inlined into every caller it cost the Cortex-M0 image
+ * half a kilobyte. */
+int64_t tarn_round_shift_i64(int64_t v, unsigned shift);
 
 /* Q16.16 product, rounded and saturated. Uses a 64-bit multiply: per vertex or
  * per frame only, never per pixel (Cortex-M0 has no 32x32->64 multiplier). */
@@ -67,6 +63,7 @@ static inline tarn_q16 tarn_q16_from_int(int32_t v)
  * in C99): the same on every compiler. s < 32. */
 static inline int32_t tarn_floor_shift(int32_t v, unsigned s)
 {
+    if (s == 0u) return v; /* below, INT32_MIN's magnitude would not fit an int32_t */
     return v >= 0 ? (v >> s) : -(int32_t)((((uint32_t)0 - (uint32_t)v) + ((1u << s) - 1u)) >> s);
 }
 
