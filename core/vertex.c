@@ -118,7 +118,11 @@ static int32_t fresnel_q15(const tarn_object_xform *xform, const tarn_vec3 *norm
     for (int i = 0; i < 3; i++) {
         int64_t n_view = 0;
         for (int k = 0; k < 3; k++) n_view += xform->normal_to_view[i][k] * n_object[k];
-        n_dot_p += tarn_round_shift_i64(n_view, 30) * position[i];
+        /* a unit normal stays within +-1; one longer than 2 (the scene's normals are
+         * unit vectors by contract) is cut there, so the sum stays in 64 bits */
+        const int64_t component = tarn_round_shift_i64(n_view, 30);
+        n_dot_p += (component > 2 * 65536 ? 2 * 65536 : (component < -2 * 65536 ? -2 * 65536 : component)) *
+                   position[i];
         length2 += (uint64_t)(position[i] * position[i]);
     }
     int64_t length = (int64_t)tarn_isqrt_u64(length2); /* Q16.16 */
