@@ -186,7 +186,9 @@ $(FW_DIR)/obj/%.o: %.S | fw-toolchain
 	$(FW_CC) $(BOARD_CPU) -c -o $@ $<
 
 # A link that overflows a memory region names the region and the bytes over; the
-# note after it says what to change.
+# note after it says what to change. A linked image whose deepest call chain
+# (firmware/stack_bound.sh: GCC's call graphs, no recursion allowed) needs more
+# stack than the board reserves is refused too.
 $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
 	@if ! $(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LDSCRIPT) -Lboards/common \
 		-Wl,--gc-sections -Wl,-Map=$(FW_DIR)/firmware.map \
@@ -202,6 +204,12 @@ $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
 			echo "tarn: $(BOARD)'s flash cannot hold $(FW_SCENE): use smaller textures or fewer mesh segments (the header of $(FW_DIR)/scene.c counts the bytes)" >&2; fi; \
 		rm -f $@; exit 1; fi
 	@cat $(FW_DIR)/link.err >&2; rm -f $(FW_DIR)/link.err
+	@bound=$$(firmware/stack_bound.sh $(FW_CROSS) $(FW_DIR)/obj $(BOARD_STACK_ENTRY) 2>&1 | sed -n 's/^stack_bytes=//p'); \
+	if [ -z "$$bound" ] || [ "$$bound" -gt $(BOARD_STACK_BYTES) ]; then \
+		firmware/stack_bound.sh $(FW_CROSS) $(FW_DIR)/obj $(BOARD_STACK_ENTRY) >&2; \
+		echo "tarn: $(BOARD)'s deepest call chain needs $${bound:-an unknown number of} bytes of stack;" \
+			"it reserves $(BOARD_STACK_BYTES) (BOARD_STACK_BYTES in boards/$(BOARD)/board.mk)" >&2; \
+		rm -f $@; exit 1; fi
 
 # The host tools (firmware/tools/): the boot2 checksum and the UF2 writer.
 $(FW_TOOLS)/%: firmware/tools/%.c

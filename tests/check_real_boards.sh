@@ -6,6 +6,8 @@
 # - A scene too large for the board's RAM: the STM32F411 (128 KB) and the pond at
 #   --tile 64, whose renderer alone needs 165,268 bytes (tarn memory). The link must fail, say by
 #   how many bytes RAM overflowed and what to change, and leave no firmware.elf.
+# - A stack reserve smaller than the deepest call chain (firmware/stack_bound.sh):
+#   the build must fail, saying how many bytes the chain needs.
 # - A missing cross compiler: the build must stop before anything else, naming the
 #   compiler and the package that has it.
 #
@@ -30,6 +32,18 @@ if [ $status -ne 0 ] && [ -n "$overflow" ] && [ -n "$note" ] && [ ! -e "$dir/fir
 else
     fail "$board with the pond at --tile 64 should fail to link, saying by how much and what to change (status $status):"
     printf '%s\n' "$out" | grep -v "gcc -std" | tail -5
+fi
+
+# a stack reserve below the deepest call chain: refused at build time, no image
+rm -rf "$dir"
+out=$(make --no-print-directory firmware BOARD=$board FW_DIR=$dir BOARD_STACK_BYTES=2048 2>&1)
+status=$?
+if [ $status -ne 0 ] && [ ! -e "$dir/firmware.elf" ] && printf '%s\n' "$out" |
+    grep -qE "^tarn: $board's deepest call chain needs [0-9]+ bytes of stack; it reserves 2048 \(BOARD_STACK_BYTES"; then
+    pass
+else
+    fail "$board with a 2 KB stack should fail to build, naming the chain's bytes (status $status)"
+    printf '%s\n' "$out" | tail -3
 fi
 
 out=$(make --no-print-directory firmware BOARD=$board FW_DIR=$dir FW_CROSS=no-such-arm-none-eabi- 2>&1)

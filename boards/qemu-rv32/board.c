@@ -25,11 +25,18 @@ int board_init(void)
     return report < 0;
 }
 
+/* Polls of a full transmit FIFO before the write gives up: the FIFO drains a byte in
+ * a few hundred instructions at most, so a UART that stays full this long is
+ * stuck, and the frame ends with an error instead of hanging. */
+#define UART_FULL_POLLS_MAX 1000000u
+
 int board_write(const void *bytes, size_t count)
 {
     const uint8_t *p = bytes;
     for (size_t i = 0; i < count; i++) {
-        while (UART0_TXDATA & UART_TX_FULL) {}
+        uint32_t polls = 0;
+        while (UART0_TXDATA & UART_TX_FULL)
+            if (++polls == UART_FULL_POLLS_MAX) return -1;
         UART0_TXDATA = p[i];
     }
     return 0;
