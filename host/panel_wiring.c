@@ -95,6 +95,10 @@ int tarn_panel_wiring_spidev_ioctl(void *user, int fd, unsigned long request, vo
         return -1;
     }
     const struct spi_ioc_transfer *t = arg;
+    if (w->vanish_after_messages != 0 && w->ioctls > w->vanish_after_messages) {
+        errno = ENODEV;
+        return -1;
+    }
     if (t->len > w->spidev_bufsiz) {
         errno = EMSGSIZE;
         return -1;

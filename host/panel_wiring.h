@@ -43,6 +43,9 @@ struct tarn_panel_wiring {
     uint32_t slowest_pixel_hz, fastest_command_hz; /* of transfers longer than 16 bytes; of command bytes */
     uint32_t fastest_parameter_hz;  /* of data transfers of 16 bytes or fewer (CASET, MADCTL...) */
     int spi_mode;                   /* what SPI_IOC_WR_MODE asked for; -1 before */
+    uint64_t vanish_after_messages; /* fault: SPI_IOC_MESSAGE fails with ENODEV once this
+                                       many have gone through (0: never), as when the
+                                       device is unbound mid-frame */
     int failed;                     /* a panel call failed */
 };
 

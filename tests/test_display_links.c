@@ -359,6 +359,41 @@ static void test_mcp2210_unplugged_mid_frame(void **state)
 }
 
 /* Straight through the seam: the answers the datasheet gives. */
+/* spidev's device gone in the middle of a frame: the frame stops with one line
+ * naming the device and what to check. */
+static void test_spidev_vanishes_mid_frame(void **state)
+{
+    (void)state;
+    tarn_panel panel = tarn_panel_preset(TARN_PANEL_ST7789_240X240, 0);
+    frame f = render(240, 240, 0);
+    link_under_test *l = open_link(TARN_DISPLAY_SPIDEV, panel, TARN_SEND_TILES, 16);
+    l->display.wiring.vanish_after_messages = l->display.wiring.ioctls + 100;
+    assert_int_equal(tarn_frame_sender_send(&l->sender, f.rgb), TARN_ERR_SINK);
+    const char *message = tarn_display_failure(&l->display);
+    assert_non_null(strstr(message, "spidev:emulated: a transfer of"));
+    assert_non_null(strstr(message, "No such device (was the device removed?)"));
+    assert_null(strchr(message, '\n'));
+    close_link(l);
+    free(f.rgb);
+}
+
+/* An MCP2210 that answers busy for ever: the frame stops after a bounded number of
+ * tries, with one line, instead of hanging. */
+static void test_mcp2210_stalled_ends_the_frame(void **state)
+{
+    (void)state;
+    tarn_panel panel = tarn_panel_preset(TARN_PANEL_ST7789_240X240, 0);
+    frame f = render(240, 240, 0);
+    link_under_test *l = open_link(TARN_DISPLAY_MCP2210, panel, TARN_SEND_BANDS, 32);
+    l->display.mcp2210_emulator.busy_every = 1;
+    assert_int_equal(tarn_frame_sender_send(&l->sender, f.rgb), TARN_ERR_SINK);
+    const char *message = tarn_display_failure(&l->display);
+    assert_non_null(strstr(message, "stayed busy (0xF8)"));
+    assert_null(strchr(message, '\n'));
+    close_link(l);
+    free(f.rgb);
+}
+
 static void test_mcp2210_emulator_answers_as_the_datasheet(void **state)
 {
     (void)state;
@@ -459,6 +494,8 @@ int main(void)
         cmocka_unit_test(test_mcp2210_sends_only_changed_tiles),
         cmocka_unit_test(test_mcp2210_recovers_from_busy_replies),
         cmocka_unit_test(test_mcp2210_unplugged_mid_frame),
+        cmocka_unit_test(test_spidev_vanishes_mid_frame),
+        cmocka_unit_test(test_mcp2210_stalled_ends_the_frame),
         cmocka_unit_test(test_mcp2210_emulator_answers_as_the_datasheet),
         cmocka_unit_test(test_spidev_real_error_paths),
         cmocka_unit_test(test_gpio_real_error_paths),
