@@ -76,8 +76,12 @@ int32_t tarn_water_reach_pixels(const tarn_water *water, uint16_t frame_width)
 {
     if (water == NULL || !(water->features & TARN_WATER_REFRACTION)) return 0;
     /* refraction (Q16) * width * normal_xy_max (Q16): pixels in Q32, rounded up; one
-     * more for the rounding of the offset to a whole pixel */
-    uint64_t q32 = (uint64_t)(uint32_t)water->refraction * frame_width * (uint32_t)water->normal_xy_max;
+     * more for the rounding of the offset to a whole pixel. Both factors are cut to
+     * [0, 1] first, their documented range: a malformed scene reaches at most the
+     * frame's width instead of wrapping around to a small reach. */
+    const uint64_t refraction = (uint64_t)tarn_clamp_i32(water->refraction, 0, TARN_Q16_ONE);
+    const uint64_t xy_max = (uint64_t)tarn_clamp_i32(water->normal_xy_max, 0, TARN_Q16_ONE);
+    const uint64_t q32 = refraction * frame_width * xy_max;
     return (int32_t)((q32 + 0xFFFFFFFFu) >> 32) + 1;
 }
 

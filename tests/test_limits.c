@@ -1,14 +1,18 @@
-/* test_fixed_limits.c: every helper of core/tarn_fixed.h at its limits: zero, one,
- * the largest and smallest values of its types and the values just past each
- * boundary it draws. `make test` runs this file under UndefinedBehaviorSanitizer
- * too, so an overflow at a limit fails as surely as a wrong value. */
+/* test_fixed_limits.c: every helper of core/tarn_fixed.h, and the public functions
+ * of core/ that no other suite drives to their limits, at zero, one, the largest and
+ * smallest values of their types and the values just past each boundary they draw.
+ * `make test` runs this file under UndefinedBehaviorSanitizer too, so an overflow at
+ * a limit fails as surely as a wrong value. (tests/test_math.c does the same for
+ * tarn_math.h's functions; test_raster.c for the frame's config limits.) */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <cmocka.h>
 
-#include "tarn_fixed.h"
+#include "tarn_math.h"
+#include "tarn_panel.h"
+#include "tarn_render.h"
 
 static void saturation_and_clamping(void **state)
 {
@@ -105,6 +109,61 @@ static void products(void **state)
     assert_true(tarn_mul_u32_wide(0x10000u, 0x10000u) == ((uint64_t)1 << 32));
 }
 
+static void divisions_used_once(void **state)
+{
+    (void)state;
+    assert_true(tarn_divide_once_i64(0, 7) == 0);
+    assert_true(tarn_divide_once_i64(-7, 7) == -1);
+    assert_true(tarn_divide_once_i64(-6, 7) == 0); /* toward zero, as C's / */
+    assert_true(tarn_divide_once_i64(INT64_MAX, 1) == INT64_MAX);
+    assert_true(tarn_divide_once_i64(INT64_MIN + 1, 1) == INT64_MIN + 1);
+    assert_true(tarn_divide_once_i64(INT64_MAX, UINT32_MAX) == INT64_MAX / UINT32_MAX);
+    assert_true(tarn_divide_once_i64(INT64_MIN + 1, UINT32_MAX) == (INT64_MIN + 1) / (int64_t)UINT32_MAX);
+    assert_true(tarn_divide_once_i64(5, 0) == 5); /* a divisor of 0 acts as 1 */
+    const tarn_divisor three = tarn_divisor_of(3);
+    assert_true(tarn_divide_trunc_i64(-10, &three) == -3);
+    assert_true(tarn_divide_trunc_i64(10, &three) == 3);
+}
+
+static void frame_helpers(void **state)
+{
+    (void)state;
+    tarn_frame_config config = {1, 1, tarn_quality_default(), 0};
+    assert_int_equal(tarn_guard_band_pixels(&config), 16);
+    config.width = TARN_FRAME_SIZE_MAX;
+    assert_int_equal(tarn_guard_band_pixels(&config), TARN_FRAME_SIZE_MAX / 4 + 16);
+    config.height = TARN_FRAME_SIZE_MAX;
+    config.width = 1;
+    assert_int_equal(tarn_guard_band_pixels(&config), TARN_FRAME_SIZE_MAX / 4 + 16);
+    for (int status = TARN_OK; status <= TARN_ERR_SINK; status++) {
+        assert_non_null(tarn_status_text((tarn_status)status));
+        assert_string_not_equal(tarn_status_text((tarn_status)status), "unknown status");
+    }
+    assert_string_equal(tarn_status_text((tarn_status)99), "unknown status");
+    tarn_panel panel = tarn_panel_preset(TARN_PANEL_ILI9341_320X240, 0);
+    assert_int_equal(tarn_panel_band_bytes(&panel, 64), 2u * 320u * 64u);
+    assert_int_equal(tarn_panel_band_bytes(NULL, 64), 0);
+}
+
+static void refraction_reach(void **state)
+{
+    (void)state;
+    tarn_water water = {0};
+    assert_int_equal(tarn_water_reach_pixels(NULL, 240), 0);
+    assert_int_equal(tarn_water_reach_pixels(&water, 240), 0); /* no refraction */
+    water.features = TARN_WATER_REFRACTION;
+    assert_int_equal(tarn_water_reach_pixels(&water, 240), 1); /* only the rounding */
+    water.refraction = TARN_Q16_ONE;
+    water.normal_xy_max = TARN_Q16_ONE;
+    assert_int_equal(tarn_water_reach_pixels(&water, TARN_FRAME_SIZE_MAX), TARN_FRAME_SIZE_MAX + 1);
+    water.refraction = INT32_MAX; /* past the range: the same as 1 */
+    water.normal_xy_max = INT32_MAX;
+    assert_int_equal(tarn_water_reach_pixels(&water, TARN_FRAME_SIZE_MAX), TARN_FRAME_SIZE_MAX + 1);
+    water.refraction = INT32_MIN; /* below it: the same as 0 */
+    assert_int_equal(tarn_water_reach_pixels(&water, TARN_FRAME_SIZE_MAX), 1);
+    assert_int_equal(tarn_water_reach_pixels(&water, 0), 1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -113,6 +172,9 @@ int main(void)
         cmocka_unit_test(q16_arithmetic),
         cmocka_unit_test(bits),
         cmocka_unit_test(products),
+        cmocka_unit_test(divisions_used_once),
+        cmocka_unit_test(frame_helpers),
+        cmocka_unit_test(refraction_reach),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
