@@ -731,6 +731,14 @@ static json_t *parse_json(const char *path, tarn_error *err)
         tarn_fail(err, "%s: is a directory, not a scene file", path);
         return NULL;
     }
+    /* the demo's scenes take 3 KB; a file this large is not a scene, and parsing it
+     * whole would take memory in proportion */
+    if (info.st_size > (off_t)TARN_SCENE_FILE_BYTES_MAX) {
+        fclose(file);
+        tarn_fail(err, "%s: is %lld bytes; a scene file holds at most %u", path, (long long)info.st_size,
+                  TARN_SCENE_FILE_BYTES_MAX);
+        return NULL;
+    }
     json_error_t error;
     json_t *root = json_loadf(file, JSON_REJECT_DUPLICATES, &error);
     fclose(file);

@@ -59,6 +59,9 @@ typedef struct {
 } tarn_loaded_scene;
 
 /* 0, or -1 with `err` set and `out` left empty (nothing to free). */
+/* The largest scene file the loader parses (meshes and images are files of their own). */
+#define TARN_SCENE_FILE_BYTES_MAX (4u * 1024u * 1024u)
+
 int tarn_scene_load(const char *path, tarn_loaded_scene *out, tarn_error *err);
 
 /* Frees everything the scene owns; safe on an emptied or zeroed scene. */

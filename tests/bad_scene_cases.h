@@ -28,6 +28,7 @@ typedef enum {
                           allocated for the pixels */
     BAD_DEEP_JSON,     /* `width` nested arrays */
     BAD_SYMLINK,       /* a symbolic link to `text` */
+    BAD_OVERSIZED,     /* a file of `width` MB (zeros, sparse) */
     BAD_DIRECTORY      /* a directory where a file should be */
 } bad_file_kind;
 
@@ -390,6 +391,8 @@ static const bad_scene_case BAD_SCENE_CASES[] = {
     { "texture a directory", BAD_TEXTURE_SCENE, { { "tex.png", BAD_DIRECTORY, NULL, 0, 0 } }, "tex.png", ": cannot read: Is a directory" },
     { "texture a dangling link", BAD_TEXTURE_SCENE, { { "tex.png", BAD_SYMLINK, "nowhere.png", 0, 0 } },
       "tex.png", ": cannot open: No such file or directory" },
+    { "scene file of 5 MB", NULL, { { "bad.json", BAD_OVERSIZED, NULL, 5, 0 } }, "bad.json",
+      ": is 5242880 bytes; a scene file holds at most 4194304" },
     { "scene a directory", NULL, { { "bad.json", BAD_DIRECTORY, NULL, 0, 0 } }, "bad.json", ": is a directory, not a scene file" },
     { "mesh a link to itself", BAD_MESH_SCENE, { { "leaf.obj", BAD_SYMLINK, "leaf.obj", 0, 0 } }, "leaf.obj",
       ": cannot open: Too many levels of symbolic links" },
@@ -460,6 +463,8 @@ static inline int bad_write_file(const char *dir, const bad_file *file)
     if (file->kind == BAD_PNG_HEADER) return bad_write_png_header(path, file->width, file->height);
     if (file->kind == BAD_DEEP_JSON) return bad_write_deep_json(path, file->width);
     if (file->kind == BAD_SYMLINK) return symlink(file->text, path);
+    if (file->kind == BAD_OVERSIZED) /* sparse: no disk is spent on it */
+        return bad_write_text(path, "") != 0 ? -1 : truncate(path, (off_t)file->width << 20);
     if (file->kind == BAD_DIRECTORY) return mkdir(path, 0700);
     size_t bytes = (size_t)file->width * file->height * 3;
     uint8_t *rgb = malloc(bytes);
