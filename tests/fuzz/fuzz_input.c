@@ -10,6 +10,22 @@
 
 static char scratch[PATH_MAX];
 
+/* The scratch directory holds only what the targets write (a handful of names) and
+ * the two links; all of it goes when the fuzzer exits. */
+static void remove_scratch(void)
+{
+    static const char *const names[] = {"s/scene.json", "s/baked.c", "s/baked.h", "s/baked_link.h", "mesh.obj",
+                                        "texture.png", "s/assets", "assets"};
+    char path[PATH_MAX + 32];
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        snprintf(path, sizeof path, "%s/%s", scratch, names[i]);
+        unlink(path);
+    }
+    snprintf(path, sizeof path, "%s/s", scratch);
+    rmdir(path);
+    rmdir(scratch);
+}
+
 static void make_scratch(void)
 {
     char assets[PATH_MAX], link_path[PATH_MAX + 16];
@@ -33,6 +49,7 @@ static void make_scratch(void)
             abort();
         }
     }
+    atexit(remove_scratch);
 }
 
 const char *fuzz_path(const char *name)
