@@ -171,11 +171,56 @@ static void test_cli_unwritable_outputs(void **state)
     rmdir(dir);
 }
 
+/* A texture its reader may not read. Root reads everything, so as root the binary
+ * runs as nobody (setpriv, from util-linux) over a scene in a directory nobody may
+ * enter. Exit status 2, the one line, no output. */
+static void test_cli_unreadable_texture(void **state)
+{
+    (void)state;
+    const char *tarn = getenv("TARN_BIN");
+    if (!tarn || access(tarn, X_OK) != 0) skip();
+    char dir[] = "/tmp/tarn_cli_perm_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    assert_int_equal(chmod(dir, 0777), 0);
+    char scene[1100], texture[1100], out[1100], binary[1100], expected[1400];
+    snprintf(scene, sizeof scene, "%s/bad.json", dir);
+    snprintf(texture, sizeof texture, "%s/tex.png", dir);
+    snprintf(out, sizeof out, "%s/out.png", dir);
+    /* a copy nobody may run, whatever the permissions of the checkout's folders */
+    snprintf(binary, sizeof binary, "%s/tarn", dir);
+    char copy[2400];
+    snprintf(copy, sizeof copy, "cp '%s' '%s' && chmod 755 '%s'", tarn, binary, binary);
+    assert_int_equal(system(copy), 0);
+    assert_int_equal(bad_write_text(scene, BAD_TEXTURE_SCENE), 0);
+    const bad_file png = {"tex.png", BAD_PNG, NULL, 4, 4};
+    assert_int_equal(bad_write_file(dir, &png), 0);
+    assert_int_equal(chmod(scene, 0644), 0);
+    assert_int_equal(chmod(texture, 0), 0);
+    snprintf(expected, sizeof expected, "tarn: %s: cannot open: Permission denied\n", texture);
+    run_result r;
+    if (geteuid() == 0) {
+        char *const argv[] = {"/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", binary,
+                              "render", scene, "-o", out, NULL};
+        run(argv, &r);
+    } else {
+        char *const argv[] = {binary, "render", scene, "-o", out, NULL};
+        run(argv, &r);
+    }
+    assert_int_equal(r.status, TARN_EXIT_BAD_INPUT);
+    assert_string_equal(r.stderr_text, expected);
+    assert_int_not_equal(access(out, F_OK), 0);
+    unlink(texture);
+    unlink(scene);
+    unlink(binary);
+    rmdir(dir);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cli_bad_inputs),
         cmocka_unit_test(test_cli_unwritable_outputs),
+        cmocka_unit_test(test_cli_unreadable_texture),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
