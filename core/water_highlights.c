@@ -7,9 +7,13 @@
 /* max(0, N.h)^power, Q1.15. */
 static uint32_t specular_term(const tarn_water_context *w, const tarn_water_normal *n)
 {
-    int32_t dot = (n->x * w->half_vector[0] + n->y * w->half_vector[1] + n->z * w->half_vector[2]) >> 15;
+    /* each product is at most 2^30 (both vectors' components within +-1), their sum
+     * can pass 2^31 when h is not a unit vector: summed in 64 bits, adds only */
+    const int64_t dot = (int64_t)(n->x * w->half_vector[0]) + (int64_t)(n->y * w->half_vector[1]) +
+                        (int64_t)(n->z * w->half_vector[2]);
     if (dot <= 0) return 0u;
-    uint32_t base = (uint32_t)(dot > Q15_ONE ? Q15_ONE : dot), result = Q15_ONE;
+    const uint64_t cosine = (uint64_t)dot >> 15;
+    uint32_t base = (uint32_t)(cosine > Q15_ONE ? Q15_ONE : cosine), result = Q15_ONE;
     for (unsigned power = w->water->specular_power; power != 0u; power >>= 1) {
         if (power & 1u) result = (result * base) >> 15;
         base = (base * base) >> 15;
@@ -19,7 +23,9 @@ static uint32_t specular_term(const tarn_water_context *w, const tarn_water_norm
 
 void tarn_water_specular(const tarn_water_context *w, const tarn_water_normal *n, uint32_t colour[3])
 {
-    const uint32_t amount = (specular_term(w, n) * ((uint32_t)w->water->specular >> 2)) >> 15; /* Q2.14 */
+    /* the intensity cut to its documented 0..4, which keeps every product in 32 bits */
+    const uint32_t intensity = (uint32_t)tarn_clamp_i32(w->water->specular, 0, 4 * 65536) >> 2;
+    const uint32_t amount = (specular_term(w, n) * intensity) >> 15; /* Q2.14 */
     for (int c = 0; c < 3; c++) colour[c] += (w->light_q8[c] * (amount >> 2)) >> 12;
 }
 

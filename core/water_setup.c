@@ -39,7 +39,9 @@ static void half_vector(const tarn_view *view, const tarn_object *object, int32_
     for (int k = 0; k < 3; k++) {
         int64_t along = 0;
         for (int r = 0; r < 3; r++) along += h[r] * object->rotation[r][axis_of[k]]; /* Q32 */
-        out[k] = length > 0 ? (int32_t)(tarn_divide_trunc_i64(along, &by_length) / 2) : (k == 2 ? Q15_ONE : 0);
+        /* within +-1 for an orthonormal rotation; cut there for one that is not */
+        const int64_t component = length > 0 ? tarn_divide_trunc_i64(along, &by_length) / 2 : (k == 2 ? Q15_ONE : 0);
+        out[k] = (int32_t)(component > Q15_ONE ? Q15_ONE : (component < -Q15_ONE ? -Q15_ONE : component));
     }
 }
 
