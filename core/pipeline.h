@@ -61,6 +61,8 @@ void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *objec
                           tarn_view_vertex *out);
 void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
                        const tarn_mesh *mesh, uint16_t index, tarn_view_vertex *out);
+/* The vector with each component cut to [-2, 2] (Q16.16): unit vectors unchanged. */
+tarn_vec3 tarn_unit_vector_bounded(const tarn_vec3 *v);
 /* The vertex's texture coordinates, (0, 0) for a mesh without them. */
 tarn_uv tarn_vertex_uv(const tarn_mesh *mesh, uint16_t index);
 

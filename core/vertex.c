@@ -118,8 +118,8 @@ static int32_t fresnel_q15(const tarn_object_xform *xform, const tarn_vec3 *norm
     for (int i = 0; i < 3; i++) {
         int64_t n_view = 0;
         for (int k = 0; k < 3; k++) n_view += xform->normal_to_view[i][k] * n_object[k];
-        /* a unit normal stays within +-1; one longer than 2 (the scene's normals are
-         * unit vectors by contract) is cut there, so the sum stays in 64 bits */
+        /* the normal is bounded (tarn_unit_vector_bounded), but the rotation need not
+         * be orthonormal: cut again, so that the sum stays in 64 bits */
         const int64_t component = tarn_round_shift_i64(n_view, 30);
         n_dot_p += (component > 2 * 65536 ? 2 * 65536 : (component < -2 * 65536 ? -2 * 65536 : component)) *
                    position[i];
@@ -138,10 +138,22 @@ static int32_t fresnel_q15(const tarn_object_xform *xform, const tarn_vec3 *norm
     return (int32_t)((one_minus * one_minus + 16384) >> 15);
 }
 
+/* A unit vector's components lie within +-1; one far longer (the scene's normals and
+ * light are unit vectors by contract) has its components cut at +-2, which keeps the
+ * three-term 64-bit sums it enters from overflowing. */
+tarn_vec3 tarn_unit_vector_bounded(const tarn_vec3 *v)
+{
+    const int32_t limit = 2 * TARN_Q16_ONE;
+    const tarn_vec3 bounded = {tarn_clamp_i32(v->x, -limit, limit), tarn_clamp_i32(v->y, -limit, limit),
+                               tarn_clamp_i32(v->z, -limit, limit)};
+    return bounded;
+}
+
 void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
                        const tarn_mesh *mesh, uint16_t index, tarn_view_vertex *out)
 {
-    const tarn_vec3 *n = &mesh->normals[index];
+    const tarn_vec3 normal = tarn_unit_vector_bounded(&mesh->normals[index]);
+    const tarn_vec3 *n = &normal;
     int64_t dot = (int64_t)n->x * xform->light_dir[0] + (int64_t)n->y * xform->light_dir[1] +
                   (int64_t)n->z * xform->light_dir[2];
     int32_t n_dot_l = tarn_sat_i64_to_i32(tarn_round_shift_i64(dot, 16));

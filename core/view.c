@@ -105,5 +105,5 @@ void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, t
         view->light_q16[c] = channel_q16(scene->light.colour_rgb, c);
         view->ambient_q16[c] = channel_q16(scene->light.ambient_rgb, c);
     }
-    view->light_dir = scene->light.direction;
+    view->light_dir = tarn_unit_vector_bounded(&scene->light.direction);
 }
