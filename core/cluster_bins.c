@@ -38,31 +38,16 @@ int tarn_cluster_bin_is_whole(const tarn_cluster_bin *bin)
     return bin->x0 == 0 && bin->y0 == 0 && bin->x1 == 255 && bin->y1 == 255;
 }
 
-typedef struct {
-    int32_t x0, y0, x1, y1; /* subpixels, inclusive; x0 > x1 while empty */
-    int32_t margin;         /* pixels: 1 once a triangle was clipped */
-} subpixel_box;
-
-static void extend(subpixel_box *box, const tarn_screen_vertex screen[3])
+/* Pixels whose centres the bounds may cover, widened by `margin` pixels, in frame
+ * cells. */
+static tarn_cluster_bin to_cells(const subpixel_bounds *bounds, int32_t margin, const tarn_view *view)
 {
-    for (int k = 0; k < 3; k++) {
-        if (screen[k].x < box->x0) box->x0 = screen[k].x;
-        if (screen[k].x > box->x1) box->x1 = screen[k].x;
-        if (screen[k].y < box->y0) box->y0 = screen[k].y;
-        if (screen[k].y > box->y1) box->y1 = screen[k].y;
-    }
-}
-
-/* Pixels whose centres the box may cover, widened by its margin, in frame cells. */
-static tarn_cluster_bin to_cells(const subpixel_box *box, const tarn_view *view)
-{
-    if (box->x0 > box->x1) return bin_empty;
-    const unsigned s = view->subpixel_bits;
-    const int32_t half = (int32_t)1 << (s - 1u);
-    const int32_t x0 = tarn_clamp_i32(-tarn_floor_shift(half - box->x0, s) - box->margin, 0, view->width - 1);
-    const int32_t y0 = tarn_clamp_i32(-tarn_floor_shift(half - box->y0, s) - box->margin, 0, view->height - 1);
-    const int32_t x1 = tarn_clamp_i32(tarn_floor_shift(box->x1 - half, s) + box->margin, 0, view->width - 1);
-    const int32_t y1 = tarn_clamp_i32(tarn_floor_shift(box->y1 - half, s) + box->margin, 0, view->height - 1);
+    if (bounds->x0 > bounds->x1) return bin_empty;
+    const pixel_box box = tarn_bounds_pixels(bounds, view->subpixel_bits);
+    const int32_t x0 = tarn_clamp_i32(box.x0 - margin, 0, view->width - 1);
+    const int32_t y0 = tarn_clamp_i32(box.y0 - margin, 0, view->height - 1);
+    const int32_t x1 = tarn_clamp_i32(box.x1 + margin, 0, view->width - 1);
+    const int32_t y1 = tarn_clamp_i32(box.y1 + margin, 0, view->height - 1);
     if (x0 > x1 || y0 > y1) return bin_empty;
     const tarn_cluster_bin bin = {(uint8_t)(x0 >> TARN_BIN_CELL_SHIFT), (uint8_t)(y0 >> TARN_BIN_CELL_SHIFT),
                                   (uint8_t)(x1 >> TARN_BIN_CELL_SHIFT), (uint8_t)(y1 >> TARN_BIN_CELL_SHIFT)};
@@ -75,7 +60,8 @@ static tarn_cluster_bin bin_run(tarn_vertex_cache *cache, const tarn_object *obj
                                 uint32_t end)
 {
     const tarn_mesh *mesh = object->mesh;
-    subpixel_box box = {INT32_MAX, INT32_MAX, INT32_MIN, INT32_MIN, 0};
+    subpixel_bounds bounds = tarn_bounds_empty();
+    int32_t margin = 0; /* 1 once a triangle was clipped */
     for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
         tarn_cached_vertex c[3];
@@ -89,10 +75,10 @@ static tarn_cluster_bin bin_run(tarn_vertex_cache *cache, const tarn_object *obj
         if (outside_any == 0 &&
             !tarn_orient_triangle(screen, object->material->cull, cache->view->subpixel_bits, &setup))
             continue;
-        if (outside_any) box.margin = 1;
-        extend(&box, screen);
+        if (outside_any) margin = 1;
+        for (int k = 0; k < 3; k++) tarn_bounds_add(&bounds, &screen[k]);
     }
-    return to_cells(&box, cache->view);
+    return to_cells(&bounds, margin, cache->view);
 }
 
 void tarn_bin_clusters(const tarn_scene *scene, const tarn_view *view, tarn_cluster_bin *bins)

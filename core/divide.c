@@ -14,13 +14,14 @@ tarn_divisor tarn_divisor_of(uint32_t divisor)
     return d;
 }
 
-/* floor(n * recip / 2^(62 - shift)): at most n / divisor, short of it by about
- * 2^-28 of it plus one. */
-static uint64_t quotient_estimate(uint64_t n, const tarn_divisor *d)
+/* (n * recip + bias) / 2^(62 - shift), the low product's bits below 2^32 dropped
+ * (worth less than one unit of the result); divisor > 1, so shift <= 30. With no
+ * bias it is at most n / divisor, short of it by about 2^-28 of it plus one. */
+static uint64_t times_reciprocal(uint64_t n, const tarn_divisor *d, uint64_t bias)
 {
     const uint64_t high = tarn_mul_u32_wide((uint32_t)(n >> 32), d->recip);
     const uint64_t low = tarn_mul_u32_wide((uint32_t)n, d->recip);
-    return (high + (low >> 32)) >> (30u - d->shift);
+    return (high + (low >> 32) + bias) >> (30u - d->shift);
 }
 
 static uint64_t times_divisor(uint64_t q, uint32_t divisor)
@@ -36,7 +37,7 @@ uint64_t tarn_divide_u64(uint64_t n, const tarn_divisor *d, uint32_t *remainder)
         n = 0;
     }
     while (n >= d->divisor) {
-        uint64_t step = quotient_estimate(n, d);
+        uint64_t step = times_reciprocal(n, d, 0u);
         uint64_t product = times_divisor(step, d->divisor);
         if (step == 0u || product > n) { /* the second cannot happen; if it did, a 1 is safe */
             step = 1u;
@@ -54,12 +55,6 @@ static uint64_t magnitude(int64_t n)
     return n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n;
 }
 
-int64_t tarn_divide_round_i64(int64_t n, const tarn_divisor *d)
-{
-    const uint64_t q = tarn_divide_u64(magnitude(n) + d->divisor / 2u, d, NULL);
-    return n < 0 ? -(int64_t)q : (int64_t)q;
-}
-
 int64_t tarn_divide_floor_i64(int64_t n, const tarn_divisor *d, uint32_t *remainder)
 {
     uint32_t r;
@@ -74,18 +69,10 @@ int64_t tarn_divide_floor_i64(int64_t n, const tarn_divisor *d, uint32_t *remain
 
 int64_t tarn_divide_round_approx_i64(int64_t n, const tarn_divisor *d)
 {
-    const uint64_t m = magnitude(n);
-    uint64_t q;
-    if (d->divisor == 1u) {
-        q = m;
-    } else {
-        /* (m * recip + half) >> (62 - shift), with the low product's bits below 2^32
-         * dropped (they are worth less than one unit of the result) */
-        const unsigned down = 30u - d->shift; /* 0..29 */
-        const uint64_t high = tarn_mul_u32_wide((uint32_t)(m >> 32), d->recip);
-        const uint64_t low = tarn_mul_u32_wide((uint32_t)m, d->recip);
-        const uint64_t half = down > 0u ? (uint64_t)1 << (down - 1u) : 0u;
-        q = (high + (low >> 32) + half) >> down;
+    uint64_t q = magnitude(n);
+    if (d->divisor > 1u) {
+        const unsigned down = 30u - d->shift;
+        q = times_reciprocal(q, d, down > 0u ? (uint64_t)1 << (down - 1u) : 0u); /* half, to round */
     }
     return n < 0 ? -(int64_t)q : (int64_t)q;
 }

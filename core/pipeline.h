@@ -88,7 +88,6 @@ void tarn_project(const tarn_view *view, const tarn_view_vertex *in, tarn_screen
 void tarn_project_position(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out);
 void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out);
 
-
 typedef struct {
     int32_t x0, y0, x1, y1; /* pixel rectangle [x0, x1) x [y0, y1) */
 } tarn_pixel_rect;

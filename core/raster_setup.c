@@ -56,23 +56,30 @@ int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned 
     return 1;
 }
 
+void tarn_bounds_add(subpixel_bounds *b, const tarn_screen_vertex *v)
+{
+    if (v->x < b->x0) b->x0 = v->x;
+    if (v->x > b->x1) b->x1 = v->x;
+    if (v->y < b->y0) b->y0 = v->y;
+    if (v->y > b->y1) b->y1 = v->y;
+}
+
+pixel_box tarn_bounds_pixels(const subpixel_bounds *b, unsigned s)
+{
+    const int32_t half = (int32_t)1 << (s - 1);
+    pixel_box box;
+    box.x0 = -tarn_floor_shift(half - b->x0, s); /* ceil((min - half) / 2^s) */
+    box.y0 = -tarn_floor_shift(half - b->y0, s);
+    box.x1 = tarn_floor_shift(b->x1 - half, s);
+    box.y1 = tarn_floor_shift(b->y1 - half, s);
+    return box;
+}
+
 pixel_box tarn_triangle_pixels(const triangle_setup *t)
 {
-    const unsigned s = t->subpixel_bits;
-    const int32_t half = (int32_t)1 << (s - 1);
-    int32_t min_x = t->v[0]->x, max_x = min_x, min_y = t->v[0]->y, max_y = min_y;
-    for (int k = 1; k < 3; k++) {
-        if (t->v[k]->x < min_x) min_x = t->v[k]->x;
-        if (t->v[k]->x > max_x) max_x = t->v[k]->x;
-        if (t->v[k]->y < min_y) min_y = t->v[k]->y;
-        if (t->v[k]->y > max_y) max_y = t->v[k]->y;
-    }
-    pixel_box box;
-    box.x0 = -tarn_floor_shift(half - min_x, s); /* ceil((min - half) / 2^s) */
-    box.y0 = -tarn_floor_shift(half - min_y, s);
-    box.x1 = tarn_floor_shift(max_x - half, s);
-    box.y1 = tarn_floor_shift(max_y - half, s);
-    return box;
+    subpixel_bounds bounds = tarn_bounds_empty();
+    for (int k = 0; k < 3; k++) tarn_bounds_add(&bounds, t->v[k]);
+    return tarn_bounds_pixels(&bounds, t->subpixel_bits);
 }
 
 /* A plane through the three vertex values (each within [0, 2^30]). Its anchor and

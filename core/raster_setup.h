@@ -99,6 +99,22 @@ int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned 
                          triangle_setup *t);
 /* Pixels whose centres may be covered, before the tile clips them. */
 pixel_box tarn_triangle_pixels(const triangle_setup *t);
+
+/* The subpixel box around screen positions; empty (x0 > x1) before the first. */
+typedef struct {
+    int32_t x0, y0, x1, y1; /* inclusive */
+} subpixel_bounds;
+
+static inline subpixel_bounds tarn_bounds_empty(void)
+{
+    const subpixel_bounds b = {INT32_MAX, INT32_MAX, INT32_MIN, INT32_MIN};
+    return b;
+}
+
+void tarn_bounds_add(subpixel_bounds *b, const tarn_screen_vertex *v);
+/* Pixels whose centres lie in non-empty bounds: from ceil((min - half) / 2^s) to
+ * floor((max - half) / 2^s), half a pixel being 2^(s-1) subpixels. */
+pixel_box tarn_bounds_pixels(const subpixel_bounds *b, unsigned subpixel_bits);
 /* What a triangle interpolates besides its lit colour. */
 typedef struct {
     const tarn_texture *texture; /* textured opaque: its sizes for sampling */

@@ -25,11 +25,20 @@ static int optional_texture_valid(const tarn_texture *t)
     return t == NULL || texture_valid(t);
 }
 
-/* A water material this build can draw: its effects linked (TARN_LINK_*), and every
- * texture a feature samples there; the apron limit is checked against the frame
- * width when a frame is drawn. */
+static int within(tarn_q16 v, tarn_q16 lo, tarn_q16 hi)
+{
+    return v >= lo && v <= hi;
+}
+
+/* A water material this build can draw: its effects linked (TARN_LINK_*), every
+ * texture a feature samples there, and the factors the per-pixel code blends with
+ * in their documented ranges (checked here once, so no pixel has to); the apron
+ * limit is checked against the frame width when a frame is drawn. */
 static int water_valid(const tarn_water *w)
 {
+    if (!within(w->alpha, 0, TARN_Q16_ONE) || !within(w->fresnel, 0, TARN_Q16_ONE) ||
+        !within(w->foam_opacity, 0, TARN_Q16_ONE) || !within(w->specular, 0, 4 * TARN_Q16_ONE))
+        return 0;
     if (!TARN_LINK_WATER || (w->features & ~(uint32_t)TARN_LINK_WATER_FEATURES) != 0) return 0;
     if ((w->features & TARN_WATER_NORMALS) && w->normal_a == NULL) return 0;
     if ((w->features & TARN_WATER_FOAM) && (w->foam_texture == NULL || w->foam_distance <= 0)) return 0;
@@ -40,13 +49,15 @@ static int water_valid(const tarn_water *w)
            w->normal_strength >= 0 && w->normal_strength <= 8 * TARN_Q16_ONE;
 }
 
+/* The clusters are checked even for a mesh without triangles: the walk follows
+ * their runs. */
 static int mesh_valid(const tarn_mesh *m)
 {
-    /* the clusters even of a mesh without triangles: the walk follows their runs */
-    if (m->triangle_count == 0) return clusters_valid(m);
-    if (m->positions == NULL || m->normals == NULL || m->indices == NULL) return 0;
-    for (uint32_t i = 0; i < 3u * m->triangle_count; i++)
-        if (m->indices[i] >= m->vertex_count) return 0;
+    if (m->triangle_count > 0) {
+        if (m->positions == NULL || m->normals == NULL || m->indices == NULL) return 0;
+        for (uint32_t i = 0; i < 3u * m->triangle_count; i++)
+            if (m->indices[i] >= m->vertex_count) return 0;
+    }
     return clusters_valid(m);
 }
 

@@ -84,8 +84,6 @@ typedef struct {
 tarn_divisor tarn_divisor_of(uint32_t divisor);
 /* floor(n / divisor), and n mod divisor into *remainder when it is not NULL. */
 uint64_t tarn_divide_u64(uint64_t n, const tarn_divisor *d, uint32_t *remainder);
-/* n / divisor rounded to nearest, halves away from zero (as (|n| + d/2) / d). */
-int64_t tarn_divide_round_i64(int64_t n, const tarn_divisor *d);
 /* floor(n / divisor) for a signed n, with the remainder in [0, divisor) into
  * *remainder when it is not NULL. */
 int64_t tarn_divide_floor_i64(int64_t n, const tarn_divisor *d, uint32_t *remainder);

@@ -3,6 +3,7 @@
  * snapped screen winding. For a tile, whole clusters whose bounding sphere misses
  * the tile's slice of the view are skipped before any of their vertices is touched. */
 #include "cluster_bins.h"
+#include "raster_setup.h"
 #include "vertex_cache.h"
 
 /* The four planes through the eye bounding a pixel rectangle, as
@@ -51,20 +52,14 @@ static int sphere_misses_tile(const tarn_view *view, const tile_frustum *f,
     return 0;
 }
 
+/* 1 when no pixel centre of the rectangle can lie in the triangle's bounds. */
 static int bounds_miss_rect(const tarn_screen_vertex s[3], unsigned subpixel_bits,
                             const tarn_pixel_rect *rect)
 {
-    int32_t min_x = s[0].x, max_x = s[0].x, min_y = s[0].y, max_y = s[0].y;
-    for (int i = 1; i < 3; i++) {
-        if (s[i].x < min_x) min_x = s[i].x;
-        if (s[i].x > max_x) max_x = s[i].x;
-        if (s[i].y < min_y) min_y = s[i].y;
-        if (s[i].y > max_y) max_y = s[i].y;
-    }
-    /* Conservative in whole pixels: a centre at i + 0.5 lies in pixel column i. */
-    const int32_t one = (int32_t)1 << subpixel_bits;
-    return max_x < rect->x0 * one || min_x >= rect->x1 * one ||
-           max_y < rect->y0 * one || min_y >= rect->y1 * one;
+    subpixel_bounds bounds = tarn_bounds_empty();
+    for (int k = 0; k < 3; k++) tarn_bounds_add(&bounds, &s[k]);
+    const pixel_box box = tarn_bounds_pixels(&bounds, subpixel_bits);
+    return box.x1 < rect->x0 || box.x0 >= rect->x1 || box.y1 < rect->y0 || box.y0 >= rect->y1;
 }
 
 static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
@@ -80,7 +75,6 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
         const unsigned outside_all = tarn_cached_triangle(cache, index, c, &outside_any);
         if (outside_all) continue; /* wholly outside one plane */
         tarn_view_vertex v[3];
-        for (int k = 0; k < 3; k++) v[k] = tarn_cached_view_vertex(&c[k]);
         if (outside_any) {
             for (int k = 0; k < 3; k++) tarn_cached_shading(cache, &c[k], &v[k]);
             tarn_clip_and_emit(view, outside_any, v, object, sink, ctx);
@@ -134,9 +128,8 @@ static void walk_object(const tarn_view *view, const tarn_object *object, const 
     tarn_object_xform_setup(view, object, &xform);
     tarn_vertex_cache cache;
     tarn_vertex_cache_init(&cache, view, &xform, mesh);
-    if (mesh->clusters == NULL) {
-        if (bins == NULL || only_rect == NULL || tarn_cluster_bin_touches(&bins[0], only_rect))
-            walk_run(object, 0, mesh->triangle_count, only_rect, &cache, sink, ctx);
+    if (mesh->clusters == NULL) { /* its one bin, if any, was tested above */
+        walk_run(object, 0, mesh->triangle_count, only_rect, &cache, sink, ctx);
         return;
     }
     for (uint32_t c = 0; c < mesh->cluster_count; c++) {

@@ -118,20 +118,15 @@ static int32_t fresnel_q15(const tarn_object_xform *xform, const tarn_vec3 *norm
     for (int i = 0; i < 3; i++) {
         int64_t n_view = 0;
         for (int k = 0; k < 3; k++) n_view += xform->normal_to_view[i][k] * n_object[k];
-        /* the normal is bounded (tarn_unit_vector_bounded), but the rotation need not
-         * be orthonormal: cut again, so that the sum stays in 64 bits */
-        const int64_t component = tarn_round_shift_i64(n_view, 30);
-        n_dot_p += (component > 2 * 65536 ? 2 * 65536 : (component < -2 * 65536 ? -2 * 65536 : component)) *
-                   position[i];
+        /* the normal is bounded (tarn_unit_vector_bounded), so with any rotation the
+         * component stays below 2^20 and the sum within 64 bits */
+        n_dot_p += tarn_round_shift_i64(n_view, 30) * position[i];
         length2 += (uint64_t)(position[i] * position[i]);
     }
     int64_t length = (int64_t)tarn_isqrt_u64(length2); /* Q16.16 */
     if (length == 0) return 0;
     /* n.v = -(n.p)/|p|, as Q1.15 (truncated, as C's / would), clamped to [-1, 1] */
-    const tarn_divisor divisor = tarn_divisor_of((uint32_t)length);
-    const uint64_t quotient = tarn_divide_u64(n_dot_p < 0 ? (uint64_t)0 - (uint64_t)n_dot_p : (uint64_t)n_dot_p,
-                                              &divisor, NULL) / 2u;
-    int64_t n_dot_v = n_dot_p > 0 ? -(int64_t)quotient : (int64_t)quotient;
+    int64_t n_dot_v = tarn_divide_once_i64(-n_dot_p, (uint32_t)length) / 2;
     n_dot_v = n_dot_v > 32768 ? 32768 : (n_dot_v < -32768 ? -32768 : n_dot_v);
     int64_t one_minus = 32768 - n_dot_v; /* 0..65536 */
     if (one_minus > 32768) one_minus = 32768; /* saturate(1 - n.v) */

@@ -44,7 +44,8 @@ unsigned tarn_cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3],
     return all;
 }
 
-tarn_view_vertex tarn_cached_view_vertex(const tarn_cached_vertex *vertex)
+/* The view vertex of a cached vertex, its position alone. */
+static tarn_view_vertex view_vertex_of(const tarn_cached_vertex *vertex)
 {
     tarn_view_vertex v = {0};
     v.x = vertex->x;
@@ -64,7 +65,7 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
                             tarn_screen_vertex *screen)
 {
     if (!(vertex->state & TARN_CACHED_PROJECTED)) {
-        const tarn_view_vertex v = tarn_cached_view_vertex(vertex);
+        const tarn_view_vertex v = view_vertex_of(vertex);
         tarn_project_position(cache->view, &v, screen);
         vertex->screen_x = screen->x;
         vertex->screen_y = screen->y;
@@ -86,6 +87,7 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
 void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_view_vertex *v)
 {
     const tarn_mesh *mesh = cache->mesh;
+    *v = view_vertex_of(vertex);
     if (!(vertex->state & TARN_CACHED_SHADED)) {
         tarn_vertex_shade(cache->view, cache->xform, mesh, vertex->index, v);
         for (int c = 0; c < 3; c++) vertex->lit[c] = (uint16_t)v->lit[c];

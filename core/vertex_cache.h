@@ -54,12 +54,9 @@ unsigned tarn_cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3],
 void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex,
                             tarn_screen_vertex *screen);
 
-/* The view vertex (position only) of a cached vertex, ready for shading. */
-tarn_view_vertex tarn_cached_view_vertex(const tarn_cached_vertex *vertex);
-
-/* The vertex's shading (lit colour, fresnel, texture coordinates) into `v`, whose
- * position is the vertex's; computed once and kept as tarn_cached_projection keeps
- * the screen position. */
+/* The vertex as a view vertex: its position and its shading (lit colour, fresnel,
+ * texture coordinates), the shading computed once and kept as
+ * tarn_cached_projection keeps the screen position. */
 void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_view_vertex *v);
 
 #endif

@@ -91,9 +91,9 @@ void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, t
     view->height = config->height;
     view->subpixel_bits = config->quality.subpixel_bits;
     view->focal_q12 = focal_length_q12(camera, config->height);
-    if (view->focal_q12 < 1) view->focal_q12 = 1; /* keeps the normalisation below defined */
     view->near = camera->near > 0 ? camera->near : 1;
     view->far = camera->far > view->near ? camera->far : view->near;
+    /* focal_q12 is at least 17 (one row, a 179-degree fov), so it normalises */
     view->focal_shift = tarn_clz32((uint32_t)view->focal_q12);
     view->focal_mantissa = (uint32_t)view->focal_q12 << view->focal_shift;
     view->near_shift = tarn_clz32((uint32_t)view->near);

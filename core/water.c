@@ -95,8 +95,7 @@ static int uses(const tarn_water_context *w, uint32_t feature)
 static void compose(const tarn_water_context *w, const tarn_water_input *in, const uint32_t surface[3],
                     uint32_t colour[3])
 {
-    /* cut to [0, 1], the documented range: past it the blend would wrap around */
-    uint32_t alpha = (uint32_t)tarn_clamp_i32(w->water->alpha, 0, (int32_t)Q16_ONE) >> 1; /* Q1.15 */
+    uint32_t alpha = (uint32_t)w->water->alpha >> 1; /* Q1.15; [0, 1] by the scene check */
     if (uses(w, TARN_WATER_FRESNEL)) alpha = tarn_water_fresnel_alpha(w, in, alpha);
     for (int c = 0; c < 3; c++) {
         /* S * lit / 255 in Q8.8: product / 65280, as product * 257 / 2^24 (fits: < 2^32) */

@@ -3,7 +3,6 @@
 #include "water.h"
 
 #define Q16_ONE 65536u
-#define COLOUR_Q8_LIMIT (1u << 24) /* Q8.8: 65536 times white */
 
 void tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff, uint32_t colour[3])
 {
@@ -18,13 +17,13 @@ void tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, ui
     const int32_t red = tarn_water_panned_texel(water->foam_texture, &water->foam_pan, w->foam_pan, in)[0];
     if (red * 65536 < 255 * ((int32_t)f - (int32_t)lines)) return; /* both below 2^24 */
     /* colour + (foam - colour) * opacity. The colour may be brighter than 255 here
-     * (specular adds up to four times the light before the final clamp), so the
-     * difference times the opacity can pass 2^31: a 16x16-bit high product takes it.
-     * A colour past COLOUR_Q8_LIMIT (no valid material gets there) is cut to it. */
-    const uint32_t opacity_q15 = (uint32_t)tarn_clamp_i32(water->foam_opacity, 0, TARN_Q16_ONE) >> 1;
+     * (specular adds up to four times the light before the final clamp: below 2^19
+     * in Q8.8), so the difference times the opacity can pass 2^31: a 16x16-bit high
+     * product takes it. */
+    const uint32_t opacity_q15 = (uint32_t)water->foam_opacity >> 1; /* [0, 1] by the scene check */
     for (int c = 0; c < 3; c++) {
         const int32_t foam = (int32_t)tarn_water_channel_q8(water->foam_rgb, c);
-        const int32_t under = (int32_t)(colour[c] < COLOUR_Q8_LIMIT ? colour[c] : COLOUR_Q8_LIMIT);
+        const int32_t under = (int32_t)colour[c];
         /* (foam - under) * 2^6 * opacity * 2^11 / 2^32 = (foam - under) * opacity / 2^15 */
         colour[c] = (uint32_t)(under + tarn_mul_hi_s32_u32((foam - under) * 64, opacity_q15 << 11));
     }

@@ -23,9 +23,8 @@ static uint32_t specular_term(const tarn_water_context *w, const tarn_water_norm
 
 void tarn_water_specular(const tarn_water_context *w, const tarn_water_normal *n, uint32_t colour[3])
 {
-    /* the intensity cut to its documented 0..4, which keeps every product in 32 bits */
-    const uint32_t intensity = (uint32_t)tarn_clamp_i32(w->water->specular, 0, 4 * 65536) >> 2;
-    const uint32_t amount = (specular_term(w, n) * intensity) >> 15; /* Q2.14 */
+    /* the intensity is within 0..4 (the scene check), which keeps the products in 32 bits */
+    const uint32_t amount = (specular_term(w, n) * ((uint32_t)w->water->specular >> 2)) >> 15; /* Q2.14 */
     for (int c = 0; c < 3; c++) colour[c] += (w->light_q8[c] * (amount >> 2)) >> 12;
 }
 

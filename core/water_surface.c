@@ -26,7 +26,6 @@ void tarn_water_depth_colour(const tarn_water_context *w, uint32_t diff, uint32_
 
 uint32_t tarn_water_fresnel_alpha(const tarn_water_context *w, const tarn_water_input *in, uint32_t alpha)
 {
-    const uint32_t strength = (uint32_t)tarn_clamp_i32(w->water->fresnel, 0, (int32_t)Q16_ONE) >> 1; /* [0, 1] */
-    const uint32_t raise = strength * in->fresnel >> 15;
+    const uint32_t raise = ((uint32_t)w->water->fresnel >> 1) * in->fresnel >> 15; /* fresnel in [0, 1] */
     return alpha + (((32768u - alpha) * raise) >> 15);
 }

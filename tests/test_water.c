@@ -320,6 +320,31 @@ static void test_extreme_normal_maps_and_views(void **state)
     free(flat);
 }
 
+/* The factors the water blends by are checked once a frame, not clamped per pixel:
+ * one past its documented range makes the scene malformed. */
+static void test_blend_factors_out_of_range_are_refused(void **state)
+{
+    (void)state;
+    water_scene *wet = new_scene(1);
+    tarn_frame_config config = config_of();
+    const size_t bytes = tarn_frame_memory_bytes(&config, &wet->b.scene);
+    void *memory = malloc(bytes);
+    tarn_q16 *const factors[] = {&wet->water.alpha, &wet->water.fresnel, &wet->water.foam_opacity,
+                                 &wet->water.specular};
+    static const tarn_q16 past[] = {TARN_Q16_ONE + 1, TARN_Q16_ONE + 1, TARN_Q16_ONE + 1, 4 * TARN_Q16_ONE + 1};
+    for (size_t k = 0; k < sizeof past / sizeof past[0]; k++) {
+        const tarn_q16 kept = *factors[k];
+        *factors[k] = past[k];
+        assert_int_equal(tarn_render_frame(&wet->b.scene, &config, memory, bytes, NULL, NULL), TARN_ERR_SCENE);
+        *factors[k] = -1;
+        assert_int_equal(tarn_render_frame(&wet->b.scene, &config, memory, bytes, NULL, NULL), TARN_ERR_SCENE);
+        *factors[k] = kept;
+        assert_int_equal(tarn_render_frame(&wet->b.scene, &config, memory, bytes, NULL, NULL), TARN_OK);
+    }
+    free(memory);
+    free(wet);
+}
+
 static void test_opaque_scenes_pay_nothing_for_water(void **state)
 {
     (void)state;
@@ -348,6 +373,7 @@ int main(void)
         cmocka_unit_test(test_time_near_the_wrap),
         cmocka_unit_test(test_coplanar_water_and_camera_on_the_surface),
         cmocka_unit_test(test_extreme_normal_maps_and_views),
+        cmocka_unit_test(test_blend_factors_out_of_range_are_refused),
         cmocka_unit_test(test_opaque_scenes_pay_nothing_for_water),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -92,7 +92,7 @@ static void make_water(fuzz_scene *s, tarn_water *w, fuzz_reader *r)
 {
     w->features = fuzz_u16(r) & 0x1FFu;
     w->albedo_rgb = fuzz_u32(r);
-    w->alpha = number(r);
+    w->alpha = number_in(r, 0, TARN_Q16_ONE);
     w->fog_rgb = fuzz_u32(r);
     w->fog_density = number(r);
     w->absorb_rgb = fuzz_u32(r);
@@ -109,8 +109,8 @@ static void make_water(fuzz_scene *s, tarn_water *w, fuzz_reader *r)
     w->normal_strength = number_in(r, 0, 8 * TARN_Q16_ONE);
     w->normal_xy_max = number_in(r, 0, TARN_Q16_ONE);
     w->refraction = number_in(r, 0, TARN_Q16_ONE / 64);
-    w->fresnel = number(r);
-    w->specular = number(r);
+    w->fresnel = number_in(r, 0, TARN_Q16_ONE);
+    w->specular = number_in(r, 0, 4 * TARN_Q16_ONE);
     w->specular_power = (uint16_t)number_in(r, 1, 256);
     w->foam_texture = texture_or_null(s, r);
     w->foam_pan = panning(r);
@@ -118,7 +118,7 @@ static void make_water(fuzz_scene *s, tarn_water *w, fuzz_reader *r)
     w->foam_line_speed = number(r);
     w->foam_line_count = fuzz_u8(r);
     w->foam_rgb = fuzz_u32(r);
-    w->foam_opacity = number(r);
+    w->foam_opacity = number_in(r, 0, TARN_Q16_ONE);
     w->sparkle_amount = number(r);
     w->sparkle_rgb = fuzz_u32(r);
 }

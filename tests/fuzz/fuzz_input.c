@@ -5,6 +5,7 @@
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -69,6 +70,11 @@ const char *fuzz_write_file(const char *name, const uint8_t *data, size_t size)
         abort();
     }
     return path;
+}
+
+int fuzz_error_is_one_line(const tarn_error *err)
+{
+    return err->message[0] != '\0' && strchr(err->message, '\n') == NULL;
 }
 
 uint8_t fuzz_u8(fuzz_reader *r)

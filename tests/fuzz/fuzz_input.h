@@ -8,11 +8,16 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "error.h"
+
 /* Writes `size` bytes to NAME in the scratch directory; returns its path. Aborts
  * when the scratch directory cannot be made (a broken machine, not a finding). */
 const char *fuzz_write_file(const char *name, const uint8_t *data, size_t size);
 /* The path NAME would have in the scratch directory. */
 const char *fuzz_path(const char *name);
+
+/* 1 when the error says what is wrong in one line, as every tarn error must. */
+int fuzz_error_is_one_line(const tarn_error *err);
 
 typedef struct {
     const uint8_t *data;

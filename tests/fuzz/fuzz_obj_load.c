@@ -15,7 +15,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     tarn_mesh_buffer mesh;
     tarn_error err;
     if (tarn_obj_load(path, &mesh, &err) != 0) {
-        if (err.message[0] == '\0' || strchr(err.message, '\n') != NULL) abort();
+        if (!fuzz_error_is_one_line(&err)) abort();
         return 0;
     }
     const tarn_mesh *m = &mesh.mesh;

@@ -13,7 +13,7 @@ static void read_as(int (*read)(const char *, tarn_image *, tarn_error *), const
     tarn_image image;
     tarn_error err;
     if (read(path, &image, &err) != 0) {
-        if (err.message[0] == '\0' || strchr(err.message, '\n') != NULL) abort();
+        if (!fuzz_error_is_one_line(&err)) abort();
         return;
     }
     if (image.width == 0 || image.height == 0) abort();

@@ -16,15 +16,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     tarn_loaded_scene scene;
     tarn_error err;
     if (tarn_scene_load(path, &scene, &err) != 0) {
-        if (err.message[0] == '\0' || strchr(err.message, '\n') != NULL) abort();
+        if (!fuzz_error_is_one_line(&err)) abort();
         return 0;
     }
     tarn_frame_config config = {32, 24, tarn_quality_default(), 1234};
     config.quality.tile_size = 16;
     uint8_t rgb[32 * 24 * 3], covered[32 * 24];
-    if (tarn_core_render(&scene.scene, &config, rgb, covered, &err) != 0 &&
-        (err.message[0] == '\0' || strchr(err.message, '\n') != NULL))
-        abort();
+    if (tarn_core_render(&scene.scene, &config, rgb, covered, &err) != 0 && !fuzz_error_is_one_line(&err)) abort();
     tarn_scene_free(&scene);
     return 0;
 }
