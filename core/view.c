@@ -14,10 +14,20 @@ static int normalise_q30(const int64_t v[3], int32_t out[3])
         if (!big) break;
         for (int i = 0; i < 3; i++) c[i] /= 2;
     }
+    /* and bring a tiny one up: the integer square root of (1, 0, 1)'s 2 is 1, which
+     * would make a vector of length 1.41 (found by fuzz_core, through a camera a
+     * hair from its target). At 2^16 or more the root is good to 2^-16. */
+    int64_t largest = 0;
+    for (int i = 0; i < 3; i++)
+        if ((c[i] < 0 ? -c[i] : c[i]) > largest) largest = c[i] < 0 ? -c[i] : c[i];
+    if (largest == 0) return 0;
+    while (largest < ((int64_t)1 << 16)) {
+        for (int i = 0; i < 3; i++) c[i] *= 2;
+        largest *= 2;
+    }
     uint64_t sum = 0;
     for (int i = 0; i < 3; i++) sum += (uint64_t)(c[i] * c[i]);
-    int64_t length = (int64_t)tarn_isqrt_u64(sum); /* below 2^32 */
-    if (length == 0) return 0;
+    int64_t length = (int64_t)tarn_isqrt_u64(sum); /* from 2^16 to below 2^32 */
     const tarn_divisor divisor = tarn_divisor_of((uint32_t)length);
     for (int i = 0; i < 3; i++)
         out[i] = (int32_t)tarn_divide_trunc_i64(c[i] * ((int64_t)1 << 30), &divisor);

@@ -541,6 +541,7 @@ static void test_extreme_cameras(void **state)
         {0, -5, 0, 0, 5, 0},             /* straight up */
         {32000, 32000, 32000, -32000, -32000, -32000},
         {0, 0, -4, 0, 0, -4.0001},       /* a hair from the target */
+        {0, 0, 0, 1.0 / 65536, 0, -1.0 / 65536}, /* a hair away, off every axis */
     };
     scene_builder *b = malloc(sizeof *b);
     for (size_t c = 0; c < sizeof cameras / sizeof cameras[0]; c++) {
