@@ -15,7 +15,8 @@ typedef struct {
     char message[512];
 } tarn_error;
 
-/* printf-style; always returns -1 so loaders can `return tarn_fail(err, ...)`. */
+/* printf-style; always returns -1 so loaders can `return tarn_fail(err, ...)`.
+ * Control characters in the result (from file names or values) become '?'. */
 int tarn_fail(tarn_error *err, const char *format, ...)
     __attribute__((format(printf, 2, 3)));
 

@@ -28,15 +28,6 @@ struct tarn_loader {
     tarn_loaded_scene *out;
 };
 
-/* Field names and values come from the file, and JSON strings may hold any
- * character; control characters become '?' so that an error stays one line. */
-static void make_printable(char *text)
-{
-    for (; *text; text++) {
-        if ((unsigned char)*text < 0x20 || *text == 0x7f) *text = '?';
-    }
-}
-
 int tarn_fail_field(tarn_loader *l, const char *field, const char *format, ...)
 {
     char message[sizeof l->err->message];
@@ -44,9 +35,7 @@ int tarn_fail_field(tarn_loader *l, const char *field, const char *format, ...)
     va_start(args, format);
     vsnprintf(message, sizeof message, format, args);
     va_end(args);
-    tarn_fail(l->err, "%s: %s: %s", l->file, field, message);
-    if (l->err) make_printable(l->err->message);
-    return -1;
+    return tarn_fail(l->err, "%s: %s: %s", l->file, field, message);
 }
 
 void tarn_join_path(char out[TARN_FIELD_PATH_MAX], const char *parent, const char *key)
@@ -743,7 +732,6 @@ static json_t *parse_json(const char *path, tarn_error *err)
     json_t *root = json_loadf(file, JSON_REJECT_DUPLICATES, &error);
     fclose(file);
     if (!root) {
-        make_printable(error.text); /* jansson quotes the text "near" the error */
         if (error.line > 0) {
             tarn_fail(err, "%s:%d:%d: %s", path, error.line, error.column, error.text);
         } else {
