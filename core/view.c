@@ -1,30 +1,31 @@
 /* view.c: per-frame camera and light constants. Divisions here run once a frame. */
 #include "pipeline.h"
 
-/* Normalises a vector given as 64-bit integers of any common scale into Q1.30.
- * Returns 0 for the zero vector (out left unchanged). */
+static int64_t largest_magnitude(const int64_t c[3])
+{
+    int64_t largest = 0;
+    for (int i = 0; i < 3; i++) {
+        const int64_t magnitude = c[i] < 0 ? -c[i] : c[i];
+        if (magnitude > largest) largest = magnitude;
+    }
+    return largest;
+}
+
+/* Normalises a vector given as 64-bit integers of any common scale (each below
+ * 2^62) into Q1.30. Returns 0 for the zero vector (out left unchanged). */
 static int normalise_q30(const int64_t v[3], int32_t out[3])
 {
-    /* Bring components below 2^31 so the squares and their sum fit 64 bits. */
     int64_t c[3] = {v[0], v[1], v[2]};
-    for (;;) {
-        int big = 0;
-        for (int i = 0; i < 3; i++)
-            if (c[i] >= ((int64_t)1 << 31) || c[i] <= -((int64_t)1 << 31)) big = 1;
-        if (!big) break;
-        for (int i = 0; i < 3; i++) c[i] /= 2;
-    }
-    /* and bring a tiny one up: the integer square root of (1, 0, 1)'s 2 is 1, which
-     * would make a vector of length 1.41 (found by fuzz_core, through a camera a
-     * hair from its target). At 2^16 or more the root is good to 2^-16. */
-    int64_t largest = 0;
-    for (int i = 0; i < 3; i++)
-        if ((c[i] < 0 ? -c[i] : c[i]) > largest) largest = c[i] < 0 ? -c[i] : c[i];
+    int64_t largest = largest_magnitude(c);
     if (largest == 0) return 0;
-    while (largest < ((int64_t)1 << 16)) {
+    /* A power of two brings the largest component into [2^16, 2^31): below 2^31 the
+     * squares and their sum fit 64 bits, and from 2^16 the integer square root is
+     * good to 2^-16. (The root of (1, 0, 1)'s 2 is 1, which made a vector of length
+     * 1.41: found by fuzz_core, through a camera a hair from its target.) */
+    for (; largest >= ((int64_t)1 << 31); largest /= 2)
+        for (int i = 0; i < 3; i++) c[i] /= 2;
+    for (; largest < ((int64_t)1 << 16); largest *= 2)
         for (int i = 0; i < 3; i++) c[i] *= 2;
-        largest *= 2;
-    }
     uint64_t sum = 0;
     for (int i = 0; i < 3; i++) sum += (uint64_t)(c[i] * c[i]);
     int64_t length = (int64_t)tarn_isqrt_u64(sum); /* from 2^16 to below 2^32 */

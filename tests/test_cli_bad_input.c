@@ -203,15 +203,10 @@ static void test_cli_unreadable_texture(void **state)
     assert_int_equal(chmod(scene, 0644), 0);
     assert_int_equal(chmod(texture, 0), 0);
     snprintf(expected, sizeof expected, "tarn: %s: cannot open: Permission denied\n", texture);
+    char *const argv[] = {"/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", binary,
+                          "render", scene, "-o", out, NULL};
     run_result r;
-    if (geteuid() == 0) {
-        char *const argv[] = {"/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", binary,
-                              "render", scene, "-o", out, NULL};
-        run(argv, &r);
-    } else {
-        char *const argv[] = {binary, "render", scene, "-o", out, NULL};
-        run(argv, &r);
-    }
+    run(geteuid() == 0 ? argv : argv + 4, &r); /* without setpriv when not root */
     assert_int_equal(r.status, TARN_EXIT_BAD_INPUT);
     assert_string_equal(r.stderr_text, expected);
     assert_int_not_equal(access(out, F_OK), 0);
