@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "atomic_file.h"
+#include "bake_points.h"
 
 /* ---- 1. types ------------------------------------------------------------------ */
 
@@ -273,6 +274,7 @@ typedef struct {
     bake_alias *aliases;
     size_t alias_count, alias_capacity;
     int out_of_memory;
+    const tarn_bake_points *points; /* --points: qualities baked as NAME_points; count 0 without */
 } bake_plan;
 
 /* `array` with room for one element past `count`: itself, moved, or NULL when out
@@ -514,6 +516,12 @@ static void plan_scene(bake_plan *p)
     if (item) item->exported = 1;
     item = add_item(p, BYTES_SCENE, &T_CONFIG, &p->config, 0, "%s_config", p->name);
     if (item) item->exported = 1;
+    if (p->points->count == 0) return;
+    item = add_item(p, BYTES_SCENE, &T_QUALITY, p->points->qualities, p->points->count, "%s_points", p->name);
+    if (item == NULL) return;
+    item->exported = 1;
+    snprintf(item->note, sizeof item->note, "--points %s: %zu qualities, each %s_config's with one line's options",
+             p->points->path, p->points->count, p->name);
 }
 
 /* Every definition in an order where each comes before its first use. */
@@ -834,8 +842,9 @@ static void print_source_comment(FILE *out, const bake_plan *p, const tarn_bake_
     for (int k = 0; k < BYTES_KINDS; k++)
         fprintf(out, " *   %-10s %9zu\n", byte_kind_names[k], totals->bytes[k]);
     fprintf(out, " *   %-10s %9zu\n *\n", "total", totals->const_bytes);
-    fprintf(out, " * A %ux%u frame at the baked quality needs %zu bytes of working memory:\n * %s_MEMORY_BYTES in ",
-            p->config.width, p->config.height, totals->memory_bytes, macro);
+    fprintf(out, " * A %ux%u frame at the baked quality%s needs %zu bytes of working memory:\n * %s_MEMORY_BYTES in ",
+            p->config.width, p->config.height, p->points->count ? " or any of the points" : "",
+            totals->memory_bytes, macro);
     comment_text(out, base_name(totals->header_path));
     fputs(". */\n#include \"tarn_render.h\"\n\n", out);
 }
@@ -853,11 +862,20 @@ static void print_header(FILE *out, const bake_plan *p, const tarn_bake_options 
     comment_text(out, o->scene_path);
     fputs(" baked by tarn.\n * Generated; do not edit. */\n", out);
     fprintf(out, "#ifndef %s_BAKED_H\n#define %s_BAKED_H\n\n#include \"tarn_render.h\"\n\n", macro, macro);
-    fprintf(out, "/* tarn_frame_memory_bytes(&%s_config, &%s_scene): a frame's working memory. */\n",
-            p->name, p->name);
+    if (p->points->count)
+        fprintf(out, "/* The largest tarn_frame_memory_bytes(&config, &%s_scene) of %s_config and of %s_config\n"
+                " * with the quality of each of %s_points: a frame's working memory at any of them. */\n",
+                p->name, p->name, p->name, p->name);
+    else
+        fprintf(out, "/* tarn_frame_memory_bytes(&%s_config, &%s_scene): a frame's working memory. */\n",
+                p->name, p->name);
     fprintf(out, "#define %s_MEMORY_BYTES %zu\n\n", macro, totals->memory_bytes);
     fprintf(out, "extern const tarn_scene %s_scene;\nextern const tarn_frame_config %s_config;\n\n", p->name,
             p->name);
+    if (p->points->count)
+        fprintf(out, "/* --points: the qualities to measure, in the order of the file's lines. */\n"
+                "#define %s_POINT_COUNT %zu\nextern const tarn_quality %s_points[];\n\n",
+                macro, p->points->count, p->name);
     fputs("#endif\n", out);
 }
 
@@ -893,7 +911,9 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     fprintf(out, "#define TARN_LINK_WATER %d\n", water);
     fprintf(out, "#define TARN_LINK_WATER_FEATURES (%s)\n", names.text);
     fprintf(out, "#define TARN_LINK_UNDERWATER %d\n", p->scene->scene.underwater != NULL);
-    fprintf(out, "#define TARN_LINK_PERSPECTIVE_SPAN %d\n", p->config.quality.perspective == TARN_PERSPECTIVE_SPAN);
+    int span = p->config.quality.perspective == TARN_PERSPECTIVE_SPAN;
+    for (size_t i = 0; i < p->points->count; i++) span |= p->points->qualities[i].perspective == TARN_PERSPECTIVE_SPAN;
+    fprintf(out, "#define TARN_LINK_PERSPECTIVE_SPAN %d\n", span);
 }
 
 /* The three files to temporaries, then renamed into place; a failure removes all. */
@@ -1025,6 +1045,14 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     if (totals.memory_bytes == 0)
         return tarn_fail(err, "%s: %ux%u with these quality settings: %s", o->scene_path, plan.config.width,
                          plan.config.height, tarn_status_text(TARN_ERR_CONFIG));
+    tarn_bake_points points = {NULL, NULL, NULL, 0};
+    const char *points_path = tarn_bake_points_option(o->argc, o->argv);
+    plan.points = &points;
+    if (points_path && (tarn_bake_points_load(points_path, &plan.config.quality, &points, err) != 0 ||
+                        tarn_bake_points_check(&points, &plan.config, &scene->scene, &totals.memory_bytes, err) != 0)) {
+        tarn_bake_points_free(&points);
+        return -1;
+    }
     char *header_path = path_beside(o->output_path, ".h", err);
     char *link_path = header_path ? path_beside(o->output_path, "_link.h", err) : NULL;
     totals.header_path = header_path;
@@ -1037,6 +1065,7 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     result->const_bytes = totals.const_bytes;
     result->memory_bytes = totals.memory_bytes;
     plan_free(&plan);
+    tarn_bake_points_free(&points);
     free(header_path);
     free(link_path);
     return failed ? -1 : 0;

@@ -16,6 +16,11 @@
  * reference is written (a texture no used material samples, a mesh that repeats
  * another's data). The header comment of pond.c counts the const bytes of each
  * kind as a 32-bit target lays them out.
+ * With `--points FILE` among `argv` (bake_points.h), pond.c also defines
+ *                 const tarn_quality pond_points[N];   (the file's qualities)
+ * pond.h declares it with  #define POND_POINT_COUNT N, POND_MEMORY_BYTES is the
+ * largest working memory of the config and of every point, and pond_link.h links
+ * whatever any point uses.
  * The files are written all or nothing (atomic_file.h). */
 #ifndef TARN_HOST_BAKE_H
 #define TARN_HOST_BAKE_H
@@ -33,14 +38,15 @@ typedef struct {
     const char *output_path; /* must end in ".c"; the headers go beside it */
     const char *name;        /* C identifier prefixing every symbol; NULL: the scene's stem */
     tarn_frame_config config; /* frame size and quality; its time_ms is baked as 0 */
-    int argc;                /* the command line, shown in the header comment */
+    int argc;                /* the command line: shown in the header comment; its --points FILE is read */
     char *const *argv;
 } tarn_bake_options;
 
 typedef struct {
     char name[TARN_BAKE_NAME_MAX + 1]; /* the prefix used */
     size_t const_bytes;                /* every baked object, 32-bit layout */
-    size_t memory_bytes;               /* tarn_frame_memory_bytes of the baked config */
+    size_t memory_bytes;               /* tarn_frame_memory_bytes of the baked config (the
+                                          largest of it and the points') */
 } tarn_bake_result;
 
 /* 0, or -1 with a one-line `err` and neither file written. */

@@ -186,6 +186,7 @@ static int parse_valued_option(const char *name, const char *value, tarn_cli_opt
     unsigned long ms;
     if (strcmp(name, "-o") == 0) o->output_path = value;
     else if (strcmp(name, "--diff") == 0) o->diff_path = value;
+    else if (strcmp(name, "--points") == 0 && o->command == TARN_CMD_BAKE) {} /* host/bake_points.c reads it */
     else if (strcmp(name, "--name") == 0) {
         o->name = value; /* checked by bake, so that "" gets the one-line error "3d" gets */
         return value ? 0 : tarn_fail(err, "--name: expected a C identifier");

@@ -351,6 +351,65 @@ static void test_header_declares_memory_and_objects(void **state)
     free(source);
 }
 
+/* --points FILE: the qualities as NAME_points, their count, the largest memory of
+ * all, and the link header keeping span perspective when only a point uses it. */
+static void test_points_are_baked(void **state)
+{
+    (void)state;
+    char points[PATH_SIZE], extra[COMMAND_SIZE];
+    snprintf(points, sizeof points, "%s/points.txt", work_dir);
+    FILE *f = fopen(points, "w");
+    assert_non_null(f);
+    fputs("# two points\n\n--tile 32   # more memory than the bake's 16\n"
+          "  --perspective span:8 --depth 16\n", f);
+    assert_int_equal(fclose(f), 0);
+    baked b;
+    snprintf(extra, sizeof extra, "--name swept --size 64x64 --tile 16 --perspective pixel --points %s", points);
+    bake("scenes/effects/foam.json", "swept", extra, &b);
+
+    tarn_loaded_scene scene;
+    tarn_error err;
+    if (tarn_scene_load("scenes/effects/foam.json", &scene, &err) != 0) fail_msg("%s", err.message);
+    tarn_frame_config config = {64, 64, tarn_quality_default(), 0};
+    config.quality.tile_size = 16;
+    config.quality.perspective = TARN_PERSPECTIVE_PIXEL;
+    size_t own = tarn_frame_memory_bytes(&config, &scene.scene);
+    config.quality.tile_size = 32;
+    size_t largest = tarn_frame_memory_bytes(&config, &scene.scene);
+    tarn_scene_free(&scene);
+    assert_true(largest > own);
+    assert_int_equal(b.memory_bytes, largest);
+
+    char *header = read_all(b.header, NULL), define[128];
+    snprintf(define, sizeof define, "#define SWEPT_MEMORY_BYTES %zu\n", largest);
+    assert_non_null(strstr(header, define));
+    assert_non_null(strstr(header, "#define SWEPT_POINT_COUNT 2\n"));
+    assert_non_null(strstr(header, "extern const tarn_quality swept_points[];\n"));
+    free(header);
+    char *source = read_all(b.source, NULL);
+    const char *array = strstr(source, "const tarn_quality swept_points[2] = {\n");
+    assert_non_null(array);
+    assert_null(strstr(source, "static const tarn_quality swept_points"));
+    const char *second = strstr(array, "    },\n    {\n");
+    assert_non_null(second);
+    /* point 1: the bake's quality with --tile 32; point 2: span:8 and depth 16 at tile 16 */
+    const char *tile32 = strstr(array, ".tile_size = 32,"), *span = strstr(array, ".perspective_span = 8,");
+    assert_true(tile32 != NULL && tile32 < second);
+    assert_true(span != NULL && span > second);
+    assert_non_null(strstr(second, ".depth_bits = 16,"));
+    assert_non_null(strstr(second, ".tile_size = 16,"));
+    free(source);
+
+    char link[PATH_SIZE];
+    snprintf(link, sizeof link, "%s/swept_link.h", work_dir);
+    char *link_text = read_all(link, NULL);
+    assert_non_null(strstr(link_text, "#define TARN_LINK_PERSPECTIVE_SPAN 1\n"));
+    free(link_text);
+    if (shell("command -v arm-none-eabi-gcc > /dev/null") == 0 &&
+        shell("arm-none-eabi-gcc " M0_FLAGS " -Icore -c %s -o %s/swept-m0.o", b.source, work_dir) != 0)
+        fail_msg("%s does not compile for Cortex-M0", b.source);
+}
+
 /* ---- Cortex-M0 ------------------------------------------------------------------ */
 
 /* `arm-none-eabi-gcc` with the flags firmware uses, and .rodata the size reported. */
@@ -448,6 +507,30 @@ static void test_bad_input_exits_2_and_writes_nothing(void **state)
     assert_bake_refused(args, out, "plain_file", "ending in .c");
     snprintf(args, sizeof args, "scenes/effects/foam.json -o %s/x.c --size 1024x1024 --subpixel 8", out);
     assert_bake_refused(args, out, "plain_file", "1024x1024");
+
+    /* a points file: each bad line named, nothing written */
+    static const struct {
+        const char *text, *expect;
+    } bad_points[] = {
+        {"--tile 28\n\n--depth 8\n", "points.txt:3: --depth: expected 16 or 32, got '8'"},
+        {"# c\n--tile 28 --frobnicate 3\n", "points.txt:2: unknown quality option '--frobnicate'"},
+        {"tile 28\n", "points.txt:1: expected a quality option"},
+        {"--tile\n", "points.txt:1: --tile: expected a whole number"},
+        {"--tile 64 --subpixel 8\n", "points.txt:1: 1024x1024 with these quality settings"},
+        {"# nothing\n\n", "points.txt: no points"}};
+    for (size_t k = 0; k < sizeof bad_points / sizeof bad_points[0]; k++) {
+        char points[PATH_SIZE];
+        snprintf(points, sizeof points, "%s/points.txt", work_dir);
+        FILE *f = fopen(points, "w");
+        assert_non_null(f);
+        fputs(bad_points[k].text, f);
+        assert_int_equal(fclose(f), 0);
+        snprintf(args, sizeof args, "scenes/effects/foam.json -o %s/x.c --size 1024x1024 --subpixel 4 --points %s",
+                 out, points);
+        assert_bake_refused(args, out, "plain_file", bad_points[k].expect);
+    }
+    snprintf(args, sizeof args, "scenes/effects/foam.json -o %s/x.c --points %s/none.txt", out, work_dir);
+    assert_bake_refused(args, out, "plain_file", "--points: cannot open");
 }
 
 /* The header cannot be renamed into place (a non-empty directory has its name):
@@ -473,6 +556,7 @@ int main(void)
         cmocka_unit_test(test_underwater_bakes_without_loss),
         cmocka_unit_test(test_only_what_is_used_is_baked),
         cmocka_unit_test(test_header_declares_memory_and_objects),
+        cmocka_unit_test(test_points_are_baked),
         cmocka_unit_test(test_baked_source_compiles_for_cortex_m0),
         cmocka_unit_test(test_bad_input_exits_2_and_writes_nothing),
         cmocka_unit_test(test_a_failed_header_removes_the_source),

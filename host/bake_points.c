@@ -1,0 +1,139 @@
+/* bake_points.c: the points file of `tarn bake --points` (bake_points.h). */
+#include "bake_points.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli_options.h"
+
+/* Options of the command line that take no value: the word after them is an
+ * option of its own. */
+static int is_flag(const char *arg)
+{
+    return strcmp(arg, "--reference") == 0 || strcmp(arg, "--snapped") == 0 || strcmp(arg, "--math") == 0;
+}
+
+const char *tarn_bake_points_option(int argc, char *const *argv)
+{
+    const char *path = NULL;
+    for (int i = 2; argv != NULL && i < argc; i++) {
+        if (argv[i][0] != '-' || is_flag(argv[i])) continue;
+        if (strcmp(argv[i], "--points") == 0 && i + 1 < argc) path = argv[i + 1];
+        i++; /* the option's value */
+    }
+    return path;
+}
+
+void tarn_bake_points_free(tarn_bake_points *points)
+{
+    free(points->qualities);
+    free(points->lines);
+    points->qualities = NULL;
+    points->lines = NULL;
+    points->count = 0;
+}
+
+static int is_space(char c)
+{
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+}
+
+/* The next word of `*cursor`, NUL-terminated in place, or NULL at the end. */
+static char *next_word(char **cursor)
+{
+    char *c = *cursor;
+    while (*c != '\0' && is_space(*c)) c++;
+    if (*c == '\0') return NULL;
+    char *word = c;
+    while (*c != '\0' && !is_space(*c)) c++;
+    if (*c != '\0') *c++ = '\0';
+    *cursor = c;
+    return word;
+}
+
+/* One line's options applied to `q`. 1 when the line holds no point, 0 when it
+ * does, -1 with `err` set. */
+static int parse_line(const char *path, unsigned line_number, char *line, tarn_quality *q, tarn_error *err)
+{
+    char *cursor = line, *name = next_word(&cursor);
+    if (name == NULL || name[0] == '#') return 1;
+    for (; name != NULL && name[0] != '#'; name = next_word(&cursor)) {
+        if (strncmp(name, "--", 2) != 0)
+            return tarn_fail(err, "%s:%u: expected a quality option such as --tile, got '%s'", path,
+                             line_number, name);
+        char *value = next_word(&cursor);
+        if (strcmp(name, "--quality") == 0) /* a preset replaces the whole base: not per point yet */
+            return tarn_fail(err, "%s:%u: --quality: a preset is not taken in a points file; give its knobs",
+                             path, line_number);
+        tarn_error option_err;
+        int result = tarn_cli_parse_quality_option(name, value, q, &option_err);
+        if (result > 0)
+            return tarn_fail(err, "%s:%u: unknown quality option '%s'", path, line_number, name);
+        if (result < 0) return tarn_fail(err, "%s:%u: %s", path, line_number, option_err.message);
+    }
+    return 0;
+}
+
+static int add_point(tarn_bake_points *points, const tarn_quality *q, unsigned line_number, size_t *capacity)
+{
+    if (points->count == *capacity) {
+        size_t larger = *capacity ? 2 * *capacity : 16;
+        tarn_quality *qualities = realloc(points->qualities, larger * sizeof *qualities);
+        if (qualities == NULL) return -1;
+        points->qualities = qualities;
+        unsigned *lines = realloc(points->lines, larger * sizeof *lines);
+        if (lines == NULL) return -1;
+        points->lines = lines;
+        *capacity = larger;
+    }
+    points->qualities[points->count] = *q;
+    points->lines[points->count++] = line_number;
+    return 0;
+}
+
+int tarn_bake_points_load(const char *path, const tarn_quality *base, tarn_bake_points *points,
+                          tarn_error *err)
+{
+    memset(points, 0, sizeof *points);
+    points->path = path;
+    FILE *f = fopen(path, "r");
+    if (f == NULL) return tarn_fail(err, "--points: cannot open '%s'", path);
+    char *line = NULL;
+    size_t line_capacity = 0, capacity = 0;
+    unsigned line_number = 0;
+    int failed = 0;
+    while (!failed && getline(&line, &line_capacity, f) >= 0) {
+        line_number++;
+        tarn_quality q = *base;
+        int result = parse_line(path, line_number, line, &q, err);
+        if (result < 0) failed = 1;
+        else if (result == 0 && points->count == TARN_BAKE_POINTS_MAX)
+            failed = tarn_fail(err, "%s:%u: more than %u points", path, line_number, TARN_BAKE_POINTS_MAX) != 0;
+        else if (result == 0 && add_point(points, &q, line_number, &capacity) != 0)
+            failed = tarn_fail(err, "%s:%u: out of memory", path, line_number) != 0;
+    }
+    if (!failed && ferror(f)) failed = tarn_fail(err, "%s: cannot read it", path) != 0;
+    if (!failed && points->count == 0)
+        failed = tarn_fail(err, "%s: no points (one line of quality options per point; blank lines and "
+                           "# comments are skipped)", path) != 0;
+    free(line);
+    fclose(f);
+    if (failed) tarn_bake_points_free(points);
+    return failed ? -1 : 0;
+}
+
+int tarn_bake_points_check(const tarn_bake_points *points, const tarn_frame_config *config,
+                           const tarn_scene *scene, size_t *memory_bytes, tarn_error *err)
+{
+    for (size_t i = 0; i < points->count; i++) {
+        tarn_frame_config point = *config;
+        point.quality = points->qualities[i];
+        size_t bytes = tarn_frame_memory_bytes(&point, scene);
+        if (bytes == 0)
+            return tarn_fail(err, "%s:%u: %ux%u with these quality settings: %s", points->path, points->lines[i],
+                             point.width, point.height, tarn_status_text(TARN_ERR_CONFIG));
+        if (bytes > *memory_bytes) *memory_bytes = bytes;
+    }
+    return 0;
+}
