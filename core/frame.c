@@ -7,22 +7,6 @@
 
 #include <string.h>
 
-tarn_quality tarn_quality_default(void)
-{
-    tarn_quality q;
-    q.exp2.entries = 64;
-    q.exp2.interpolate = 1;
-    q.recip_newton_steps = 2;
-    q.subpixel_bits = 4;
-    q.perspective = TARN_PERSPECTIVE_PIXEL;
-    q.perspective_span = 16;
-    q.depth_bits = 32;
-    q.tile_size = 32;
-    q.refraction_apron = TARN_APRON_FULL;
-    q.cluster_bins = 1;
-    return q;
-}
-
 const char *tarn_status_text(tarn_status status)
 {
     switch (status) {
@@ -47,7 +31,8 @@ static int quality_in_range(const tarn_quality *q)
            (q->depth_bits == 16 || q->depth_bits == 32) &&
            q->tile_size >= TARN_TILE_SIZE_MIN && q->tile_size <= TARN_TILE_SIZE_MAX &&
            (q->refraction_apron <= TARN_WATER_APRON_MAX || q->refraction_apron == TARN_APRON_FULL) &&
-           q->cluster_bins <= 1;
+           q->cluster_bins <= 1 &&
+           q->fog_argument_bits >= TARN_FOG_ARGUMENT_BITS_MIN && q->fog_argument_bits <= TARN_FOG_ARGUMENT_BITS_MAX;
 }
 
 tarn_status tarn_config_check(const tarn_frame_config *config)

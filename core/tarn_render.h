@@ -88,8 +88,32 @@ typedef struct {
                                    tile walks only the clusters that meet it (4 bytes of
                                    memory a cluster); 0: each tile tests every cluster's
                                    bounding sphere. Does not change the image. */
+    uint8_t fog_argument_bits;  /* TARN_FOG_ARGUMENT_BITS_MIN..16: fraction bits kept of
+                                   the two factors of exp2's argument (density, Q16.16,
+                                   times depth of water, Q16.16) in fog, absorption and
+                                   the underwater tint. 16 multiplies them exactly (four
+                                   16x16 products); fewer cut both first, and when the cut
+                                   factors fit 16 bits one 32-bit product does. */
 } tarn_quality;
 
+#define TARN_FOG_ARGUMENT_BITS_MIN 8u
+#define TARN_FOG_ARGUMENT_BITS_MAX 16u
+
+/* Named points on the measured speed/accuracy front (docs/sweep.md gives each
+ * one's cost and error, and the sweep that chose them). Every knob is set; a
+ * board short of RAM then lowers tile_size, which never changes the image. */
+typedef enum {
+    TARN_PRESET_FAST,     /* the least cost on the Cortex-M0 that keeps the water legible */
+    TARN_PRESET_BALANCED, /* the default: close to exact, at a fraction of its cost */
+    TARN_PRESET_EXACT     /* the least error tarn can give, whatever it costs */
+} tarn_preset;
+
+#define TARN_PRESET_COUNT 3
+
+tarn_quality tarn_quality_preset(tarn_preset preset);
+/* "fast", "balanced", "exact"; NULL for a value outside tarn_preset. */
+const char *tarn_preset_name(tarn_preset preset);
+/* The balanced preset. */
 tarn_quality tarn_quality_default(void);
 
 /* Whether the span perspective mode's code is linked. tarn bake's NAME_link.h sets

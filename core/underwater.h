@@ -11,6 +11,7 @@ typedef struct {
     const tarn_underwater *under;
     tarn_q16 near, far;
     tarn_exp2_config exp2;
+    unsigned fog_argument_bits;
     unsigned recip_steps;
     uint16_t pan[2];             /* Q0.16 offsets of the normal map */
     uint32_t screen_u_per_half;  /* 2^32 / (2 * width): screen u of half a pixel, Q0.32 */

@@ -16,6 +16,17 @@ uint32_t tarn_water_mul_q16(uint32_t a, uint32_t b)
     return sum > (uint64_t)INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)sum;
 }
 
+uint32_t tarn_fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits)
+{
+    if (bits >= 16u) return tarn_water_mul_q16(rate, x);
+    const unsigned cut = 16u - bits;
+    const uint32_t a = rate >> cut, b = x >> cut; /* Q.bits each */
+    if ((a | b) >= 65536u) return tarn_water_mul_q16(a << cut, b << cut);
+    /* one product, exact below 2^32; it is in Q(2 bits), bits >= 8 */
+    const uint32_t product = (a * b) >> (2u * bits - 16u);
+    return product > (uint32_t)INT32_MAX ? (uint32_t)INT32_MAX : product;
+}
+
 /* (a * b / 2^16) mod 2^16 for texture coordinates: the fraction of a repeat. Only
  * low bits matter, so 16x16-bit products suffice, and negative or wrapped inputs
  * give the right fraction too. */
@@ -71,7 +82,7 @@ static int32_t background_offset(const tarn_water_context *w, int32_t i, int32_t
 
 uint32_t tarn_water_decay(const tarn_water_context *w, uint32_t rate, uint32_t x)
 {
-    return tarn_exp2_neg_q16(-(tarn_q16)tarn_water_mul_q16(rate, x), w->exp2);
+    return tarn_exp2_neg_q16(-(tarn_q16)tarn_fog_argument_q16(rate, x, w->fog_argument_bits), w->exp2);
 }
 
 tarn_water_sample tarn_water_background(const tarn_water_context *w, int32_t i, int32_t j)

@@ -17,6 +17,7 @@ typedef struct tarn_water_context {
     uint16_t width, height;     /* the frame */
     tarn_q16 near, far;
     tarn_exp2_config exp2;
+    unsigned fog_argument_bits;
     unsigned recip_steps;
 
     uint16_t pan_a[2], pan_b[2], foam_pan[2]; /* Q0.16 offsets of the panning textures */
@@ -53,6 +54,10 @@ typedef struct {
 /* Per-pixel helpers the underwater pass shares (32-bit products only). */
 /* a * b / 2^16 for unsigned Q16.16 values, saturated to INT32_MAX. */
 uint32_t tarn_water_mul_q16(uint32_t a, uint32_t b);
+/* exp2's argument rate * x / 2^16 (both Q16.16, non-negative) from the factors
+ * cut to `bits` fraction bits (8..16; tarn_quality.fog_argument_bits), saturated
+ * like tarn_water_mul_q16. */
+uint32_t tarn_fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits);
 /* (a * b / 2^16) modulo 2^16: the fraction of a texture repeat, for any a. */
 uint32_t tarn_water_repeat_fraction(uint32_t a, uint32_t b);
 /* A texel channel as a normal component, (2c - 255) / 255 in Q1.15. */

@@ -56,6 +56,7 @@ void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
     w->near = view->near;
     w->far = view->far;
     w->exp2 = config->quality.exp2;
+    w->fog_argument_bits = config->quality.fog_argument_bits;
     w->recip_steps = config->quality.recip_newton_steps;
     const tarn_panning *pans[3] = {&water->pan_a, &water->pan_b, &water->foam_pan};
     uint16_t *offsets[3] = {w->pan_a, w->pan_b, w->foam_pan};
@@ -109,6 +110,7 @@ void tarn_underwater_setup(tarn_underwater_context *u, const tarn_view *view,
     u->near = view->near;
     u->far = view->far;
     u->exp2 = config->quality.exp2;
+    u->fog_argument_bits = config->quality.fog_argument_bits;
     u->recip_steps = config->quality.recip_newton_steps;
     u->pan[0] = tarn_water_pan_offset(under->pan.speed_u, config->time_ms);
     u->pan[1] = tarn_water_pan_offset(under->pan.speed_v, config->time_ms);

@@ -158,7 +158,8 @@ static const bake_field quality_fields[] = {
     FIELD(tarn_quality, recip_newton_steps, T_U8), FIELD(tarn_quality, subpixel_bits, T_U8),
     FIELD(tarn_quality, perspective, T_U8),        FIELD(tarn_quality, perspective_span, T_U8),
     FIELD(tarn_quality, depth_bits, T_U8),         FIELD(tarn_quality, tile_size, T_U8),
-    FIELD(tarn_quality, refraction_apron, T_U8),   FIELD(tarn_quality, cluster_bins, T_U8)};
+    FIELD(tarn_quality, refraction_apron, T_U8),   FIELD(tarn_quality, cluster_bins, T_U8),
+    FIELD(tarn_quality, fog_argument_bits, T_U8)};
 static const bake_type T_QUALITY = STRUCT(tarn_quality, quality_fields, 0);
 
 static const bake_field config_fields[] = {

@@ -13,8 +13,11 @@ const char tarn_cli_usage[] =
     "       tarn memory SCENE [--size WxH] [QUALITY]\n"
     "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [QUALITY]\n"
     "       tarn show SCENE --display DISPLAY --panel MODEL [...]   (tarn show --help)\n"
-    "QUALITY: --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
+    "QUALITY: --quality fast|balanced|exact (a preset, balanced by default; the knobs below\n"
+    "         override it wherever they stand)\n"
+    "         --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
     "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n"
+    "         --fog-bits N (8..16: fraction bits of fog's exp2 argument)\n"
     "         --apron on|off|N (how far refraction may move a sample, so how much opaque scene\n"
     "         each tile renders around its water: as far as it reaches, not at all, or N pixels 0..32)\n"
     "         --bins on|off (find each cluster's screen box once a frame, 4 bytes a cluster)\n";
@@ -125,9 +128,27 @@ static int parse_bins(const char *value, tarn_quality *q, tarn_error *err)
     return 0;
 }
 
+static int parse_preset(const char *value, tarn_quality *q, tarn_error *err)
+{
+    for (int p = 0; p < TARN_PRESET_COUNT; p++) {
+        if (value && strcmp(value, tarn_preset_name((tarn_preset)p)) == 0) {
+            *q = tarn_quality_preset((tarn_preset)p);
+            return 0;
+        }
+    }
+    return tarn_fail(err, "--quality: expected fast, balanced or exact, got '%s'", value ? value : "");
+}
+
 static int parse_quality_option(const char *name, const char *value, tarn_quality *q,
                                 tarn_error *err)
 {
+    if (strcmp(name, "--quality") == 0) {
+        tarn_quality ignored; /* applied before the others, by tarn_cli_apply_preset */
+        return parse_preset(value, &ignored, err);
+    }
+    if (strcmp(name, "--fog-bits") == 0)
+        return parse_knob(name, value, TARN_FOG_ARGUMENT_BITS_MIN, TARN_FOG_ARGUMENT_BITS_MAX,
+                          &q->fog_argument_bits, err);
     if (strcmp(name, "--tile") == 0)
         return parse_knob(name, value, TARN_TILE_SIZE_MIN, TARN_TILE_SIZE_MAX, &q->tile_size, err);
     if (strcmp(name, "--subpixel") == 0)
@@ -255,6 +276,7 @@ int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
     o->argv = argv;
     if (argc < 2) return tarn_fail(err, "expected a command: render, compare, accuracy, memory or bake");
     if (parse_command(argv[1], o, err) != 0) return -1;
+    if (tarn_cli_apply_preset(argc - 2, argv + 2, &o->quality, err) != 0) return -1;
     for (int i = 2; i < argc; i++) {
         const char *arg = argv[i];
         if (arg[0] != '-') {
@@ -288,4 +310,17 @@ int tarn_cli_parse_quality_option(const char *name, const char *value, tarn_qual
                                   tarn_error *err)
 {
     return parse_quality_option(name, value, quality, err);
+}
+
+int tarn_cli_apply_preset(int argc, char *const argv[], tarn_quality *quality, tarn_error *err)
+{
+    const char *preset = NULL;
+    for (int i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "--quality") != 0) continue;
+        if (preset != NULL) return tarn_fail(err, "--quality: given twice ('%s', then '%s')", preset,
+                                             i + 1 < argc ? argv[i + 1] : "");
+        preset = i + 1 < argc ? argv[i + 1] : "";
+        if (parse_preset(preset, quality, err) != 0) return -1;
+    }
+    return 0;
 }

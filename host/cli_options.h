@@ -10,7 +10,8 @@
  * QUALITY knobs (defaults from tarn_quality_default()):
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
  *   --depth 16|32  --recip-steps N (0..2)  --exp2 N[:nearest|:linear] (8..256)
- *   --apron on|off|N  --bins on|off */
+ *   --apron on|off|N  --bins on|off  --fog-bits N (8..16)
+ *   --quality fast|balanced|exact   a preset (core/quality.c) as the base of the others */
 #ifndef TARN_HOST_CLI_OPTIONS_H
 #define TARN_HOST_CLI_OPTIONS_H
 
@@ -61,9 +62,15 @@ uint32_t tarn_cli_frame_time(const tarn_cli_options *options, unsigned index);
 
 /* One QUALITY option for commands with parsers of their own (tarn show): 0 when
  * `name` was applied to `quality`, -1 with `err` set for a bad value, 1 when `name`
- * is not a quality option. */
+ * is not a quality option. --quality is only checked here: call
+ * tarn_cli_apply_preset on the whole list first, so that a preset is the base the
+ * other knobs change wherever they stand. */
 int tarn_cli_parse_quality_option(const char *name, const char *value, tarn_quality *quality,
                                   tarn_error *err);
+
+/* Applies the list's --quality NAME to `quality`, if it has one: 0, or -1 with
+ * `err` set for an unknown name or a second --quality. */
+int tarn_cli_apply_preset(int argc, char *const argv[], tarn_quality *quality, tarn_error *err);
 
 extern const char tarn_cli_usage[];
 

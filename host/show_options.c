@@ -166,6 +166,7 @@ int tarn_show_parse(int argc, char **argv, tarn_show_options *o, tarn_error *err
 {
     memset(o, 0, sizeof *o);
     o->quality = tarn_quality_default();
+    if (tarn_cli_apply_preset(argc - 2, argv + 2, &o->quality, err) != 0) return -1;
     o->hz = TARN_SHOW_HZ_DEFAULT;
     unsigned long rotation = 0;
     int via_given = 0, send_given = 0;

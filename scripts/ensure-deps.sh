@@ -14,12 +14,13 @@ want libpng-dev pkg-config --exists libpng
 want libjansson-dev pkg-config --exists jansson
 want libgpiod-dev pkg-config --exists libgpiod       # tarn show: DC/reset lines, GPIO bit-bang
 want libhidapi-dev pkg-config --exists hidapi-hidraw # tarn show: the MCP2210 bridge
+want valgrind test -e /usr/include/valgrind/callgrind.h # tarn sweep: host instruction counts
+want gnuplot-nox command -v gnuplot                  # tarn sweep: the plot
 if [ "${1:-demo}" = test ]; then
     want libcmocka-dev pkg-config --exists cmocka
     want gcc-arm-none-eabi command -v arm-none-eabi-gcc
     want libnewlib-arm-none-eabi test -e /usr/lib/arm-none-eabi/newlib
     want binutils-arm-none-eabi command -v arm-none-eabi-nm
-    want valgrind command -v callgrind_annotate
     want gcc-riscv64-unknown-elf command -v riscv64-unknown-elf-gcc
     want qemu-system-arm command -v qemu-system-arm
     want qemu-system-misc command -v qemu-system-riscv32

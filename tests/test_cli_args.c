@@ -79,6 +79,44 @@ static void test_good_lines_parse(void **state)
     assert_int_equal(o.frames, 0);
 }
 
+static int same_quality(const tarn_quality *a, const tarn_quality *b)
+{
+    return a->exp2.entries == b->exp2.entries && a->exp2.interpolate == b->exp2.interpolate &&
+           a->recip_newton_steps == b->recip_newton_steps && a->subpixel_bits == b->subpixel_bits &&
+           a->perspective == b->perspective && a->perspective_span == b->perspective_span &&
+           a->depth_bits == b->depth_bits && a->tile_size == b->tile_size &&
+           a->refraction_apron == b->refraction_apron && a->cluster_bins == b->cluster_bins &&
+           a->fog_argument_bits == b->fog_argument_bits;
+}
+
+/* A preset is the base; a knob changes it wherever it stands on the line. */
+static void test_presets_are_the_base_of_the_knobs(void **state)
+{
+    (void)state;
+    tarn_cli_options o;
+    tarn_error err;
+    const tarn_quality fast = tarn_quality_preset(TARN_PRESET_FAST);
+    assert_int_equal(parse("render s.json -o x.png --quality fast", &o, &err), 0);
+    assert_true(same_quality(&o.quality, &fast));
+    assert_int_equal(parse("render s.json -o x.png", &o, &err), 0);
+    const tarn_quality balanced = tarn_quality_preset(TARN_PRESET_BALANCED);
+    assert_true(same_quality(&o.quality, &balanced));
+    tarn_quality expected = tarn_quality_preset(TARN_PRESET_EXACT);
+    expected.depth_bits = 16;
+    expected.fog_argument_bits = 10;
+    assert_int_equal(parse("bake s.json -o x.c --depth 16 --quality exact --fog-bits 10", &o, &err), 0);
+    assert_true(same_quality(&o.quality, &expected));
+    assert_false(same_quality(&fast, &balanced));
+    for (int p = 0; p < TARN_PRESET_COUNT; p++) {
+        const tarn_frame_config config = {240, 240, tarn_quality_preset((tarn_preset)p), 0};
+        assert_true(tarn_frame_memory_bytes(&config, NULL) > 0); /* every preset is a valid config */
+    }
+    assert_rejected("render s.json -o x.png --quality turbo", "--quality: expected fast, balanced or exact, got 'turbo'");
+    assert_rejected("render s.json -o x.png --quality fast --quality exact", "--quality: given twice");
+    assert_rejected("compare s.json --quality", "--quality: expected fast, balanced or exact, got ''");
+    assert_rejected("compare s.json --fog-bits 7", "--fog-bits: expected a whole number 8..16, got '7'");
+}
+
 static void test_frame_sequences_parse(void **state)
 {
     (void)state;
@@ -261,6 +299,7 @@ int main(void)
         cmocka_unit_test(test_bad_lines_name_what_was_expected),
         cmocka_unit_test(test_binary_exits_2_and_writes_nothing),
         cmocka_unit_test(test_frame_sequences_parse),
+        cmocka_unit_test(test_presets_are_the_base_of_the_knobs),
         cmocka_unit_test(test_binary_writes_a_sequence),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -13,6 +13,7 @@
 #include "tarn_math.h"
 #include "tarn_panel.h"
 #include "tarn_render.h"
+#include "water.h"
 
 static void saturation_and_clamping(void **state)
 {
@@ -164,6 +165,32 @@ static void refraction_reach(void **state)
     assert_int_equal(tarn_water_reach_pixels(&water, 0), 1);
 }
 
+/* What the cut factors multiply to, in 64 bits, saturated as the core saturates. */
+static uint32_t cut_product(uint32_t rate, uint32_t x, unsigned bits)
+{
+    const unsigned cut = 16u - bits;
+    const uint64_t product = ((uint64_t)(rate >> cut << cut) * (x >> cut << cut)) >> 16;
+    return product > INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)product;
+}
+
+/* Fog's exp2 argument at every precision: exactly the product of the cut factors,
+ * through the one-multiply path and through the wide one, up to saturation. */
+static void fog_argument(void **state)
+{
+    (void)state;
+    const uint32_t values[] = {0, 1, 255, 256, 9830, 65535, 65536, 1u << 20, 16777215, 16777216,
+                               (uint32_t)INT32_MAX, 4194304 /* density 64, the scene maximum */};
+    const size_t n = sizeof values / sizeof values[0];
+    for (unsigned bits = TARN_FOG_ARGUMENT_BITS_MIN; bits <= TARN_FOG_ARGUMENT_BITS_MAX; bits++)
+        for (size_t a = 0; a < n; a++)
+            for (size_t b = 0; b < n; b++)
+                assert_int_equal(tarn_fog_argument_q16(values[a], values[b], bits),
+                                 cut_product(values[a], values[b], bits));
+    assert_int_equal(tarn_fog_argument_q16(9830, 3u << 16, 16), tarn_water_mul_q16(9830, 3u << 16));
+    /* 8 bits: density 0.15 is 38/256 (0.1484), 3 units of water 768/256 */
+    assert_int_equal(tarn_fog_argument_q16(9830, 3u << 16, 8), 38u * 768u);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -175,6 +202,7 @@ int main(void)
         cmocka_unit_test(divisions_used_once),
         cmocka_unit_test(frame_helpers),
         cmocka_unit_test(refraction_reach),
+        cmocka_unit_test(fog_argument),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
