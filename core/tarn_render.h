@@ -89,14 +89,15 @@ typedef struct {
                                    memory a cluster); 0: each tile tests every cluster's
                                    bounding sphere. Does not change the image. */
     uint8_t fog_argument_bits;  /* TARN_FOG_ARGUMENT_BITS_MIN..16: fraction bits kept of
-                                   the two factors of exp2's argument (density, Q16.16,
-                                   times depth of water, Q16.16) in fog, absorption and
-                                   the underwater tint. 16 multiplies them exactly (four
-                                   16x16 products); fewer cut both first, and when the cut
-                                   factors fit 16 bits one 32-bit product does. */
+                                   the depth of water (Q16.16 world units) in exp2's
+                                   argument, density * depth, for fog, absorption and the
+                                   underwater tint. 16 multiplies exactly (four 16x16
+                                   products); fewer cut the depth first, and where the
+                                   density is below 1 and the cut depth fits 16 bits one
+                                   32-bit product does. */
 } tarn_quality;
 
-#define TARN_FOG_ARGUMENT_BITS_MIN 8u
+#define TARN_FOG_ARGUMENT_BITS_MIN 4u
 #define TARN_FOG_ARGUMENT_BITS_MAX 16u
 
 /* Named points on the measured speed/accuracy front (docs/sweep.md gives each

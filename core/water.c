@@ -19,12 +19,11 @@ uint32_t tarn_water_mul_q16(uint32_t a, uint32_t b)
 uint32_t tarn_fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits)
 {
     if (bits >= 16u) return tarn_water_mul_q16(rate, x);
-    const unsigned cut = 16u - bits;
-    const uint32_t a = rate >> cut, b = x >> cut; /* Q.bits each */
-    if ((a | b) >= 65536u) return tarn_water_mul_q16(a << cut, b << cut);
-    /* one product, exact below 2^32; it is in Q(2 bits), bits >= 8 */
-    const uint32_t product = (a * b) >> (2u * bits - 16u);
-    return product > (uint32_t)INT32_MAX ? (uint32_t)INT32_MAX : product;
+    /* Only the depth is cut: a density is set once and may be tiny, and cutting it
+     * would lose all of a thin fog. */
+    const uint32_t depth = x >> (16u - bits); /* Q.bits */
+    if ((rate | depth) < 65536u) return (rate * depth) >> bits; /* below 2^31 for bits >= 1 */
+    return tarn_water_mul_q16(rate, depth << (16u - bits));
 }
 
 /* (a * b / 2^16) mod 2^16 for texture coordinates: the fraction of a repeat. Only

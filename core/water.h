@@ -54,9 +54,9 @@ typedef struct {
 /* Per-pixel helpers the underwater pass shares (32-bit products only). */
 /* a * b / 2^16 for unsigned Q16.16 values, saturated to INT32_MAX. */
 uint32_t tarn_water_mul_q16(uint32_t a, uint32_t b);
-/* exp2's argument rate * x / 2^16 (both Q16.16, non-negative) from the factors
- * cut to `bits` fraction bits (8..16; tarn_quality.fog_argument_bits), saturated
- * like tarn_water_mul_q16. */
+/* exp2's argument rate * x / 2^16 (both Q16.16, non-negative) with the depth x cut
+ * to `bits` fraction bits (tarn_quality.fog_argument_bits; 16 keeps it whole),
+ * saturated like tarn_water_mul_q16. */
 uint32_t tarn_fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits);
 /* (a * b / 2^16) modulo 2^16: the fraction of a texture repeat, for any a. */
 uint32_t tarn_water_repeat_fraction(uint32_t a, uint32_t b);

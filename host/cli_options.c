@@ -17,7 +17,7 @@ const char tarn_cli_usage[] =
     "         override it wherever they stand)\n"
     "         --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
     "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n"
-    "         --fog-bits N (8..16: fraction bits of fog's exp2 argument)\n"
+    "         --fog-bits N (4..16: fraction bits of the depth of water in fog's exp2)\n"
     "         --apron on|off|N (how far refraction may move a sample, so how much opaque scene\n"
     "         each tile renders around its water: as far as it reaches, not at all, or N pixels 0..32)\n"
     "         --bins on|off (find each cluster's screen box once a frame, 4 bytes a cluster)\n";

@@ -165,15 +165,15 @@ static void refraction_reach(void **state)
     assert_int_equal(tarn_water_reach_pixels(&water, 0), 1);
 }
 
-/* What the cut factors multiply to, in 64 bits, saturated as the core saturates. */
+/* The density times the cut depth, in 64 bits, saturated as the core saturates. */
 static uint32_t cut_product(uint32_t rate, uint32_t x, unsigned bits)
 {
     const unsigned cut = 16u - bits;
-    const uint64_t product = ((uint64_t)(rate >> cut << cut) * (x >> cut << cut)) >> 16;
+    const uint64_t product = ((uint64_t)rate * (x >> cut << cut)) >> 16;
     return product > INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)product;
 }
 
-/* Fog's exp2 argument at every precision: exactly the product of the cut factors,
+/* Fog's exp2 argument at every precision: exactly the density times the cut depth,
  * through the one-multiply path and through the wide one, up to saturation. */
 static void fog_argument(void **state)
 {
@@ -187,8 +187,8 @@ static void fog_argument(void **state)
                 assert_int_equal(tarn_fog_argument_q16(values[a], values[b], bits),
                                  cut_product(values[a], values[b], bits));
     assert_int_equal(tarn_fog_argument_q16(9830, 3u << 16, 16), tarn_water_mul_q16(9830, 3u << 16));
-    /* 8 bits: density 0.15 is 38/256 (0.1484), 3 units of water 768/256 */
-    assert_int_equal(tarn_fog_argument_q16(9830, 3u << 16, 8), 38u * 768u);
+    /* 4 bits: 3.03 units of water are cut to 3; density 0.15 (9830) stays whole */
+    assert_int_equal(tarn_fog_argument_q16(9830, (3u << 16) + 2000u, 4), 9830u * 3u);
 }
 
 int main(void)

@@ -218,7 +218,7 @@ static tarn_frame_config make_config(fuzz_reader *r)
     static const uint8_t entries_log2[] = {3, 4, 5, 6, 7, 8}, steps[] = {0, 1, 2}, bits[] = {1, 2, 4, 6, 8},
                          modes[] = {0, 1, 2}, spans[] = {2, 4, 8, 16, 32, 64}, depths[] = {16, 32},
                          tiles[] = {8, 13, 16, 24, 32, 64}, aprons[] = {0, 1, 4, 32, 255}, flags[] = {0, 1},
-                         fog_bits[] = {8, 11, 16};
+                         fog_bits[] = {4, 11, 16};
     c.quality.exp2.entries = (uint16_t)(1u << (pick(r, entries_log2, 6) & 15u));
     c.quality.exp2.interpolate = pick(r, flags, 2);
     c.quality.recip_newton_steps = pick(r, steps, 3);
