@@ -56,12 +56,14 @@ demo: deps
 	@echo "wrote pond.png"
 
 # The whole suite: the emulated boards run (their streams are compared with the host
-# by tests/test_firmware.c), a plain build, then the same tests under ASan + UBSan,
+# by tests/test_firmware.c), one sweep of several qualities on qemu-m0
+# (tests/check_firmware_sweep.sh), a plain build, then the same tests under ASan + UBSan,
 # then the check that core/ stays integer-only on a Cortex-M0, then the firmware's
 # sizes, stack and counter, then the fuzz targets' seed corpora and a short run of
 # each (tests/fuzz/fuzz.mk).
 test: deps-test
 	@$(MAKE) --no-print-directory firmware-run BOARD=
+	@tests/check_firmware_sweep.sh
 	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
 	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
 	@$(MAKE) --no-print-directory core-purity

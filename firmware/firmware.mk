@@ -10,6 +10,10 @@
 #   make profile-target BOARD=qemu-m0 [SAMPLES=N]   where an emulated Arm board's
 #                                 instructions go, by function and source line
 #   make firmware SCENE=my.json BAKE_FLAGS="--tile 16 --depth 16"   another scene
+#   make firmware-sweep BOARD=qemu-m0 POINTS=points.txt [SCENE=... BAKE_FLAGS=...]
+#                                 one boot measures every quality of the points file
+#                                 (tarn bake --points; firmware/sweep_main.c):
+#                                 build/firmware-sweep/BOARD/report.txt, a line a point
 #
 # A board whose board.mk gives no BOARD_RUN is a real board: it is built (and
 # size-, stack- and float-checked by firmware-check) but never run here.
@@ -20,12 +24,20 @@ FW_BOARDS := $(sort $(patsubst boards/%/board.mk,%,$(wildcard boards/*/board.mk)
 FW_TARN := build/release/tarn
 FW_TIMEOUT ?= 120
 
-.PHONY: firmware firmware-run firmware-check bench-target profile-target
+.PHONY: firmware firmware-run firmware-check bench-target profile-target firmware-sweep
+
+# The program an emulated board runs: main (firmware/main.c, the measured run) or
+# sweep (firmware/sweep_main.c: every point of the bake's --points, one boot), which
+# make firmware-sweep selects.
+FW_MAIN ?= $(if $(filter firmware-sweep,$(MAKECMDGOALS)),sweep,main)
 
 ifeq ($(BOARD),)
 
 profile-target:
 	@echo "tarn: make profile-target needs BOARD=qemu-m0 or BOARD=qemu-m3" >&2; exit 1
+
+firmware-sweep:
+	@echo "tarn: make firmware-sweep needs BOARD= one of the emulated boards, and POINTS=FILE" >&2; exit 1
 
 firmware:
 	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory firmware BOARD=$$b || exit 1; done
@@ -45,18 +57,30 @@ firmware-check: firmware-run
 
 else ifeq ($(filter $(BOARD),$(FW_BOARDS)),)
 
-firmware firmware-run bench-target firmware-check profile-target:
+firmware firmware-run bench-target firmware-check profile-target firmware-sweep:
 	@echo "tarn: no board '$(BOARD)'; the boards are: $(FW_BOARDS)" >&2; exit 1
+
+else ifeq ($(filter $(FW_MAIN),main sweep),)
+
+firmware firmware-run bench-target firmware-check profile-target firmware-sweep:
+	@echo "tarn: no program FW_MAIN='$(FW_MAIN)'; expected main or sweep" >&2; exit 1
+
+else ifeq ($(FW_MAIN)$(POINTS),sweep)
+
+firmware firmware-run bench-target firmware-check profile-target firmware-sweep:
+	@echo "tarn: the sweep needs POINTS=FILE: one line of quality options per point (docs/firmware.md)" >&2; exit 1
 
 else
 
 include boards/$(BOARD)/board.mk
 
 # FW_BUILD_DIR: another build directory, for builds of other scenes beside the board's own
-FW_DIR := $(if $(FW_BUILD_DIR),$(FW_BUILD_DIR),build/firmware/$(BOARD))
+FW_DIR := $(if $(FW_BUILD_DIR),$(FW_BUILD_DIR),build/$(if $(filter sweep,$(FW_MAIN)),firmware-sweep,firmware)/$(BOARD))
 FW_SCENE := $(if $(SCENE),$(SCENE),$(BOARD_SCENE))
 FW_BAKE_FLAGS := $(if $(SCENE),$(BAKE_FLAGS),$(if $(BAKE_FLAGS),$(BAKE_FLAGS),$(BOARD_BAKE_FLAGS)))
 FW_SCENE_LABEL := $(basename $(notdir $(FW_SCENE)))
+# the sweep's points: baked with the scene (host/bake_points.h)
+FW_POINTS_FLAGS := $(if $(filter sweep,$(FW_MAIN)),--points $(POINTS))
 FW_ELF := $(FW_DIR)/firmware.elf
 
 ifeq ($(BOARD_ARCH),arm)
@@ -81,7 +105,8 @@ FW_CFLAGS := -std=c99 -Wall -Wextra -Werror -O2 -g -ffreestanding -fno-common \
 # The program: an emulated board runs the measured run and sends the panel stream
 # through its writes; a real board shows the scene forever through SPI and DMA.
 ifneq ($(value BOARD_RUN),)
-FW_PROGRAM_SRC := firmware/main.c firmware/stream_transport.c
+FW_PROGRAM_SRC := firmware/$(if $(filter sweep,$(FW_MAIN)),sweep_main.c,main.c) firmware/report.c \
+	firmware/stream_transport.c
 else
 FW_PROGRAM_SRC := firmware/display_main.c firmware/dma_transport.c
 endif
@@ -105,6 +130,9 @@ firmware: $(FW_OUTPUTS)
 ifneq ($(value BOARD_RUN),)
 firmware-run: $(FW_DIR)/report.txt
 
+firmware-sweep: $(FW_DIR)/report.txt
+	@cat $<
+
 bench-target: $(FW_DIR)/report.txt $(FW_ELF)
 	@tests/check_firmware.sh --bench $(BOARD)
 
@@ -124,7 +152,7 @@ else
 firmware-run: $(FW_OUTPUTS)
 	@echo "$(BOARD) is a real board: built ($(FW_OUTPUTS)), not run" >&2
 
-bench-target profile-target: $(FW_OUTPUTS)
+bench-target profile-target firmware-sweep: $(FW_OUTPUTS)
 	@echo "$(BOARD) is a real board: no emulated run to measure" >&2
 
 firmware-check: $(FW_OUTPUTS) $(FW_DIR)/firmware.conf
@@ -137,7 +165,7 @@ $(FW_DIR)/firmware.conf: boards/$(BOARD)/board.mk firmware/firmware.mk FORCE
 	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
 		"bake_flags=$(FW_BAKE_FLAGS)" "times=0,1000" "dither=1" "cross=$(FW_CROSS)" \
 		"stack_bytes=$(BOARD_STACK_BYTES)" "stack_entry=$(BOARD_STACK_ENTRY)" "emulated=$(if $(value BOARD_RUN),1,0)" \
-		"code_bytes_max=$(BOARD_CODE_BYTES_MAX)" > $@.tmp
+		"code_bytes_max=$(BOARD_CODE_BYTES_MAX)" "program=$(FW_MAIN)" "points=$(POINTS)" > $@.tmp
 	@if cmp -s $@.tmp $@; then rm $@.tmp; else mv $@.tmp $@; fi
 
 .PHONY: FORCE fw-toolchain fw-qemu
@@ -157,10 +185,11 @@ endif
 # The scene as const C: scene_scene, scene_config, SCENE_MEMORY_BYTES; scene_link.h
 # holds the TARN_LINK_* switches that leave the effects the scene does not use out of
 # the core's objects.
-$(FW_DIR)/scene.c: $(FW_SCENE) $(FW_TARN) $(FW_DIR)/firmware.conf | fw-toolchain
+FW_BAKE := $(strip $(FW_TARN) bake $(FW_SCENE) -o $(FW_DIR)/scene.c --name scene $(FW_BAKE_FLAGS) $(FW_POINTS_FLAGS))
+$(FW_DIR)/scene.c: $(FW_SCENE) $(FW_TARN) $(FW_DIR)/firmware.conf $(if $(FW_POINTS_FLAGS),$(POINTS)) | fw-toolchain
 	@mkdir -p $(FW_DIR)
-	@echo "$(FW_TARN) bake $(FW_SCENE) -o $@ --name scene $(FW_BAKE_FLAGS)" >&2
-	@$(FW_TARN) bake $(FW_SCENE) -o $@ --name scene $(FW_BAKE_FLAGS) >&2
+	@echo "$(FW_BAKE)" >&2
+	@$(FW_BAKE) >&2
 
 $(FW_DIR)/scene.h $(FW_DIR)/scene_link.h: $(FW_DIR)/scene.c
 
@@ -169,8 +198,9 @@ $(FW_CORE_OBJ): $(FW_DIR)/scene_link.h
 $(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h
 
 $(FW_OBJ): firmware/firmware.mk boards/$(BOARD)/board.mk
-$(FW_DIR)/obj/firmware/main.o $(FW_DIR)/obj/firmware/display_main.o: $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
-$(FW_DIR)/obj/firmware/main.o: FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"'
+FW_MAIN_OBJ := $(patsubst %,$(FW_DIR)/obj/firmware/%.o,main sweep_main display_main)
+$(FW_MAIN_OBJ): $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
+$(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"'
 $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-distribute-patterns -fno-strict-aliasing
 
 $(FW_DIR)/obj/%.o: %.c | fw-toolchain
@@ -196,7 +226,7 @@ $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
 		-o $@ $(FW_OBJ) $(FW_LIBS) 2> $(FW_DIR)/link.err; then \
 		cat $(FW_DIR)/link.err >&2; \
 		if grep -q "region .RAM. overflowed" $(FW_DIR)/link.err; then \
-			echo "tarn: $(BOARD) has too little RAM for $(FW_SCENE) [$(FW_BAKE_FLAGS)]: the renderer needs" \
+			echo "tarn: $(BOARD) has too little RAM for $(FW_SCENE) [$(strip $(FW_BAKE_FLAGS) $(FW_POINTS_FLAGS))]: the renderer needs" \
 				"$$(sed -n 's/^#define SCENE_MEMORY_BYTES //p' $(FW_DIR)/scene.h) bytes and the stack $(BOARD_STACK_BYTES);" \
 				"bake with a smaller --tile (or --depth 16, --apron off where they are not set yet;" \
 				"tarn memory SCENE QUALITY shows the bytes)" >&2; fi; \

@@ -20,6 +20,7 @@
 #include <stdint.h>
 #include "board.h"
 #include "panel_sink.h"
+#include "report.h"
 #include "scene.h"
 #include "stream_transport.h"
 #include "tarn_panel.h"
@@ -43,75 +44,11 @@ static uint32_t memory[(SCENE_MEMORY_BYTES + 3u) / 4u];
 /* One tile row in RGB565: the panel stream needs no more. */
 static uint8_t line[2u * TARN_TILE_SIZE_MAX];
 
-/* Text without stdio: the report line is assembled here. */
-typedef struct {
-    char text[192];
-    size_t length;
-} report;
-
-static void put_text(report *r, const char *s)
-{
-    while (*s != '\0' && r->length < sizeof r->text) r->text[r->length++] = *s++;
-}
-
-/* Divisions through the core's tarn_divide, so the image links no 64-bit division
- * of the compiler's own (tests/check_firmware.sh counts the code bytes). */
-static void put_number(report *r, uint64_t value)
-{
-    const tarn_divisor ten = tarn_divisor_of(10);
-    char digits[20];
-    size_t n = 0;
-    do {
-        uint32_t digit;
-        value = tarn_divide_u64(value, &ten, &digit);
-        digits[n++] = (char)('0' + (int)digit);
-    } while (value != 0);
-    while (n > 0 && r->length < sizeof r->text) r->text[r->length++] = digits[--n];
-}
-
 static int drop_tile(void *user, const tarn_tile *tile)
 {
     (void)user;
     (void)tile;
     return 0;
-}
-
-static int send_report(const report *r)
-{
-    return board_report(r->text, r->length);
-}
-
-static uint64_t per_pixel(uint64_t instructions, uint32_t pixels)
-{
-    const tarn_divisor divisor = tarn_divisor_of(pixels);
-    return tarn_divide_u64(instructions + pixels / 2u, &divisor, NULL);
-}
-
-/* Exactly 2 * n instructions for n >= 1 (plus the call): a yardstick for the board's
- * counter. */
-static void __attribute__((noinline)) spin(uint32_t n)
-{
-#if defined(__arm__)
-    __asm__ volatile(".syntax unified\n1: subs %0, %0, #1\n bne 1b" : "+l"(n) : : "cc");
-#elif defined(__riscv)
-    __asm__ volatile("1: addi %0, %0, -1\n bnez %0, 1b" : "+r"(n));
-#else
-#error "spin: Arm or RISC-V"
-#endif
-}
-
-#define COUNTER_CHECK_INSTRUCTIONS 2000000u
-
-/* What the counter says COUNTER_CHECK_INSTRUCTIONS take: a long spin minus a spin
- * of one iteration, which cancels the calls and the counter reads. */
-static uint64_t counter_check(void)
-{
-    uint64_t t0 = board_instructions();
-    spin(1);
-    uint64_t t1 = board_instructions();
-    spin(1u + COUNTER_CHECK_INSTRUCTIONS / 2u);
-    uint64_t t2 = board_instructions();
-    return (t2 - t1) - (t1 - t0);
 }
 
 /* The report line; kept out of main() so that its buffer is not on the stack while
@@ -121,38 +58,38 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
 {
     report r = {{0}, 0};
     if (status != TARN_OK) {
-        put_text(&r, "error board=");
-        put_text(&r, board_name);
-        put_text(&r, " status=");
-        put_text(&r, tarn_status_text(status));
-        put_text(&r, "\n");
-        (void)send_report(&r);
+        report_text(&r, "error board=");
+        report_text(&r, board_name);
+        report_text(&r, " status=");
+        report_text(&r, tarn_status_text(status));
+        report_text(&r, "\n");
+        (void)report_send(&r);
         return 1;
     }
     uint64_t pixels = (uint64_t)scene_config.width * scene_config.height;
-    put_text(&r, "target board=");
-    put_text(&r, board_name);
-    put_text(&r, " scene=" FW_SCENE_LABEL " size=");
-    put_number(&r, scene_config.width);
-    put_text(&r, "x");
-    put_number(&r, scene_config.height);
-    put_text(&r, " insn_per_pixel=");
-    put_number(&r, per_pixel(frame_instructions[0] + frame_instructions[1], 2u * pixels));
-    put_text(&r, " render_insn_per_pixel=");
-    put_number(&r, per_pixel(frame_instructions[2], pixels));
-    put_text(&r, " stack_peak_bytes=");
-    put_number(&r, board_stack_peak());
-    put_text(&r, " frame_insn=");
+    report_text(&r, "target board=");
+    report_text(&r, board_name);
+    report_text(&r, " scene=" FW_SCENE_LABEL " size=");
+    report_number(&r, scene_config.width);
+    report_text(&r, "x");
+    report_number(&r, scene_config.height);
+    report_text(&r, " insn_per_pixel=");
+    report_number(&r, report_per_pixel(frame_instructions[0] + frame_instructions[1], 2u * pixels));
+    report_text(&r, " render_insn_per_pixel=");
+    report_number(&r, report_per_pixel(frame_instructions[2], pixels));
+    report_text(&r, " stack_peak_bytes=");
+    report_number(&r, board_stack_peak());
+    report_text(&r, " frame_insn=");
     for (unsigned i = 0; i < 3u; i++) {
-        if (i > 0) put_text(&r, ",");
-        put_number(&r, frame_instructions[i]);
+        if (i > 0) report_text(&r, ",");
+        report_number(&r, frame_instructions[i]);
     }
-    put_text(&r, " counter_check=");
-    put_number(&r, counter);
-    put_text(&r, "/");
-    put_number(&r, COUNTER_CHECK_INSTRUCTIONS);
-    put_text(&r, "\n");
-    return send_report(&r) != 0 ? 2 : 0;
+    report_text(&r, " counter_check=");
+    report_number(&r, counter);
+    report_text(&r, "/");
+    report_number(&r, REPORT_COUNTER_CHECK_INSTRUCTIONS);
+    report_text(&r, "\n");
+    return report_send(&r) != 0 ? 2 : 0;
 }
 
 int main(void)
@@ -185,5 +122,5 @@ int main(void)
         status = tarn_render_frame(&scene_scene, &config, memory, sizeof memory, drop_tile, 0);
         frame_instructions[2] = board_instructions() - start;
     }
-    return report_run(status, frame_instructions, counter_check());
+    return report_run(status, frame_instructions, report_counter_check());
 }

@@ -282,8 +282,11 @@ static size_t find_boards(char names[][64], size_t max)
         char *text = read_file(path, NULL);
         if (text == NULL) continue;
         copy_value(value, sizeof value, text, "emulated");
+        char program[16];
+        copy_value(program, sizeof program, text, "program"); /* a sweep streams no frames */
         free(text);
-        if (strcmp(value, "1") == 0) memcpy(names[n++], e->d_name, strlen(e->d_name) + 1);
+        if (strcmp(value, "1") == 0 && strcmp(program, "sweep") != 0)
+            memcpy(names[n++], e->d_name, strlen(e->d_name) + 1);
     }
     closedir(dir);
     for (size_t i = 1; i < n; i++) /* a stable order */

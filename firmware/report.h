@@ -1,0 +1,38 @@
+/* report.h: the text the emulated boards send on their report channel
+ * (board_report), assembled without stdio, and the counter's yardstick. Shared by
+ * firmware/main.c and firmware/sweep_main.c. */
+#ifndef TARN_FIRMWARE_REPORT_H
+#define TARN_FIRMWARE_REPORT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* One line being assembled; text past the buffer is dropped. */
+typedef struct {
+    char text[256];
+    size_t length;
+} report;
+
+void report_text(report *r, const char *s);
+
+/* Decimal, through the core's tarn_divide, so that the image links no 64-bit
+ * division of the compiler's own (tests/check_firmware.sh counts the code bytes). */
+void report_number(report *r, uint64_t value);
+
+/* Eight hexadecimal digits, upper case. */
+void report_hex32(report *r, uint32_t value);
+
+/* board_report of the text so far: 0, or non-zero when the link failed. */
+int report_send(const report *r);
+
+/* instructions / pixels, rounded to nearest; 0 for no pixels. */
+uint64_t report_per_pixel(uint64_t instructions, uint32_t pixels);
+
+#define REPORT_COUNTER_CHECK_INSTRUCTIONS 2000000u
+
+/* What the board's counter says REPORT_COUNTER_CHECK_INSTRUCTIONS take (the board's
+ * tick-to-instruction ratio, checked): a long spin minus a spin of one iteration,
+ * which cancels the calls and the counter reads. */
+uint64_t report_counter_check(void);
+
+#endif

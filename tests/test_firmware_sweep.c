@@ -1,0 +1,220 @@
+/* test_firmware_sweep.c: what a board's sweep (`make firmware-sweep`,
+ * firmware/sweep_main.c) reports equals what the host's core renders.
+ *
+ * The run is found in $SWEEP_DIR, or build/firmware-sweep-check/qemu-m0, where
+ * tests/check_firmware_sweep.sh (run by `make test`) leaves it; without a run the
+ * test is skipped. firmware.conf names the scene, the bake flags and the points
+ * file; report.txt must hold one `point` line per point, in order, each with
+ * status=ok, the working memory tarn_frame_memory_bytes gives, and the checksum the
+ * host computes (tarn_checksum_pixel summed over its own render of the scene at the
+ * same size, quality and time, 1000 ms); points whose images differ must have
+ * different checksums. Then the `sweep` line, with the point count. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "bake_points.h"
+#include "cli_options.h"
+#include "core_render.h"
+#include "scene_load.h"
+#include "tarn_checksum.h"
+
+#define SWEEP_DIR_DEFAULT "build/firmware-sweep-check/qemu-m0"
+#define SWEEP_TIME_MS 1000u /* FW_TIME_1 */
+#define FLAGS_MAX 32
+
+static char *read_text(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) return NULL;
+    size_t capacity = 4096, n = 0;
+    char *text = malloc(capacity + 1);
+    for (size_t got; text != NULL && (got = fread(text + n, 1, capacity - n, f)) > 0;) {
+        n += got;
+        if (n == capacity) {
+            char *grown = realloc(text, 2 * capacity + 1);
+            if (grown == NULL) free(text);
+            text = grown;
+            capacity *= 2;
+        }
+    }
+    fclose(f);
+    if (text != NULL) text[n] = '\0';
+    return text;
+}
+
+/* KEY=VALUE's value in the conf's lines, or "". */
+static void conf_value(char *out, size_t size, const char *text, const char *key)
+{
+    size_t key_length = strlen(key);
+    out[0] = '\0';
+    for (const char *line = text; line != NULL && *line != '\0';) {
+        const char *end = strchr(line, '\n');
+        size_t length = end ? (size_t)(end - line) : strlen(line);
+        if (length > key_length && strncmp(line, key, key_length) == 0 && line[key_length] == '=') {
+            size_t n = length - key_length - 1 < size - 1 ? length - key_length - 1 : size - 1;
+            memcpy(out, line + key_length + 1, n);
+            out[n] = '\0';
+            return;
+        }
+        line = end ? end + 1 : NULL;
+    }
+}
+
+/* The bake's frame config: the flags parsed the way `tarn bake` parses them. */
+static tarn_frame_config bake_config(const char *scene_path, const char *bake_flags, const tarn_loaded_scene *scene)
+{
+    char flags[512];
+    char *argv[FLAGS_MAX + 3] = {"tarn", "memory", (char *)scene_path};
+    int argc = 3;
+    snprintf(flags, sizeof flags, "%s", bake_flags);
+    for (char *word = strtok(flags, " "); word != NULL; word = strtok(NULL, " ")) {
+        if (argc == FLAGS_MAX + 3) fail_msg("too many bake flags: %s", bake_flags);
+        argv[argc++] = word;
+    }
+    tarn_cli_options options;
+    tarn_error err;
+    if (tarn_cli_parse(argc, argv, &options, &err) != 0) fail_msg("bake flags '%s': %s", bake_flags, err.message);
+    tarn_frame_config config = {options.width ? options.width : scene->width,
+                                options.height ? options.height : scene->height, options.quality, SWEEP_TIME_MS};
+    return config;
+}
+
+/* The `point index=I ...` line of the report, or NULL. */
+static const char *point_line(const char *report, size_t index)
+{
+    char prefix[48];
+    int n = snprintf(prefix, sizeof prefix, "point index=%zu ", index);
+    for (const char *line = report; line != NULL && *line != '\0';) {
+        if (strncmp(line, prefix, (size_t)n) == 0) return line;
+        line = strchr(line, '\n');
+        if (line) line++;
+    }
+    return NULL;
+}
+
+/* The value of ` KEY=` in one line, as text up to the next space or newline. */
+static void field(const char *line, const char *key, char *out, size_t size)
+{
+    char pattern[64];
+    snprintf(pattern, sizeof pattern, " %s=", key);
+    const char *end_of_line = strchr(line, '\n');
+    const char *at = strstr(line, pattern);
+    if (at == NULL || (end_of_line && at > end_of_line)) fail_msg("no %s in: %.200s", key, line);
+    at += strlen(pattern);
+    size_t n = strcspn(at, " \n");
+    if (n >= size) n = size - 1;
+    memcpy(out, at, n);
+    out[n] = '\0';
+}
+
+static uint32_t image_checksum(const uint8_t *rgb, uint32_t width, uint32_t height)
+{
+    uint32_t sum = 0;
+    for (uint32_t y = 0; y < height; y++)
+        for (uint32_t x = 0; x < width; x++) {
+            const uint8_t *p = rgb + 3u * (y * width + x);
+            sum += tarn_checksum_pixel(x, y, ((uint32_t)p[0] << 16) | ((uint32_t)p[1] << 8) | p[2]);
+        }
+    return sum;
+}
+
+static void test_sweep_matches_host(void **state)
+{
+    (void)state;
+    const char *dir = getenv("SWEEP_DIR") && *getenv("SWEEP_DIR") ? getenv("SWEEP_DIR") : SWEEP_DIR_DEFAULT;
+    char path[1024], scene_path[512], bake_flags[512], points_path[512], board[64], program[16];
+    snprintf(path, sizeof path, "%s/firmware.conf", dir);
+    char *conf = read_text(path);
+    snprintf(path, sizeof path, "%s/report.txt", dir);
+    char *report = read_text(path);
+    if (conf == NULL || report == NULL) {
+        print_message("no sweep in %s: tests/check_firmware_sweep.sh runs one (make test does it)\n", dir);
+        free(conf);
+        free(report);
+        skip();
+    }
+    conf_value(scene_path, sizeof scene_path, conf, "scene");
+    conf_value(bake_flags, sizeof bake_flags, conf, "bake_flags");
+    conf_value(points_path, sizeof points_path, conf, "points");
+    conf_value(board, sizeof board, conf, "board");
+    conf_value(program, sizeof program, conf, "program");
+    free(conf);
+    if (strcmp(program, "sweep") != 0) fail_msg("%s/firmware.conf: program=%s, expected sweep", dir, program);
+    print_message("%s", report);
+
+    tarn_loaded_scene scene;
+    tarn_error err;
+    if (tarn_scene_load(scene_path, &scene, &err) != 0) fail_msg("%s", err.message);
+    tarn_frame_config config = bake_config(scene_path, bake_flags, &scene);
+    tarn_bake_points points;
+    if (tarn_bake_points_load(points_path, &config.quality, &points, &err) != 0) fail_msg("%s", err.message);
+
+    const size_t pixels = (size_t)config.width * config.height;
+    uint8_t *images = malloc(3 * pixels * points.count);
+    uint32_t *sums = malloc(points.count * sizeof *sums);
+    assert_true(images != NULL && sums != NULL);
+    for (size_t i = 0; i < points.count; i++) {
+        const char *line = point_line(report, i);
+        if (line == NULL) fail_msg("%s/report.txt: no line for point %zu", dir, i);
+        char value[96];
+        field(line, "status", value, sizeof value);
+        if (strcmp(value, "ok") != 0) fail_msg("point %zu: status=%s", i, value);
+        tarn_frame_config point = config;
+        point.quality = points.qualities[i];
+        field(line, "memory_bytes", value, sizeof value);
+        assert_int_equal(strtoul(value, NULL, 10), tarn_frame_memory_bytes(&point, &scene.scene));
+        field(line, "insn_per_pixel", value, sizeof value);
+        unsigned long per_pixel = strtoul(value, NULL, 10);
+        field(line, "frame_insn", value, sizeof value);
+        unsigned long long frame = strtoull(value, NULL, 10);
+        assert_true(per_pixel > 0);
+        assert_int_equal(per_pixel, (frame + pixels / 2) / pixels);
+        field(line, "checksum", value, sizeof value);
+        unsigned long board_sum = strtoul(value, NULL, 16);
+        uint8_t *rgb = images + 3 * pixels * i;
+        if (tarn_core_render(&scene.scene, &point, rgb, NULL, &err) != 0) fail_msg("%s", err.message);
+        sums[i] = image_checksum(rgb, point.width, point.height);
+        print_message("point %zu (%s:%u): board %08lx, host %08x\n", i, points.path, points.lines[i], board_sum,
+                      sums[i]);
+        assert_int_equal(board_sum, sums[i]);
+    }
+    assert_null(point_line(report, points.count)); /* no more points than the file's */
+    size_t differing = 0;
+    for (size_t i = 0; i < points.count; i++)
+        for (size_t j = i + 1; j < points.count; j++) {
+            if (memcmp(images + 3 * pixels * i, images + 3 * pixels * j, 3 * pixels) == 0) continue;
+            differing++;
+            if (sums[i] == sums[j]) fail_msg("points %zu and %zu differ in image, not in checksum", i, j);
+        }
+    print_message("%zu pairs of points render different images\n", differing);
+
+    char expected[256];
+    snprintf(expected, sizeof expected, "sweep board=%s scene=", board);
+    const char *last = strstr(report, expected);
+    if (last == NULL) fail_msg("%s/report.txt: no '%s' line", dir, expected);
+    char value[64];
+    field(last, "points", value, sizeof value);
+    assert_int_equal(strtoul(value, NULL, 10), points.count);
+    snprintf(expected, sizeof expected, " size=%ux%u ", config.width, config.height);
+    assert_non_null(strstr(last, expected));
+
+    free(images);
+    free(sums);
+    tarn_bake_points_free(&points);
+    tarn_scene_free(&scene);
+    free(report);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sweep_matches_host),
+    };
+    return cmocka_run_group_tests_name("firmware sweep", tests, NULL, NULL);
+}
