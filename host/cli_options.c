@@ -13,6 +13,7 @@ const char tarn_cli_usage[] =
     "       tarn memory SCENE [--size WxH] [QUALITY]\n"
     "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [QUALITY]\n"
     "       tarn show SCENE --display DISPLAY --panel MODEL [...]   (tarn show --help)\n"
+    "       tarn sweep [SCENE...] [--out DIR] [...]                 (tarn sweep --help)\n"
     "QUALITY: --quality fast|balanced|exact (a preset, balanced by default; the knobs below\n"
     "         override it wherever they stand)\n"
     "         --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"

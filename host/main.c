@@ -1,5 +1,5 @@
 /* tarn: render scenes to PNG, measure the integer core against the float reference,
- * bake scenes into C for firmware. */
+ * sweep the quality knobs, bake scenes into C for firmware, drive a panel. */
 #include <stdio.h>
 
 #include <string.h>
@@ -7,12 +7,15 @@
 #include "cli_options.h"
 #include "commands.h"
 #include "show.h"
+#include "sweep.h"
 
 int main(int argc, char **argv)
 {
     tarn_cli_options options;
     tarn_error err;
     if (argc >= 2 && strcmp(argv[1], "show") == 0) return tarn_command_show(argc, argv);
+    if (argc >= 2 && strcmp(argv[1], "sweep") == 0) return tarn_command_sweep(argc, argv);
+    if (argc >= 2 && strcmp(argv[1], "sweep-cost-worker") == 0) return tarn_command_sweep_cost_worker(argc, argv);
     if (tarn_cli_parse(argc, argv, &options, &err) != 0) {
         fprintf(stderr, "tarn: %s\n%s", err.message, tarn_cli_usage);
         return TARN_EXIT_BAD_INPUT;

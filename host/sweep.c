@@ -1,0 +1,218 @@
+#include "sweep.h"
+
+#include <errno.h>
+#include <glob.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "scene_load.h"
+#include "sweep_error.h"
+#include "sweep_grid.h"
+#include "sweep_host_cost.h"
+#include "sweep_report.h"
+#include "sweep_stability.h"
+#include "sweep_target.h"
+
+#define SCENES_MAX 16
+#define POINTS_MAX 512
+#define PATH_MAX_BYTES 4096
+
+typedef struct {
+    const char *scenes[SCENES_MAX];
+    size_t scene_count;
+    const char *out_dir, *extremes_dir;
+    tarn_sweep_grid grid;
+    int host_cost;
+    char boards[128];
+    tarn_sweep_sources sources;
+} sweep_options;
+
+static const char usage[] =
+    "usage: tarn sweep [SCENE...] [--out DIR] [--grid full|quick] [--boards B,B|none]\n"
+    "                  [--host-cost callgrind|none] [--extremes DIR]\n"
+    "  SCENE        scenes to sweep (scenes/pond.json when none is given)\n"
+    "  --out        where sweep.csv, front.md, SCENE.png and stability.md go (build/sweep)\n"
+    "  --grid       full: the crossed knobs and every other value alone; quick: a few points\n"
+    "  --boards     emulated boards that measure target cost (qemu-m0,qemu-rv32; also qemu-m3)\n"
+    "  --host-cost  callgrind (host instructions per pixel) or none\n"
+    "  --extremes   a folder of extreme scenes: each knob value's worst case, in stability.md\n";
+
+static int parse_sources(sweep_options *o, const char *list, tarn_error *err)
+{
+    snprintf(o->boards, sizeof o->boards, "%s", list);
+    o->sources.count = 1;
+    if (strcmp(list, "none") == 0) return 0;
+    for (char *b = strtok(o->boards, ","); b != NULL; b = strtok(NULL, ",")) {
+        if (tarn_sweep_board_memory(b) == 0)
+            return tarn_fail(err, "--boards: expected qemu-m0, qemu-rv32, qemu-m3 or none, got '%s'", b);
+        if (o->sources.count == TARN_SWEEP_SOURCES_MAX) return tarn_fail(err, "--boards: at most %d boards",
+                                                                        TARN_SWEEP_SOURCES_MAX - 1);
+        o->sources.names[o->sources.count++] = b;
+    }
+    return 0;
+}
+
+static int parse_option(sweep_options *o, const char *name, const char *value, tarn_error *err)
+{
+    if (value == NULL) return tarn_fail(err, "%s: expected a value", name);
+    if (strcmp(name, "--out") == 0) o->out_dir = value;
+    else if (strcmp(name, "--extremes") == 0) o->extremes_dir = value;
+    else if (strcmp(name, "--boards") == 0) return parse_sources(o, value, err);
+    else if (strcmp(name, "--grid") == 0) {
+        if (strcmp(value, "full") != 0 && strcmp(value, "quick") != 0)
+            return tarn_fail(err, "--grid: expected full or quick, got '%s'", value);
+        o->grid = strcmp(value, "full") == 0 ? TARN_SWEEP_GRID_FULL : TARN_SWEEP_GRID_QUICK;
+    } else if (strcmp(name, "--host-cost") == 0) {
+        if (strcmp(value, "callgrind") != 0 && strcmp(value, "none") != 0)
+            return tarn_fail(err, "--host-cost: expected callgrind or none, got '%s'", value);
+        o->host_cost = strcmp(value, "callgrind") == 0;
+    } else return tarn_fail(err, "unknown option '%s'", name);
+    return 0;
+}
+
+static int parse(int argc, char **argv, sweep_options *o, tarn_error *err)
+{
+    memset(o, 0, sizeof *o);
+    o->out_dir = "build/sweep";
+    o->grid = TARN_SWEEP_GRID_FULL;
+    o->host_cost = 1;
+    o->sources.names[0] = "host";
+    if (parse_sources(o, "qemu-m0,qemu-rv32", err) != 0) return -1;
+    for (int i = 2; i < argc; i++) {
+        if (argv[i][0] != '-') {
+            if (o->scene_count == SCENES_MAX) return tarn_fail(err, "at most %d scenes", SCENES_MAX);
+            o->scenes[o->scene_count++] = argv[i];
+        } else if (parse_option(o, argv[i], i + 1 < argc ? argv[i + 1] : NULL, err) != 0) {
+            return -1;
+        } else {
+            i++;
+        }
+    }
+    if (o->scene_count == 0) o->scenes[o->scene_count++] = "scenes/pond.json";
+    return 0;
+}
+
+static int make_dir(const char *path, tarn_error *err)
+{
+    if (mkdir(path, 0755) != 0 && errno != EEXIST) return tarn_fail(err, "%s: cannot create: %s", path, strerror(errno));
+    return 0;
+}
+
+/* Errors, host cost and each board's cost of one scene's points. */
+static int sweep_scene(const sweep_options *o, const char *work_dir, tarn_sweep_scene *scene, tarn_error *err)
+{
+    tarn_loaded_scene loaded;
+    if (tarn_scene_load(scene->path, &loaded, err) != 0) return -1;
+    scene->name = strdup(loaded.name);
+    scene->width = loaded.width;
+    scene->height = loaded.height;
+    scene->points = calloc(POINTS_MAX, sizeof *scene->points);
+    int failed = scene->name == NULL || scene->points == NULL ? tarn_fail(err, "out of memory") : 0;
+    if (!failed) {
+        scene->count = tarn_sweep_grid_points(o->grid, scene->points, POINTS_MAX);
+        for (size_t i = 0; i < scene->count; i++)
+            for (size_t s = 0; s < TARN_SWEEP_SOURCES_MAX; s++) scene->points[i].cost[s] = -1.0;
+        fprintf(stderr, "tarn sweep: %s, %zu points: error against the reference\n", scene->name, scene->count);
+        failed = tarn_sweep_measure_errors(&loaded, scene, err);
+    }
+    tarn_scene_free(&loaded);
+    if (!failed && o->host_cost) {
+        fprintf(stderr, "tarn sweep: %s: host instructions (callgrind, two workers)\n", scene->name);
+        failed = tarn_sweep_host_costs(scene, work_dir, err);
+    }
+    for (size_t s = 1; s < o->sources.count && !failed; s++) {
+        fprintf(stderr, "tarn sweep: %s: %s instructions (one boot)\n", scene->name, o->sources.names[s]);
+        failed = tarn_sweep_target_costs(scene, o->sources.names[s], s, work_dir, err);
+    }
+    return failed ? -1 : 0;
+}
+
+/* One machine-readable line a preset, for scripts and tests. */
+static void print_presets(const tarn_sweep_scene *scene, const tarn_sweep_sources *sources)
+{
+    for (size_t i = 0; i < scene->count; i++) {
+        const tarn_sweep_point *p = &scene->points[i];
+        if (p->preset == NULL) continue;
+        printf("preset scene=%s name=%s psnr=%.2f maxerr=%d over2=%.3f%% over8=%.3f%%", scene->name, p->preset,
+               p->error.psnr_db, p->error.max_channel_error, 100.0 * p->error.share_over2,
+               100.0 * p->error.share_over8);
+        for (size_t s = 0; s < sources->count; s++)
+            if (p->cost[s] >= 0) printf(" %s=%.0f", sources->names[s], p->cost[s]);
+        printf("\n");
+    }
+}
+
+static int write_outputs(const sweep_options *o, const char *work_dir, tarn_sweep_scene *scenes, size_t count,
+                         tarn_error *err)
+{
+    char path[PATH_MAX_BYTES];
+    snprintf(path, sizeof path, "%s/sweep.csv", o->out_dir);
+    if (tarn_sweep_write_csv(path, scenes, count, &o->sources, err) != 0) return -1;
+    snprintf(path, sizeof path, "%s/front.md", o->out_dir);
+    if (tarn_sweep_write_fronts(path, scenes, count, &o->sources, err) != 0) return -1;
+    for (size_t k = 0; k < count; k++)
+        if ((o->host_cost || o->sources.count > 1) && tarn_sweep_plot(o->out_dir, work_dir, &scenes[k], &o->sources, err) != 0)
+            return -1;
+    return 0;
+}
+
+static int write_stability(const sweep_options *o, tarn_error *err)
+{
+    char pattern[PATH_MAX_BYTES], path[PATH_MAX_BYTES];
+    snprintf(pattern, sizeof pattern, "%s/*.json", o->extremes_dir);
+    glob_t found;
+    if (glob(pattern, 0, NULL, &found) != 0)
+        return tarn_fail(err, "--extremes: no scene (*.json) in '%s'", o->extremes_dir);
+    snprintf(path, sizeof path, "%s/stability.md", o->out_dir);
+    fprintf(stderr, "tarn sweep: every knob value over the %zu extreme scenes\n", found.gl_pathc);
+    const int failed = tarn_sweep_stability((const char *const *)found.gl_pathv, found.gl_pathc, path, err);
+    globfree(&found);
+    return failed;
+}
+
+static void remove_outputs(const sweep_options *o, const tarn_sweep_scene *scenes, size_t count)
+{
+    const char *names[] = {"sweep.csv", "front.md", "stability.md"};
+    char path[PATH_MAX_BYTES];
+    for (size_t i = 0; i < 3; i++) {
+        snprintf(path, sizeof path, "%s/%s", o->out_dir, names[i]);
+        remove(path);
+    }
+    for (size_t k = 0; k < count; k++) {
+        if (scenes[k].name == NULL) continue;
+        snprintf(path, sizeof path, "%s/%s.png", o->out_dir, scenes[k].name);
+        remove(path);
+    }
+}
+
+int tarn_command_sweep(int argc, char **argv)
+{
+    sweep_options o;
+    tarn_error err;
+    tarn_sweep_scene scenes[SCENES_MAX];
+    memset(scenes, 0, sizeof scenes);
+    char work_dir[PATH_MAX_BYTES];
+    int failed = parse(argc, argv, &o, &err);
+    if (failed) fprintf(stderr, "tarn: %s\n%s", err.message, usage);
+    if (failed) return 2;
+    snprintf(work_dir, sizeof work_dir, "%s/work", o.out_dir);
+    failed = make_dir(o.out_dir, &err) || make_dir(work_dir, &err);
+    for (size_t k = 0; k < o.scene_count && !failed; k++) {
+        scenes[k].path = o.scenes[k];
+        failed = sweep_scene(&o, work_dir, &scenes[k], &err);
+    }
+    if (!failed) failed = write_outputs(&o, work_dir, scenes, o.scene_count, &err);
+    if (!failed && o.extremes_dir != NULL) failed = write_stability(&o, &err);
+    for (size_t k = 0; k < o.scene_count && !failed; k++) print_presets(&scenes[k], &o.sources);
+    if (failed) {
+        remove_outputs(&o, scenes, o.scene_count);
+        fprintf(stderr, "tarn: %s\n", err.message);
+    }
+    for (size_t k = 0; k < o.scene_count; k++) {
+        free((char *)scenes[k].name);
+        free(scenes[k].points);
+    }
+    return failed ? 2 : 0;
+}

@@ -1,0 +1,16 @@
+/* sweep_stability.h: each knob value's worst case over the extreme scenes.
+ *
+ * Every value of every knob (tarn_sweep_variants: one knob changed from the
+ * balanced preset) renders each extreme scene; the table gives, per value, the
+ * lowest PSNR, the largest channel error and the largest share of pixels off by
+ * more than 8 levels over those scenes, each with the scene it came from, and
+ * marks a value some scene refuses (a frame too large for its subpixel bits). */
+#ifndef TARN_HOST_SWEEP_STABILITY_H
+#define TARN_HOST_SWEEP_STABILITY_H
+
+#include "sweep.h"
+
+/* `scene_paths`: the extreme scenes. Writes the Markdown table to `path`. */
+int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, const char *path, tarn_error *err);
+
+#endif

@@ -1,0 +1,185 @@
+#include "sweep_target.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+
+#include "scene_load.h"
+
+extern char **environ;
+
+#define PATH_MAX_BYTES 4096
+#define LINE_MAX_BYTES 512
+
+/* Tiles tried from the largest down (the largest that fits walks the geometry the
+ * fewest times). */
+static const uint8_t tile_sizes[] = {32, 28, 24, 20, 16, 12, 8};
+
+typedef struct {
+    const char *name;
+    size_t memory; /* RAM - BOARD_STACK_BYTES - 512 for .data, .bss and the report */
+} board_budget;
+
+static const board_budget boards[] = {
+    {"qemu-m0", 16384u - 4096u - 512u},
+    {"qemu-rv32", 16384u - 4096u - 512u},
+    {"qemu-m3", 4u * 1024u * 1024u - 8192u - 512u},
+};
+
+size_t tarn_sweep_board_memory(const char *board)
+{
+    for (size_t i = 0; i < sizeof boards / sizeof boards[0]; i++)
+        if (strcmp(boards[i].name, board) == 0) return boards[i].memory;
+    return 0;
+}
+
+/* The point at the largest tile the board holds, or 0 when none does. Points
+ * that vary the tile themselves are the host's: a board picks its own. */
+static int fitted_quality(const tarn_sweep_scene *scene, const tarn_sweep_point *p, size_t budget,
+                          const tarn_scene *core_scene, tarn_quality *out)
+{
+    if (p->quality.tile_size != tarn_quality_default().tile_size) return 0;
+    for (size_t t = 0; t < sizeof tile_sizes; t++) {
+        tarn_frame_config config = {scene->width, scene->height, p->quality, 0};
+        config.quality.tile_size = tile_sizes[t];
+        const size_t bytes = tarn_frame_memory_bytes(&config, core_scene);
+        if (bytes > 0 && bytes <= budget) {
+            *out = config.quality;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* Writes the points the board holds, noting each one's tile; map[j] is the sweep
+ * index of line j. */
+static int write_points(tarn_sweep_scene *scene, const tarn_scene *core_scene, size_t budget, size_t source,
+                        const char *path, size_t *map, size_t *count, char *first, tarn_error *err)
+{
+    FILE *f = fopen(path, "w");
+    if (f == NULL) return tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
+    *count = 0;
+    for (size_t i = 0; i < scene->count; i++) {
+        tarn_quality q;
+        scene->points[i].tile[source] = 0;
+        if (!fitted_quality(scene, &scene->points[i], budget, core_scene, &q)) continue;
+        scene->points[i].tile[source] = q.tile_size;
+        char text[TARN_SWEEP_OPTIONS_MAX];
+        tarn_sweep_quality_text(&q, text, sizeof text);
+        if (*count == 0) snprintf(first, TARN_SWEEP_OPTIONS_MAX, "%s", text);
+        fprintf(f, "%s\n", text);
+        map[(*count)++] = i;
+    }
+    return fclose(f) == 0 ? 0 : tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
+}
+
+static int run_make(const char *board, const char *scene_path, const char *points, const char *first,
+                    const char *build_dir, const char *log, tarn_error *err)
+{
+    char board_arg[64], scene_arg[PATH_MAX_BYTES + 8], points_arg[PATH_MAX_BYTES + 8], dir_arg[PATH_MAX_BYTES + 16],
+        bake_arg[TARN_SWEEP_OPTIONS_MAX + 16];
+    snprintf(board_arg, sizeof board_arg, "BOARD=%s", board);
+    snprintf(scene_arg, sizeof scene_arg, "SCENE=%s", scene_path);
+    snprintf(points_arg, sizeof points_arg, "POINTS=%s", points);
+    snprintf(dir_arg, sizeof dir_arg, "FW_BUILD_DIR=%s", build_dir);
+    snprintf(bake_arg, sizeof bake_arg, "BAKE_FLAGS=%s", first);
+    char *argv[] = {"make", "-s", "--no-print-directory", "firmware-sweep", board_arg, scene_arg,
+                    points_arg, dir_arg, bake_arg, NULL};
+    posix_spawn_file_actions_t files;
+    posix_spawn_file_actions_init(&files);
+    posix_spawn_file_actions_addopen(&files, 1, log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&files, 1, 2);
+    pid_t pid;
+    int status = posix_spawnp(&pid, "make", &files, NULL, argv, environ);
+    posix_spawn_file_actions_destroy(&files);
+    if (status != 0) return tarn_fail(err, "cannot run make: %s", strerror(status));
+    if (waitpid(pid, &status, 0) < 0) return tarn_fail(err, "waiting for make: %s", strerror(errno));
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        return tarn_fail(err, "make firmware-sweep BOARD=%s failed: see %s", board, log);
+    return 0;
+}
+
+typedef struct {
+    size_t index;
+    double insn_per_pixel;
+    unsigned checksum;
+    char status[32];
+} point_line;
+
+static int parse_point_line(const char *line, point_line *p)
+{
+    const char *insn = strstr(line, " insn_per_pixel="), *sum = strstr(line, " checksum="),
+               *status = strstr(line, " status=");
+    return sscanf(line, "point index=%zu", &p->index) == 1 && insn && sum && status &&
+                   sscanf(insn, " insn_per_pixel=%lf", &p->insn_per_pixel) == 1 &&
+                   sscanf(sum, " checksum=%x", &p->checksum) == 1 && sscanf(status, " status=%31s", p->status) == 1
+               ? 0
+               : -1;
+}
+
+static int check_point(tarn_sweep_scene *scene, const char *board, const point_line *line,
+                       const tarn_sweep_point *p, tarn_error *err)
+{
+    char text[TARN_SWEEP_OPTIONS_MAX];
+    tarn_sweep_quality_text(&p->quality, text, sizeof text);
+    if (strcmp(line->status, "ok") != 0)
+        return tarn_fail(err, "%s: %s could not render [%s]: %s", scene->path, board, text, line->status);
+    if (line->checksum != p->checksum)
+        return tarn_fail(err, "%s: %s drew [%s] with checksum %08x, the host %08x: the bytes differ",
+                         scene->path, board, text, line->checksum, (unsigned)p->checksum);
+    return 0;
+}
+
+static int read_report(tarn_sweep_scene *scene, const char *board, size_t source, const char *path,
+                       const size_t *map, size_t count, tarn_error *err)
+{
+    FILE *f = fopen(path, "r");
+    if (f == NULL) return tarn_fail(err, "%s: cannot read: %s", path, strerror(errno));
+    char text[LINE_MAX_BYTES];
+    size_t seen = 0;
+    int failed = 0;
+    while (!failed && fgets(text, sizeof text, f) != NULL) {
+        point_line line;
+        if (parse_point_line(text, &line) != 0) continue;
+        if (line.index >= count) {
+            failed = tarn_fail(err, "%s: point index %zu past the %zu written", path, line.index, count);
+            break;
+        }
+        tarn_sweep_point *p = &scene->points[map[line.index]];
+        failed = check_point(scene, board, &line, p, err);
+        p->cost[source] = line.insn_per_pixel;
+        seen++;
+    }
+    fclose(f);
+    if (!failed && seen != count)
+        failed = tarn_fail(err, "%s: %zu point lines for the %zu points written", path, seen, count);
+    return failed ? -1 : 0;
+}
+
+int tarn_sweep_target_costs(tarn_sweep_scene *scene, const char *board, size_t source,
+                            const char *work_dir, tarn_error *err)
+{
+    const size_t budget = tarn_sweep_board_memory(board);
+    if (budget == 0) return tarn_fail(err, "--boards: no emulated board '%s' (qemu-m0, qemu-rv32, qemu-m3)", board);
+    tarn_loaded_scene loaded;
+    if (tarn_scene_load(scene->path, &loaded, err) != 0) return -1;
+    char points[PATH_MAX_BYTES], build_dir[PATH_MAX_BYTES], log[PATH_MAX_BYTES], report[PATH_MAX_BYTES + 16],
+        first[TARN_SWEEP_OPTIONS_MAX] = "";
+    snprintf(points, sizeof points, "%s/%s-%s.txt", work_dir, scene->name, board);
+    snprintf(build_dir, sizeof build_dir, "%s/%s-%s", work_dir, scene->name, board);
+    snprintf(log, sizeof log, "%s/%s-%s.log", work_dir, scene->name, board);
+    snprintf(report, sizeof report, "%s/report.txt", build_dir);
+    size_t *map = malloc(scene->count * sizeof *map), count = 0;
+    int failed = map == NULL ? tarn_fail(err, "out of memory")
+                             : write_points(scene, &loaded.scene, budget, source, points, map, &count, first, err);
+    tarn_scene_free(&loaded);
+    if (!failed && count > 0)
+        failed = run_make(board, scene->path, points, first, build_dir, log, err) ||
+                 read_report(scene, board, source, report, map, count, err);
+    free(map);
+    return failed ? -1 : 0;
+}
