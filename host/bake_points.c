@@ -52,24 +52,30 @@ static char *next_word(char **cursor)
     return word;
 }
 
-/* One line's options applied to `q`. 1 when the line holds no point, 0 when it
- * does, -1 with `err` set. */
+#define LINE_WORDS_MAX 64u
+
+/* One line's options applied to `q`: its --quality preset, if any, as the base
+ * (as on the command line), then every knob in order. 1 when the line holds no
+ * point, 0 when it does, -1 with `err` set. */
 static int parse_line(const char *path, unsigned line_number, char *line, tarn_quality *q, tarn_error *err)
 {
-    char *cursor = line, *name = next_word(&cursor);
-    if (name == NULL || name[0] == '#') return 1;
-    for (; name != NULL && name[0] != '#'; name = next_word(&cursor)) {
-        if (strncmp(name, "--", 2) != 0)
+    char *words[LINE_WORDS_MAX], *cursor = line;
+    int count = 0;
+    for (char *word; (word = next_word(&cursor)) != NULL && word[0] != '#';) {
+        if ((unsigned)count == LINE_WORDS_MAX)
+            return tarn_fail(err, "%s:%u: more than %u words", path, line_number, LINE_WORDS_MAX);
+        words[count++] = word;
+    }
+    if (count == 0) return 1;
+    tarn_error option_err;
+    if (tarn_cli_apply_preset(count, words, q, &option_err) != 0)
+        return tarn_fail(err, "%s:%u: %s", path, line_number, option_err.message);
+    for (int i = 0; i < count; i += 2) {
+        if (strncmp(words[i], "--", 2) != 0)
             return tarn_fail(err, "%s:%u: expected a quality option such as --tile, got '%s'", path,
-                             line_number, name);
-        char *value = next_word(&cursor);
-        if (strcmp(name, "--quality") == 0) /* a preset replaces the whole base: not per point yet */
-            return tarn_fail(err, "%s:%u: --quality: a preset is not taken in a points file; give its knobs",
-                             path, line_number);
-        tarn_error option_err;
-        int result = tarn_cli_parse_quality_option(name, value, q, &option_err);
-        if (result > 0)
-            return tarn_fail(err, "%s:%u: unknown quality option '%s'", path, line_number, name);
+                             line_number, words[i]);
+        int result = tarn_cli_parse_quality_option(words[i], i + 1 < count ? words[i + 1] : NULL, q, &option_err);
+        if (result > 0) return tarn_fail(err, "%s:%u: unknown quality option '%s'", path, line_number, words[i]);
         if (result < 0) return tarn_fail(err, "%s:%u: %s", path, line_number, option_err.message);
     }
     return 0;

@@ -9,8 +9,10 @@
  *     --perspective span:16 --recip-steps 1
  *     --perspective affine --depth 32
  * Blank lines and lines whose first non-blank character is '#' are skipped, and a
- * word starting with '#' ends a line's options. Later options win, as on the command
- * line. A bad option or value is a one-line error naming FILE:LINE. */
+ * word starting with '#' ends a line's options. As on the command line, a line's
+ * --quality NAME replaces the whole base (the bake's quality) with the preset, the
+ * knobs change it wherever they stand, and a later knob wins. A bad option or value
+ * is a one-line error naming FILE:LINE. */
 #ifndef TARN_HOST_BAKE_POINTS_H
 #define TARN_HOST_BAKE_POINTS_H
 

@@ -360,8 +360,9 @@ static void test_points_are_baked(void **state)
     snprintf(points, sizeof points, "%s/points.txt", work_dir);
     FILE *f = fopen(points, "w");
     assert_non_null(f);
-    fputs("# two points\n\n--tile 32   # more memory than the bake's 16\n"
-          "  --perspective span:8 --depth 16\n", f);
+    fputs("# three points\n\n--tile 32   # more memory than the bake's 16\n"
+          "  --perspective span:8 --depth 16\n"
+          "--tile 16 --quality fast   # the preset is the base, wherever it stands\n", f);
     assert_int_equal(fclose(f), 0);
     baked b;
     snprintf(extra, sizeof extra, "--name swept --size 64x64 --tile 16 --perspective pixel --points %s", points);
@@ -383,11 +384,11 @@ static void test_points_are_baked(void **state)
     char *header = read_all(b.header, NULL), define[128];
     snprintf(define, sizeof define, "#define SWEPT_MEMORY_BYTES %zu\n", largest);
     assert_non_null(strstr(header, define));
-    assert_non_null(strstr(header, "#define SWEPT_POINT_COUNT 2\n"));
+    assert_non_null(strstr(header, "#define SWEPT_POINT_COUNT 3\n"));
     assert_non_null(strstr(header, "extern const tarn_quality swept_points[];\n"));
     free(header);
     char *source = read_all(b.source, NULL);
-    const char *array = strstr(source, "const tarn_quality swept_points[2] = {\n");
+    const char *array = strstr(source, "const tarn_quality swept_points[3] = {\n");
     assert_non_null(array);
     assert_null(strstr(source, "static const tarn_quality swept_points"));
     const char *second = strstr(array, "    },\n    {\n");
@@ -398,6 +399,12 @@ static void test_points_are_baked(void **state)
     assert_true(span != NULL && span > second);
     assert_non_null(strstr(second, ".depth_bits = 16,"));
     assert_non_null(strstr(second, ".tile_size = 16,"));
+    const char *third = strstr(second + 1, "    },\n    {\n");
+    assert_non_null(third);
+    assert_true(strstr(second, ".depth_bits = 16,") < third);
+    /* point 3: the fast preset (16 exp2 entries, nearest), not the bake's 64, at tile 16 */
+    assert_non_null(strstr(third, ".entries = 16,\n            .interpolate = 0"));
+    assert_non_null(strstr(third, ".tile_size = 16,"));
     free(source);
 
     char link[PATH_SIZE];
@@ -517,6 +524,7 @@ static void test_bad_input_exits_2_and_writes_nothing(void **state)
         {"tile 28\n", "points.txt:1: expected a quality option"},
         {"--tile\n", "points.txt:1: --tile: expected a whole number"},
         {"--tile 64 --subpixel 8\n", "points.txt:1: 1024x1024 with these quality settings"},
+        {"--quality nope\n", "points.txt:1: --quality: expected fast, balanced or exact"},
         {"# nothing\n\n", "points.txt: no points"}};
     for (size_t k = 0; k < sizeof bad_points / sizeof bad_points[0]; k++) {
         char points[PATH_SIZE];
