@@ -30,11 +30,12 @@ typedef struct {
 } sweep_options;
 
 static const char usage[] =
-    "usage: tarn sweep [SCENE...] [--out DIR] [--grid full|quick] [--boards B,B|none]\n"
+    "usage: tarn sweep [SCENE...] [--out DIR] [--grid full|quick|presets] [--boards B,B|none]\n"
     "                  [--host-cost callgrind|none] [--extremes DIR]\n"
     "  SCENE        scenes to sweep (scenes/pond.json when none is given)\n"
     "  --out        where sweep.csv, front.md, SCENE.png and stability.md go (build/sweep)\n"
-    "  --grid       full: the crossed knobs and every other value alone; quick: a few points\n"
+    "  --grid       full: the crossed knobs and every other value alone; quick: a few points;\n"
+    "               presets: the three presets alone\n"
     "  --boards     emulated boards that measure target cost (qemu-m0,qemu-rv32; also qemu-m3)\n"
     "  --host-cost  callgrind (host instructions per pixel) or none\n"
     "  --extremes   a folder of extreme scenes: each knob value's worst case, in stability.md\n";
@@ -61,9 +62,11 @@ static int parse_option(sweep_options *o, const char *name, const char *value, t
     else if (strcmp(name, "--extremes") == 0) o->extremes_dir = value;
     else if (strcmp(name, "--boards") == 0) return parse_sources(o, value, err);
     else if (strcmp(name, "--grid") == 0) {
-        if (strcmp(value, "full") != 0 && strcmp(value, "quick") != 0)
-            return tarn_fail(err, "--grid: expected full or quick, got '%s'", value);
-        o->grid = strcmp(value, "full") == 0 ? TARN_SWEEP_GRID_FULL : TARN_SWEEP_GRID_QUICK;
+        const char *const grids[] = {"full", "quick", "presets"};
+        for (int g = 0; g < 3; g++)
+            if (strcmp(value, grids[g]) == 0) o->grid = (tarn_sweep_grid)g;
+        if (strcmp(value, grids[o->grid]) != 0)
+            return tarn_fail(err, "--grid: expected full, quick or presets, got '%s'", value);
     } else if (strcmp(name, "--host-cost") == 0) {
         if (strcmp(value, "callgrind") != 0 && strcmp(value, "none") != 0)
             return tarn_fail(err, "--host-cost: expected callgrind or none, got '%s'", value);
@@ -81,6 +84,7 @@ static int parse(int argc, char **argv, sweep_options *o, tarn_error *err)
     o->sources.names[0] = "host";
     if (parse_sources(o, "qemu-m0,qemu-rv32", err) != 0) return -1;
     for (int i = 2; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0) return tarn_fail(err, "sweep: the speed/accuracy map of the knobs");
         if (argv[i][0] != '-') {
             if (o->scene_count == SCENES_MAX) return tarn_fail(err, "at most %d scenes", SCENES_MAX);
             o->scenes[o->scene_count++] = argv[i];
@@ -100,6 +104,25 @@ static int make_dir(const char *path, tarn_error *err)
     return 0;
 }
 
+/* Drops the points the frame refuses (a frame too large for the subpixel bits),
+ * saying which. */
+static size_t keep_valid_points(const tarn_loaded_scene *loaded, tarn_sweep_point *points, size_t count)
+{
+    size_t kept = 0;
+    for (size_t i = 0; i < count; i++) {
+        const tarn_frame_config config = {loaded->width, loaded->height, points[i].quality, TARN_SWEEP_TIME_MS};
+        if (tarn_frame_memory_bytes(&config, &loaded->scene) > 0) {
+            points[kept++] = points[i];
+            continue;
+        }
+        char text[TARN_SWEEP_OPTIONS_MAX];
+        tarn_sweep_quality_text(&points[i].quality, text, sizeof text);
+        fprintf(stderr, "tarn sweep: %s refuses [%s] at %ux%u: left out\n", loaded->name, text,
+                (unsigned)loaded->width, (unsigned)loaded->height);
+    }
+    return kept;
+}
+
 /* Errors, host cost and each board's cost of one scene's points. */
 static int sweep_scene(const sweep_options *o, const char *work_dir, tarn_sweep_scene *scene, tarn_error *err)
 {
@@ -111,7 +134,8 @@ static int sweep_scene(const sweep_options *o, const char *work_dir, tarn_sweep_
     scene->points = calloc(POINTS_MAX, sizeof *scene->points);
     int failed = scene->name == NULL || scene->points == NULL ? tarn_fail(err, "out of memory") : 0;
     if (!failed) {
-        scene->count = tarn_sweep_grid_points(o->grid, scene->points, POINTS_MAX);
+        scene->count = keep_valid_points(&loaded, scene->points,
+                                         tarn_sweep_grid_points(o->grid, scene->points, POINTS_MAX));
         for (size_t i = 0; i < scene->count; i++)
             for (size_t s = 0; s < TARN_SWEEP_SOURCES_MAX; s++) scene->points[i].cost[s] = -1.0;
         fprintf(stderr, "tarn sweep: %s, %zu points: error against the reference\n", scene->name, scene->count);

@@ -1,6 +1,6 @@
 /* sweep.h: tarn sweep, the speed/accuracy map of the quality knobs.
  *
- *   tarn sweep [SCENE...] [--out DIR] [--grid full|quick] [--boards B,B|none]
+ *   tarn sweep [SCENE...] [--out DIR] [--grid full|quick|presets] [--boards B,B|none]
  *              [--host-cost callgrind|none] [--extremes DIR]
  *
  * For each scene (scenes/pond.json when none is given), every point of the grid
@@ -33,6 +33,7 @@ typedef struct {
     double recip_max_rel;          /* the reciprocal's largest relative error */
     double cost[TARN_SWEEP_SOURCES_MAX]; /* instructions per pixel; negative: not measured */
     uint8_t tile[TARN_SWEEP_SOURCES_MAX]; /* the tile each source rendered it with */
+    int host_tile_only;            /* a tile-size variant: the boards pick their own tile */
 } tarn_sweep_point;
 
 typedef struct {

@@ -7,36 +7,32 @@
 #include "reference.h"
 #include "tarn_checksum.h"
 
-/* The reference rounds screen positions to the core's subpixel grid, so there is
- * one reference image per subpixel precision. */
+/* One truth for every point: the unsnapped reference on the finest subpixel grid
+ * it has. A reference on each point's own grid would round its positions as the
+ * point does, and a coarser grid would then read as more accurate. */
 typedef struct {
-    uint8_t *rgb[TARN_SUBPIXEL_BITS_MAX + 1], *covered[TARN_SUBPIXEL_BITS_MAX + 1];
+    uint8_t *rgb, *covered;
     int width, height;
-} reference_cache;
+} reference_image;
 
-static void cache_free(reference_cache *c)
+static void reference_free(reference_image *r)
 {
-    for (unsigned s = 0; s <= TARN_SUBPIXEL_BITS_MAX; s++) {
-        free(c->rgb[s]);
-        free(c->covered[s]);
-    }
+    free(r->rgb);
+    free(r->covered);
 }
 
-static int cached_reference(const tarn_loaded_scene *loaded, reference_cache *c, unsigned subpixel_bits,
-                            tarn_error *err)
+static int reference_render(const tarn_loaded_scene *loaded, reference_image *r, tarn_error *err)
 {
-    if (c->rgb[subpixel_bits] != NULL) return 0;
-    const size_t pixels = (size_t)c->width * (size_t)c->height;
-    c->rgb[subpixel_bits] = malloc(3 * pixels);
-    c->covered[subpixel_bits] = malloc(pixels);
-    if (c->rgb[subpixel_bits] == NULL || c->covered[subpixel_bits] == NULL)
-        return tarn_fail(err, "out of memory for a %dx%d reference", c->width, c->height);
-    const tarn_reference_options options = {.snapped = 0, .subpixel_bits = (int)subpixel_bits,
+    const size_t pixels = (size_t)r->width * (size_t)r->height;
+    r->rgb = malloc(3 * pixels);
+    r->covered = malloc(pixels);
+    if (r->rgb == NULL || r->covered == NULL)
+        return tarn_fail(err, "out of memory for a %dx%d reference", r->width, r->height);
+    const tarn_reference_options options = {.snapped = 0, .subpixel_bits = (int)TARN_SUBPIXEL_BITS_MAX,
                                             .time_ms = TARN_SWEEP_TIME_MS};
-    if (tarn_reference_render(&loaded->scene, c->width, c->height, &options, c->rgb[subpixel_bits],
-                              c->covered[subpixel_bits]) != 0)
+    if (tarn_reference_render(&loaded->scene, r->width, r->height, &options, r->rgb, r->covered) != 0)
         return tarn_fail(err, "%s: the reference cannot render this scene at %dx%d", loaded->name,
-                         c->width, c->height);
+                         r->width, r->height);
     return 0;
 }
 
@@ -51,21 +47,19 @@ static uint32_t image_checksum(const uint8_t *rgb, int width, int height)
     return sum;
 }
 
-/* The core's frame against the cached reference. */
-static int measure(const tarn_loaded_scene *loaded, reference_cache *c, const tarn_quality *quality,
+/* The core's frame against the reference. */
+static int measure(const tarn_loaded_scene *loaded, const reference_image *r, const tarn_quality *quality,
                    tarn_compare_metrics *metrics, uint32_t *checksum, tarn_error *err)
 {
-    const size_t pixels = (size_t)c->width * (size_t)c->height;
-    const tarn_frame_config config = {(uint16_t)c->width, (uint16_t)c->height, *quality, TARN_SWEEP_TIME_MS};
+    const size_t pixels = (size_t)r->width * (size_t)r->height;
+    const tarn_frame_config config = {(uint16_t)r->width, (uint16_t)r->height, *quality, TARN_SWEEP_TIME_MS};
     uint8_t *rgb = malloc(3 * pixels), *covered = malloc(pixels);
     int failed = rgb == NULL || covered == NULL
-        ? tarn_fail(err, "out of memory for a %dx%d frame", c->width, c->height)
-        : cached_reference(loaded, c, quality->subpixel_bits, err) ||
-              tarn_core_render(&loaded->scene, &config, rgb, covered, err);
+        ? tarn_fail(err, "out of memory for a %dx%d frame", r->width, r->height)
+        : tarn_core_render(&loaded->scene, &config, rgb, covered, err);
     if (!failed) {
-        tarn_compare_images(rgb, c->rgb[quality->subpixel_bits], covered, c->covered[quality->subpixel_bits],
-                            c->width, c->height, metrics);
-        if (checksum != NULL) *checksum = image_checksum(rgb, c->width, c->height);
+        tarn_compare_images(rgb, r->rgb, covered, r->covered, r->width, r->height, metrics);
+        if (checksum != NULL) *checksum = image_checksum(rgb, r->width, r->height);
     }
     free(rgb);
     free(covered);
@@ -92,25 +86,26 @@ static void knob_math_errors(math_errors *m, tarn_sweep_point *p)
 
 int tarn_sweep_measure_errors(const tarn_loaded_scene *loaded, tarn_sweep_scene *scene, tarn_error *err)
 {
-    reference_cache cache = {{NULL}, {NULL}, scene->width, scene->height};
+    reference_image reference = {NULL, NULL, scene->width, scene->height};
     math_errors math;
     for (unsigned i = 0; i < 6; i++) math.exp2[i][0] = math.exp2[i][1] = -1.0;
     for (unsigned i = 0; i <= TARN_RECIP_STEPS_MAX; i++) math.recip[i] = -1.0;
-    int failed = 0;
+    int failed = reference_render(loaded, &reference, err);
     for (size_t i = 0; i < scene->count && !failed; i++) {
         tarn_sweep_point *p = &scene->points[i];
-        failed = measure(loaded, &cache, &p->quality, &p->error, &p->checksum, err);
+        failed = measure(loaded, &reference, &p->quality, &p->error, &p->checksum, err);
         knob_math_errors(&math, p);
     }
-    cache_free(&cache);
+    reference_free(&reference);
     return failed ? -1 : 0;
 }
 
 int tarn_sweep_error_of(const tarn_loaded_scene *loaded, const tarn_quality *quality,
                         tarn_compare_metrics *metrics, tarn_error *err)
 {
-    reference_cache cache = {{NULL}, {NULL}, loaded->width, loaded->height};
-    const int failed = measure(loaded, &cache, quality, metrics, NULL, err);
-    cache_free(&cache);
+    reference_image reference = {NULL, NULL, loaded->width, loaded->height};
+    const int failed = reference_render(loaded, &reference, err) ||
+                       measure(loaded, &reference, quality, metrics, NULL, err);
+    reference_free(&reference);
     return failed;
 }

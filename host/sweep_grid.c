@@ -26,7 +26,7 @@ static const sweep_knob knobs[] = {
                 "8:linear", "16:linear", "32:linear", "64:linear", "128:linear", "256:linear"},
      {"16:nearest", "64:linear"}, {NULL}, {"8:linear", "32:linear", "256:linear"}},
     {"--fog-bits", {"4", "6", "8", "12", "16"}, {"6", "16"}, {NULL}, {NULL}},
-    {"--subpixel", {"1", "2", "3", "4", "6", "8"}, {NULL}, {NULL}, {NULL}},
+    {"--subpixel", {"1", "2", "3", "4", "5", "6", "7", "8"}, {NULL}, {NULL}, {NULL}},
     {"--tile", {"16", "32", "64"}, {NULL}, {NULL}, {NULL}},
     {"--bins", {"on", "off"}, {NULL}, {NULL}, {NULL}},
 };
@@ -72,6 +72,13 @@ static size_t add_point(tarn_sweep_point *points, size_t count, size_t max, cons
     return count + 1;
 }
 
+static size_t add_tile_variant(tarn_sweep_point *points, size_t count, size_t max, const tarn_quality *q)
+{
+    const size_t added = add_point(points, count, max, q, NULL);
+    if (added > count) points[count].host_tile_only = 1;
+    return added;
+}
+
 static const char *const *crossed_values(const sweep_knob *k, tarn_sweep_grid grid)
 {
     return grid == TARN_SWEEP_GRID_FULL ? k->full : k->quick;
@@ -105,7 +112,8 @@ static size_t add_alone(tarn_sweep_grid grid, tarn_sweep_point *points, size_t c
         const char *const *values = grid == TARN_SWEEP_GRID_FULL ? knobs[k].values : knobs[k].quick_alone;
         for (size_t v = 0; v < value_count(values); v++) {
             const tarn_quality q = with_option(tarn_quality_default(), knobs[k].option, values[v]);
-            count = add_point(points, count, max, &q, NULL);
+            count = strcmp(knobs[k].option, "--tile") == 0 ? add_tile_variant(points, count, max, &q)
+                                                           : add_point(points, count, max, &q, NULL);
         }
     }
     return count;
@@ -118,6 +126,7 @@ size_t tarn_sweep_grid_points(tarn_sweep_grid grid, tarn_sweep_point *points, si
         const tarn_quality q = tarn_quality_preset((tarn_preset)p);
         count = add_point(points, count, max, &q, tarn_preset_name((tarn_preset)p));
     }
+    if (grid == TARN_SWEEP_GRID_PRESETS) return count;
     count = add_product(grid, points, count, max);
     return add_alone(grid, points, count, max);
 }

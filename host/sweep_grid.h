@@ -6,13 +6,17 @@
  * of every knob (subpixel bits, the other span lengths and table sizes, tile
  * size, bins...) one at a time around the balanced preset; then the three
  * presets. The quick grid (for tests) crosses perspective and depth only, and adds
- * three exp2 sizes. Repeats are dropped. */
+ * three exp2 sizes. Every grid starts with the presets. Repeats are dropped. */
 #ifndef TARN_HOST_SWEEP_GRID_H
 #define TARN_HOST_SWEEP_GRID_H
 
 #include "sweep.h"
 
-typedef enum { TARN_SWEEP_GRID_FULL, TARN_SWEEP_GRID_QUICK } tarn_sweep_grid;
+typedef enum {
+    TARN_SWEEP_GRID_FULL,
+    TARN_SWEEP_GRID_QUICK,
+    TARN_SWEEP_GRID_PRESETS /* the three presets alone: re-measuring the published table */
+} tarn_sweep_grid;
 
 /* Fills `points` (quality and preset set, everything else cleared); returns the
  * count, at most `max`. */

@@ -42,7 +42,7 @@ size_t tarn_sweep_board_memory(const char *board)
 static int fitted_quality(const tarn_sweep_scene *scene, const tarn_sweep_point *p, size_t budget,
                           const tarn_scene *core_scene, tarn_quality *out)
 {
-    if (p->quality.tile_size != tarn_quality_default().tile_size) return 0;
+    if (p->host_tile_only) return 0;
     for (size_t t = 0; t < sizeof tile_sizes; t++) {
         tarn_frame_config config = {scene->width, scene->height, p->quality, 0};
         config.quality.tile_size = tile_sizes[t];
