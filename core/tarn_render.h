@@ -106,7 +106,8 @@ typedef struct {
 typedef enum {
     TARN_PRESET_FAST,     /* the least cost on the Cortex-M0 that keeps the water legible */
     TARN_PRESET_BALANCED, /* the default: close to exact, at a fraction of its cost */
-    TARN_PRESET_EXACT     /* the least error tarn can give, whatever it costs */
+    TARN_PRESET_EXACT     /* the least error tarn can give, whatever it costs; frames
+                             up to 640 pixels a side (5 subpixel bits) */
 } tarn_preset;
 
 #define TARN_PRESET_COUNT 3

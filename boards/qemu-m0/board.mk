@@ -1,6 +1,7 @@
 # qemu-m0: Cortex-M0 on QEMU's microbit (nRF51: 256 KB flash, 16 KB RAM). It renders
-# the pond, every water effect, with the refraction apron off, 28-pixel tiles (9 x 9
-# for 240 x 240), a 16-bit depth buffer and cluster bins: 10,836 bytes of renderer
+# the pond, every water effect, at the fast preset (core/quality.c): the refraction
+# apron off, 28-pixel tiles (9 x 9 for 240 x 240), a 16-bit depth buffer, span
+# perspective and cluster bins: 10,836 bytes of renderer
 # memory, with the 4 KB stack about 15.1 KB of the 16 KB of RAM (docs/firmware.md gives
 # what fits and what does not). Variables read by firmware/firmware.mk.
 BOARD_ARCH := arm
@@ -17,7 +18,7 @@ BOARD_CODE_BYTES_MAX := 32768
 # for firmware/stack_bound.sh
 BOARD_STACK_ENTRY := reset_handler systick_handler:36
 BOARD_SCENE := scenes/pond.json
-BOARD_BAKE_FLAGS := --apron off --tile 28 --depth 16
+BOARD_BAKE_FLAGS := --quality fast
 BOARD_QEMU := qemu-system-arm
 # $(1): the ELF; $(2), $(3): the host files the panel stream and the report go to
 BOARD_RUN = $(BOARD_QEMU) -M microbit -nographic -monitor none -serial none \

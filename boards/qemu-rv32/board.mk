@@ -1,7 +1,8 @@
 # qemu-rv32: RISC-V rv32imac on QEMU's sifive_e (16 KB of RAM at 0x80000000, the
 # image in the XIP flash window, as the HiFive1's 16 MB SPI flash would hold it). The
-# full pond fits the flash; RAM takes the quality qemu-m0 uses: refraction apron off,
-# 28-pixel tiles, 16-bit depth, cluster bins and a 4 KB stack (15,104 of 16,384 bytes). Variables read by
+# full pond fits the flash; RAM takes the quality qemu-m0 uses, the fast preset:
+# refraction apron off, 28-pixel tiles, 16-bit depth, cluster bins and a 4 KB stack
+# (15,104 of 16,384 bytes). Variables read by
 # firmware/firmware.mk.
 BOARD_ARCH := riscv
 BOARD_CPU := -march=rv32imac_zicsr -mabi=ilp32 -mcmodel=medany
@@ -13,7 +14,7 @@ BOARD_STACK_BYTES := 4096
 # firmware/stack_bound.sh
 BOARD_STACK_ENTRY := main
 BOARD_SCENE := scenes/pond.json
-BOARD_BAKE_FLAGS := --apron off --tile 28 --depth 16
+BOARD_BAKE_FLAGS := --quality fast
 BOARD_QEMU := qemu-system-riscv32
 # $(1): the ELF; $(2): the host file the panel stream goes to (UART0); $(3): the
 # report (semihosting)
