@@ -90,10 +90,12 @@ static inline unsigned tarn_clz32(uint32_t v)
  * per-pixel code needs no 64-bit multiply. Exact (equals (a*b) >> 32). */
 static inline uint32_t tarn_mul_hi_u32(uint32_t a, uint32_t b)
 {
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
-    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu);
-    return hh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+    const uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    const uint32_t cross = ah * bl;
+    /* al*bh plus the low product's high half stays below 2^32; adding the other
+     * cross product may carry, which is worth 2^16 in the result */
+    const uint32_t middle = al * bh + ((al * bl) >> 16) + cross;
+    return ah * bh + ((uint32_t)(middle < cross) << 16) + (middle >> 16);
 }
 
 /* The whole 64-bit product of two unsigned 32-bit values. The Cortex-M0 has no
