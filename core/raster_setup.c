@@ -43,8 +43,9 @@ static int32_t edge_unbiased_at(const edge *e, int32_t px, int32_t py)
 int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned s,
                            triangle_setup *t)
 {
-    int64_t area2 = tarn_mul_i32_wide(in[1].x - in[0].x, in[2].y - in[0].y) -
-                    tarn_mul_i32_wide(in[1].y - in[0].y, in[2].x - in[0].x);
+    /* coordinates inside the guard box differ by less than 2^15 */
+    int64_t area2 = tarn_mul_i16_i32_wide(in[1].x - in[0].x, in[2].y - in[0].y) -
+                    tarn_mul_i16_i32_wide(in[1].y - in[0].y, in[2].x - in[0].x);
     if (area2 == 0) return 0;
     int front = area2 < 0; /* counter-clockwise in the y-up world */
     if ((cull == TARN_CULL_BACK && !front) || (cull == TARN_CULL_FRONT && front)) return 0;
@@ -100,10 +101,17 @@ static plane_anchor anchor_of(const triangle_setup *t)
     return anchor;
 }
 
-/* e1 * d1 + e2 * d2 for two edge-sized factors and two value differences. */
+/* e1 * d1 + e2 * d2 for two edge values and two value differences. */
 static int64_t weighted_sum(int32_t e1, int32_t d1, int32_t e2, int32_t d2)
 {
     return tarn_mul_i32_wide(e1, d1) + tarn_mul_i32_wide(e2, d2);
+}
+
+/* The same for two edge coefficients (a or b), which are coordinate differences
+ * inside the guard box and so below 2^15. */
+static int64_t coefficient_sum(int32_t a1, int32_t d1, int32_t a2, int32_t d2)
+{
+    return tarn_mul_i16_i32_wide(a1, d1) + tarn_mul_i16_i32_wide(a2, d2);
 }
 
 /* A plane through the three vertex values (each within [0, 2^30], so their
@@ -118,8 +126,8 @@ static plane make_plane(const triangle_setup *t, const tarn_divisor *area2, cons
     const edge *e1 = &t->edges[1], *e2 = &t->edges[2];
     const int32_t d1 = (int32_t)(value[1] - value[0]), d2 = (int32_t)(value[2] - value[0]);
     int64_t at_anchor = value[0] + tarn_divide_round_approx_i64(weighted_sum(anchor->e1, d1, anchor->e2, d2), area2);
-    int64_t step_x = tarn_divide_round_approx_i64(weighted_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
-    int64_t step_y = tarn_divide_round_approx_i64(weighted_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
+    int64_t step_x = tarn_divide_round_approx_i64(coefficient_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
+    int64_t step_y = tarn_divide_round_approx_i64(coefficient_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
     plane p = {(uint32_t)at_anchor, (uint32_t)step_x, (uint32_t)step_y};
     return p;
 }
@@ -167,7 +175,7 @@ static int32_t depth_difference(const triangle_setup *t, int k)
 
 static int64_t depth_numerator_step(const triangle_setup *t, int32_t a1, int32_t a2)
 {
-    return weighted_sum(a1, depth_difference(t, 1), a2, depth_difference(t, 2)) * ((int64_t)1 << t->subpixel_bits);
+    return coefficient_sum(a1, depth_difference(t, 1), a2, depth_difference(t, 2)) * ((int64_t)1 << t->subpixel_bits);
 }
 
 static exact_plane make_exact_depth_plane(const triangle_setup *t)
