@@ -5,26 +5,29 @@
 
 enum { PLANE_NEAR, PLANE_FAR, PLANE_LEFT, PLANE_RIGHT, PLANE_TOP, PLANE_BOTTOM, PLANE_COUNT };
 
-/* Signed distance to a plane, positive inside; a plane's units are its own. */
-static int64_t plane_distance(const tarn_view *view, int plane, const tarn_view_vertex *v)
+/* Signed distances to every plane, positive inside; a plane's units are its own.
+ * The four guard-band planes share four products, each taken once. */
+static void plane_distances(const tarn_view *view, const tarn_view_vertex *v, int64_t distance[PLANE_COUNT])
 {
-    const int64_t x_focal = (int64_t)v->x * view->focal_q12; /* Q28: below 2^59 */
-    const int64_t y_focal = (int64_t)v->y * view->focal_q12;
-    switch (plane) {
-    case PLANE_NEAR: return (int64_t)v->d - view->near;
-    case PLANE_FAR: return (int64_t)view->far - v->d;
-    case PLANE_LEFT: return x_focal + (int64_t)view->half_extent_q12[0] * v->d;
-    case PLANE_RIGHT: return (int64_t)view->half_extent_q12[0] * v->d - x_focal;
-    case PLANE_TOP: return (int64_t)view->half_extent_q12[1] * v->d - y_focal;
-    default: return y_focal + (int64_t)view->half_extent_q12[1] * v->d;
-    }
+    const int64_t x_focal = tarn_mul_i32_wide(v->x, view->focal_q12); /* Q28: below 2^59 */
+    const int64_t y_focal = tarn_mul_i32_wide(v->y, view->focal_q12);
+    const int64_t x_extent = tarn_mul_i32_wide(view->half_extent_q12[0], v->d);
+    const int64_t y_extent = tarn_mul_i32_wide(view->half_extent_q12[1], v->d);
+    distance[PLANE_NEAR] = (int64_t)v->d - view->near;
+    distance[PLANE_FAR] = (int64_t)view->far - v->d;
+    distance[PLANE_LEFT] = x_focal + x_extent;
+    distance[PLANE_RIGHT] = x_extent - x_focal;
+    distance[PLANE_TOP] = y_extent - y_focal;
+    distance[PLANE_BOTTOM] = y_focal + y_extent;
 }
 
 unsigned tarn_clip_outcode(const tarn_view *view, const tarn_view_vertex *v)
 {
+    int64_t distance[PLANE_COUNT];
+    plane_distances(view, v, distance);
     unsigned code = 0;
     for (int plane = 0; plane < PLANE_COUNT; plane++)
-        if (plane_distance(view, plane, v) < 0) code |= 1u << plane;
+        if (distance[plane] < 0) code |= 1u << plane;
     return code;
 }
 
@@ -67,8 +70,10 @@ static int clip_against(const tarn_view *view, int plane,
     tarn_view_vertex input[TARN_CLIP_POLYGON_MAX];
     int64_t dist[TARN_CLIP_POLYGON_MAX];
     for (int i = 0; i < count; i++) {
+        int64_t distance[PLANE_COUNT];
         input[i] = polygon[i];
-        dist[i] = plane_distance(view, plane, &input[i]);
+        plane_distances(view, &input[i], distance);
+        dist[i] = distance[plane];
     }
     int out = 0;
     for (int i = 0; i < count; i++) {

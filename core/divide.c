@@ -17,11 +17,11 @@ tarn_divisor tarn_divisor_of(uint32_t divisor)
 /* (n * recip + bias) / 2^(62 - shift), the low product's bits below 2^32 dropped
  * (worth less than one unit of the result); divisor > 1, so shift <= 30. With no
  * bias it is at most n / divisor, short of it by about 2^-28 of it plus one. */
-static uint64_t times_reciprocal(uint64_t n, const tarn_divisor *d, uint64_t bias)
+static uint64_t times_reciprocal(uint64_t n, const tarn_divisor *d, uint32_t bias)
 {
     const uint64_t high = tarn_mul_u32_wide((uint32_t)(n >> 32), d->recip);
-    const uint64_t low = tarn_mul_u32_wide((uint32_t)n, d->recip);
-    return (high + (low >> 32) + bias) >> (30u - d->shift);
+    /* of the low product only its high word counts */
+    return (high + tarn_mul_hi_u32((uint32_t)n, d->recip) + bias) >> (30u - d->shift);
 }
 
 static uint64_t times_divisor(uint64_t q, uint32_t divisor)
@@ -72,7 +72,7 @@ int64_t tarn_divide_round_approx_i64(int64_t n, const tarn_divisor *d)
     uint64_t q = magnitude(n);
     if (d->divisor > 1u) {
         const unsigned down = 30u - d->shift;
-        q = times_reciprocal(q, d, down > 0u ? (uint64_t)1 << (down - 1u) : 0u); /* half, to round */
+        q = times_reciprocal(q, d, down > 0u ? 1u << (down - 1u) : 0u); /* half, to round */
     }
     return n < 0 ? -(int64_t)q : (int64_t)q;
 }

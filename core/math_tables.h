@@ -6,6 +6,7 @@
 #define TARN_MATH_TABLES_H
 
 #include <stdint.h>
+#include "tarn_fixed.h" /* tarn_clz8, generated with the others */
 
 /* 2^-(i/256) in Q0.16 for i = 0..256: 65536 down to 32768. The endpoint is stored so
  * that interpolating past the last step needs no special case. Held in 32 bits

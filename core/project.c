@@ -52,15 +52,16 @@ static int32_t subpixels_from_centre(const tarn_view *view, int32_t offset, norm
     return offset < 0 ? -along : along;
 }
 
-/* centre + along, clamped to the guard band (in subpixels). */
+/* centre + along, clamped to the guard band (in subpixels). The band's ends are
+ * within 2^15 subpixels of each other (tarn_config_check), so the clamp is taken
+ * on `along` against the ends less the centre, all in 32 bits. */
 static int32_t screen_coordinate(const tarn_view *view, int32_t along, int32_t frame_extent)
 {
     const unsigned s = view->subpixel_bits;
-    const int64_t centre = (int64_t)frame_extent << (s - 1u);
-    const int64_t low = -(((int64_t)view->guard_pixels + 1) << s);
-    const int64_t high = (int64_t)(frame_extent + view->guard_pixels + 1) << s;
-    const int64_t snapped = centre + along;
-    return (int32_t)(snapped < low ? low : (snapped > high ? high : snapped));
+    const int32_t centre = frame_extent << (s - 1u);
+    const int32_t low = -((view->guard_pixels + 1) << s) - centre;
+    const int32_t high = ((frame_extent + view->guard_pixels + 1) << s) - centre;
+    return centre + (along < low ? low : (along > high ? high : along));
 }
 
 /* near / depth in Q1.30 (1 << 30 on the near plane), at least 1. */

@@ -187,9 +187,14 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
     const int32_t row = (j - tile->origin_y) * tile->stride - tile->origin_x;
     span_cache cache;
     cache.start = INT32_MIN;
+    int entered = 0;
     for (int32_t i = i0; i <= i1; i++) {
-        if ((e[0] | e[1] | e[2]) >= 0 &&
-            depth_pass(tile->depth, quality->depth_bits, row + i, depth.quotient)) {
+        const int covered = (e[0] | e[1] | e[2]) >= 0;
+        /* each edge is linear along the row, so the covered pixels are one run:
+         * after it, nothing more is covered */
+        if (!covered && entered) return;
+        entered = covered;
+        if (covered && depth_pass(tile->depth, quality->depth_bits, row + i, depth.quotient)) {
             uint32_t values[ATTRIBUTES_MAX];
             if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN)
                 span_t(set, t, quality->perspective_span, quality->recip_newton_steps, i, j, &cache, values);

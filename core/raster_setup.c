@@ -31,16 +31,21 @@ static edge make_edge(const tarn_screen_vertex *from, const tarn_screen_vertex *
     return e;
 }
 
-static int64_t edge_unbiased_at(const edge *e, int32_t px, int32_t py)
+/* The edge function without its bias at a pixel centre inside the triangle's
+ * bounds: 32-bit, as raster.c's edge_at, since coordinates inside the guard box
+ * differ by less than 2^15 subpixels (tarn_config_check) and each product stays
+ * below 2^30. */
+static int32_t edge_unbiased_at(const edge *e, int32_t px, int32_t py)
 {
-    return (int64_t)e->a * (px - e->x) + (int64_t)e->b * (py - e->y);
+    return e->a * (px - e->x) + e->b * (py - e->y);
 }
 
 int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned s,
                            triangle_setup *t)
 {
-    int64_t area2 = (int64_t)(in[1].x - in[0].x) * (in[2].y - in[0].y) -
-                    (int64_t)(in[1].y - in[0].y) * (in[2].x - in[0].x);
+    /* coordinates inside the guard box differ by less than 2^15 */
+    int64_t area2 = tarn_mul_i16_i32_wide(in[1].x - in[0].x, in[2].y - in[0].y) -
+                    tarn_mul_i16_i32_wide(in[1].y - in[0].y, in[2].x - in[0].x);
     if (area2 == 0) return 0;
     int front = area2 < 0; /* counter-clockwise in the y-up world */
     if ((cull == TARN_CULL_BACK && !front) || (cull == TARN_CULL_FRONT && front)) return 0;
@@ -82,32 +87,59 @@ pixel_box tarn_triangle_pixels(const triangle_setup *t)
     return tarn_bounds_pixels(&bounds, t->subpixel_bits);
 }
 
-/* A plane through the three vertex values (each within [0, 2^30]). Its anchor and
- * steps divide by the area in one multiply each (tarn_divide_round_approx_i64): an
- * attribute plane is an approximation already, and the exact division cost the
- * Cortex-M0 several thousand instructions a triangle. */
-static plane make_plane(const triangle_setup *t, const tarn_divisor *area2, const int64_t value[3])
+/* Edges 1 and 2 at the centre of the pixel every plane is anchored at, (box.x0,
+ * box.y0): the same for all of a triangle's planes, so taken once. */
+typedef struct {
+    int32_t e1, e2;
+} plane_anchor;
+
+static plane_anchor anchor_of(const triangle_setup *t)
+{
+    const unsigned s = t->subpixel_bits;
+    const int32_t px = pixel_centre(t->box.x0, s), py = pixel_centre(t->box.y0, s);
+    const plane_anchor anchor = {edge_unbiased_at(&t->edges[1], px, py), edge_unbiased_at(&t->edges[2], px, py)};
+    return anchor;
+}
+
+/* e1 * d1 + e2 * d2 for two edge values and two value differences. */
+static int64_t weighted_sum(int32_t e1, int32_t d1, int32_t e2, int32_t d2)
+{
+    return tarn_mul_i32_wide(e1, d1) + tarn_mul_i32_wide(e2, d2);
+}
+
+/* The same for two edge coefficients (a or b), which are coordinate differences
+ * inside the guard box and so below 2^15. */
+static int64_t coefficient_sum(int32_t a1, int32_t d1, int32_t a2, int32_t d2)
+{
+    return tarn_mul_i16_i32_wide(a1, d1) + tarn_mul_i16_i32_wide(a2, d2);
+}
+
+/* A plane through the three vertex values (each within [0, 2^30], so their
+ * differences fit 32 bits). Its anchor and steps divide by the area in one multiply
+ * each (tarn_divide_round_approx_i64): an attribute plane is an approximation
+ * already, and the exact division cost the Cortex-M0 several thousand instructions
+ * a triangle. */
+static plane make_plane(const triangle_setup *t, const tarn_divisor *area2, const plane_anchor *anchor,
+                        const uint32_t value[3])
 {
     const unsigned s = t->subpixel_bits;
     const edge *e1 = &t->edges[1], *e2 = &t->edges[2];
-    const int64_t d1 = value[1] - value[0], d2 = value[2] - value[0];
-    const int32_t px = pixel_centre(t->box.x0, s), py = pixel_centre(t->box.y0, s);
-    int64_t at_anchor = value[0] + tarn_divide_round_approx_i64(edge_unbiased_at(e1, px, py) * d1 +
-                                                                edge_unbiased_at(e2, px, py) * d2, area2);
-    int64_t step_x = tarn_divide_round_approx_i64(((int64_t)e1->a * d1 + (int64_t)e2->a * d2) * ((int64_t)1 << s), area2);
-    int64_t step_y = tarn_divide_round_approx_i64(((int64_t)e1->b * d1 + (int64_t)e2->b * d2) * ((int64_t)1 << s), area2);
+    const int32_t d1 = (int32_t)(value[1] - value[0]), d2 = (int32_t)(value[2] - value[0]);
+    int64_t at_anchor = value[0] + tarn_divide_round_approx_i64(weighted_sum(anchor->e1, d1, anchor->e2, d2), area2);
+    int64_t step_x = tarn_divide_round_approx_i64(coefficient_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
+    int64_t step_y = tarn_divide_round_approx_i64(coefficient_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
     plane p = {(uint32_t)at_anchor, (uint32_t)step_x, (uint32_t)step_y};
     return p;
 }
 
 /* Scales one attribute's three values toward 2^30 and premultiplies by q. */
-static void add_attribute(attribute_set *set, const triangle_setup *t, const uint32_t value[3],
-                          const uint32_t q[3])
+static void add_attribute(attribute_set *set, const triangle_setup *t, const plane_anchor *anchor,
+                          const uint32_t value[3], const uint32_t q[3])
 {
     const int k = set->count++;
     uint32_t largest = value[0] | value[1] | value[2];
     unsigned shift = 30u - (bit_length_u32(largest) > 30u ? 30u : bit_length_u32(largest));
-    int64_t premultiplied[3];
+    uint32_t premultiplied[3];
     set->t_min[k] = T_ONE;
     set->t_max[k] = 0;
     for (int n = 0; n < 3; n++) {
@@ -116,11 +148,11 @@ static void add_attribute(attribute_set *set, const triangle_setup *t, const uin
         if (scaled < set->t_min[k]) set->t_min[k] = scaled;
         if (scaled > set->t_max[k]) set->t_max[k] = scaled;
         premultiplied[n] = set->perspective == TARN_PERSPECTIVE_AFFINE
-            ? (int64_t)scaled
-            : (int64_t)(((uint64_t)scaled * q[n]) >> 30);
+            ? scaled
+            : (uint32_t)(tarn_mul_u32_wide(scaled, q[n]) >> 30);
     }
     set->t_shift[k] = shift;
-    set->premultiplied[k] = make_plane(t, &set->depth.den, premultiplied);
+    set->premultiplied[k] = make_plane(t, &set->depth.den, anchor, premultiplied);
 }
 
 /* Texture coordinates less their whole repeats (which do not move a texel). */
@@ -135,11 +167,15 @@ static void texture_coordinates(const triangle_setup *t, int axis, uint32_t out[
     for (int n = 0; n < 3; n++) out[n] = (uint32_t)c[n] - *base;
 }
 
+/* Vertex k's inverse depth less vertex 0's: both within [1, 2^30]. */
+static int32_t depth_difference(const triangle_setup *t, int k)
+{
+    return (int32_t)(t->v[k]->inv_depth - t->v[0]->inv_depth);
+}
+
 static int64_t depth_numerator_step(const triangle_setup *t, int32_t a1, int32_t a2)
 {
-    const int64_t d1 = (int64_t)t->v[1]->inv_depth - t->v[0]->inv_depth;
-    const int64_t d2 = (int64_t)t->v[2]->inv_depth - t->v[0]->inv_depth;
-    return (a1 * d1 + a2 * d2) * ((int64_t)1 << t->subpixel_bits);
+    return coefficient_sum(a1, depth_difference(t, 1), a2, depth_difference(t, 2)) * ((int64_t)1 << t->subpixel_bits);
 }
 
 static exact_plane make_exact_depth_plane(const triangle_setup *t)
@@ -157,17 +193,16 @@ exact_value tarn_exact_depth_at(const triangle_setup *t, const exact_plane *dept
 {
     const unsigned s = t->subpixel_bits;
     const int32_t px = pixel_centre(i, s), py = pixel_centre(j, s);
-    const int64_t z0 = t->v[0]->inv_depth;
-    int64_t num = t->area2 * z0 + t->area2 / 2 +
-                  edge_unbiased_at(&t->edges[1], px, py) * ((int64_t)t->v[1]->inv_depth - z0) +
-                  edge_unbiased_at(&t->edges[2], px, py) * ((int64_t)t->v[2]->inv_depth - z0);
+    /* area2 is below 2^31: two products of coordinate differences */
+    int64_t num = (int64_t)tarn_mul_u32_wide((uint32_t)t->area2, t->v[0]->inv_depth) + t->area2 / 2 +
+                  weighted_sum(edge_unbiased_at(&t->edges[1], px, py), depth_difference(t, 1),
+                               edge_unbiased_at(&t->edges[2], px, py), depth_difference(t, 2));
     return floor_divmod(num, &depth->den);
 }
 
 void tarn_setup_attributes(const triangle_setup *t, const attribute_request *request,
                            uint8_t perspective, attribute_set *set)
 {
-    int64_t q_values[3];
     uint32_t q[3], largest = 0;
     set->count = 0;
     set->perspective = perspective;
@@ -179,14 +214,14 @@ void tarn_setup_attributes(const triangle_setup *t, const attribute_request *req
     set->q_max = 0;
     for (int n = 0; n < 3; n++) {
         q[n] = t->v[n]->inv_depth << normalise;
-        q_values[n] = q[n];
         if (q[n] < set->q_min) set->q_min = q[n];
         if (q[n] > set->q_max) set->q_max = q[n];
     }
-    set->q = make_plane(t, &set->depth.den, q_values);
+    const plane_anchor anchor = anchor_of(t);
+    set->q = make_plane(t, &set->depth.den, &anchor, q);
     for (int c = 0; c < 3; c++) {
         uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
-        add_attribute(set, t, lit, q);
+        add_attribute(set, t, &anchor, lit, q);
     }
     if (request->uv) {
         if (request->texture != NULL) {
@@ -195,12 +230,12 @@ void tarn_setup_attributes(const triangle_setup *t, const attribute_request *req
         }
         uint32_t coordinate[3];
         texture_coordinates(t, 0, coordinate, &set->u_base);
-        add_attribute(set, t, coordinate, q);
+        add_attribute(set, t, &anchor, coordinate, q);
         texture_coordinates(t, 1, coordinate, &set->v_base);
-        add_attribute(set, t, coordinate, q);
+        add_attribute(set, t, &anchor, coordinate, q);
     }
     if (request->fresnel) {
         uint32_t fresnel[3] = {t->v[0]->fresnel, t->v[1]->fresnel, t->v[2]->fresnel};
-        add_attribute(set, t, fresnel, q);
+        add_attribute(set, t, &anchor, fresnel, q);
     }
 }

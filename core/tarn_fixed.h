@@ -72,43 +72,74 @@ static inline int tarn_is_power_of_two(uint32_t v)
     return v != 0u && (v & (v - 1u)) == 0u;
 }
 
+/* Leading zero bits of each byte value, 8 for 0 (core/math_tables.c). */
+extern const uint8_t tarn_clz8[256];
+
 /* Number of leading zero bits of a 32-bit value (32 for 0). Portable: the
- * Cortex-M0 has no CLZ instruction, and the result must match on every target. */
+ * Cortex-M0 has no CLZ instruction, and the result must match on every target.
+ * Two tests find the highest non-zero byte and a table counts its zeros: it runs
+ * about a dozen times a pixel (reciprocals, depth encoding, normalisation), where
+ * a five-step binary search cost the M0 twice the instructions. */
 static inline unsigned tarn_clz32(uint32_t v)
 {
-    unsigned n = 0;
-    if (v == 0) return 32;
-    if ((v & 0xFFFF0000u) == 0) { n += 16; v <<= 16; }
-    if ((v & 0xFF000000u) == 0) { n += 8; v <<= 8; }
-    if ((v & 0xF0000000u) == 0) { n += 4; v <<= 4; }
-    if ((v & 0xC0000000u) == 0) { n += 2; v <<= 2; }
-    if ((v & 0x80000000u) == 0) { n += 1; }
-    return n;
+    if (v >> 16) return v >> 24 ? tarn_clz8[v >> 24] : 8u + tarn_clz8[v >> 16];
+    return v >> 8 ? 16u + tarn_clz8[v >> 8] : 24u + tarn_clz8[v];
 }
 
 /* High 32 bits of an unsigned 32x32 product, from 16x16 partial products only, so
  * per-pixel code needs no 64-bit multiply. Exact (equals (a*b) >> 32). */
 static inline uint32_t tarn_mul_hi_u32(uint32_t a, uint32_t b)
 {
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
-    uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu);
-    return hh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+    const uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    const uint32_t cross = ah * bl;
+    /* al*bh plus the low product's high half stays below 2^32; adding the other
+     * cross product may carry, which is worth 2^16 in the result */
+    const uint32_t middle = al * bh + ((al * bl) >> 16) + cross;
+    return ah * bh + ((uint32_t)(middle < cross) << 16) + (middle >> 16);
 }
 
 /* The whole 64-bit product of two unsigned 32-bit values. The Cortex-M0 has no
  * 32x32->64 multiply, and the compiler's general 64x64 routine costs about twice
- * these four 16x16 products; elsewhere the native product is the same number. */
+ * these four 16x16 products, summed in 32-bit words with their carries; elsewhere
+ * the native product is the same number. */
 static inline uint64_t tarn_mul_u32_wide(uint32_t a, uint32_t b)
 {
 #if defined(__ARM_ARCH_6M__)
-    uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-    uint64_t product = (uint64_t)(ah * bh) << 32;
-    product += (uint64_t)(al * bh) << 16;
-    product += (uint64_t)(ah * bl) << 16;
-    return product + al * bl;
+    const uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    const uint32_t low = al * bl, cross = al * bh, middle = cross + ah * bl; /* may carry out */
+    const uint32_t result_low = low + (middle << 16);
+    const uint32_t high = ah * bh + ((uint32_t)(middle < cross) << 16) + (middle >> 16) + (result_low < low);
+    return ((uint64_t)high << 32) | result_low;
 #else
     return (uint64_t)a * b;
+#endif
+}
+
+/* The whole 64-bit product of two signed 32-bit values, for the per-vertex and
+ * per-triangle code whose operands fit 32 bits: on the Cortex-M0 a function of its
+ * own (core/fixed.c) from tarn_mul_u32_wide, about half of libgcc's 64x64 multiply
+ * and small enough to call from everywhere; elsewhere the native product. */
+#if defined(__ARM_ARCH_6M__)
+int64_t tarn_mul_i32_wide(int32_t a, int32_t b);
+#else
+static inline int64_t tarn_mul_i32_wide(int32_t a, int32_t b)
+{
+    return (int64_t)a * b;
+}
+#endif
+
+/* The 64-bit product of a and b for |a| <= 2^15, such as a coordinate difference
+ * inside the guard box. On the Cortex-M0 two 32-bit products of a with b's 16-bit
+ * halves, each of which fits 32 bits, where tarn_mul_i32_wide needs four and a
+ * call; elsewhere the native product. */
+static inline int64_t tarn_mul_i16_i32_wide(int32_t a, int32_t b)
+{
+#if defined(__ARM_ARCH_6M__)
+    const int32_t low = (int32_t)((uint32_t)b & 0xFFFFu);
+    const int32_t high = (b - low) / 65536; /* exact: b - low is a multiple of 2^16 */
+    return (int64_t)(a * high) * 65536 + a * low;
+#else
+    return (int64_t)a * b;
 #endif
 }
 

@@ -52,14 +52,17 @@ static int sphere_misses_tile(const tarn_view *view, const tile_frustum *f,
     return 0;
 }
 
-/* 1 when no pixel centre of the rectangle can lie in the triangle's bounds. */
+/* 1 when no pixel centre of the rectangle can lie in the triangle's bounds: when
+ * the bounds end before the centre of the rectangle's first pixel or begin after
+ * that of its last, compared in subpixels (tarn_bounds_pixels' pixel box, without
+ * its divisions). */
 static int bounds_miss_rect(const tarn_screen_vertex s[3], unsigned subpixel_bits,
                             const tarn_pixel_rect *rect)
 {
     subpixel_bounds bounds = tarn_bounds_empty();
     for (int k = 0; k < 3; k++) tarn_bounds_add(&bounds, &s[k]);
-    const pixel_box box = tarn_bounds_pixels(&bounds, subpixel_bits);
-    return box.x1 < rect->x0 || box.x0 >= rect->x1 || box.y1 < rect->y0 || box.y0 >= rect->y1;
+    return bounds.x1 < pixel_centre(rect->x0, subpixel_bits) || bounds.x0 > pixel_centre(rect->x1 - 1, subpixel_bits) ||
+           bounds.y1 < pixel_centre(rect->y0, subpixel_bits) || bounds.y0 > pixel_centre(rect->y1 - 1, subpixel_bits);
 }
 
 static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,

@@ -19,8 +19,8 @@ static void object_to_view_matrix(const tarn_view *view, const tarn_object *obje
         for (int j = 0; j < 3; j++) {
             int64_t sum = 0;
             for (int k = 0; k < 3; k++) {
-                int64_t scaled = tarn_round_shift_i64((int64_t)object->scale * object->rotation[k][j], 16);
-                sum += (int64_t)view->basis[i][k] * tarn_sat_i64_to_i32(scaled);
+                int64_t scaled = tarn_round_shift_i64(tarn_mul_i32_wide(object->scale, object->rotation[k][j]), 16);
+                sum += tarn_mul_i32_wide(view->basis[i][k], tarn_sat_i64_to_i32(scaled));
             }
             product[i][j] = sum;
             uint64_t magnitude = sum < 0 ? (uint64_t)0 - (uint64_t)sum : (uint64_t)sum;
@@ -57,7 +57,7 @@ static void normal_to_view_matrix(const tarn_view *view, const tarn_object *obje
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             int64_t sum = 0;
-            for (int k = 0; k < 3; k++) sum += (int64_t)view->basis[i][k] * object->rotation[k][j];
+            for (int k = 0; k < 3; k++) sum += tarn_mul_i32_wide(view->basis[i][k], object->rotation[k][j]);
             xform->normal_to_view[i][j] = tarn_sat_i64_to_i32(tarn_round_shift_i64(sum, 16));
         }
 }
@@ -75,7 +75,7 @@ void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
     const tarn_q16 light[3] = {view->light_dir.x, view->light_dir.y, view->light_dir.z};
     for (int j = 0; j < 3; j++) {
         int64_t sum = 0;
-        for (int k = 0; k < 3; k++) sum += (int64_t)object->rotation[k][j] * light[k];
+        for (int k = 0; k < 3; k++) sum += tarn_mul_i32_wide(object->rotation[k][j], light[k]);
         xform->light_dir[j] = tarn_sat_i64_to_i32(tarn_round_shift_i64(sum, 16));
     }
     xform->unlit = object->material->unlit != 0;
@@ -89,8 +89,8 @@ void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,
 {
     tarn_q16 *dest[3] = {&out->x, &out->y, &out->d};
     for (int i = 0; i < 3; i++) {
-        int64_t sum = (int64_t)xform->to_view[i][0] * p->x + (int64_t)xform->to_view[i][1] * p->y +
-                      (int64_t)xform->to_view[i][2] * p->z;
+        int64_t sum = tarn_mul_i32_wide(xform->to_view[i][0], p->x) + tarn_mul_i32_wide(xform->to_view[i][1], p->y) +
+                      tarn_mul_i32_wide(xform->to_view[i][2], p->z);
         int64_t view_q16 = tarn_round_shift_i64(sum, xform->to_view_frac_bits) + xform->origin[i];
         *dest[i] = tarn_sat_i64_to_i32(view_q16);
     }
@@ -100,7 +100,7 @@ void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,
 static uint32_t shade_q16(const tarn_view *view, int channel, int32_t n_dot_l_q16)
 {
     uint32_t diffuse = n_dot_l_q16 > 0
-        ? (uint32_t)(((uint64_t)view->light_q16[channel] * (uint32_t)n_dot_l_q16 + 32768u) >> 16)
+        ? (uint32_t)((tarn_mul_u32_wide(view->light_q16[channel], (uint32_t)n_dot_l_q16) + 32768u) >> 16)
         : 0u;
     uint32_t shade = view->ambient_q16[channel] + diffuse;
     return shade > 65536u ? 65536u : shade;
@@ -149,13 +149,13 @@ void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
 {
     const tarn_vec3 normal = tarn_unit_vector_bounded(&mesh->normals[index]);
     const tarn_vec3 *n = &normal;
-    int64_t dot = (int64_t)n->x * xform->light_dir[0] + (int64_t)n->y * xform->light_dir[1] +
-                  (int64_t)n->z * xform->light_dir[2];
+    int64_t dot = tarn_mul_i32_wide(n->x, xform->light_dir[0]) + tarn_mul_i32_wide(n->y, xform->light_dir[1]) +
+                  tarn_mul_i32_wide(n->z, xform->light_dir[2]);
     int32_t n_dot_l = tarn_sat_i64_to_i32(tarn_round_shift_i64(dot, 16));
     uint32_t vertex_rgb = mesh->colours ? mesh->colours[index] : 0xFFFFFFu;
     for (int c = 0; c < 3; c++) {
         uint32_t shade = xform->unlit ? 65536u : shade_q16(view, c, n_dot_l);
-        uint32_t factor = (uint32_t)(((uint64_t)xform->tint_q16[c] * shade + 32768u) >> 16);
+        uint32_t factor = (uint32_t)((tarn_mul_u32_wide(xform->tint_q16[c], shade) + 32768u) >> 16);
         uint32_t vertex_channel = (vertex_rgb >> (16 - 8 * c)) & 0xFFu;
         out->lit[c] = (int32_t)((vertex_channel * factor + 128u) >> 8); /* Q8.8 */
     }

@@ -16,10 +16,15 @@ static tarn_cached_vertex *cache_slot(tarn_vertex_cache *cache, uint16_t index)
     return &cache->slot[((uint32_t)index * 40503u >> 11) & (TARN_VERTEX_CACHE_SLOTS - 1u)];
 }
 
-tarn_cached_vertex tarn_cached_position(tarn_vertex_cache *cache, uint16_t index)
+/* The vertex's view position and outcode, from the cache or computed into it, copied
+ * into *out (one copy: the triangle keeps its vertices even if they evict each other). */
+static void cached_position(tarn_vertex_cache *cache, uint16_t index, tarn_cached_vertex *out)
 {
     tarn_cached_vertex *slot = cache_slot(cache, index);
-    if ((slot->state & TARN_CACHED_FILLED) && slot->index == index) return *slot;
+    if ((slot->state & TARN_CACHED_FILLED) && slot->index == index) {
+        *out = *slot;
+        return;
+    }
     tarn_view_vertex v;
     tarn_vertex_position(cache->xform, &cache->mesh->positions[index], &v);
     slot->index = index;
@@ -28,7 +33,7 @@ tarn_cached_vertex tarn_cached_position(tarn_vertex_cache *cache, uint16_t index
     slot->x = v.x;
     slot->y = v.y;
     slot->d = v.d;
-    return *slot;
+    *out = *slot;
 }
 
 unsigned tarn_cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3], tarn_cached_vertex c[3],
@@ -36,7 +41,7 @@ unsigned tarn_cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3],
 {
     unsigned all = ~0u, any = 0;
     for (int k = 0; k < 3; k++) {
-        c[k] = tarn_cached_position(cache, index[k]);
+        cached_position(cache, index[k], &c[k]);
         all &= c[k].outcode;
         any |= c[k].outcode;
     }

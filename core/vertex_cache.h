@@ -40,9 +40,6 @@ typedef struct {
 void tarn_vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
                             const tarn_object_xform *xform, const tarn_mesh *mesh);
 
-/* The vertex's view position and outcode, from the cache or computed into it. */
-tarn_cached_vertex tarn_cached_position(tarn_vertex_cache *cache, uint16_t index);
-
 /* The three vertices of a triangle (`index` its three indices) into c[]; returns the
  * clip planes all three are outside of, and those any is outside of in *outside_any. */
 unsigned tarn_cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3], tarn_cached_vertex c[3],

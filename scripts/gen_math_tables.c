@@ -39,6 +39,14 @@ static double sin_quarter_q15(unsigned i)
     return 32768.0 * sin(quarter_turn_radians * i / TARN_SIN_TABLE_STEPS);
 }
 
+/* Leading zero bits of the byte i, 8 for 0. */
+static double clz8_entry(unsigned i)
+{
+    unsigned zeros = 8;
+    for (; i != 0; i >>= 1) zeros--;
+    return zeros;
+}
+
 static void print_table(const char *declaration, unsigned count, double (*entry)(unsigned))
 {
     printf("\n%s = {", declaration);
@@ -64,5 +72,6 @@ int main(void)
                 TARN_RSQRT_SEED_COUNT, rsqrt_seed_q15);
     print_table("const uint16_t tarn_sin_quarter_q15[TARN_SIN_TABLE_STEPS + 1u]",
                 TARN_SIN_TABLE_STEPS + 1u, sin_quarter_q15);
+    print_table("const uint8_t tarn_clz8[256]", 256u, clz8_entry);
     return ferror(stdout) ? EXIT_FAILURE : EXIT_SUCCESS;
 }
