@@ -11,7 +11,7 @@ const char tarn_cli_usage[] =
     "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]\n"
     "       tarn accuracy --math\n"
     "       tarn memory SCENE [--size WxH] [QUALITY]\n"
-    "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [QUALITY]\n"
+    "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE] [QUALITY]\n"
     "       tarn show SCENE --display DISPLAY --panel MODEL [...]   (tarn show --help)\n"
     "       tarn sweep [SCENE...] [--out DIR] [...]                 (tarn sweep --help)\n"
     "QUALITY: --quality fast|balanced|exact (a preset, balanced by default; the knobs below\n"

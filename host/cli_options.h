@@ -5,7 +5,7 @@
  *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]
  *   tarn accuracy --math
  *   tarn memory SCENE [--size WxH] [QUALITY]   (the working memory a frame needs)
- *   tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [QUALITY]
+ *   tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE] [QUALITY]
  *                                              (the scene as const C data: host/bake.h)
  * QUALITY knobs (defaults from tarn_quality_default()):
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N

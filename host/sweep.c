@@ -137,7 +137,8 @@ static int sweep_scene(const sweep_options *o, const char *work_dir, tarn_sweep_
         scene->count = keep_valid_points(&loaded, scene->points,
                                          tarn_sweep_grid_points(o->grid, scene->points, POINTS_MAX));
         for (size_t i = 0; i < scene->count; i++)
-            for (size_t s = 0; s < TARN_SWEEP_SOURCES_MAX; s++) scene->points[i].cost[s] = -1.0;
+            for (size_t s = 0; s < TARN_SWEEP_SOURCES_MAX; s++)
+                scene->points[i].cost[s] = scene->points[i].convert[s][0] = scene->points[i].convert[s][1] = -1.0;
         fprintf(stderr, "tarn sweep: %s, %zu points: error against the reference\n", scene->name, scene->count);
         failed = tarn_sweep_measure_errors(&loaded, scene, err);
     }

@@ -28,11 +28,15 @@ typedef struct {
     tarn_quality quality;
     const char *preset;            /* "fast", "balanced", "exact", or NULL */
     tarn_compare_metrics error;    /* against the float reference */
+    tarn_compare_metrics panel[2]; /* the frame as an RGB565 panel shows it, without and
+                                      with ordered dither, against the same reference */
     uint32_t checksum;             /* tarn_checksum of the host's frame */
     double exp2_max_lsb;           /* the exp2 knob's own largest error (tarn_math) */
     double recip_max_rel;          /* the reciprocal's largest relative error */
     double cost[TARN_SWEEP_SOURCES_MAX]; /* instructions per pixel; negative: not measured */
     uint8_t tile[TARN_SWEEP_SOURCES_MAX]; /* the tile each source rendered it with */
+    double convert[TARN_SWEEP_SOURCES_MAX][2]; /* a board's RGB565 conversion without and
+                                      with dither, instructions per pixel; negative: none */
     int host_tile_only;            /* a tile-size variant: the boards pick their own tile */
 } tarn_sweep_point;
 

@@ -4,6 +4,8 @@
 
 #include "accuracy_math.h"
 #include "core_render.h"
+#include "panel_emulator.h"
+#include "tarn_panel.h"
 #include "reference.h"
 #include "tarn_checksum.h"
 
@@ -47,9 +49,30 @@ static uint32_t image_checksum(const uint8_t *rgb, int width, int height)
     return sum;
 }
 
+/* The frame through the panel's RGB565, back to RGB888 as the panel shows it. */
+static void as_panel_shows(const uint8_t *rgb, int width, int height, int dither, uint8_t *out)
+{
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++) {
+            const size_t i = 3 * ((size_t)y * (size_t)width + (size_t)x);
+            const uint32_t pixel = ((uint32_t)rgb[i] << 16) | ((uint32_t)rgb[i + 1] << 8) | rgb[i + 2];
+            tarn_rgb565_to_rgb888(tarn_rgb565(pixel, (uint16_t)x, (uint16_t)y, dither), &out[i]);
+        }
+}
+
+static void panel_errors(const uint8_t *rgb, const reference_image *r, tarn_compare_metrics panel[2])
+{
+    uint8_t *shown = malloc(3 * (size_t)r->width * (size_t)r->height);
+    for (int dither = 0; dither < 2 && shown != NULL; dither++) {
+        as_panel_shows(rgb, r->width, r->height, dither, shown);
+        tarn_compare_images(shown, r->rgb, NULL, NULL, r->width, r->height, &panel[dither]);
+    }
+    free(shown);
+}
+
 /* The core's frame against the reference. */
 static int measure(const tarn_loaded_scene *loaded, const reference_image *r, const tarn_quality *quality,
-                   tarn_compare_metrics *metrics, uint32_t *checksum, tarn_error *err)
+                   tarn_compare_metrics *metrics, tarn_sweep_point *point, tarn_error *err)
 {
     const size_t pixels = (size_t)r->width * (size_t)r->height;
     const tarn_frame_config config = {(uint16_t)r->width, (uint16_t)r->height, *quality, TARN_SWEEP_TIME_MS};
@@ -59,7 +82,10 @@ static int measure(const tarn_loaded_scene *loaded, const reference_image *r, co
         : tarn_core_render(&loaded->scene, &config, rgb, covered, err);
     if (!failed) {
         tarn_compare_images(rgb, r->rgb, covered, r->covered, r->width, r->height, metrics);
-        if (checksum != NULL) *checksum = image_checksum(rgb, r->width, r->height);
+        if (point != NULL) {
+            point->checksum = image_checksum(rgb, r->width, r->height);
+            panel_errors(rgb, r, point->panel);
+        }
     }
     free(rgb);
     free(covered);
@@ -93,7 +119,7 @@ int tarn_sweep_measure_errors(const tarn_loaded_scene *loaded, tarn_sweep_scene 
     int failed = reference_render(loaded, &reference, err);
     for (size_t i = 0; i < scene->count && !failed; i++) {
         tarn_sweep_point *p = &scene->points[i];
-        failed = measure(loaded, &reference, &p->quality, &p->error, &p->checksum, err);
+        failed = measure(loaded, &reference, &p->quality, &p->error, p, err);
         knob_math_errors(&math, p);
     }
     reference_free(&reference);

@@ -31,9 +31,11 @@ static void csv_header(FILE *f, const tarn_sweep_sources *sources)
 {
     fprintf(f, "scene,preset,perspective,recip_steps,depth_bits,apron,exp2_entries,exp2_mode,fog_bits,"
                "subpixel_bits,tile,bins,psnr_db,max_error,over2_pct,over8_pct,coverage_mismatches,"
-               "exp2_max_lsb,recip_max_rel");
+               "exp2_max_lsb,recip_max_rel,rgb565_psnr_db,rgb565_dither_psnr_db");
     for (size_t s = 0; s < sources->count; s++)
         fprintf(f, ",%s_insn_per_pixel,%s_tile", sources->names[s], sources->names[s]);
+    for (size_t s = 1; s < sources->count; s++)
+        fprintf(f, ",%s_rgb565_insn_per_pixel,%s_rgb565_dither_insn_per_pixel", sources->names[s], sources->names[s]);
     fprintf(f, ",options\n");
 }
 
@@ -49,9 +51,14 @@ static void csv_row(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_poi
             (unsigned)q->subpixel_bits, (unsigned)q->tile_size, q->cluster_bins ? "on" : "off", p->error.psnr_db,
             p->error.max_channel_error, 100.0 * p->error.share_over2, 100.0 * p->error.share_over8,
             p->error.coverage_mismatches, p->exp2_max_lsb, p->recip_max_rel);
+    fprintf(f, ",%.2f,%.2f", p->panel[0].psnr_db, p->panel[1].psnr_db);
     for (size_t s = 0; s < sources->count; s++) {
         if (p->cost[s] < 0) fprintf(f, ",,");
         else fprintf(f, ",%.0f,%u", p->cost[s], (unsigned)(s == 0 ? q->tile_size : p->tile[s]));
+    }
+    for (size_t s = 1; s < sources->count; s++) {
+        if (p->convert[s][0] < 0) fprintf(f, ",,");
+        else fprintf(f, ",%.0f,%.0f", p->convert[s][0], p->convert[s][1]);
     }
     tarn_sweep_quality_text(q, options, sizeof options);
     fprintf(f, ",%s\n", options);
@@ -77,10 +84,10 @@ static void cost_cell(FILE *f, const tarn_sweep_point *p, size_t source)
     else fprintf(f, " %.0f (tile %u) |", p->cost[source], (unsigned)p->tile[source]);
 }
 
-static void error_cells(FILE *f, const tarn_sweep_point *p)
+static void error_cells(FILE *f, const tarn_compare_metrics *m)
 {
-    fprintf(f, " %.2f | %d | %.3f%% | %.3f%% |", p->error.psnr_db, p->error.max_channel_error,
-            100.0 * p->error.share_over2, 100.0 * p->error.share_over8);
+    fprintf(f, " %.2f | %d | %.3f%% | %.3f%% |", m->psnr_db, m->max_channel_error, 100.0 * m->share_over2,
+            100.0 * m->share_over8);
 }
 
 static void preset_table(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_sources *sources)
@@ -94,9 +101,32 @@ static void preset_table(FILE *f, const tarn_sweep_scene *scene, const tarn_swee
         const tarn_sweep_point *p = &scene->points[i];
         if (p->preset == NULL) continue;
         fprintf(f, "| `%s` |", p->preset);
-        error_cells(f, p);
+        error_cells(f, &p->error);
         for (size_t s = 0; s < sources->count; s++) cost_cell(f, p, s);
         fprintf(f, "\n");
+    }
+}
+
+/* What the panel shows of each preset: RGB565 without and with ordered dither,
+ * and what the conversion costs each board. */
+static void panel_table(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_sources *sources)
+{
+    fprintf(f, "\nOn an RGB565 panel (`tarn_rgb565`, as the firmware sends it):\n\n| preset | dither | PSNR dB | max error | >2 | >8 |");
+    for (size_t s = 1; s < sources->count; s++) fprintf(f, " %s conversion insn/px |", sources->names[s]);
+    fprintf(f, "\n| --- | --- | ---: | ---: | ---: | ---: |");
+    for (size_t s = 1; s < sources->count; s++) fprintf(f, " ---: |");
+    fprintf(f, "\n");
+    for (size_t i = 0; i < scene->count; i++) {
+        const tarn_sweep_point *p = &scene->points[i];
+        for (int dither = 0; dither < 2 && p->preset != NULL; dither++) {
+            fprintf(f, "| `%s` | %s |", p->preset, dither ? "ordered 4x4" : "none");
+            error_cells(f, &p->panel[dither]);
+            for (size_t s = 1; s < sources->count; s++) {
+                if (p->convert[s][dither] < 0) fprintf(f, " does not fit |");
+                else fprintf(f, " %.0f |", p->convert[s][dither]);
+            }
+            fprintf(f, "\n");
+        }
     }
 }
 
@@ -117,7 +147,7 @@ static void front_table(FILE *f, const tarn_sweep_scene *scene, size_t source, c
         tarn_sweep_quality_text(&p->quality, options, sizeof options);
         fprintf(f, "|");
         cost_cell(f, p, source);
-        error_cells(f, p);
+        error_cells(f, &p->error);
         fprintf(f, " `%s` | %s |\n", options, p->preset ? p->preset : "");
     }
     free(front);
@@ -132,6 +162,7 @@ int tarn_sweep_write_fronts(const char *path, const tarn_sweep_scene *scenes, si
         fprintf(f, "## %s (%ux%u, %zu points)\n\n", scenes[k].name, (unsigned)scenes[k].width,
                 (unsigned)scenes[k].height, scenes[k].count);
         preset_table(f, &scenes[k], sources);
+        panel_table(f, &scenes[k], sources);
         for (size_t s = 0; s < sources->count; s++) front_table(f, &scenes[k], s, sources->names[s]);
         fprintf(f, "\n");
     }

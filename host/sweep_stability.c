@@ -15,7 +15,8 @@ typedef struct {
     double psnr;
     int max_error;
     double over8;
-    const char *psnr_scene, *max_scene, *over8_scene, *refused_by;
+    const char *psnr_scene, *max_scene, *over8_scene;
+    size_t refusals; /* scenes whose frame is too large for the value's subpixel bits */
 } worst_case;
 
 static void note_case(worst_case *w, const tarn_compare_metrics *m, const char *scene)
@@ -34,14 +35,15 @@ static void note_case(worst_case *w, const tarn_compare_metrics *m, const char *
     }
 }
 
-static void write_row(FILE *f, const tarn_sweep_variant *v, const worst_case *w)
+static void write_row(FILE *f, const tarn_sweep_variant *v, const worst_case *w, size_t scene_count)
 {
     fprintf(f, "| `%s %s` |", v->option, v->value);
     if (w->psnr_scene == NULL) fprintf(f, " - | - | - |");
     else
         fprintf(f, " %.2f (%s) | %d (%s) | %.3f%% (%s) |", w->psnr, w->psnr_scene, w->max_error, w->max_scene,
                 100.0 * w->over8, w->over8_scene);
-    fprintf(f, " %s |\n", w->refused_by ? w->refused_by : "");
+    if (w->refusals > 0) fprintf(f, " %zu of %zu |\n", w->refusals, scene_count);
+    else fprintf(f, " |\n");
 }
 
 /* One scene under every variant; a config the frame refuses is noted, not fatal. */
@@ -55,7 +57,7 @@ static int measure_scene(const char *path, const tarn_sweep_variant *variants, s
     for (size_t v = 0; v < count && !failed; v++) {
         const tarn_frame_config config = {loaded.width, loaded.height, variants[v].quality, TARN_SWEEP_TIME_MS};
         if (tarn_frame_memory_bytes(&config, &loaded.scene) == 0) {
-            if (worst[v].refused_by == NULL) worst[v].refused_by = name;
+            worst[v].refusals++;
             continue;
         }
         tarn_compare_metrics m;
@@ -80,8 +82,8 @@ int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, con
     if (!failed && f == NULL) failed = tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
     if (f != NULL) {
         fprintf(f, "| knob (rest balanced) | lowest PSNR dB (scene) | largest channel error (scene) | "
-                   "most pixels off by >8 (scene) | refused by |\n| --- | --- | --- | --- | --- |\n");
-        for (size_t v = 0; v < count; v++) write_row(f, &variants[v], &worst[v]);
+                   "most pixels off by >8 (scene) | scenes refusing it |\n| --- | --- | --- | --- | --- |\n");
+        for (size_t v = 0; v < count; v++) write_row(f, &variants[v], &worst[v], scene_count);
         if (fclose(f) != 0) failed = tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
     }
     free(names);

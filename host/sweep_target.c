@@ -105,7 +105,7 @@ static int run_make(const char *board, const char *scene_path, const char *point
 
 typedef struct {
     size_t index;
-    double insn_per_pixel;
+    double insn_per_pixel, convert, dither;
     unsigned checksum;
     char status[32];
 } point_line;
@@ -113,9 +113,12 @@ typedef struct {
 static int parse_point_line(const char *line, point_line *p)
 {
     const char *insn = strstr(line, " insn_per_pixel="), *sum = strstr(line, " checksum="),
-               *status = strstr(line, " status=");
-    return sscanf(line, "point index=%zu", &p->index) == 1 && insn && sum && status &&
+               *status = strstr(line, " status="), *convert = strstr(line, " convert_insn_per_pixel="),
+               *dither = strstr(line, " dither_insn_per_pixel=");
+    return sscanf(line, "point index=%zu", &p->index) == 1 && insn && sum && status && convert && dither &&
                    sscanf(insn, " insn_per_pixel=%lf", &p->insn_per_pixel) == 1 &&
+                   sscanf(convert, " convert_insn_per_pixel=%lf", &p->convert) == 1 &&
+                   sscanf(dither, " dither_insn_per_pixel=%lf", &p->dither) == 1 &&
                    sscanf(sum, " checksum=%x", &p->checksum) == 1 && sscanf(status, " status=%31s", p->status) == 1
                ? 0
                : -1;
@@ -152,6 +155,8 @@ static int read_report(tarn_sweep_scene *scene, const char *board, size_t source
         tarn_sweep_point *p = &scene->points[map[line.index]];
         failed = check_point(scene, board, &line, p, err);
         p->cost[source] = line.insn_per_pixel;
+        p->convert[source][0] = line.convert;
+        p->convert[source][1] = line.dither;
         seen++;
     }
     fclose(f);
