@@ -4,10 +4,10 @@
 
 #include "accuracy_math.h"
 #include "core_render.h"
+#include "image_checksum.h"
 #include "panel_emulator.h"
 #include "tarn_panel.h"
 #include "reference.h"
-#include "tarn_checksum.h"
 
 /* One truth for every point: the unsnapped reference on the finest subpixel grid
  * it has. A reference on each point's own grid would round its positions as the
@@ -36,17 +36,6 @@ static int reference_render(const tarn_loaded_scene *loaded, reference_image *r,
         return tarn_fail(err, "%s: the reference cannot render this scene at %dx%d", loaded->name,
                          r->width, r->height);
     return 0;
-}
-
-static uint32_t image_checksum(const uint8_t *rgb, int width, int height)
-{
-    uint32_t sum = 0;
-    for (int y = 0; y < height; y++)
-        for (int x = 0; x < width; x++) {
-            const uint8_t *p = &rgb[3 * ((size_t)y * (size_t)width + (size_t)x)];
-            sum += tarn_checksum_pixel((uint32_t)x, (uint32_t)y, ((uint32_t)p[0] << 16) | ((uint32_t)p[1] << 8) | p[2]);
-        }
-    return sum;
 }
 
 /* The frame through the panel's RGB565, back to RGB888 as the panel shows it. */
@@ -83,7 +72,7 @@ static int measure(const tarn_loaded_scene *loaded, const reference_image *r, co
     if (!failed) {
         tarn_compare_images(rgb, r->rgb, covered, r->covered, r->width, r->height, metrics);
         if (point != NULL) {
-            point->checksum = image_checksum(rgb, r->width, r->height);
+            point->checksum = tarn_image_checksum(rgb, (uint32_t)r->width, (uint32_t)r->height);
             panel_errors(rgb, r, point->panel);
         }
     }

@@ -9,6 +9,7 @@
 #include <cmocka.h>
 
 #include "core_render.h"
+#include "image_checksum.h"
 #include "scene_load.h"
 #include "tarn_checksum.h"
 
@@ -59,17 +60,6 @@ static uint32_t render_checksum(const tarn_scene *scene, tarn_frame_config confi
     return sum;
 }
 
-static uint32_t image_checksum(const uint8_t *rgb, uint32_t width, uint32_t height)
-{
-    uint32_t sum = 0;
-    for (uint32_t y = 0; y < height; y++)
-        for (uint32_t x = 0; x < width; x++) {
-            const uint8_t *p = rgb + 3u * (y * width + x);
-            sum += tarn_checksum_pixel(x, y, ((uint32_t)p[0] << 16) | ((uint32_t)p[1] << 8) | p[2]);
-        }
-    return sum;
-}
-
 /* The pond at tiles of 16 and 32 (and an odd 13), as tiles arrive, and the host's
  * sum over the whole image: one number. */
 static void test_same_frame_same_sum_at_any_tile_size(void **state)
@@ -87,7 +77,7 @@ static void test_same_frame_same_sum_at_any_tile_size(void **state)
     assert_non_null(rgb);
     config.quality.tile_size = 28;
     if (tarn_core_render(&scene.scene, &config, rgb, NULL, &err) != 0) fail_msg("%s", err.message);
-    uint32_t whole = image_checksum(rgb, WIDTH, HEIGHT);
+    uint32_t whole = tarn_image_checksum(rgb, WIDTH, HEIGHT);
     print_message("pond %dx%d at 1000 ms: tiles 16 %08x, 32 %08x, 13 %08x, whole image %08x\n", WIDTH,
                   HEIGHT, at16, at32, at13, whole);
     assert_int_equal(at16, at32);

@@ -22,6 +22,7 @@
 
 #include "cli_options.h"
 #include "core_render.h"
+#include "firmware_conf.h"
 #include "panel_emulator.h"
 #include "panel_stream.h"
 #include "scene_load.h"
@@ -29,7 +30,6 @@
 
 #define FIRMWARE_DIR "build/firmware"
 #define BOARDS_MAX 16
-#define FLAGS_MAX 16
 
 typedef struct {
     char board[64];
@@ -39,86 +39,26 @@ typedef struct {
     int dither;
 } firmware_conf;
 
-static char *read_file(const char *path, size_t *size)
-{
-    FILE *f = fopen(path, "rb");
-    if (f == NULL) return NULL;
-    size_t capacity = 4096, n = 0;
-    char *bytes = malloc(capacity + 1);
-    for (size_t got; bytes != NULL && (got = fread(bytes + n, 1, capacity - n, f)) > 0;) {
-        n += got;
-        if (n == capacity) {
-            char *grown = realloc(bytes, 2 * capacity + 1);
-            if (grown == NULL) free(bytes);
-            bytes = grown;
-            capacity *= 2;
-        }
-    }
-    fclose(f);
-    if (bytes != NULL) bytes[n] = '\0';
-    if (size != NULL) *size = n;
-    return bytes;
-}
-
-static void copy_value(char *out, size_t size, const char *text, const char *key)
-{
-    size_t key_length = strlen(key);
-    out[0] = '\0';
-    for (const char *line = text; line != NULL && *line != '\0';) {
-        const char *end = strchr(line, '\n');
-        size_t length = end ? (size_t)(end - line) : strlen(line);
-        if (length > key_length && strncmp(line, key, key_length) == 0 && line[key_length] == '=') {
-            size_t n = length - key_length - 1;
-            if (n >= size) n = size - 1;
-            memcpy(out, line + key_length + 1, n);
-            out[n] = '\0';
-            return;
-        }
-        line = end ? end + 1 : NULL;
-    }
-}
-
 static void read_conf(const char *board, firmware_conf *conf)
 {
     char path[512], value[64];
     snprintf(path, sizeof path, FIRMWARE_DIR "/%s/firmware.conf", board);
-    char *text = read_file(path, NULL);
+    char *text = firmware_read_file(path, NULL);
     if (text == NULL) fail_msg("%s: cannot read it", path);
     memset(conf, 0, sizeof *conf);
-    copy_value(conf->board, sizeof conf->board, text, "board");
-    copy_value(conf->scene, sizeof conf->scene, text, "scene");
-    copy_value(conf->bake_flags, sizeof conf->bake_flags, text, "bake_flags");
-    copy_value(value, sizeof value, text, "times");
+    firmware_conf_value(conf->board, sizeof conf->board, text, "board");
+    firmware_conf_value(conf->scene, sizeof conf->scene, text, "scene");
+    firmware_conf_value(conf->bake_flags, sizeof conf->bake_flags, text, "bake_flags");
+    firmware_conf_value(value, sizeof value, text, "times");
     unsigned t0, t1;
     if (sscanf(value, "%u,%u", &t0, &t1) != 2) fail_msg("%s: times: expected T0,T1, got '%s'", path, value);
     conf->times[0] = t0;
     conf->times[1] = t1;
-    copy_value(value, sizeof value, text, "dither");
+    firmware_conf_value(value, sizeof value, text, "dither");
     conf->dither = strcmp(value, "1") == 0;
     free(text);
     if (strcmp(conf->board, board) != 0 || conf->scene[0] == '\0')
         fail_msg("%s: expected board=%s and a scene", path, board);
-}
-
-/* The frame config the bake used: the scene's own size and the bake flags, parsed
- * the way `tarn bake` parses them. */
-static tarn_frame_config bake_config(const firmware_conf *conf, const tarn_loaded_scene *scene)
-{
-    char flags[sizeof conf->bake_flags];
-    char *argv[FLAGS_MAX + 3] = {"tarn", "memory", (char *)conf->scene};
-    int argc = 3;
-    memcpy(flags, conf->bake_flags, sizeof flags);
-    for (char *word = strtok(flags, " "); word != NULL; word = strtok(NULL, " ")) {
-        if (argc == FLAGS_MAX + 3) fail_msg("%s: too many bake flags", conf->board);
-        argv[argc++] = word;
-    }
-    tarn_cli_options options;
-    tarn_error err;
-    if (tarn_cli_parse(argc, argv, &options, &err) != 0)
-        fail_msg("%s: bake flags '%s': %s", conf->board, conf->bake_flags, err.message);
-    tarn_frame_config config = {options.width ? options.width : scene->width,
-                                options.height ? options.height : scene->height, options.quality, 0};
-    return config;
 }
 
 /* The emulator behind a transport that photographs the picture as soon as the first
@@ -202,7 +142,7 @@ static void test_board_matches_host(void **state)
     read_conf(board, &conf);
 
     snprintf(path, sizeof path, FIRMWARE_DIR "/%s/report.txt", board);
-    char *report = read_file(path, NULL);
+    char *report = firmware_read_file(path, NULL);
     if (report == NULL) fail_msg("%s: no report: run make firmware-run BOARD=%s", path, board);
     char expected[96];
     snprintf(expected, sizeof expected, "target board=%s ", board);
@@ -219,7 +159,7 @@ static void test_board_matches_host(void **state)
     tarn_loaded_scene scene;
     tarn_error err;
     if (tarn_scene_load(conf.scene, &scene, &err) != 0) fail_msg("%s", err.message);
-    tarn_frame_config config = bake_config(&conf, &scene);
+    tarn_frame_config config = firmware_bake_config(conf.scene, conf.bake_flags, &scene, 0);
 
     recording_panel *panel = calloc(1, sizeof *panel);
     assert_non_null(panel);
@@ -279,11 +219,11 @@ static size_t find_boards(char names[][64], size_t max)
         char path[512], value[8];
         if (e->d_name[0] == '.' || strlen(e->d_name) >= 64) continue;
         snprintf(path, sizeof path, FIRMWARE_DIR "/%s/firmware.conf", e->d_name);
-        char *text = read_file(path, NULL);
+        char *text = firmware_read_file(path, NULL);
         if (text == NULL) continue;
-        copy_value(value, sizeof value, text, "emulated");
+        firmware_conf_value(value, sizeof value, text, "emulated");
         char program[16];
-        copy_value(program, sizeof program, text, "program"); /* a sweep streams no frames */
+        firmware_conf_value(program, sizeof program, text, "program"); /* a sweep streams no frames */
         free(text);
         if (strcmp(value, "1") == 0 && strcmp(program, "sweep") != 0)
             memcpy(names[n++], e->d_name, strlen(e->d_name) + 1);

@@ -21,69 +21,13 @@
 #include "bake_points.h"
 #include "cli_options.h"
 #include "core_render.h"
+#include "firmware_conf.h"
+#include "image_checksum.h"
 #include "scene_load.h"
 #include "tarn_checksum.h"
 
 #define SWEEP_DIR_DEFAULT "build/firmware-sweep-check/qemu-m0"
 #define SWEEP_TIME_MS 1000u /* FW_TIME_1 */
-#define FLAGS_MAX 32
-
-static char *read_text(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (f == NULL) return NULL;
-    size_t capacity = 4096, n = 0;
-    char *text = malloc(capacity + 1);
-    for (size_t got; text != NULL && (got = fread(text + n, 1, capacity - n, f)) > 0;) {
-        n += got;
-        if (n == capacity) {
-            char *grown = realloc(text, 2 * capacity + 1);
-            if (grown == NULL) free(text);
-            text = grown;
-            capacity *= 2;
-        }
-    }
-    fclose(f);
-    if (text != NULL) text[n] = '\0';
-    return text;
-}
-
-/* KEY=VALUE's value in the conf's lines, or "". */
-static void conf_value(char *out, size_t size, const char *text, const char *key)
-{
-    size_t key_length = strlen(key);
-    out[0] = '\0';
-    for (const char *line = text; line != NULL && *line != '\0';) {
-        const char *end = strchr(line, '\n');
-        size_t length = end ? (size_t)(end - line) : strlen(line);
-        if (length > key_length && strncmp(line, key, key_length) == 0 && line[key_length] == '=') {
-            size_t n = length - key_length - 1 < size - 1 ? length - key_length - 1 : size - 1;
-            memcpy(out, line + key_length + 1, n);
-            out[n] = '\0';
-            return;
-        }
-        line = end ? end + 1 : NULL;
-    }
-}
-
-/* The bake's frame config: the flags parsed the way `tarn bake` parses them. */
-static tarn_frame_config bake_config(const char *scene_path, const char *bake_flags, const tarn_loaded_scene *scene)
-{
-    char flags[512];
-    char *argv[FLAGS_MAX + 3] = {"tarn", "memory", (char *)scene_path};
-    int argc = 3;
-    snprintf(flags, sizeof flags, "%s", bake_flags);
-    for (char *word = strtok(flags, " "); word != NULL; word = strtok(NULL, " ")) {
-        if (argc == FLAGS_MAX + 3) fail_msg("too many bake flags: %s", bake_flags);
-        argv[argc++] = word;
-    }
-    tarn_cli_options options;
-    tarn_error err;
-    if (tarn_cli_parse(argc, argv, &options, &err) != 0) fail_msg("bake flags '%s': %s", bake_flags, err.message);
-    tarn_frame_config config = {options.width ? options.width : scene->width,
-                                options.height ? options.height : scene->height, options.quality, SWEEP_TIME_MS};
-    return config;
-}
 
 /* The `point index=I ...` line of the report, or NULL. */
 static const char *point_line(const char *report, size_t index)
@@ -113,37 +57,26 @@ static void field(const char *line, const char *key, char *out, size_t size)
     out[n] = '\0';
 }
 
-static uint32_t image_checksum(const uint8_t *rgb, uint32_t width, uint32_t height)
-{
-    uint32_t sum = 0;
-    for (uint32_t y = 0; y < height; y++)
-        for (uint32_t x = 0; x < width; x++) {
-            const uint8_t *p = rgb + 3u * (y * width + x);
-            sum += tarn_checksum_pixel(x, y, ((uint32_t)p[0] << 16) | ((uint32_t)p[1] << 8) | p[2]);
-        }
-    return sum;
-}
-
 static void test_sweep_matches_host(void **state)
 {
     (void)state;
     const char *dir = getenv("SWEEP_DIR") && *getenv("SWEEP_DIR") ? getenv("SWEEP_DIR") : SWEEP_DIR_DEFAULT;
     char path[1024], scene_path[512], bake_flags[512], points_path[512], board[64], program[16];
     snprintf(path, sizeof path, "%s/firmware.conf", dir);
-    char *conf = read_text(path);
+    char *conf = firmware_read_file(path, NULL);
     snprintf(path, sizeof path, "%s/report.txt", dir);
-    char *report = read_text(path);
+    char *report = firmware_read_file(path, NULL);
     if (conf == NULL || report == NULL) {
         print_message("no sweep in %s: tests/check_firmware_sweep.sh runs one (make test does it)\n", dir);
         free(conf);
         free(report);
         skip();
     }
-    conf_value(scene_path, sizeof scene_path, conf, "scene");
-    conf_value(bake_flags, sizeof bake_flags, conf, "bake_flags");
-    conf_value(points_path, sizeof points_path, conf, "points");
-    conf_value(board, sizeof board, conf, "board");
-    conf_value(program, sizeof program, conf, "program");
+    firmware_conf_value(scene_path, sizeof scene_path, conf, "scene");
+    firmware_conf_value(bake_flags, sizeof bake_flags, conf, "bake_flags");
+    firmware_conf_value(points_path, sizeof points_path, conf, "points");
+    firmware_conf_value(board, sizeof board, conf, "board");
+    firmware_conf_value(program, sizeof program, conf, "program");
     free(conf);
     if (strcmp(program, "sweep") != 0) fail_msg("%s/firmware.conf: program=%s, expected sweep", dir, program);
     print_message("%s", report);
@@ -151,7 +84,7 @@ static void test_sweep_matches_host(void **state)
     tarn_loaded_scene scene;
     tarn_error err;
     if (tarn_scene_load(scene_path, &scene, &err) != 0) fail_msg("%s", err.message);
-    tarn_frame_config config = bake_config(scene_path, bake_flags, &scene);
+    tarn_frame_config config = firmware_bake_config(scene_path, bake_flags, &scene, SWEEP_TIME_MS);
     tarn_bake_points points;
     if (tarn_bake_points_load(points_path, &config.quality, &points, &err) != 0) fail_msg("%s", err.message);
 
@@ -179,7 +112,7 @@ static void test_sweep_matches_host(void **state)
         unsigned long board_sum = strtoul(value, NULL, 16);
         uint8_t *rgb = images + 3 * pixels * i;
         if (tarn_core_render(&scene.scene, &point, rgb, NULL, &err) != 0) fail_msg("%s", err.message);
-        sums[i] = image_checksum(rgb, point.width, point.height);
+        sums[i] = tarn_image_checksum(rgb, point.width, point.height);
         print_message("point %zu (%s:%u): board %08lx, host %08x\n", i, points.path, points.lines[i], board_sum,
                       sums[i]);
         assert_int_equal(board_sum, sums[i]);
