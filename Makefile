@@ -38,7 +38,7 @@ TEST_SUPPORT_OBJ := $(TEST_SUPPORT_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TARN := $(BUILD)/tarn
 
-.PHONY: all demo test check deps deps-test core-purity bench-panels clean
+.PHONY: all demo test check deps deps-test core-purity bench-panels sweep-docs clean
 .DELETE_ON_ERROR:
 .SECONDARY:
 
@@ -57,13 +57,16 @@ demo: deps
 
 # The whole suite: the emulated boards run (their streams are compared with the host
 # by tests/test_firmware.c), one sweep of several qualities on qemu-m0
-# (tests/check_firmware_sweep.sh), a plain build, then the same tests under ASan + UBSan,
+# (tests/check_firmware_sweep.sh), tarn sweep's quick grid and the published
+# presets re-measured (tests/check_sweep.sh), a plain build, then the same tests under ASan + UBSan,
 # then the check that core/ stays integer-only on a Cortex-M0, then the firmware's
 # sizes, stack and counter, then the fuzz targets' seed corpora and a short run of
 # each (tests/fuzz/fuzz.mk).
 test: deps-test
 	@$(MAKE) --no-print-directory firmware-run BOARD=
 	@tests/check_firmware_sweep.sh
+	@$(MAKE) --no-print-directory $(TARN)
+	@TARN_BIN=$(TARN) tests/check_sweep.sh
 	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
 	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
 	@$(MAKE) --no-print-directory core-purity
@@ -84,6 +87,14 @@ core-purity:
 # at the link's clock (docs/panels.md); make bench-target has the boards' figures.
 bench-panels: $(TARN)
 	@TARN_BIN=$(TARN) scripts/bench-panels.sh
+
+# The speed/accuracy map of docs/sweep.md: the pond's full sweep on the host,
+# qemu-m0 and qemu-rv32, and each knob value's worst case over scenes/extremes,
+# into docs/sweep/ (3 min 40 s on two cores).
+sweep-docs: deps-test $(TARN)
+	$(TARN) sweep scenes/pond.json --out build/sweep --extremes scenes/extremes
+	@mkdir -p docs/sweep
+	cp build/sweep/sweep.csv build/sweep/front.md build/sweep/stability.md build/sweep/pond.png docs/sweep/
 
 $(TARN): $(BUILD)/host/main.o $(HOST_OBJ) $(CORE_OBJ)
 	$(CC) $(OPT) -o $@ $^ $(HOST_LIBS)
