@@ -25,9 +25,10 @@ host_insn_per_pixel() { # SCENE PIXELS KNOBS...
 
 echo "| knob (default otherwise) | unsnapped | snapped | host insn/px |"
 echo "| --- | --- | --- | --- |"
-for knob in "" "--perspective span:4" "--perspective span:16" "--perspective affine" \
-            "--recip-steps 1" "--recip-steps 0" "--depth 16" "--subpixel 2" "--subpixel 6" \
-            "--tile 16" "--tile 64" "--apron off" "--apron off --tile 16" "--bins off"; do
+for knob in "" "--quality exact" "--quality fast" "--perspective span:4" "--perspective span:16" \
+            "--perspective affine" "--recip-steps 2" "--recip-steps 0" "--fog-bits 16" "--depth 16" \
+            "--subpixel 2" "--subpixel 5" "--subpixel 6" "--tile 16" "--tile 64" "--apron off" \
+            "--apron off --tile 16" "--bins off"; do
     # shellcheck disable=SC2086
     unsnapped=$("$TARN" compare scenes/pond.json $knob | tail -1 | figures)
     # shellcheck disable=SC2086
