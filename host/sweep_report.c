@@ -90,13 +90,21 @@ static void error_cells(FILE *f, const tarn_compare_metrics *m)
             100.0 * m->share_over8);
 }
 
+/* A table's header: its own columns, then one a source from `first` on. */
+static void header_with_sources(FILE *f, const char *columns, const char *rule, const tarn_sweep_sources *sources,
+                                size_t first, const char *label)
+{
+    fprintf(f, "%s", columns);
+    for (size_t s = first; s < sources->count; s++) fprintf(f, " %s %s |", sources->names[s], label);
+    fprintf(f, "\n%s", rule);
+    for (size_t s = first; s < sources->count; s++) fprintf(f, " ---: |");
+    fprintf(f, "\n");
+}
+
 static void preset_table(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_sources *sources)
 {
-    fprintf(f, "| preset | PSNR dB | max error | >2 | >8 |");
-    for (size_t s = 0; s < sources->count; s++) fprintf(f, " %s insn/px |", sources->names[s]);
-    fprintf(f, "\n| --- | ---: | ---: | ---: | ---: |");
-    for (size_t s = 0; s < sources->count; s++) fprintf(f, " ---: |");
-    fprintf(f, "\n");
+    header_with_sources(f, "| preset | PSNR dB | max error | >2 | >8 |", "| --- | ---: | ---: | ---: | ---: |", sources,
+                        0, "insn/px");
     for (size_t i = 0; i < scene->count; i++) {
         const tarn_sweep_point *p = &scene->points[i];
         if (p->preset == NULL) continue;
@@ -111,11 +119,9 @@ static void preset_table(FILE *f, const tarn_sweep_scene *scene, const tarn_swee
  * and what the conversion costs each board. */
 static void panel_table(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_sources *sources)
 {
-    fprintf(f, "\nOn an RGB565 panel (`tarn_rgb565`, as the firmware sends it):\n\n| preset | dither | PSNR dB | max error | >2 | >8 |");
-    for (size_t s = 1; s < sources->count; s++) fprintf(f, " %s conversion insn/px |", sources->names[s]);
-    fprintf(f, "\n| --- | --- | ---: | ---: | ---: | ---: |");
-    for (size_t s = 1; s < sources->count; s++) fprintf(f, " ---: |");
-    fprintf(f, "\n");
+    fprintf(f, "\nOn an RGB565 panel (`tarn_rgb565`, as the firmware sends it):\n\n");
+    header_with_sources(f, "| preset | dither | PSNR dB | max error | >2 | >8 |", "| --- | --- | ---: | ---: | ---: | ---: |",
+                        sources, 1, "conversion insn/px");
     for (size_t i = 0; i < scene->count; i++) {
         const tarn_sweep_point *p = &scene->points[i];
         for (int dither = 0; dither < 2 && p->preset != NULL; dither++) {
