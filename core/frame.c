@@ -75,10 +75,14 @@ int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config
     return apron_limit(apron, &config->quality);
 }
 
+/* Rows of the strips an in-place water pass falls back to (draw_water_in_strips). */
+#define WATER_STRIP_ROWS 2
+
 /* The buffers of one frame, carved from the caller's memory: the opaque pass's
  * colour and depth over the tile and its apron; with water or the underwater
- * view, the water pass's colour and depth over the tile and the underwater apron;
- * with the underwater view, the tile's final colour. */
+ * view, the water pass's colour and depth over the tile and the underwater apron,
+ * or only over a strip of the tile when the water pass draws in place; with the
+ * underwater view, the tile's final colour. */
 typedef struct {
     int32_t tile;
     int32_t under_apron;  /* pixels the underwater displacement reaches */
@@ -88,6 +92,7 @@ typedef struct {
     int32_t water_region; /* tile + 2 * under_apron */
     int water;            /* a water pass runs */
     int underwater;
+    int in_place;         /* the water pass draws over the opaque buffers */
     size_t depth_bytes;
     uint32_t bins;        /* cluster bins, 0 without */
 } frame_layout;
@@ -103,6 +108,10 @@ static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene 
         : 0;
     l.refraction_apron = l.water ? tarn_frame_apron_pixels(scene, config) : 0;
     l.apron = l.refraction_apron + l.under_apron;
+    /* Without an apron a water pixel reads the opaque pass at itself only, and the
+     * water pass can draw over it; the underwater view reads the water pass's
+     * output displaced, so keeps it apart. */
+    l.in_place = l.water && !l.underwater && l.apron == 0;
     l.region = l.tile + 2 * l.apron;
     l.water_region = l.tile + 2 * l.under_apron;
     l.depth_bytes = config->quality.depth_bits / 8u;
@@ -110,13 +119,20 @@ static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene 
     return l;
 }
 
+/* Pixels of the water pass's own colour and depth buffers. */
+static size_t water_pixels(const frame_layout *l)
+{
+    if (!l->water) return 0u;
+    if (l->in_place) return (size_t)l->tile * WATER_STRIP_ROWS;
+    return (size_t)l->water_region * (size_t)l->water_region;
+}
+
 static size_t layout_bytes(const frame_layout *l)
 {
     const size_t region = (size_t)l->region * (size_t)l->region;
-    const size_t water = (size_t)l->water_region * (size_t)l->water_region;
     const size_t tile = (size_t)l->tile * (size_t)l->tile;
-    return region * (4u + l->depth_bytes) + (l->water ? water * (4u + l->depth_bytes) : 0u) +
-           (l->underwater ? tile * 4u : 0u) + (size_t)l->bins * sizeof(tarn_cluster_bin);
+    return (region + water_pixels(l)) * (4u + l->depth_bytes) + (l->underwater ? tile * 4u : 0u) +
+           (size_t)l->bins * sizeof(tarn_cluster_bin);
 }
 
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
@@ -142,9 +158,9 @@ static void clear_rect(tarn_tile_target *t, uint32_t background, size_t depth_by
     }
 }
 
-/* Copies the tile's own pixels out of the opaque buffers: the water pass starts
- * from them and depth-tests against them. */
-static void copy_tile_pixels(const tarn_tile_target *from, tarn_tile_target *to, size_t depth_bytes)
+/* Copies the pixels of `to`'s rect between two targets' buffers: out of the opaque
+ * buffers the water pass starts from and depth-tests against, and back. */
+static void copy_pixels(const tarn_tile_target *from, const tarn_tile_target *to, size_t depth_bytes)
 {
     for (int32_t j = to->rect.y0; j < to->rect.y1; j++) {
         const int32_t source = (j - from->origin_y) * from->stride + (to->rect.x0 - from->origin_x);
@@ -162,6 +178,8 @@ typedef struct {
     const tarn_view *view;
     frame_layout layout;
     tarn_tile_target opaque, water;
+    uint32_t *water_colour;       /* the water pass's own buffers */
+    void *water_depth;
     uint32_t *final;              /* the underwater pass's tile */
     tarn_cluster_bin *bins;       /* this frame's, or NULL */
     tarn_water_context water_context;
@@ -172,23 +190,23 @@ static void carve_buffers(frame_state *f, void *memory)
 {
     const frame_layout *l = &f->layout;
     const size_t region = (size_t)l->region * (size_t)l->region;
-    const size_t water = l->water ? (size_t)l->water_region * (size_t)l->water_region : 0u;
+    const size_t water = water_pixels(l);
     uint8_t *next = memory; /* 4-byte buffers first, so every one stays aligned */
     f->opaque.colour = (uint32_t *)(void *)next;
     next += region * 4u;
-    f->water.colour = (uint32_t *)(void *)next;
+    f->water_colour = (uint32_t *)(void *)next;
     next += water * 4u;
     f->final = (uint32_t *)(void *)next;
     next += l->underwater ? (size_t)l->tile * (size_t)l->tile * 4u : 0u;
     f->opaque.depth = next;
     next += region * l->depth_bytes;
-    f->water.depth = next;
+    f->water_depth = next;
     next += water * l->depth_bytes;
     f->bins = l->bins != 0u ? (tarn_cluster_bin *)(void *)next : NULL;
     f->opaque.stride = l->region;
-    f->water.stride = l->water_region;
     f->opaque.quality = f->water.quality = &f->config->quality;
     f->opaque.water = NULL;
+    f->opaque.water_mark = f->opaque.water_overlap = 0u;
     f->water.water = &f->water_context;
     f->water.view = f->opaque.view = f->view;
     f->water.config = f->opaque.config = f->config;
@@ -207,16 +225,9 @@ static tarn_pixel_rect around(int32_t x, int32_t y, int32_t size, int32_t apron,
     return intersect(r, *frame);
 }
 
-/* The water pass: over the tile and the underwater apron, reading the opaque
- * pass's buffers; it starts from a copy of the opaque pixels it covers. */
-static void draw_water(frame_state *f, int32_t x, int32_t y, const tarn_pixel_rect *frame)
+/* The water context reads the opaque pass's buffers as the background. */
+static void begin_water(frame_state *f)
 {
-    tarn_tile_target *w = &f->water;
-    const int32_t apron = f->layout.under_apron;
-    w->rect = around(x, y, f->layout.tile, apron, frame);
-    w->origin_x = x - apron;
-    w->origin_y = y - apron;
-    copy_tile_pixels(&f->opaque, w, f->layout.depth_bytes);
     tarn_water_context *c = &f->water_context;
     c->object = NULL; /* set up again for the first water object of the tile */
     c->background = f->opaque.colour;
@@ -227,7 +238,73 @@ static void draw_water(frame_state *f, int32_t x, int32_t y, const tarn_pixel_re
     c->background_stride = f->opaque.stride;
     c->offset_limit = f->layout.refraction_apron;
     c->sample_rect = f->opaque.rect; /* binds at the frame's edges only (opaque_rect) */
-    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, &w->rect, raster_into_tile, w);
+}
+
+/* The water pass over `rect` into its own buffers, whose index 0 is frame pixel
+ * (origin_x, origin_y), `stride` wide: it starts from a copy of the opaque pixels. */
+static void draw_water_copy(frame_state *f, const tarn_pixel_rect *rect, int32_t origin_x, int32_t origin_y,
+                            int32_t stride)
+{
+    tarn_tile_target *w = &f->water;
+    w->rect = *rect;
+    w->origin_x = origin_x;
+    w->origin_y = origin_y;
+    w->stride = stride;
+    w->colour = f->water_colour;
+    w->depth = f->water_depth;
+    w->water_mark = 0u;
+    copy_pixels(&f->opaque, w, f->layout.depth_bytes);
+    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, rect, raster_into_tile, w);
+}
+
+/* The water pass over the tile and the underwater apron, from a copy. */
+static void draw_water(frame_state *f, int32_t x, int32_t y, const tarn_pixel_rect *frame)
+{
+    const int32_t apron = f->layout.under_apron;
+    const tarn_pixel_rect rect = around(x, y, f->layout.tile, apron, frame);
+    begin_water(f);
+    draw_water_copy(f, &rect, x - apron, y - apron, f->layout.water_region);
+}
+
+static void clear_water_marks(const tarn_tile_target *t)
+{
+    for (int32_t j = t->rect.y0; j < t->rect.y1; j++) {
+        const int32_t row = (j - t->origin_y) * t->stride - t->origin_x;
+        for (int32_t i = t->rect.x0; i < t->rect.x1; i++) t->colour[row + i] &= ~TARN_WATER_MARK;
+    }
+}
+
+/* The water pass straight over the opaque buffers, as the copy would draw it as long
+ * as no water pixel lands on another: each then reads the opaque pixel beneath it,
+ * not yet written. Returns 0, with the tile's opaque pixels spoilt, when one did. */
+static int draw_water_in_place(frame_state *f, const tarn_pixel_rect *tile_rect)
+{
+    tarn_tile_target *w = &f->water;
+    *w = f->opaque;
+    w->rect = *tile_rect;
+    w->water = &f->water_context;
+    w->water_mark = TARN_WATER_MARK;
+    w->water_overlap = 0u;
+    begin_water(f);
+    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, tile_rect, raster_into_tile, w);
+    clear_water_marks(w);
+    return w->water_overlap == 0u;
+}
+
+/* The water pass a strip of rows at a time, each from a copy of the opaque pixels
+ * in the strip's buffers and back: the tile's image as the copy draws it, in the
+ * memory of the in-place layout. */
+static void draw_water_in_strips(frame_state *f, const tarn_pixel_rect *tile_rect)
+{
+    begin_water(f);
+    for (int32_t y = tile_rect->y0; y < tile_rect->y1; y += WATER_STRIP_ROWS) {
+        const tarn_pixel_rect strip = {tile_rect->x0, y, tile_rect->x1,
+                                       y + WATER_STRIP_ROWS < tile_rect->y1 ? y + WATER_STRIP_ROWS : tile_rect->y1};
+        draw_water_copy(f, &strip, tile_rect->x0, y, f->layout.tile);
+        tarn_tile_target back = f->opaque;
+        back.rect = strip;
+        copy_pixels(&f->water, &back, f->layout.depth_bytes);
+    }
 }
 
 static void draw_underwater(frame_state *f, const tarn_pixel_rect *tile_rect)
@@ -295,6 +372,22 @@ static tarn_pixel_rect opaque_rect(const frame_state *f, const tarn_pixel_rect *
     return rect_union(*tile_rect, intersect(reach, whole));
 }
 
+static void draw_opaque(frame_state *f)
+{
+    tarn_tile_target *o = &f->opaque;
+    clear_rect(o, f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
+    tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, f->bins, &o->rect, raster_into_tile, o);
+}
+
+/* The water pass in place over the tile, or, where a water pixel landed on another,
+ * the tile drawn again with the water in strips. */
+static void draw_water_over_opaque(frame_state *f, const tarn_pixel_rect *tile_rect)
+{
+    if (draw_water_in_place(f, tile_rect)) return;
+    draw_opaque(f);
+    draw_water_in_strips(f, tile_rect);
+}
+
 static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, void *user)
 {
     const int32_t size = f->layout.tile;
@@ -305,12 +398,15 @@ static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, 
     o->origin_x = x - f->layout.apron;
     o->origin_y = y - f->layout.apron;
     o->rect = opaque_rect(f, &tile_rect, &frame, &has_water);
-    clear_rect(o, f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
-    tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, f->bins, &o->rect, raster_into_tile, o);
+    draw_opaque(f);
     const tarn_tile_target *out = o;
     if ((TARN_LINK_WATER || TARN_LINK_UNDERWATER) && has_water) {
-        draw_water(f, x, y, &frame);
-        out = &f->water;
+        if (f->layout.in_place) {
+            draw_water_over_opaque(f, &tile_rect);
+        } else {
+            draw_water(f, x, y, &frame);
+            out = &f->water;
+        }
     }
     const int32_t first = (y - out->origin_y) * out->stride + (x - out->origin_x);
     tarn_tile tile = {(uint16_t)x, (uint16_t)y, (uint16_t)(tile_rect.x1 - x), (uint16_t)(tile_rect.y1 - y),

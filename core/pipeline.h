@@ -123,7 +123,14 @@ typedef struct {
     const tarn_view *view;
     const tarn_frame_config *config;
     struct tarn_water_context *water;
+    uint32_t water_mark;    /* TARN_WATER_MARK when the water pass draws over the
+                               opaque buffers themselves, else 0 */
+    uint32_t water_overlap; /* non-zero once it wrote over a pixel it had written */
 } tarn_tile_target;
+
+/* A bit above 0x00RRGGBB that an in-place water pass sets on the pixels it writes;
+ * the frame clears it before the sink sees the tile. */
+#define TARN_WATER_MARK 0x01000000u
 
 void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex vertex[3],
                           const tarn_object *object);

@@ -133,22 +133,36 @@ static uint32_t shade_pixel(const attribute_set *set, const tarn_texture *textur
     return rgb;
 }
 
-/* Depth test and write; returns 1 when the pixel is the closest so far. */
-static int depth_pass(void *depth, int depth_bits, int32_t offset, uint32_t inv_depth)
+/* The pixel's depth as the buffer holds it (a tarn_depth16 code or Q1.30), or 0
+ * when it is not closer than the stored one. Both forms are at least 1. */
+static uint32_t closer_depth(const void *depth, int depth_bits, int32_t offset, uint32_t inv_depth)
 {
     if ((int32_t)inv_depth < 1) inv_depth = 1;
     if (inv_depth > T_ONE) inv_depth = T_ONE;
     if (depth_bits == 16) {
-        uint16_t *d = (uint16_t *)depth + offset;
         const uint16_t value = tarn_depth16_encode(inv_depth);
-        if (value <= *d) return 0;
-        *d = value;
-        return 1;
+        return value > ((const uint16_t *)depth)[offset] ? value : 0u;
     }
-    uint32_t *d = (uint32_t *)depth + offset;
-    if (inv_depth <= *d) return 0;
-    *d = inv_depth;
-    return 1;
+    return inv_depth > ((const uint32_t *)depth)[offset] ? inv_depth : 0u;
+}
+
+/* Stored after the pixel is shaded: a water pass drawing in place reads the depth
+ * beneath it first. */
+static void store_depth(void *depth, int depth_bits, int32_t offset, uint32_t value)
+{
+    if (depth_bits == 16)
+        ((uint16_t *)depth)[offset] = (uint16_t)value;
+    else
+        ((uint32_t *)depth)[offset] = value;
+}
+
+/* A water pass in place (water_mark set) marks each pixel it writes; writing a
+ * marked one again means this pixel read the other water pixel as its background,
+ * not the opaque pass's, and the frame draws the tile's water again from a copy. */
+static void write_water_pixel(tarn_tile_target *tile, int32_t offset, uint32_t rgb)
+{
+    tile->water_overlap |= tile->colour[offset] & tile->water_mark;
+    tile->colour[offset] = rgb | tile->water_mark;
 }
 
 /* T / 2^shift rounded to nearest: the water's panned maps multiply u and v by
@@ -194,7 +208,8 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
          * after it, nothing more is covered */
         if (!covered && entered) return;
         entered = covered;
-        if (covered && depth_pass(tile->depth, quality->depth_bits, row + i, depth.quotient)) {
+        const uint32_t closer = covered ? closer_depth(tile->depth, quality->depth_bits, row + i, depth.quotient) : 0u;
+        if (closer != 0u) {
             uint32_t values[ATTRIBUTES_MAX];
             if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN)
                 span_t(set, t, quality->perspective_span, quality->recip_newton_steps, i, j, &cache, values);
@@ -202,10 +217,11 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
                 exact_t(set, t, i, j, quality->recip_newton_steps, values);
             if (TARN_LINK_WATER && tile->water != NULL) {
                 const tarn_water_input in = water_input(set, values, depth.quotient);
-                tile->colour[row + i] = tarn_water_shade(tile->water, i, j, &in);
+                write_water_pixel(tile, row + i, tarn_water_shade(tile->water, i, j, &in));
             } else {
                 tile->colour[row + i] = shade_pixel(set, texture, values);
             }
+            store_depth(tile->depth, quality->depth_bits, row + i, closer);
         }
         for (int k = 0; k < 3; k++) e[k] += e_step[k];
         exact_step(&depth, &set->depth.step_x, &set->depth.den);

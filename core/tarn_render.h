@@ -144,8 +144,12 @@ int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config
  * ((max(width,height) + 2*guard band) << subpixel_bits must stay below 2^15 so that
  * edge functions fit 32 bits). Opaque scenes need tile_size^2 * (4 + depth_bits/8);
  * with water, the opaque buffers grow by the apron on every side and the tile
- * gains a second colour and depth buffer for the water pass; cluster bins add 4
- * bytes for each cluster of the scene's meshes (one for a mesh without clusters).
+ * gains a second colour and depth buffer for the water pass. Without an apron
+ * (tarn_frame_apron_pixels 0: refraction_apron 0, or no material refracts) and
+ * without the underwater view, the water pass draws over the opaque buffers
+ * instead, and needs two rows of the tile more: (tile_size^2 + 2 * tile_size) *
+ * (4 + depth_bits/8). Cluster bins add 4 bytes for each cluster of the scene's
+ * meshes (one for a mesh without clusters).
  * `scene` may be NULL for an opaque-only budget without bins. */
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene);
 

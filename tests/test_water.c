@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
+#include <math.h>
 
 #include "core_render.h"
 #include "scene_builder.h"
@@ -361,6 +362,113 @@ static void test_opaque_scenes_pay_nothing_for_water(void **state)
     free(wet);
 }
 
+/* The water layers of test_water_in_place_draws_as_the_copy, over floor_and_water's
+ * floor, each with cull none. */
+enum { TWO_WATER_OBJECTS, MESH_OVER_ITSELF, WAVES_FROM_THE_SIDE, WATER_LAYERS };
+
+static void add_water_object(water_scene *s)
+{
+    builder_begin_object(&s->b, 0xFFFFFF, TARN_CULL_NONE);
+    s->b.materials[s->b.scene.object_count - 1].water = &s->water;
+}
+
+/* A height field from z = -20 to -2, farthest row first, seen from just above its
+ * crests: y = -1.5 + 0.8 sin(1.7 z) beyond z = -6, where each near crest's faces
+ * cover the trough behind it, drawn before them; flat nearer. */
+static void add_waves(water_scene *s)
+{
+    enum { ACROSS = 6, ALONG = 48 };
+    const uint16_t first = (uint16_t)s->b.vertex_count;
+    for (int j = 0; j <= ALONG; j++) {
+        const double z = -20.0 + 18.0 * j / ALONG;
+        const double y = -1.5 + (z < -6.0 ? 0.8 * sin(1.7 * z) : 0.0);
+        for (int i = 0; i <= ACROSS; i++) builder_vertex(&s->b, -12.0 + 24.0 * i / ACROSS, y, z);
+    }
+    for (int j = 0; j < ALONG; j++)
+        for (int i = 0; i < ACROSS; i++) {
+            const uint16_t v00 = (uint16_t)(first + j * (ACROSS + 1) + i), v01 = (uint16_t)(v00 + ACROSS + 1);
+            builder_triangle(&s->b, v00, (uint16_t)(v00 + 1), (uint16_t)(v01 + 1));
+            builder_triangle(&s->b, v00, (uint16_t)(v01 + 1), v01);
+        }
+}
+
+static water_scene *layered_scene(int layers, uint32_t features)
+{
+    water_scene *s = new_scene(0);
+    if (layers == WAVES_FROM_THE_SIDE) builder_init(&s->b, 0, -0.5, 0, 0, -1.5, -8);
+    floor_and_water(s, 0);
+    add_water_object(s);
+    if (layers == WAVES_FROM_THE_SIDE) {
+        add_waves(s);
+    } else {
+        builder_grid(&s->b, -2, 0, -6, 14, 10, 3, 2); /* the far layer first */
+        if (layers == TWO_WATER_OBJECTS) add_water_object(s);
+        builder_grid(&s->b, 3, 0.5, -4, 4, 3, 2, 3);  /* a nearer one over part of it */
+        builder_grid(&s->b, 0, -3.5, -7, 16, 2, 2, 1); /* a farther one behind both */
+    }
+    s->water.features = features;
+    s->water.fog_density = TARN_Q16_ONE / 6;
+    s->water.albedo_rgb = 0x30A060;
+    s->water.alpha = TARN_Q16_ONE / 3;
+    s->water.specular = TARN_Q16_ONE;
+    s->water.specular_power = 16;
+    constant_normal_map(s, 180, 90);
+    return s;
+}
+
+/* Fails on any pixel outside 0x00RRGGBB. */
+static int check_pixels_are_rgb(void *user, const tarn_tile *tile)
+{
+    (void)user;
+    for (int j = 0; j < tile->height; j++)
+        for (int i = 0; i < tile->width; i++) assert_int_equal(tile->rgb[j * tile->stride + i] >> 24, 0);
+    return 0;
+}
+
+static void assert_tiles_are_rgb(const water_scene *s, const tarn_frame_config *config)
+{
+    const size_t bytes = tarn_frame_memory_bytes(config, &s->b.scene);
+    void *memory = malloc(bytes);
+    assert_int_equal(tarn_render_frame(&s->b.scene, config, memory, bytes, check_pixels_are_rgb, NULL), TARN_OK);
+    free(memory);
+}
+
+/* Without a refraction apron the water pass draws over the opaque buffers instead
+ * of a copy of them (tarn_frame_memory_bytes: a tile's worth less), and must draw
+ * the same image, also where water lies over water: each water pixel blends over
+ * the opaque pixel beneath it, never over other water. A water material that
+ * refracts by 0 reaches 1 pixel, so it takes the copy and gives the image
+ * without refraction (test_zero_refraction_changes_nothing). */
+static void test_water_in_place_draws_as_the_copy(void **state)
+{
+    (void)state;
+    const uint32_t features = TARN_WATER_FOG | TARN_WATER_NORMALS | TARN_WATER_SPECULAR | TARN_WATER_FRESNEL;
+    static const uint8_t tiles[] = {8, 13, 28, 64};
+    static const uint8_t depth_bits[] = {16, 32};
+    for (int layers = 0; layers < WATER_LAYERS; layers++) {
+        water_scene *in_place = layered_scene(layers, features);
+        water_scene *copy = layered_scene(layers, features | TARN_WATER_REFRACTION);
+        for (size_t t = 0; t < sizeof tiles; t++)
+            for (size_t d = 0; d < sizeof depth_bits; d++) {
+                tarn_frame_config config = config_of();
+                config.quality.tile_size = tiles[t];
+                config.quality.depth_bits = depth_bits[d];
+                /* the tile and two rows of it (the strips), and a bin per object */
+                const size_t pixels = (size_t)tiles[t] * (tiles[t] + 2u);
+                const size_t in_place_bytes = tarn_frame_memory_bytes(&config, &in_place->b.scene);
+                assert_int_equal(in_place_bytes, pixels * (4u + depth_bits[d] / 8u) + 4u * in_place->b.scene.object_count);
+                assert_true(tarn_frame_memory_bytes(&config, &copy->b.scene) > in_place_bytes);
+                uint8_t *a = render(in_place, config), *b = render(copy, config);
+                assert_memory_equal(a, b, 3u * W * H);
+                assert_tiles_are_rgb(in_place, &config);
+                free(a);
+                free(b);
+            }
+        free(in_place);
+        free(copy);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -375,6 +483,7 @@ int main(void)
         cmocka_unit_test(test_extreme_normal_maps_and_views),
         cmocka_unit_test(test_blend_factors_out_of_range_are_refused),
         cmocka_unit_test(test_opaque_scenes_pay_nothing_for_water),
+        cmocka_unit_test(test_water_in_place_draws_as_the_copy),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
