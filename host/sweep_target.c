@@ -15,10 +15,6 @@ extern char **environ;
 #define PATH_MAX_BYTES 4096
 #define LINE_MAX_BYTES 512
 
-/* Tiles tried from the largest down (the largest that fits walks the geometry the
- * fewest times). */
-static const uint8_t tile_sizes[] = {32, 28, 24, 20, 16, 12, 8};
-
 typedef struct {
     const char *name;
     size_t memory; /* RAM - BOARD_STACK_BYTES - 512 for .data, .bss and the report */
@@ -37,15 +33,16 @@ size_t tarn_sweep_board_memory(const char *board)
     return 0;
 }
 
-/* The point at the largest tile the board holds, or 0 when none does. Points
- * that vary the tile themselves are the host's: a board picks its own. */
+/* The point at the largest tile the board holds (which walks the geometry the
+ * fewest times), or 0 when none does. Points that vary the tile themselves are the
+ * host's: a board picks its own. */
 static int fitted_quality(const tarn_sweep_scene *scene, const tarn_sweep_point *p, size_t budget,
                           const tarn_scene *core_scene, tarn_quality *out)
 {
     if (p->host_tile_only) return 0;
-    for (size_t t = 0; t < sizeof tile_sizes; t++) {
+    for (unsigned tile = TARN_TILE_SIZE_MAX; tile >= TARN_TILE_SIZE_MIN; tile--) {
         tarn_frame_config config = {scene->width, scene->height, p->quality, 0};
-        config.quality.tile_size = tile_sizes[t];
+        config.quality.tile_size = (uint8_t)tile;
         const size_t bytes = tarn_frame_memory_bytes(&config, core_scene);
         if (bytes > 0 && bytes <= budget) {
             *out = config.quality;
