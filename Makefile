@@ -90,7 +90,7 @@ bench-panels: $(TARN)
 
 # The speed/accuracy map of docs/sweep.md: the pond's full sweep on the host,
 # qemu-m0 and qemu-rv32, and each knob value's worst case over scenes/extremes,
-# into docs/sweep/ (3 min 40 s on two cores).
+# into docs/sweep/ (4 min 6 s on two cores).
 sweep-docs: deps-test $(TARN)
 	$(TARN) sweep scenes/pond.json --out build/sweep --extremes scenes/extremes
 	@mkdir -p docs/sweep
