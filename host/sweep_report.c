@@ -177,7 +177,23 @@ int tarn_sweep_write_fronts(const char *path, const tarn_sweep_scene *scenes, si
 
 /* ---- the plot --------------------------------------------------------------------- */
 
-/* Three data files a source: every point, the front, the presets. */
+/* Where a preset's name goes: fast below its point, balanced and exact above, a
+ * step of the plot's PSNR range apart, so that neighbours do not overwrite. */
+static double label_height(const tarn_sweep_scene *scene, size_t source, const tarn_sweep_point *p)
+{
+    double low = p->error.psnr_db, high = p->error.psnr_db;
+    for (size_t i = 0; i < scene->count; i++) {
+        if (scene->points[i].cost[source] < 0) continue;
+        if (scene->points[i].error.psnr_db < low) low = scene->points[i].error.psnr_db;
+        if (scene->points[i].error.psnr_db > high) high = scene->points[i].error.psnr_db;
+    }
+    const double step = (high - low) * 0.06 + 0.3;
+    const int place = strcmp(p->preset, "fast") == 0 ? -1 : (strcmp(p->preset, "balanced") == 0 ? 1 : 2);
+    return p->error.psnr_db + place * step;
+}
+
+/* Three data files a source: every point, the front, the presets (with their
+ * names and the height their names go at). */
 static int write_plot_data(const char *work_dir, const tarn_sweep_scene *scene, size_t source,
                            const char *name, tarn_error *err)
 {
@@ -198,7 +214,11 @@ static int write_plot_data(const char *work_dir, const tarn_sweep_scene *scene, 
         for (size_t r = 0; r < rows; r++) {
             const tarn_sweep_point *p = &scene->points[kind == 1 ? front[r] : r];
             if (p->cost[source] < 0 || (kind == 2 && p->preset == NULL)) continue;
-            fprintf(f, "%.1f %.2f %s\n", p->cost[source], p->error.psnr_db, kind == 2 ? p->preset : "");
+            if (kind == 2)
+                fprintf(f, "%.1f %.2f %s %.2f\n", p->cost[source], p->error.psnr_db, p->preset,
+                        label_height(scene, source, p));
+            else
+                fprintf(f, "%.1f %.2f\n", p->cost[source], p->error.psnr_db);
         }
         failed = close_written(f, path, err);
     }
@@ -212,7 +232,7 @@ static void plot_panel(FILE *gp, const char *work_dir, const tarn_sweep_scene *s
     fprintf(gp, "plot '%s/%s-%s-all.dat' using 1:2 with points pt 7 ps 0.5 lc rgb '#b0b0b0' title 'point', \\\n"
                 "     '%s/%s-%s-front.dat' using 1:2 with linespoints pt 7 ps 0.8 lw 2 lc rgb '#1f5f9f' title 'front', \\\n"
                 "     '%s/%s-%s-presets.dat' using 1:2 with points pt 9 ps 2 lc rgb '#d0452f' title 'preset', \\\n"
-                "     '' using 1:2:3 with labels offset 0,1.2 notitle\n",
+                "     '' using 1:4:3 with labels notitle\n",
             work_dir, scene->name, name, work_dir, scene->name, name, work_dir, scene->name, name);
 }
 
