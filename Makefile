@@ -88,13 +88,14 @@ core-purity:
 bench-panels: $(TARN)
 	@TARN_BIN=$(TARN) scripts/bench-panels.sh
 
-# The speed/accuracy map of docs/sweep.md: the pond's full sweep on the host,
-# qemu-m0 and qemu-rv32, and each knob value's worst case over scenes/extremes,
-# into docs/sweep/ (4 min 6 s on two cores).
+# The speed/accuracy map of docs/sweep.md: the full sweep of the pond (refraction)
+# and the lake (none) on the host, qemu-m0 and qemu-rv32, and each knob value's
+# worst case over scenes/extremes, into docs/sweep/.
+SWEEP_SCENES := pond lake
 sweep-docs: deps-test $(TARN)
-	$(TARN) sweep scenes/pond.json --out build/sweep --extremes scenes/extremes
+	$(TARN) sweep $(SWEEP_SCENES:%=scenes/%.json) --out build/sweep --extremes scenes/extremes
 	@mkdir -p docs/sweep
-	cp build/sweep/sweep.csv build/sweep/front.md build/sweep/stability.md build/sweep/pond.png docs/sweep/
+	cp build/sweep/sweep.csv build/sweep/front.md build/sweep/stability.md $(SWEEP_SCENES:%=build/sweep/%.png) docs/sweep/
 
 $(TARN): $(BUILD)/host/main.o $(HOST_OBJ) $(CORE_OBJ)
 	$(CC) $(OPT) -o $@ $^ $(HOST_LIBS)

@@ -7,8 +7,8 @@
 #    every point has a PSNR and a host cost; more exp2 entries never raise the exp2
 #    error (each mode); `exact` has the highest PSNR of the presets and `fast` the
 #    lowest cost on the host and on qemu-m0; front.md and the PNG exist.
-# 2. The presets of the pond, re-measured (--grid presets) against the preset table
-#    of docs/sweep/front.md: PSNR to the hundredth, costs within 0.5%.
+# 2. The presets of every scene of docs/sweep/front.md, re-measured (--grid presets)
+#    against its preset tables: PSNR to the hundredth, costs within 0.5%.
 # 3. Bad input: one line, exit 2, no output left.
 set -u
 tarn=${TARN_BIN:-build/release/tarn}
@@ -40,6 +40,10 @@ if tail -n +2 "$csv" | awk -F, -v e="$entries" -v m="$mode" -v x="$exp2err" '{pr
     sort -k1,1 -k2,2n | awk '$1 == mode && $3 > last + 1e-9 {bad = 1} {mode = $1; last = $3}
                               END {exit bad}'; then pass; else fail "a larger exp2 table had a larger error"; fi
 
+# The cells of a preset's row in a scene's section of a front.md.
+preset_row() {
+    awk -v scene="$2" '/^## / {here = ($2 == scene)} here' "$1" | sed -n "s/^| \`$3\` | \(.*\)|\$/\1/p" | head -1
+}
 preset_field() { awk -F, -v p="$preset" -v n="$1" -v c="$2" 'NR > 1 && $p == n {print $c}' "$csv"; }
 lowest_cost_is_fast() {
     best=$(awk -F, -v p="$preset" -v c="$1" 'NR > 1 && $p != "" {print $c, $p}' "$csv" | sort -n | head -1 | cut -d' ' -f2)
@@ -53,22 +57,25 @@ if lowest_cost_is_fast "$m0"; then pass; else fail "fast is not the cheapest pre
 if [ -s "$out/quick/front.md" ] && head -c 8 "$out/quick/fog.png" | od -An -c | grep -q 'P   N   G'; then
     pass; else fail "front.md or fog.png missing"; fi
 
-# 2. the published presets, re-measured
-if "$tarn" sweep scenes/pond.json --grid presets --boards qemu-m0,qemu-rv32 --out "$out/presets" \
-    > "$out/presets.out" 2> "$out/presets.log"; then pass; else cat "$out/presets.log"; fail "the presets sweep failed"; fi
-for name in fast balanced exact; do
-    claimed=$(sed -n "s/^| \`$name\` | \(.*\)|\$/\1/p" docs/sweep/front.md | head -1)
-    measured=$(sed -n "s/^| \`$name\` | \(.*\)|\$/\1/p" "$out/presets/front.md" | head -1)
-    if echo "$claimed|$measured" | awk -F'|' '{
-            n = NF / 2; bad = (n < 5)
-            for (i = 1; i <= n; i++) {
-                a = $i; b = $(i + n); gsub(/[ %]|\(.*\)/, "", a); gsub(/[ %]|\(.*\)/, "", b)
-                if (i <= 4) bad = bad || a != b       # PSNR, max error, >2, >8: exact
-                else if (a + 0 > 0) bad = bad || (b - a > a * 0.005 || a - b > a * 0.005)
-                else bad = bad || a != b              # "does not fit" on both
-            }
-            exit bad }'; then pass; else
-        fail "preset $name: docs/sweep/front.md claims [$claimed], measured [$measured]"; fi
+# 2. the published presets, re-measured, scene by scene
+for scene in $(sed -n 's/^## \([a-z_]*\) (.*/\1/p' docs/sweep/front.md); do
+    if "$tarn" sweep "scenes/$scene.json" --grid presets --boards qemu-m0,qemu-rv32 --out "$out/presets-$scene" \
+        > "$out/presets-$scene.out" 2> "$out/presets-$scene.log"; then pass; else
+        cat "$out/presets-$scene.log"; fail "the presets sweep of $scene failed"; fi
+    for name in fast balanced exact; do
+        claimed=$(preset_row docs/sweep/front.md "$scene" "$name")
+        measured=$(preset_row "$out/presets-$scene/front.md" "$scene" "$name")
+        if echo "$claimed|$measured" | awk -F'|' '{
+                n = NF / 2; bad = (n < 5)
+                for (i = 1; i <= n; i++) {
+                    a = $i; b = $(i + n); gsub(/[ %]|\(.*\)/, "", a); gsub(/[ %]|\(.*\)/, "", b)
+                    if (i <= 4) bad = bad || a != b       # PSNR, max error, >2, >8: exact
+                    else if (a + 0 > 0) bad = bad || (b - a > a * 0.005 || a - b > a * 0.005)
+                    else bad = bad || a != b              # "does not fit" on both
+                }
+                exit bad }'; then pass; else
+            fail "$scene, preset $name: docs/sweep/front.md claims [$claimed], measured [$measured]"; fi
+    done
 done
 
 # 3. bad input
