@@ -84,7 +84,6 @@ static int parse(int argc, char **argv, sweep_options *o, tarn_error *err)
     o->sources.names[0] = "host";
     if (parse_sources(o, "qemu-m0,qemu-rv32", err) != 0) return -1;
     for (int i = 2; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0) return tarn_fail(err, "sweep: the speed/accuracy map of the knobs");
         if (argv[i][0] != '-') {
             if (o->scene_count == SCENES_MAX) return tarn_fail(err, "at most %d scenes", SCENES_MAX);
             o->scenes[o->scene_count++] = argv[i];
@@ -219,6 +218,10 @@ int tarn_command_sweep(int argc, char **argv)
     tarn_sweep_scene scenes[SCENES_MAX];
     memset(scenes, 0, sizeof scenes);
     char work_dir[PATH_MAX_BYTES];
+    if (argc == 3 && strcmp(argv[2], "--help") == 0) {
+        fputs(usage, stdout);
+        return 0;
+    }
     int failed = parse(argc, argv, &o, &err);
     if (failed) fprintf(stderr, "tarn: %s\n%s", err.message, usage);
     if (failed) return 2;
