@@ -68,3 +68,29 @@ int tarn_atomic_commit(tarn_atomic_file *f, tarn_error *err)
     f->temp_path = NULL;
     return result;
 }
+
+int tarn_atomic_open_all(tarn_atomic_file *files, const char *const *paths, size_t count, tarn_error *err)
+{
+    for (size_t opened = 0; opened < count; opened++) {
+        if (tarn_atomic_open(&files[opened], paths[opened], err) == 0) continue;
+        tarn_atomic_abandon_all(files, opened);
+        return -1;
+    }
+    return 0;
+}
+
+void tarn_atomic_abandon_all(tarn_atomic_file *files, size_t count)
+{
+    while (count > 0) tarn_atomic_abandon(&files[--count]);
+}
+
+int tarn_atomic_commit_all(tarn_atomic_file *files, size_t count, tarn_error *err)
+{
+    for (size_t k = 0; k < count; k++) {
+        if (tarn_atomic_commit(&files[k], err) == 0) continue;
+        tarn_atomic_abandon_all(files + k + 1, count - k - 1);
+        while (k > 0) remove(files[--k].path); /* some files alone would be half an output */
+        return -1;
+    }
+    return 0;
+}

@@ -28,4 +28,11 @@ int tarn_atomic_commit(tarn_atomic_file *f, tarn_error *err);
 /* Closes and removes the temporary file; the target is untouched. */
 void tarn_atomic_abandon(tarn_atomic_file *f);
 
+/* Several files that make one output, all or none: open_all opens every one (or,
+ * failing, none stays open); commit_all renames them in order, and if one fails
+ * abandons the rest and removes those already in place; abandon_all drops them. */
+int tarn_atomic_open_all(tarn_atomic_file *files, const char *const *paths, size_t count, tarn_error *err);
+int tarn_atomic_commit_all(tarn_atomic_file *files, size_t count, tarn_error *err);
+void tarn_atomic_abandon_all(tarn_atomic_file *files, size_t count);
+
 #endif

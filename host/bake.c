@@ -923,29 +923,17 @@ static int write_outputs(const bake_plan *p, const tarn_bake_options *o, const b
 {
     const char *paths[3] = {o->output_path, totals->header_path, totals->link_path};
     tarn_atomic_file files[3];
-    size_t opened = 0;
-    for (; opened < 3; opened++)
-        if (tarn_atomic_open(&files[opened], paths[opened], err) != 0) break;
+    if (tarn_atomic_open_all(files, paths, 3, err) != 0) return -1;
     emitter e = {files[0].file, p, 0};
-    if (opened == 3) {
-        print_source_comment(files[0].file, p, o, totals);
-        for (size_t k = 0; k < p->item_count; k++) print_item(&e, &p->items[k]);
-        print_header(files[1].file, p, o, totals);
-        print_link_header(files[2].file, p, o, totals);
+    print_source_comment(files[0].file, p, o, totals);
+    for (size_t k = 0; k < p->item_count; k++) print_item(&e, &p->items[k]);
+    print_header(files[1].file, p, o, totals);
+    print_link_header(files[2].file, p, o, totals);
+    if (e.unresolved) {
+        tarn_atomic_abandon_all(files, 3);
+        return tarn_fail(err, "%s: internal error: the scene points to data the baker did not plan", o->output_path);
     }
-    if (opened < 3 || e.unresolved) {
-        while (opened > 0) tarn_atomic_abandon(&files[--opened]);
-        if (e.unresolved)
-            tarn_fail(err, "%s: internal error: the scene points to data the baker did not plan", o->output_path);
-        return -1;
-    }
-    for (size_t k = 0; k < 3; k++) {
-        if (tarn_atomic_commit(&files[k], err) == 0) continue;
-        for (size_t later = k + 1; later < 3; later++) tarn_atomic_abandon(&files[later]);
-        while (k > 0) remove(paths[--k]); /* some files alone would be half a bake */
-        return -1;
-    }
-    return 0;
+    return tarn_atomic_commit_all(files, 3, err);
 }
 
 /* ---- names and the whole bake --------------------------------------------------- */
@@ -1047,9 +1035,8 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
         return tarn_fail(err, "%s: %ux%u with these quality settings: %s", o->scene_path, plan.config.width,
                          plan.config.height, tarn_status_text(TARN_ERR_CONFIG));
     tarn_bake_points points = {NULL, NULL, NULL, 0};
-    const char *points_path = tarn_bake_points_option(o->argc, o->argv);
     plan.points = &points;
-    if (points_path && (tarn_bake_points_load(points_path, &plan.config.quality, &points, err) != 0 ||
+    if (o->points_path && (tarn_bake_points_load(o->points_path, &plan.config.quality, &points, err) != 0 ||
                         tarn_bake_points_check(&points, &plan.config, &scene->scene, &totals.memory_bytes, err) != 0)) {
         tarn_bake_points_free(&points);
         return -1;

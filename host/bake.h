@@ -16,7 +16,7 @@
  * reference is written (a texture no used material samples, a mesh that repeats
  * another's data). The header comment of pond.c counts the const bytes of each
  * kind as a 32-bit target lays them out.
- * With `--points FILE` among `argv` (bake_points.h), pond.c also defines
+ * With `points_path` (--points FILE, bake_points.h), pond.c also defines
  *                 const tarn_quality pond_points[N];   (the file's qualities)
  * pond.h declares it with  #define POND_POINT_COUNT N, POND_MEMORY_BYTES is the
  * largest working memory of the config and of every point, and pond_link.h links
@@ -37,8 +37,9 @@ typedef struct {
     const char *scene_path;  /* shown in the header comment */
     const char *output_path; /* must end in ".c"; the headers go beside it */
     const char *name;        /* C identifier prefixing every symbol; NULL: the scene's stem */
+    const char *points_path; /* --points FILE (bake_points.h), or NULL */
     tarn_frame_config config; /* frame size and quality; its time_ms is baked as 0 */
-    int argc;                /* the command line: shown in the header comment; its --points FILE is read */
+    int argc;                /* the command line, shown in the header comment */
     char *const *argv;
 } tarn_bake_options;
 

@@ -7,24 +7,6 @@
 
 #include "cli_options.h"
 
-/* Options of the command line that take no value: the word after them is an
- * option of its own. */
-static int is_flag(const char *arg)
-{
-    return strcmp(arg, "--reference") == 0 || strcmp(arg, "--snapped") == 0 || strcmp(arg, "--math") == 0;
-}
-
-const char *tarn_bake_points_option(int argc, char *const *argv)
-{
-    const char *path = NULL;
-    for (int i = 2; argv != NULL && i < argc; i++) {
-        if (argv[i][0] != '-' || is_flag(argv[i])) continue;
-        if (strcmp(argv[i], "--points") == 0 && i + 1 < argc) path = argv[i + 1];
-        i++; /* the option's value */
-    }
-    return path;
-}
-
 void tarn_bake_points_free(tarn_bake_points *points)
 {
     free(points->qualities);

@@ -29,11 +29,6 @@ typedef struct {
     size_t count;
 } tarn_bake_points;
 
-/* The value of the last --points in a `tarn bake` command line, or NULL: the
- * option belongs to bake alone, which reads it here (a "--points" that is another
- * option's value is skipped as that value). */
-const char *tarn_bake_points_option(int argc, char *const *argv);
-
 /* Reads `path`, each point starting from `base`. 0, or -1 with `err` set
  * ("points.txt:3: --depth: expected 16 or 32, got '8'") and `points` empty. */
 int tarn_bake_points_load(const char *path, const tarn_quality *base, tarn_bake_points *points,

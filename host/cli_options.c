@@ -208,7 +208,7 @@ static int parse_valued_option(const char *name, const char *value, tarn_cli_opt
     unsigned long ms;
     if (strcmp(name, "-o") == 0) o->output_path = value;
     else if (strcmp(name, "--diff") == 0) o->diff_path = value;
-    else if (strcmp(name, "--points") == 0 && o->command == TARN_CMD_BAKE) {} /* host/bake_points.c reads it */
+    else if (strcmp(name, "--points") == 0) o->points_path = value;
     else if (strcmp(name, "--name") == 0) {
         o->name = value; /* checked by bake, so that "" gets the one-line error "3d" gets */
         return value ? 0 : tarn_fail(err, "--name: expected a C identifier");
@@ -264,6 +264,7 @@ static int check_combination(tarn_cli_options *o, tarn_error *err)
         return tarn_fail(err, "render: expected -o OUT.png");
     if (o->command == TARN_CMD_BAKE && o->output_path == NULL) return tarn_fail(err, "bake: expected -o OUT.c");
     if (o->name && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--name applies to bake");
+    if (o->points_path && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--points applies to bake");
     if (o->snapped && o->command == TARN_CMD_RENDER && !o->reference)
         return tarn_fail(err, "--snapped applies to the reference: add --reference");
     return check_sequence(o, err);

@@ -34,6 +34,7 @@ typedef struct {
     const char *output_path; /* render, bake: -o */
     const char *diff_path;   /* compare: --diff, or NULL */
     const char *name;        /* bake: --name, or NULL (checked by the bake itself) */
+    const char *points_path; /* bake: --points, or NULL (host/bake_points.h) */
     uint16_t width, height;  /* 0: the scene's own frame size */
     uint32_t time_ms;
     uint16_t frames;         /* render --frames: 0 for one frame written to -o itself */

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "atomic_file.h"
 #include "scene_load.h"
 #include "sweep_error.h"
 #include "sweep_grid.h"
@@ -135,21 +136,18 @@ static int sweep_scene(const sweep_options *o, const char *work_dir, tarn_sweep_
     if (!failed) {
         scene->count = keep_valid_points(&loaded, scene->points,
                                          tarn_sweep_grid_points(o->grid, scene->points, POINTS_MAX));
-        for (size_t i = 0; i < scene->count; i++)
-            for (size_t s = 0; s < TARN_SWEEP_SOURCES_MAX; s++)
-                scene->points[i].cost[s] = scene->points[i].convert[s][0] = scene->points[i].convert[s][1] = -1.0;
         fprintf(stderr, "tarn sweep: %s, %zu points: error against the reference\n", scene->name, scene->count);
         failed = tarn_sweep_measure_errors(&loaded, scene, err);
     }
-    tarn_scene_free(&loaded);
     if (!failed && o->host_cost) {
         fprintf(stderr, "tarn sweep: %s: host instructions (callgrind, two workers)\n", scene->name);
         failed = tarn_sweep_host_costs(scene, work_dir, err);
     }
     for (size_t s = 1; s < o->sources.count && !failed; s++) {
         fprintf(stderr, "tarn sweep: %s: %s instructions (one boot)\n", scene->name, o->sources.names[s]);
-        failed = tarn_sweep_target_costs(scene, o->sources.names[s], s, work_dir, err);
+        failed = tarn_sweep_target_costs(scene, &loaded.scene, o->sources.names[s], s, work_dir, err);
     }
+    tarn_scene_free(&loaded);
     return failed ? -1 : 0;
 }
 
@@ -168,47 +166,73 @@ static void print_presets(const tarn_sweep_scene *scene, const tarn_sweep_source
     }
 }
 
-static int write_outputs(const sweep_options *o, const char *work_dir, tarn_sweep_scene *scenes, size_t count,
-                         tarn_error *err)
+static int write_stability(const sweep_options *o, FILE *out, tarn_error *err)
 {
-    char path[PATH_MAX_BYTES];
-    snprintf(path, sizeof path, "%s/sweep.csv", o->out_dir);
-    if (tarn_sweep_write_csv(path, scenes, count, &o->sources, err) != 0) return -1;
-    snprintf(path, sizeof path, "%s/front.md", o->out_dir);
-    if (tarn_sweep_write_fronts(path, scenes, count, &o->sources, err) != 0) return -1;
-    for (size_t k = 0; k < count; k++)
-        if ((o->host_cost || o->sources.count > 1) && tarn_sweep_plot(o->out_dir, work_dir, &scenes[k], &o->sources, err) != 0)
-            return -1;
-    return 0;
-}
-
-static int write_stability(const sweep_options *o, tarn_error *err)
-{
-    char pattern[PATH_MAX_BYTES], path[PATH_MAX_BYTES];
+    char pattern[PATH_MAX_BYTES];
     snprintf(pattern, sizeof pattern, "%s/*.json", o->extremes_dir);
     glob_t found;
     if (glob(pattern, 0, NULL, &found) != 0)
         return tarn_fail(err, "--extremes: no scene (*.json) in '%s'", o->extremes_dir);
-    snprintf(path, sizeof path, "%s/stability.md", o->out_dir);
     fprintf(stderr, "tarn sweep: every knob value over the %zu extreme scenes\n", found.gl_pathc);
-    const int failed = tarn_sweep_stability((const char *const *)found.gl_pathv, found.gl_pathc, path, err);
+    const int failed = tarn_sweep_stability((const char *const *)found.gl_pathv, found.gl_pathc, out, err);
     globfree(&found);
     return failed;
 }
 
-static void remove_outputs(const sweep_options *o, const tarn_sweep_scene *scenes, size_t count)
+static int copy_file(FILE *to, const char *from, tarn_error *err)
 {
-    const char *names[] = {"sweep.csv", "front.md", "stability.md"};
-    char path[PATH_MAX_BYTES];
-    for (size_t i = 0; i < 3; i++) {
-        snprintf(path, sizeof path, "%s/%s", o->out_dir, names[i]);
-        remove(path);
+    FILE *f = fopen(from, "rb");
+    if (f == NULL) return tarn_fail(err, "%s: cannot read: %s", from, strerror(errno));
+    char buffer[8192];
+    for (size_t n; (n = fread(buffer, 1, sizeof buffer, f)) > 0;) fwrite(buffer, 1, n, to);
+    const int failed = ferror(f);
+    fclose(f);
+    return failed ? tarn_fail(err, "%s: cannot read", from) : 0;
+}
+
+#define OUTPUTS_MAX (3 + SCENES_MAX)
+
+typedef struct {
+    char names[OUTPUTS_MAX][PATH_MAX_BYTES];
+    const char *paths[OUTPUTS_MAX];
+    size_t count;
+} output_paths;
+
+static size_t add_output(output_paths *out, const char *dir, const char *name, const char *suffix)
+{
+    snprintf(out->names[out->count], PATH_MAX_BYTES, "%s/%s%s", dir, name, suffix);
+    out->paths[out->count] = out->names[out->count];
+    return out->count++;
+}
+
+/* The plots first (into the work folder), then every output to a temporary file,
+ * renamed into place only when all are complete: a failure leaves none, and the
+ * last run's outputs intact. */
+static int write_outputs(const sweep_options *o, const char *work_dir, const tarn_sweep_scene *scenes,
+                         size_t count, tarn_error *err)
+{
+    const int plotted = o->host_cost || o->sources.count > 1;
+    for (size_t k = 0; k < count && plotted; k++)
+        if (tarn_sweep_plot(work_dir, &scenes[k], &o->sources, err) != 0) return -1;
+    output_paths out = {.count = 0};
+    const size_t csv = add_output(&out, o->out_dir, "sweep", ".csv");
+    const size_t fronts = add_output(&out, o->out_dir, "front", ".md");
+    const size_t stability = o->extremes_dir ? add_output(&out, o->out_dir, "stability", ".md") : 0;
+    const size_t first_plot = out.count;
+    for (size_t k = 0; k < count && plotted; k++) add_output(&out, o->out_dir, scenes[k].name, ".png");
+    tarn_atomic_file files[OUTPUTS_MAX];
+    if (tarn_atomic_open_all(files, out.paths, out.count, err) != 0) return -1;
+    tarn_sweep_write_csv(files[csv].file, scenes, count, &o->sources);
+    tarn_sweep_write_fronts(files[fronts].file, scenes, count, &o->sources);
+    int failed = o->extremes_dir != NULL && write_stability(o, files[stability].file, err);
+    for (size_t k = first_plot; k < out.count && !failed; k++) {
+        char plot[PATH_MAX_BYTES];
+        snprintf(plot, sizeof plot, "%s/%s.png", work_dir, scenes[k - first_plot].name);
+        failed = copy_file(files[k].file, plot, err);
     }
-    for (size_t k = 0; k < count; k++) {
-        if (scenes[k].name == NULL) continue;
-        snprintf(path, sizeof path, "%s/%s.png", o->out_dir, scenes[k].name);
-        remove(path);
-    }
+    if (!failed) return tarn_atomic_commit_all(files, out.count, err);
+    tarn_atomic_abandon_all(files, out.count);
+    return -1;
 }
 
 int tarn_command_sweep(int argc, char **argv)
@@ -232,12 +256,8 @@ int tarn_command_sweep(int argc, char **argv)
         failed = sweep_scene(&o, work_dir, &scenes[k], &err);
     }
     if (!failed) failed = write_outputs(&o, work_dir, scenes, o.scene_count, &err);
-    if (!failed && o.extremes_dir != NULL) failed = write_stability(&o, &err);
     for (size_t k = 0; k < o.scene_count && !failed; k++) print_presets(&scenes[k], &o.sources);
-    if (failed) {
-        remove_outputs(&o, scenes, o.scene_count);
-        fprintf(stderr, "tarn: %s\n", err.message);
-    }
+    if (failed) fprintf(stderr, "tarn: %s\n", err.message);
     for (size_t k = 0; k < o.scene_count; k++) {
         free((char *)scenes[k].name);
         free(scenes[k].points);

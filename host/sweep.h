@@ -11,7 +11,9 @@
  * firmware-sweep), whose checksum of the frame must equal the host's. Then
  * (sweep_report.c) DIR gets sweep.csv, front.md (each scene's and cost's Pareto
  * front) and one PNG plot per scene; with --extremes, stability.md (each knob
- * value's worst case over the extreme scenes in DIR). */
+ * value's worst case over the extreme scenes in DIR). They are written all or
+ * none: a failure leaves the last run's outputs as they were. Run it from the top
+ * of the tarn tree: a board's cost comes from make there. */
 #ifndef TARN_HOST_SWEEP_H
 #define TARN_HOST_SWEEP_H
 

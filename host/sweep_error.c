@@ -9,22 +9,17 @@
 #include "tarn_panel.h"
 #include "reference.h"
 
-/* One truth for every point: the unsnapped reference on the finest subpixel grid
- * it has. A reference on each point's own grid would round its positions as the
- * point does, and a coarser grid would then read as more accurate. */
-typedef struct {
-    uint8_t *rgb, *covered;
-    int width, height;
-} reference_image;
-
-static void reference_free(reference_image *r)
+void tarn_sweep_reference_free(tarn_sweep_reference *r)
 {
     free(r->rgb);
     free(r->covered);
+    r->rgb = r->covered = NULL;
 }
 
-static int reference_render(const tarn_loaded_scene *loaded, reference_image *r, tarn_error *err)
+int tarn_sweep_reference_render(const tarn_loaded_scene *loaded, tarn_sweep_reference *r, tarn_error *err)
 {
+    r->width = loaded->width;
+    r->height = loaded->height;
     const size_t pixels = (size_t)r->width * (size_t)r->height;
     r->rgb = malloc(3 * pixels);
     r->covered = malloc(pixels);
@@ -49,35 +44,37 @@ static void as_panel_shows(const uint8_t *rgb, int width, int height, int dither
         }
 }
 
-static void panel_errors(const uint8_t *rgb, const reference_image *r, tarn_compare_metrics panel[2])
+/* `shown`: room for a frame, overwritten. */
+static void panel_errors(const uint8_t *rgb, const tarn_sweep_reference *r, uint8_t *shown,
+                         tarn_compare_metrics panel[2])
 {
-    uint8_t *shown = malloc(3 * (size_t)r->width * (size_t)r->height);
-    for (int dither = 0; dither < 2 && shown != NULL; dither++) {
+    for (int dither = 0; dither < 2; dither++) {
         as_panel_shows(rgb, r->width, r->height, dither, shown);
         tarn_compare_images(shown, r->rgb, NULL, NULL, r->width, r->height, &panel[dither]);
     }
-    free(shown);
 }
 
-/* The core's frame against the reference. */
-static int measure(const tarn_loaded_scene *loaded, const reference_image *r, const tarn_quality *quality,
+/* The core's frame against the reference; with `point`, also its checksum and what
+ * the panel shows of it. */
+static int measure(const tarn_loaded_scene *loaded, const tarn_sweep_reference *r, const tarn_quality *quality,
                    tarn_compare_metrics *metrics, tarn_sweep_point *point, tarn_error *err)
 {
     const size_t pixels = (size_t)r->width * (size_t)r->height;
     const tarn_frame_config config = {(uint16_t)r->width, (uint16_t)r->height, *quality, TARN_SWEEP_TIME_MS};
-    uint8_t *rgb = malloc(3 * pixels), *covered = malloc(pixels);
-    int failed = rgb == NULL || covered == NULL
+    uint8_t *rgb = malloc(3 * pixels), *covered = malloc(pixels), *shown = malloc(3 * pixels);
+    int failed = rgb == NULL || covered == NULL || shown == NULL
         ? tarn_fail(err, "out of memory for a %dx%d frame", r->width, r->height)
         : tarn_core_render(&loaded->scene, &config, rgb, covered, err);
     if (!failed) {
         tarn_compare_images(rgb, r->rgb, covered, r->covered, r->width, r->height, metrics);
         if (point != NULL) {
             point->checksum = tarn_image_checksum(rgb, (uint32_t)r->width, (uint32_t)r->height);
-            panel_errors(rgb, r, point->panel);
+            panel_errors(rgb, r, shown, point->panel);
         }
     }
     free(rgb);
     free(covered);
+    free(shown);
     return failed ? -1 : 0;
 }
 
@@ -90,7 +87,7 @@ typedef struct {
 
 static void knob_math_errors(math_errors *m, tarn_sweep_point *p)
 {
-    const unsigned size = 31u - (unsigned)__builtin_clz(p->quality.exp2.entries) - 3u;
+    const unsigned size = 31u - tarn_clz32(p->quality.exp2.entries) - 3u; /* 8 entries: 0 */
     const unsigned mode = p->quality.exp2.interpolate ? 1u : 0u;
     if (m->exp2[size][mode] < 0) m->exp2[size][mode] = tarn_math_measure_exp2(p->quality.exp2).max_abs_lsb;
     if (m->recip[p->quality.recip_newton_steps] < 0)
@@ -101,26 +98,22 @@ static void knob_math_errors(math_errors *m, tarn_sweep_point *p)
 
 int tarn_sweep_measure_errors(const tarn_loaded_scene *loaded, tarn_sweep_scene *scene, tarn_error *err)
 {
-    reference_image reference = {NULL, NULL, scene->width, scene->height};
+    tarn_sweep_reference reference = {NULL, NULL, 0, 0};
     math_errors math;
     for (unsigned i = 0; i < 6; i++) math.exp2[i][0] = math.exp2[i][1] = -1.0;
     for (unsigned i = 0; i <= TARN_RECIP_STEPS_MAX; i++) math.recip[i] = -1.0;
-    int failed = reference_render(loaded, &reference, err);
+    int failed = tarn_sweep_reference_render(loaded, &reference, err);
     for (size_t i = 0; i < scene->count && !failed; i++) {
         tarn_sweep_point *p = &scene->points[i];
         failed = measure(loaded, &reference, &p->quality, &p->error, p, err);
         knob_math_errors(&math, p);
     }
-    reference_free(&reference);
+    tarn_sweep_reference_free(&reference);
     return failed ? -1 : 0;
 }
 
-int tarn_sweep_error_of(const tarn_loaded_scene *loaded, const tarn_quality *quality,
-                        tarn_compare_metrics *metrics, tarn_error *err)
+int tarn_sweep_error_of(const tarn_loaded_scene *loaded, const tarn_sweep_reference *reference,
+                        const tarn_quality *quality, tarn_compare_metrics *metrics, tarn_error *err)
 {
-    reference_image reference = {NULL, NULL, loaded->width, loaded->height};
-    const int failed = reference_render(loaded, &reference, err) ||
-                       measure(loaded, &reference, quality, metrics, NULL, err);
-    reference_free(&reference);
-    return failed;
+    return measure(loaded, reference, quality, metrics, NULL, err);
 }

@@ -1,5 +1,6 @@
 #include "sweep_grid.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -66,9 +67,11 @@ static size_t add_point(tarn_sweep_point *points, size_t count, size_t max, cons
                         const char *preset)
 {
     if (count >= max || already_listed(points, count, q)) return count;
-    memset(&points[count], 0, sizeof points[count]);
-    points[count].quality = *q;
-    points[count].preset = preset;
+    tarn_sweep_point *p = &points[count];
+    memset(p, 0, sizeof *p);
+    p->quality = *q;
+    p->preset = preset;
+    for (size_t s = 0; s < TARN_SWEEP_SOURCES_MAX; s++) p->cost[s] = p->convert[s][0] = p->convert[s][1] = -1.0;
     return count + 1;
 }
 
@@ -171,4 +174,17 @@ void tarn_sweep_quality_text(const tarn_quality *q, char *out, size_t size)
              (unsigned)q->depth_bits, tarn_sweep_apron_text(q, apron, sizeof apron), (unsigned)q->exp2.entries,
              q->exp2.interpolate ? "linear" : "nearest", (unsigned)q->fog_argument_bits,
              (unsigned)q->subpixel_bits, (unsigned)q->tile_size, q->cluster_bins ? "on" : "off");
+}
+
+int tarn_sweep_write_points(const char *path, const tarn_quality *qualities, size_t count, tarn_error *err)
+{
+    FILE *f = fopen(path, "w");
+    if (f == NULL) return tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
+    for (size_t i = 0; i < count; i++) {
+        char text[TARN_SWEEP_OPTIONS_MAX];
+        tarn_sweep_quality_text(&qualities[i], text, sizeof text);
+        fprintf(f, "%s\n", text);
+    }
+    const int failed = ferror(f);
+    return fclose(f) == 0 && !failed ? 0 : tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
 }

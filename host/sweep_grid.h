@@ -18,8 +18,8 @@ typedef enum {
     TARN_SWEEP_GRID_PRESETS /* the three presets alone: re-measuring the published table */
 } tarn_sweep_grid;
 
-/* Fills `points` (quality and preset set, everything else cleared); returns the
- * count, at most `max`. */
+/* Fills `points` (quality and preset set, no cost measured yet, everything else
+ * cleared); returns the count, at most `max`. */
 size_t tarn_sweep_grid_points(tarn_sweep_grid grid, tarn_sweep_point *points, size_t max);
 
 /* One knob value applied to the balanced preset: the stability table's rows. */
@@ -30,6 +30,10 @@ typedef struct {
 
 /* Every value of every knob, one at a time; returns the count, at most `max`. */
 size_t tarn_sweep_variants(tarn_sweep_variant *variants, size_t max);
+
+/* A points file (host/bake_points.h's format, what tarn bake --points and the
+ * host-cost workers read): `count` qualities, a line of every knob's option each. */
+int tarn_sweep_write_points(const char *path, const tarn_quality *qualities, size_t count, tarn_error *err);
 
 /* The perspective and apron knobs as their options' values ("span:16", "off"):
  * `buffer` holds the text when it is not a constant. */

@@ -1,20 +1,17 @@
 #include "sweep_host_cost.h"
 
 #include <errno.h>
-#include <fcntl.h>
-#include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
 #include <unistd.h>
 #include <valgrind/callgrind.h>
 
-#include "cli_options.h"
+#include "bake_points.h"
+#include "child_process.h"
 #include "scene_load.h"
 #include "sweep_error.h"
-
-extern char **environ;
+#include "sweep_grid.h"
 
 #define WORKERS 2
 #define PATH_MAX_BYTES 4096
@@ -22,20 +19,20 @@ extern char **environ;
 
 typedef struct {
     char points[PATH_MAX_BYTES], dumps[PATH_MAX_BYTES], log[PATH_MAX_BYTES];
-    pid_t pid;
+    tarn_child child;
 } worker;
 
-/* Worker k renders points k, k + WORKERS, ...: "INDEX OPTIONS" per line. */
+/* Worker k renders points k, k + WORKERS, ...: its dump for line j of its points
+ * file is that of point k + j * WORKERS. */
 static int write_points(const tarn_sweep_scene *scene, unsigned k, const char *path, tarn_error *err)
 {
-    FILE *f = fopen(path, "w");
-    if (f == NULL) return tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
-    for (size_t i = k; i < scene->count; i += WORKERS) {
-        char text[TARN_SWEEP_OPTIONS_MAX];
-        tarn_sweep_quality_text(&scene->points[i].quality, text, sizeof text);
-        fprintf(f, "%zu %s\n", i, text);
-    }
-    return fclose(f) == 0 ? 0 : tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
+    tarn_quality *shard = malloc((scene->count / WORKERS + 1) * sizeof *shard);
+    if (shard == NULL) return tarn_fail(err, "out of memory");
+    size_t count = 0;
+    for (size_t i = k; i < scene->count; i += WORKERS) shard[count++] = scene->points[i].quality;
+    const int failed = tarn_sweep_write_points(path, shard, count, err);
+    free(shard);
+    return failed;
 }
 
 /* This program's own file: valgrind must be given it, since /proc/self/exe would
@@ -56,27 +53,14 @@ static int start_worker(const tarn_sweep_scene *scene, worker *w, tarn_error *er
     char *argv[] = {"valgrind", "--tool=callgrind", out_file, "--collect-atstart=no",
                     "--toggle-collect=tarn_render_frame", "--dump-instr=no", self,
                     "sweep-cost-worker", (char *)scene->path, w->points, NULL};
-    posix_spawn_file_actions_t files;
-    posix_spawn_file_actions_init(&files);
-    posix_spawn_file_actions_addopen(&files, 1, w->log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&files, 1, 2);
-    const int status = posix_spawnp(&w->pid, "valgrind", &files, NULL, argv, environ);
-    posix_spawn_file_actions_destroy(&files);
-    if (status != 0)
-        return tarn_fail(err, "cannot run valgrind (%s); install it: sudo apt-get install valgrind, "
-                         "or give --host-cost none", strerror(status));
-    return 0;
+    w->child.program = "valgrind";
+    w->child.log = w->log;
+    w->child.install = "sudo apt-get install valgrind (or give --host-cost none)";
+    return tarn_child_start(&w->child, argv, err);
 }
 
-static int finish_worker(const worker *w, tarn_error *err)
-{
-    int status;
-    if (waitpid(w->pid, &status, 0) < 0) return tarn_fail(err, "waiting for valgrind: %s", strerror(errno));
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return 0;
-    return tarn_fail(err, "the host-cost worker failed: see %s", w->log);
-}
-
-/* A dump holds "desc: Trigger: Client Request: point N" and "summary: INSTRUCTIONS". */
+/* A dump holds "desc: Trigger: Client Request: point J" (J the worker's line, from
+ * 0) and "summary: INSTRUCTIONS". */
 static int read_dump(const char *path, size_t *index, double *instructions)
 {
     FILE *f = fopen(path, "r");
@@ -92,15 +76,16 @@ static int read_dump(const char *path, size_t *index, double *instructions)
 }
 
 /* Dumps are numbered from 1 after the file name; the last, at exit, has none. */
-static void read_costs(tarn_sweep_scene *scene, const worker *w)
+static void read_costs(tarn_sweep_scene *scene, const worker *w, unsigned k)
 {
     const double pixels = (double)scene->width * scene->height;
     for (size_t n = 1; n <= (scene->count + WORKERS - 1) / WORKERS; n++) {
         char path[PATH_MAX_BYTES + 32];
         snprintf(path, sizeof path, "%s.%zu", w->dumps, n);
-        size_t index;
+        size_t line;
         double instructions;
-        if (read_dump(path, &index, &instructions) != 0) break;
+        if (read_dump(path, &line, &instructions) != 0) break;
+        const size_t index = k + line * WORKERS;
         if (index < scene->count) scene->points[index].cost[0] = instructions / pixels;
         remove(path);
     }
@@ -122,12 +107,12 @@ int tarn_sweep_host_costs(tarn_sweep_scene *scene, const char *work_dir, tarn_er
     }
     for (unsigned k = 0; k < started; k++) {
         tarn_error worker_err;
-        if (finish_worker(&workers[k], &worker_err) != 0 && !failed) {
+        if (tarn_child_finish(&workers[k].child, &worker_err) != 0 && !failed) {
             *err = worker_err;
             failed = 1;
         }
     }
-    for (unsigned k = 0; k < started && !failed; k++) read_costs(scene, &workers[k]);
+    for (unsigned k = 0; k < started && !failed; k++) read_costs(scene, &workers[k], k);
     for (size_t i = 0; i < scene->count && !failed; i++)
         if (scene->points[i].cost[0] < 0)
             failed = tarn_fail(err, "%s: callgrind gave no count for point %zu (see %s-host-*.log)",
@@ -141,19 +126,6 @@ static int keep_nothing(void *user, const tarn_tile *tile)
 {
     (void)user;
     (void)tile;
-    return 0;
-}
-
-/* "INDEX OPTION VALUE ..." into the index and the quality. */
-static int parse_point_line(char *line, size_t *index, tarn_quality *q, tarn_error *err)
-{
-    char *words[64];
-    int count = 0;
-    for (char *w = strtok(line, " \n"); w != NULL && count < 64; w = strtok(NULL, " \n")) words[count++] = w;
-    if (count < 1 || sscanf(words[0], "%zu", index) != 1) return tarn_fail(err, "bad point line");
-    *q = tarn_quality_default();
-    for (int i = 1; i + 1 < count; i += 2)
-        if (tarn_cli_parse_quality_option(words[i], words[i + 1], q, err) != 0) return -1;
     return 0;
 }
 
@@ -184,18 +156,17 @@ int tarn_command_sweep_cost_worker(int argc, char **argv)
         fprintf(stderr, "tarn: %s\n", err.message);
         return 2;
     }
-    FILE *f = fopen(argv[3], "r");
-    char line[LINE_MAX_BYTES], label[32];
-    int failed = f == NULL;
-    while (!failed && fgets(line, sizeof line, f) != NULL) {
-        size_t index;
-        tarn_quality q;
-        failed = parse_point_line(line, &index, &q, &err) || render_point(&loaded, &q, &err);
-        snprintf(label, sizeof label, "point %zu", index);
+    const tarn_quality base = tarn_quality_default();
+    tarn_bake_points points;
+    int failed = tarn_bake_points_load(argv[3], &base, &points, &err);
+    for (size_t j = 0; j < points.count && !failed; j++) {
+        char label[32];
+        failed = render_point(&loaded, &points.qualities[j], &err);
+        snprintf(label, sizeof label, "point %zu", j);
         CALLGRIND_DUMP_STATS_AT(label);
     }
-    if (f != NULL) fclose(f);
+    tarn_bake_points_free(&points);
     tarn_scene_free(&loaded);
-    if (failed) fprintf(stderr, "tarn: %s: %s\n", argv[3], f == NULL ? strerror(errno) : err.message);
+    if (failed) fprintf(stderr, "tarn: %s\n", err.message);
     return failed ? 2 : 0;
 }

@@ -4,8 +4,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
 
+#include "child_process.h"
 #include "sweep_front.h"
 #include "sweep_grid.h"
 
@@ -64,15 +64,12 @@ static void csv_row(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_poi
     fprintf(f, ",%s\n", options);
 }
 
-int tarn_sweep_write_csv(const char *path, const tarn_sweep_scene *scenes, size_t scene_count,
-                         const tarn_sweep_sources *sources, tarn_error *err)
+void tarn_sweep_write_csv(FILE *f, const tarn_sweep_scene *scenes, size_t scene_count,
+                          const tarn_sweep_sources *sources)
 {
-    FILE *f = open_for_writing(path, err);
-    if (f == NULL) return -1;
     csv_header(f, sources);
     for (size_t k = 0; k < scene_count; k++)
         for (size_t i = 0; i < scenes[k].count; i++) csv_row(f, &scenes[k], &scenes[k].points[i], sources);
-    return close_written(f, path, err);
 }
 
 /* ---- front.md --------------------------------------------------------------------- */
@@ -159,11 +156,9 @@ static void front_table(FILE *f, const tarn_sweep_scene *scene, size_t source, c
     free(front);
 }
 
-int tarn_sweep_write_fronts(const char *path, const tarn_sweep_scene *scenes, size_t scene_count,
-                            const tarn_sweep_sources *sources, tarn_error *err)
+void tarn_sweep_write_fronts(FILE *f, const tarn_sweep_scene *scenes, size_t scene_count,
+                             const tarn_sweep_sources *sources)
 {
-    FILE *f = open_for_writing(path, err);
-    if (f == NULL) return -1;
     for (size_t k = 0; k < scene_count; k++) {
         fprintf(f, "## %s (%ux%u, %zu points)\n\n", scenes[k].name, (unsigned)scenes[k].width,
                 (unsigned)scenes[k].height, scenes[k].count);
@@ -172,7 +167,6 @@ int tarn_sweep_write_fronts(const char *path, const tarn_sweep_scene *scenes, si
         for (size_t s = 0; s < sources->count; s++) front_table(f, &scenes[k], s, sources->names[s]);
         fprintf(f, "\n");
     }
-    return close_written(f, path, err);
 }
 
 /* ---- the plot --------------------------------------------------------------------- */
@@ -236,19 +230,11 @@ static void plot_panel(FILE *gp, const char *work_dir, const tarn_sweep_scene *s
             work_dir, scene->name, name, work_dir, scene->name, name, work_dir, scene->name, name);
 }
 
-static int run_gnuplot(const char *script, tarn_error *err)
+static int run_gnuplot(const char *script, const char *log, tarn_error *err)
 {
-    char command[PATH_MAX_BYTES + 32];
-    snprintf(command, sizeof command, "gnuplot '%s' 2>&1", script);
-    FILE *p = popen(command, "r");
-    if (p == NULL) return tarn_fail(err, "cannot run gnuplot: %s", strerror(errno));
-    char first[256] = "";
-    if (fgets(first, sizeof first, p) != NULL) first[strcspn(first, "\n")] = '\0';
-    const int status = pclose(p);
-    if (status == 0) return 0;
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
-        return tarn_fail(err, "gnuplot not found; install it: sudo apt-get install gnuplot-nox");
-    return tarn_fail(err, "gnuplot failed on %s: %s", script, first);
+    char *argv[] = {"gnuplot", (char *)script, NULL};
+    tarn_child gnuplot = {"gnuplot", log, "sudo apt-get install gnuplot-nox", 0};
+    return tarn_child_run(&gnuplot, argv, err);
 }
 
 static int measured_by(const tarn_sweep_scene *scene, size_t source)
@@ -258,8 +244,8 @@ static int measured_by(const tarn_sweep_scene *scene, size_t source)
     return 0;
 }
 
-int tarn_sweep_plot(const char *out_dir, const char *work_dir, const tarn_sweep_scene *scene,
-                    const tarn_sweep_sources *sources, tarn_error *err)
+int tarn_sweep_plot(const char *work_dir, const tarn_sweep_scene *scene, const tarn_sweep_sources *sources,
+                    tarn_error *err)
 {
     size_t panels = 0;
     for (size_t s = 0; s < sources->count; s++) {
@@ -268,12 +254,13 @@ int tarn_sweep_plot(const char *out_dir, const char *work_dir, const tarn_sweep_
         panels++;
     }
     if (panels == 0) return tarn_fail(err, "%s: no cost measured, nothing to plot", scene->path);
-    char script[PATH_MAX_BYTES];
+    char script[PATH_MAX_BYTES], log[PATH_MAX_BYTES];
     snprintf(script, sizeof script, "%s/%s.gp", work_dir, scene->name);
+    snprintf(log, sizeof log, "%s/%s.gnuplot.log", work_dir, scene->name);
     FILE *gp = open_for_writing(script, err);
     if (gp == NULL) return -1;
     fprintf(gp, "set terminal pngcairo size %u,480 noenhanced\nset output '%s/%s.png'\n",
-            (unsigned)(480 * panels), out_dir, scene->name);
+            (unsigned)(480 * panels), work_dir, scene->name);
     fprintf(gp, "set multiplot layout 1,%zu\nset logscale x\nset grid\nset key bottom right\n"
                 "set xlabel 'instructions per pixel'\nset ylabel 'PSNR against the float reference, dB'\n",
             panels);
@@ -281,5 +268,5 @@ int tarn_sweep_plot(const char *out_dir, const char *work_dir, const tarn_sweep_
         if (measured_by(scene, s)) plot_panel(gp, work_dir, scene, sources->names[s]);
     fprintf(gp, "unset multiplot\n");
     if (close_written(gp, script, err) != 0) return -1;
-    return run_gnuplot(script, err);
+    return run_gnuplot(script, log, err);
 }

@@ -1,6 +1,5 @@
 #include "sweep_stability.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -53,7 +52,8 @@ static int measure_scene(const char *path, const tarn_sweep_variant *variants, s
     tarn_loaded_scene loaded;
     if (tarn_scene_load(path, &loaded, err) != 0) return -1;
     snprintf(name, name_size, "%s", loaded.name);
-    int failed = 0;
+    tarn_sweep_reference reference = {NULL, NULL, 0, 0};
+    int failed = tarn_sweep_reference_render(&loaded, &reference, err);
     for (size_t v = 0; v < count && !failed; v++) {
         const tarn_frame_config config = {loaded.width, loaded.height, variants[v].quality, TARN_SWEEP_TIME_MS};
         if (tarn_frame_memory_bytes(&config, &loaded.scene) == 0) {
@@ -61,14 +61,15 @@ static int measure_scene(const char *path, const tarn_sweep_variant *variants, s
             continue;
         }
         tarn_compare_metrics m;
-        failed = tarn_sweep_error_of(&loaded, &variants[v].quality, &m, err);
+        failed = tarn_sweep_error_of(&loaded, &reference, &variants[v].quality, &m, err);
         if (!failed) note_case(&worst[v], &m, name);
     }
+    tarn_sweep_reference_free(&reference);
     tarn_scene_free(&loaded);
     return failed ? -1 : 0;
 }
 
-int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, const char *path, tarn_error *err)
+int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, FILE *out, tarn_error *err)
 {
     tarn_sweep_variant variants[VARIANTS_MAX];
     worst_case worst[VARIANTS_MAX];
@@ -78,13 +79,10 @@ int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, con
     int failed = names == NULL ? tarn_fail(err, "out of memory") : 0;
     for (size_t s = 0; s < scene_count && !failed; s++)
         failed = measure_scene(scene_paths[s], variants, count, worst, names[s], sizeof names[s], err);
-    FILE *f = failed ? NULL : fopen(path, "w");
-    if (!failed && f == NULL) failed = tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
-    if (f != NULL) {
-        fprintf(f, "| knob (rest balanced) | lowest PSNR dB (scene) | largest channel error (scene) | "
-                   "most pixels off by >8 (scene) | scenes refusing it |\n| --- | --- | --- | --- | --- |\n");
-        for (size_t v = 0; v < count; v++) write_row(f, &variants[v], &worst[v], scene_count);
-        if (fclose(f) != 0) failed = tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
+    if (!failed) {
+        fprintf(out, "| knob (rest balanced) | lowest PSNR dB (scene) | largest channel error (scene) | "
+                     "most pixels off by >8 (scene) | scenes refusing it |\n| --- | --- | --- | --- | --- |\n");
+        for (size_t v = 0; v < count; v++) write_row(out, &variants[v], &worst[v], scene_count);
     }
     free(names);
     return failed ? -1 : 0;

@@ -8,9 +8,10 @@
 #ifndef TARN_HOST_SWEEP_STABILITY_H
 #define TARN_HOST_SWEEP_STABILITY_H
 
+#include <stdio.h>
 #include "sweep.h"
 
-/* `scene_paths`: the extreme scenes. Writes the Markdown table to `path`. */
-int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, const char *path, tarn_error *err);
+/* `scene_paths`: the extreme scenes. Writes the Markdown table to `out`. */
+int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, FILE *out, tarn_error *err);
 
 #endif

@@ -1,16 +1,12 @@
 #include "sweep_target.h"
 
 #include <errno.h>
-#include <fcntl.h>
-#include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
 
-#include "scene_load.h"
-
-extern char **environ;
+#include "child_process.h"
+#include "sweep_grid.h"
 
 #define PATH_MAX_BYTES 4096
 #define LINE_MAX_BYTES 512
@@ -52,26 +48,20 @@ static int fitted_quality(const tarn_sweep_scene *scene, const tarn_sweep_point 
     return 0;
 }
 
-/* Writes the points the board holds, noting each one's tile; map[j] is the sweep
- * index of line j. */
-static int write_points(tarn_sweep_scene *scene, const tarn_scene *core_scene, size_t budget, size_t source,
-                        const char *path, size_t *map, size_t *count, char *first, tarn_error *err)
+/* The points the board holds, each at its tile (noted in the point); map[j] is the
+ * sweep index of fitted[j]. Returns how many. */
+static size_t fit_points(tarn_sweep_scene *scene, const tarn_scene *core_scene, size_t budget, size_t source,
+                         tarn_quality *fitted, size_t *map)
 {
-    FILE *f = fopen(path, "w");
-    if (f == NULL) return tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
-    *count = 0;
+    size_t count = 0;
     for (size_t i = 0; i < scene->count; i++) {
-        tarn_quality q;
-        scene->points[i].tile[source] = 0;
-        if (!fitted_quality(scene, &scene->points[i], budget, core_scene, &q)) continue;
-        scene->points[i].tile[source] = q.tile_size;
-        char text[TARN_SWEEP_OPTIONS_MAX];
-        tarn_sweep_quality_text(&q, text, sizeof text);
-        if (*count == 0) snprintf(first, TARN_SWEEP_OPTIONS_MAX, "%s", text);
-        fprintf(f, "%s\n", text);
-        map[(*count)++] = i;
+        tarn_sweep_point *p = &scene->points[i];
+        p->tile[source] = 0;
+        if (!fitted_quality(scene, p, budget, core_scene, &fitted[count])) continue;
+        p->tile[source] = fitted[count].tile_size;
+        map[count++] = i;
     }
-    return fclose(f) == 0 ? 0 : tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
+    return count;
 }
 
 static int run_make(const char *board, const char *scene_path, const char *points, const char *first,
@@ -86,18 +76,8 @@ static int run_make(const char *board, const char *scene_path, const char *point
     snprintf(bake_arg, sizeof bake_arg, "BAKE_FLAGS=%s", first);
     char *argv[] = {"make", "-s", "--no-print-directory", "firmware-sweep", board_arg, scene_arg,
                     points_arg, dir_arg, bake_arg, NULL};
-    posix_spawn_file_actions_t files;
-    posix_spawn_file_actions_init(&files);
-    posix_spawn_file_actions_addopen(&files, 1, log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&files, 1, 2);
-    pid_t pid;
-    int status = posix_spawnp(&pid, "make", &files, NULL, argv, environ);
-    posix_spawn_file_actions_destroy(&files);
-    if (status != 0) return tarn_fail(err, "cannot run make: %s", strerror(status));
-    if (waitpid(pid, &status, 0) < 0) return tarn_fail(err, "waiting for make: %s", strerror(errno));
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        return tarn_fail(err, "make firmware-sweep BOARD=%s failed: see %s", board, log);
-    return 0;
+    tarn_child make = {"make", log, "sudo apt-get install make", 0};
+    return tarn_child_run(&make, argv, err);
 }
 
 typedef struct {
@@ -162,26 +142,29 @@ static int read_report(tarn_sweep_scene *scene, const char *board, size_t source
     return failed ? -1 : 0;
 }
 
-int tarn_sweep_target_costs(tarn_sweep_scene *scene, const char *board, size_t source,
-                            const char *work_dir, tarn_error *err)
+int tarn_sweep_target_costs(tarn_sweep_scene *scene, const tarn_scene *core_scene, const char *board,
+                            size_t source, const char *work_dir, tarn_error *err)
 {
     const size_t budget = tarn_sweep_board_memory(board);
     if (budget == 0) return tarn_fail(err, "--boards: no emulated board '%s' (qemu-m0, qemu-rv32, qemu-m3)", board);
-    tarn_loaded_scene loaded;
-    if (tarn_scene_load(scene->path, &loaded, err) != 0) return -1;
-    char points[PATH_MAX_BYTES], build_dir[PATH_MAX_BYTES], log[PATH_MAX_BYTES], report[PATH_MAX_BYTES + 16],
-        first[TARN_SWEEP_OPTIONS_MAX] = "";
+    char points[PATH_MAX_BYTES], build_dir[PATH_MAX_BYTES], log[PATH_MAX_BYTES], report[PATH_MAX_BYTES + 16];
     snprintf(points, sizeof points, "%s/%s-%s.txt", work_dir, scene->name, board);
     snprintf(build_dir, sizeof build_dir, "%s/%s-%s", work_dir, scene->name, board);
     snprintf(log, sizeof log, "%s/%s-%s.log", work_dir, scene->name, board);
     snprintf(report, sizeof report, "%s/report.txt", build_dir);
-    size_t *map = malloc(scene->count * sizeof *map), count = 0;
-    int failed = map == NULL ? tarn_fail(err, "out of memory")
-                             : write_points(scene, &loaded.scene, budget, source, points, map, &count, first, err);
-    tarn_scene_free(&loaded);
-    if (!failed && count > 0)
-        failed = run_make(board, scene->path, points, first, build_dir, log, err) ||
+    size_t *map = malloc(scene->count * sizeof *map);
+    tarn_quality *fitted = malloc(scene->count * sizeof *fitted);
+    int failed = map == NULL || fitted == NULL ? tarn_fail(err, "out of memory") : 0;
+    const size_t count = failed ? 0 : fit_points(scene, core_scene, budget, source, fitted, map);
+    if (count > 0) {
+        /* the bake's own quality must fit the board too: the first point's */
+        char first[TARN_SWEEP_OPTIONS_MAX];
+        tarn_sweep_quality_text(&fitted[0], first, sizeof first);
+        failed = tarn_sweep_write_points(points, fitted, count, err) ||
+                 run_make(board, scene->path, points, first, build_dir, log, err) ||
                  read_report(scene, board, source, report, map, count, err);
+    }
     free(map);
+    free(fitted);
     return failed ? -1 : 0;
 }

@@ -19,7 +19,7 @@ size_t tarn_sweep_board_memory(const char *board);
 
 /* Fills cost[source] and tile[source] of the points `board` can hold. `work_dir`
  * takes the points file and the firmware build. 0, or -1 with `err` set. */
-int tarn_sweep_target_costs(tarn_sweep_scene *scene, const char *board, size_t source,
-                            const char *work_dir, tarn_error *err);
+int tarn_sweep_target_costs(tarn_sweep_scene *scene, const tarn_scene *core_scene, const char *board,
+                            size_t source, const char *work_dir, tarn_error *err);
 
 #endif

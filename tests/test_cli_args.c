@@ -114,6 +114,7 @@ static void test_presets_are_the_base_of_the_knobs(void **state)
     assert_rejected("render s.json -o x.png --quality turbo", "--quality: expected fast, balanced or exact, got 'turbo'");
     assert_rejected("render s.json -o x.png --quality fast --quality exact", "--quality: given twice");
     assert_rejected("compare s.json --quality", "--quality: expected fast, balanced or exact, got ''");
+    assert_rejected("render s.json -o x.png --points p.txt", "--points applies to bake");
     assert_rejected("compare s.json --fog-bits 3", "--fog-bits: expected a whole number 4..16, got '3'");
 }
 
