@@ -7,8 +7,9 @@
 #                                 shift=0): build/firmware/BOARD/panel.stream is what
 #                                 it sent the panel, report.txt its report line
 #   make bench-target             runs every emulated board and prints one line each
-#   make profile-target BOARD=qemu-m0 [SAMPLES=N]   where an emulated Arm board's
-#                                 instructions go, by function and source line
+#   make profile-target BOARD=qemu-m0 [TOP=N]   where an emulated board's
+#                                 instructions go, counted exactly: by function,
+#                                 source file and source line
 #   make firmware SCENE=my.json BAKE_FLAGS="--tile 16 --depth 16"   another scene
 #   make firmware-sweep BOARD=qemu-m0 POINTS=points.txt [SCENE=... BAKE_FLAGS=...]
 #                                 one boot measures every quality of the points file
@@ -34,7 +35,7 @@ FW_MAIN ?= $(if $(filter firmware-sweep,$(MAKECMDGOALS)),sweep,main)
 ifeq ($(BOARD),)
 
 profile-target:
-	@echo "tarn: make profile-target needs BOARD=qemu-m0 or BOARD=qemu-m3" >&2; exit 1
+	@echo "tarn: make profile-target needs BOARD= one of the emulated boards" >&2; exit 1
 
 firmware-sweep:
 	@echo "tarn: make firmware-sweep needs BOARD= one of the emulated boards, and POINTS=FILE" >&2; exit 1
@@ -139,14 +140,9 @@ bench-target: $(FW_DIR)/report.txt $(FW_ELF)
 firmware-check: $(FW_DIR)/report.txt
 	@tests/check_firmware.sh $(BOARD)
 
-ifeq ($(BOARD_ARCH),arm)
 profile-target: $(FW_ELF) | fw-qemu
-	@scripts/profile-target.py --samples $(or $(SAMPLES),3000) $(FW_ELF) -- \
+	@scripts/profile-target.py --top $(or $(TOP),30) --tools $(FW_CROSS) $(FW_ELF) -- \
 		$(call BOARD_RUN,$(FW_ELF),$(FW_DIR)/profile.stream,$(FW_DIR)/profile.report)
-else
-profile-target:
-	@echo "tarn: profile-target reads Arm registers; $(BOARD) is $(BOARD_ARCH)" >&2; exit 1
-endif
 else
 # a real board: built, never run here
 firmware-run: $(FW_OUTPUTS)

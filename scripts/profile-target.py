@@ -1,132 +1,128 @@
 #!/usr/bin/env python3
-"""Where an emulated board spends its instructions: a statistical profiler.
+"""Where an emulated board spends its instructions, counted exactly.
 
-Runs the firmware under QEMU with its gdbstub, stops it at random moments, reads
-the program counter and maps the samples to functions and source lines of the ELF
-(arm-none-eabi-nm and -addr2line, -g builds). Under -icount shift=0 virtual time is
-instruction count, and it stands still while the guest is stopped, so the samples
-are uniform over executed instructions whatever the host's load; a few thousand
-give each entry to about a percent. Inlined code counts where it was inlined.
+Runs the firmware under QEMU with its execution log (-d in_asm,exec,nochain) sent
+through a pipe: each translated block is listed once with its instructions, and
+each execution of a block is one line. Counting executions times the block's
+instructions gives every instruction the guest ran, so the figures are exact and
+add up to the firmware's own SysTick count (the report's frame_insn), whatever the
+host's load. The counts are mapped to functions, source files and source lines of
+the ELF (its -g build); code inlined into a function counts in that function and
+at the inlined line. `calls` counts entries at a function's first instruction.
 
-Usage: scripts/profile-target.py [--samples N] [--top N] ELF -- QEMU_COMMAND...
+Usage: scripts/profile-target.py [--top N] [--tools PREFIX] ELF -- QEMU_COMMAND...
   e.g. scripts/profile-target.py build/firmware/qemu-m0/firmware.elf -- \\
          qemu-system-arm -M microbit -nographic -monitor none -serial none -icount shift=0 \\
          -semihosting-config enable=on,target=native,arg=firmware,arg=/tmp/s,arg=/tmp/r \\
          -kernel build/firmware/qemu-m0/firmware.elf
 (make profile-target BOARD=qemu-m0 builds that command line from the board's.)
-Cortex-M only: the register layout is QEMU's for Arm (r0..r15).
+PREFIX is the toolchain's (arm-none-eabi- by default) for nm and addr2line.
 """
 import argparse
 import bisect
 import collections
-import random
-import socket
+import os
 import subprocess
 import sys
-import time
+import tempfile
 
 
-class GdbStub:
-    """Just enough of the GDB remote protocol: continue, interrupt, read registers."""
-
-    def __init__(self, port):
-        for _ in range(200):
-            try:
-                self.sock = socket.create_connection(('127.0.0.1', port))
-                break
-            except OSError:
-                time.sleep(0.05)
-        else:
-            sys.exit('profile-target: QEMU did not open its gdbstub on port %d' % port)
-        self.stream = self.sock.makefile('rb')
-
-    def send(self, data):
-        self.sock.sendall(b'$' + data + b'#' + b'%02x' % (sum(data) & 255))
-        if self.stream.read(1) != b'+':
-            raise OSError('no acknowledgement')
-
-    def receive(self):
-        while self.stream.read(1) != b'$':
-            pass
-        data = b''
-        c = self.stream.read(1)
-        while c != b'#':
-            if not c:
-                raise OSError('connection closed')
-            data += c
-            c = self.stream.read(1)
-        self.stream.read(2)
-        self.sock.sendall(b'+')
-        return data
-
-    def sample_pc(self, run_seconds):
-        """Lets the guest run, stops it, returns its pc (None when it has exited)."""
-        self.send(b'c')
-        time.sleep(run_seconds)
-        self.sock.sendall(b'\x03')
-        reply = self.receive()
-        if reply[:1] in (b'W', b'X'):
-            return None
-        self.send(b'g')
-        registers = bytes.fromhex(self.receive()[:128].decode())
-        return int.from_bytes(registers[60:64], 'little')
+def count_blocks(log):
+    """Instructions executed at each guest address, from QEMU's log lines."""
+    block_addresses = {}  # translated block (host pointer) -> its guest addresses
+    executions = collections.Counter()
+    listing = None
+    for line in log:
+        if line.startswith('Trace'):
+            block = line.split(' ', 3)[2]
+            if listing is not None:  # the first execution follows the block's listing
+                block_addresses[block] = listing
+                listing = None
+            executions[block] += 1
+        elif line.startswith('0x') and listing is not None:
+            listing.append(int(line[:line.index(':')], 16))
+        elif line.startswith('IN:'):
+            listing = []
+    per_address = collections.Counter()
+    entries = collections.Counter()
+    for block, n in executions.items():
+        addresses = block_addresses.get(block, ())
+        for address in addresses:
+            per_address[address] += n
+        if addresses:
+            entries[addresses[0]] += n
+    return per_address, entries
 
 
-def symbols(elf):
+def symbols(tools, elf):
     table = []
-    out = subprocess.run(['arm-none-eabi-nm', '-n', elf], capture_output=True, text=True, check=True).stdout
+    out = subprocess.run([tools + 'nm', '-n', '-S', '--defined-only', elf],
+                         capture_output=True, text=True, check=True).stdout
     for line in out.splitlines():
         fields = line.split()
-        if len(fields) == 3 and fields[1] in 'tTwW':
-            table.append((int(fields[0], 16), fields[2]))
+        if len(fields) == 4 and fields[2] in 'tTwW':
+            table.append((int(fields[0], 16), int(fields[1], 16), fields[3]))
     return table
+
+
+def source_lines(tools, elf, addresses):
+    out = subprocess.run([tools + 'addr2line', '-e', elf] + ['%#x' % a for a in addresses],
+                         capture_output=True, text=True, check=True).stdout.splitlines()
+    return [line.split('/')[-1].split(' (')[0] for line in out]
+
+
+def print_table(title, counter, total, top, calls=None):
+    print(title + ':')
+    for name, n in counter.most_common(top):
+        extra = ' calls=%d' % calls[name] if calls is not None else ''
+        print('%12d %6.2f%% %s%s' % (n, 100.0 * n / total, name, extra))
+
+
+def run_logged(qemu):
+    """Runs QEMU with its log into a pipe and counts it as it comes."""
+    with tempfile.TemporaryDirectory() as scratch:
+        fifo = os.path.join(scratch, 'log')
+        os.mkfifo(fifo)
+        guest = subprocess.Popen(qemu + ['-d', 'in_asm,exec,nochain', '-D', fifo],
+                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        with open(fifo, errors='replace') as log:
+            counts = count_blocks(log)
+        if guest.wait() != 0:
+            sys.exit('profile-target: QEMU exited with status %d' % guest.returncode)
+    return counts
 
 
 def main():
     parser = argparse.ArgumentParser(usage=__doc__)
-    parser.add_argument('--samples', type=int, default=3000)
     parser.add_argument('--top', type=int, default=30)
+    parser.add_argument('--tools', default='arm-none-eabi-')
     parser.add_argument('elf')
     parser.add_argument('qemu', nargs=argparse.REMAINDER)
     args = parser.parse_args()
     qemu = args.qemu[1:] if args.qemu[:1] == ['--'] else args.qemu
     if not qemu:
         parser.error('the QEMU command line follows --')
-    port = random.randint(20000, 40000)
-    guest = subprocess.Popen(qemu + ['-gdb', 'tcp::%d' % port, '-S'],
-                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    pcs = []
-    try:
-        stub = GdbStub(port)
-        while len(pcs) < args.samples:
-            pc = stub.sample_pc(random.uniform(0.0005, 0.003))
-            if pc is None:
-                break
-            pcs.append(pc)
-    except OSError:
-        pass  # the guest exited while stopped or running
-    finally:
-        guest.kill()
-    if not pcs:
-        sys.exit('profile-target: no samples (did the firmware start?)')
-    table = symbols(args.elf)
-    starts = [address for address, _ in table]
-
-    def function(pc):
-        k = bisect.bisect_right(starts, pc & ~1) - 1
-        return table[k][1] if k >= 0 else '?'
-
-    lines = subprocess.run(['arm-none-eabi-addr2line', '-e', args.elf] + ['%#x' % pc for pc in pcs],
-                           capture_output=True, text=True, check=True).stdout.splitlines()
-    n = len(pcs)
-    print('profile elf=%s samples=%d' % (args.elf, n))
-    print('functions:')
-    for name, count in collections.Counter(function(pc) for pc in pcs).most_common(args.top):
-        print('%6.2f%% %s' % (100.0 * count / n, name))
-    print('lines:')
-    places = collections.Counter(line.split('/')[-1].split(' (')[0] for line in lines)
-    for place, count in places.most_common(args.top):
-        print('%6.2f%% %s' % (100.0 * count / n, place))
+    per_address, entries = run_logged(qemu)
+    total = sum(per_address.values())
+    if total == 0:
+        sys.exit('profile-target: no instructions logged (did the firmware start?)')
+    table = symbols(args.tools, args.elf)
+    starts = [start for start, _, _ in table]
+    functions, calls = collections.Counter(), collections.Counter()
+    for address, n in per_address.items():
+        k = bisect.bisect_right(starts, address & ~1) - 1
+        name = table[k][2] if k >= 0 and address < table[k][0] + max(table[k][1], 2) else '?'
+        functions[name] += n
+        calls[name] += entries[address] if k >= 0 and address == table[k][0] else 0
+    addresses = sorted(per_address)
+    lines, files = collections.Counter(), collections.Counter()
+    for address, place in zip(addresses, source_lines(args.tools, args.elf, addresses)):
+        lines[place] += per_address[address]
+        files[place.split(':')[0]] += per_address[address]
+    print('profile elf=%s instructions=%d' % (args.elf, total))
+    print_table('functions', functions, total, args.top, calls)
+    print_table('files', files, total, args.top)
+    print_table('lines', lines, total, args.top)
 
 
 if __name__ == '__main__':
