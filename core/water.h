@@ -58,10 +58,19 @@ uint32_t tarn_water_mul_q16(uint32_t a, uint32_t b);
  * to `bits` fraction bits (tarn_quality.fog_argument_bits; 16 keeps it whole),
  * saturated like tarn_water_mul_q16. */
 uint32_t tarn_fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits);
-/* (a * b / 2^16) modulo 2^16: the fraction of a texture repeat, for any a. */
-uint32_t tarn_water_repeat_fraction(uint32_t a, uint32_t b);
+/* (a * b / 2^16) modulo 2^16: the fraction of a texture repeat, for any a. Only low
+ * bits matter, so 16x16-bit products suffice, and negative or wrapped inputs give
+ * the right fraction too. Inline: it runs four times a water pixel. */
+static inline uint32_t tarn_water_repeat_fraction(uint32_t a, uint32_t b)
+{
+    const uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
+    return (ah * bl + al * bh + ((al * bl) >> 16)) & 0xFFFFu;
+}
 /* A texel channel as a normal component, (2c - 255) / 255 in Q1.15. */
-int32_t tarn_water_normal_component(uint8_t c);
+static inline int32_t tarn_water_normal_component(uint8_t c)
+{
+    return ((2 * (int32_t)c - 255) * 257) / 2;
+}
 /* The texel at a repeat fraction (Q0.16 each axis), nearest, power-of-two sides. */
 const uint8_t *tarn_water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction);
 /* near / (iz / 2^30) in Q16.16 world units, saturated; `far` for iz 0. */
