@@ -105,7 +105,7 @@ static void compose(const tarn_water_context *w, const tarn_water_input *in, con
 uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in)
 {
     const uint32_t surface_depth = linear_depth(w, in->inv_depth);
-    const tarn_water_normal n =
+    tarn_water_normal n =
         uses(w, TARN_WATER_NORMALS) ? tarn_water_surface_normal(w, in) : tarn_water_flat_normal();
     tarn_water_sample below = tarn_water_background(w, i, j);
     /* without an apron a refracted sample may not move (offset_limit 0): it is the

@@ -28,6 +28,7 @@ typedef struct tarn_water_context {
     uint32_t inv_foam_distance; /* Q16.16 per world unit */
     uint32_t refraction_px;     /* refraction * width: pixels per unit normal, Q16.16 */
     uint32_t sparkle_threshold; /* sparkle where x^2 (Q2.30) exceeds this */
+    int32_t dark_cosine;        /* tarn_water_dark_cosine of the material */
 
     const uint32_t *background;      /* opaque colour, 0x00RRGGBB */
     const void *background_depth;    /* opaque near/d, by depth_bits */
@@ -111,8 +112,13 @@ typedef struct {
 /* The opaque background at frame pixel (i, j). */
 tarn_water_sample tarn_water_background(const tarn_water_context *w, int32_t i, int32_t j);
 
+/* The surface normal N, or before tarn_water_normalise its direction: normalising
+ * takes a reciprocal square root, which a pixel whose highlight cannot show (most
+ * of them) is spared when nothing else needs N. */
 typedef struct {
-    int32_t x, y, z;  /* N, Q1.15 */
+    int32_t x, y, z;  /* N, Q1.15; or while length2 > 0 the direction, Q2.13, its
+                         largest component in [2^13, 2^14) */
+    uint32_t length2; /* the direction's squared length, Q4.26; 0 once (x, y, z) is N */
     int32_t a_x, b_x; /* the maps' own x components, for sparkles */
     int has_b;
 } tarn_water_normal;
@@ -120,19 +126,23 @@ typedef struct {
 /* (0, 0, 1): the surface without normal maps. */
 static inline tarn_water_normal tarn_water_flat_normal(void)
 {
-    const tarn_water_normal n = {0, 0, 32768, 0, 0, 0};
+    const tarn_water_normal n = {0, 0, 32768, 0u, 0, 0, 0};
     return n;
 }
+
+/* N from its direction, in place; nothing when it is N already. */
+void tarn_water_normalise(tarn_water_normal *n);
 
 /* ---- the effects, a file each: with TARN_LINK_WATER_FEATURES, the ones a scene
  * does not use are never called and so never linked ---- */
 
-/* Step 1 (water_normals.c, TARN_WATER_NORMALS). */
+/* Step 1 (water_normals.c, TARN_WATER_NORMALS): the direction of N, to be normalised
+ * by the steps that need N. */
 tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const tarn_water_input *in);
 /* Step 2 (water_refraction.c, TARN_WATER_REFRACTION): the refracted sample, or `own`
  * (the pixel's background) where the refracted one would lie in front of the water. */
 tarn_water_sample tarn_water_refract(const tarn_water_context *w, int32_t i, int32_t j,
-                                     const tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth);
+                                     tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth);
 /* Steps 4 and 5 (water_fog.c), over `diff` (Q16.16 world units) of water. */
 void tarn_water_fog(const tarn_water_context *w, uint32_t diff, uint32_t colour[3]);
 void tarn_water_absorb(const tarn_water_context *w, uint32_t diff, uint32_t colour[3]);
@@ -140,7 +150,10 @@ void tarn_water_absorb(const tarn_water_context *w, uint32_t diff, uint32_t colo
 void tarn_water_depth_colour(const tarn_water_context *w, uint32_t diff, uint32_t out[3]);
 uint32_t tarn_water_fresnel_alpha(const tarn_water_context *w, const tarn_water_input *in, uint32_t alpha);
 /* Steps 8, 9 and 10 (water_highlights.c, water_foam.c). Colours are Q8.8. */
-void tarn_water_specular(const tarn_water_context *w, const tarn_water_normal *n, uint32_t colour[3]);
+void tarn_water_specular(const tarn_water_context *w, tarn_water_normal *n, uint32_t colour[3]);
+/* The largest cosine N.h (Q1.15) whose specular adds nothing to a colour, for a
+ * material; -1 when even a cosine of 0 adds something. */
+int32_t tarn_water_dark_cosine(const tarn_water *water);
 void tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff, uint32_t colour[3]);
 void tarn_water_sparkles(const tarn_water_context *w, const tarn_water_normal *n, uint32_t colour[3]);
 

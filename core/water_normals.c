@@ -9,7 +9,7 @@ static void decode_normal(const uint8_t *texel, int32_t out[3])
     for (int k = 0; k < 3; k++) out[k] = tarn_water_normal_component(texel[k]);
 }
 
-/* Step 1: N = normalize(strength * (a.xy + b.xy), a.z * b.z). */
+/* Step 1's direction, strength * (a.xy + b.xy), a.z * b.z, left unnormalised. */
 tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const tarn_water_input *in)
 {
     const tarn_water *water = w->water;
@@ -32,10 +32,20 @@ tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const t
     if (largest == 0) return n;
     const int shift = (int)(31u - tarn_clz32((uint32_t)largest)) - 13;
     for (int k = 0; k < 3; k++) v[k] = shift >= 0 ? tarn_floor_shift(v[k], (unsigned)shift) : v[k] * (1 << -shift);
-    const uint32_t length2 = (uint32_t)(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); /* Q4.26, < 2^30 */
-    const int32_t inverse = (int32_t)tarn_rsqrt_q16(length2 >> 10);            /* 1/|v|, Q16.16 <= 1 */
-    n.x = (v[0] * inverse) >> 14; /* Q2.13 * Q16.16 -> Q1.15 */
-    n.y = (v[1] * inverse) >> 14;
-    n.z = (v[2] * inverse) >> 14;
+    n.x = v[0];
+    n.y = v[1];
+    n.z = v[2];
+    n.length2 = (uint32_t)(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); /* Q4.26, < 2^30 */
     return n;
+}
+
+/* N = direction / |direction|, through the reciprocal square root. */
+void tarn_water_normalise(tarn_water_normal *n)
+{
+    if (n->length2 == 0u) return;
+    const int32_t inverse = (int32_t)tarn_rsqrt_q16(n->length2 >> 10); /* 1/|v|, Q16.16 <= 1 */
+    n->x = (n->x * inverse) >> 14; /* Q2.13 * Q16.16 -> Q1.15 */
+    n->y = (n->y * inverse) >> 14;
+    n->z = (n->z * inverse) >> 14;
+    n->length2 = 0u;
 }

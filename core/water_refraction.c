@@ -7,8 +7,9 @@
 
 /* Step 2: the refracted sample, or the pixel's own when it would land in front. */
 tarn_water_sample tarn_water_refract(const tarn_water_context *w, int32_t i, int32_t j,
-                                     const tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth)
+                                     tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth)
 {
+    tarn_water_normalise(n);
     uint32_t reach = own.depth > surface_depth ? own.depth - surface_depth : 0u;
     if (reach > Q16_ONE) reach = Q16_ONE; /* saturate(db - ds), Q0.16 */
     const int32_t normal[2] = {n->x, n->y};

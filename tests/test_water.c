@@ -14,6 +14,7 @@
 
 #include "core_render.h"
 #include "scene_builder.h"
+#include "water.h"
 
 #define W 96
 #define H 64
@@ -439,6 +440,57 @@ static void assert_tiles_are_rgb(const water_scene *s, const tarn_frame_config *
  * the opaque pixel beneath it, never over other water. A water material that
  * refracts by 0 reaches 1 pixel, so it takes the copy and gives the image
  * without refraction (test_zero_refraction_changes_nothing). */
+/* The specular skips the square root where the highlight cannot show; it must add
+ * what the normalised normal adds, at every power and intensity, for directions
+ * all around the half vector and close to the edge of the highlight. */
+static void test_specular_skip_matches_the_normalised_normal(void **state)
+{
+    (void)state;
+    static const uint16_t powers[] = {1, 2, 8, 64, 256};
+    static const tarn_q16 intensities[] = {TARN_Q16_ONE / 50, TARN_Q16_ONE / 2, 4 * TARN_Q16_ONE};
+    uint32_t seed = 12345u, skipped = 0u, drawn = 0u;
+    for (size_t p = 0; p < sizeof powers / sizeof powers[0]; p++)
+        for (size_t k = 0; k < sizeof intensities / sizeof intensities[0]; k++) {
+            tarn_water water = {0};
+            water.specular = intensities[k];
+            water.specular_power = powers[p];
+            tarn_water_context w = {0};
+            w.water = &water;
+            w.dark_cosine = tarn_water_dark_cosine(&water);
+            for (int c = 0; c < 3; c++) w.light_q8[c] = 65280u;
+            for (int trial = 0; trial < 20000; trial++) {
+                seed = seed * 1664525u + 1013904223u;
+                const double theta = (seed >> 8) * (6.283185307179586 / 16777216.0);
+                w.half_vector[0] = (int32_t)lround(32767.0 * 0.6 * cos(theta));
+                w.half_vector[1] = (int32_t)lround(32767.0 * 0.6 * sin(theta));
+                w.half_vector[2] = (int32_t)lround(32767.0 * 0.8);
+                /* a direction near h: its largest component in [2^13, 2^14) */
+                tarn_water_normal n = tarn_water_flat_normal();
+                int32_t v[3];
+                for (int a = 0; a < 3; a++) {
+                    seed = seed * 1664525u + 1013904223u;
+                    v[a] = w.half_vector[a] / 4 + (int32_t)((seed >> 20) % 4001u) - 2000;
+                }
+                v[2] = 8192 + (int32_t)((seed >> 4) % 8191u);
+                n.x = v[0];
+                n.y = v[1];
+                n.z = v[2];
+                n.length2 = (uint32_t)(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+                tarn_water_normal normalised = n;
+                tarn_water_normalise(&normalised);
+                uint32_t lazy[3] = {1000u, 2000u, 3000u}, eager[3] = {1000u, 2000u, 3000u};
+                tarn_water_specular(&w, &n, lazy);
+                tarn_water_specular(&w, &normalised, eager);
+                assert_memory_equal(lazy, eager, sizeof lazy);
+                if (n.length2 != 0u) skipped++; /* not normalised: skipped */
+                if (eager[0] != 1000u) drawn++;
+            }
+        }
+    /* both outcomes were exercised: the test would not notice a skip that never runs */
+    assert_true(skipped > 10000u);
+    assert_true(drawn > 10000u);
+}
+
 static void test_water_in_place_draws_as_the_copy(void **state)
 {
     (void)state;
@@ -484,6 +536,7 @@ int main(void)
         cmocka_unit_test(test_blend_factors_out_of_range_are_refused),
         cmocka_unit_test(test_opaque_scenes_pay_nothing_for_water),
         cmocka_unit_test(test_water_in_place_draws_as_the_copy),
+        cmocka_unit_test(test_specular_skip_matches_the_normalised_normal),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
