@@ -9,6 +9,16 @@ static void decode_normal(const uint8_t *texel, int32_t out[3])
     for (int k = 0; k < 3; k++) out[k] = tarn_water_normal_component(texel[k]);
 }
 
+/* strength (Q16.16, 0..8) times a sum of two Q1.15 components (below 2^16), in
+ * Q2.14 with all of the strength's bits: floor(sum * strength / 2^17), from the
+ * strength's top and bottom bits in two 32-bit products (the floor of a floor is
+ * the floor), where a 32x32-bit high product costs the M0 three times as much. */
+static int32_t strength_times(int32_t sum, int32_t strength)
+{
+    const int32_t low = tarn_floor_shift(sum * (strength & 0xFF), 8); /* below 2^24 */
+    return tarn_floor_shift(sum * (strength >> 8) + low, 9);           /* below 2^28 */
+}
+
 /* Step 1's direction, strength * (a.xy + b.xy), a.z * b.z, left unnormalised. */
 tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const tarn_water_input *in)
 {
@@ -21,11 +31,9 @@ tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const t
     if (n.has_b) decode_normal(tarn_water_panned_texel(water->normal_b, &water->pan_b, w->pan_b, in), b);
     n.a_x = a[0];
     n.b_x = b[0];
-    /* strength (Q16.16) times a sum of two Q1.15 components, in Q2.14 with all of
-     * the strength's bits: (a + b) * 2^15 * strength / 2^32 */
-    const uint32_t strength = (uint32_t)water->normal_strength;
-    int32_t v[3] = {tarn_mul_hi_s32_u32((a[0] + b[0]) * 32768, strength),
-                    tarn_mul_hi_s32_u32((a[1] + b[1]) * 32768, strength), (a[2] * b[2]) >> 16};
+    const int32_t strength = water->normal_strength;
+    int32_t v[3] = {strength_times(a[0] + b[0], strength), strength_times(a[1] + b[1], strength),
+                    (a[2] * b[2]) >> 16};
     /* the largest component to [2^13, 2^14): read as Q2.13, |v| is in [1, 2 sqrt 3) */
     int32_t largest = 0;
     for (int k = 0; k < 3; k++) largest |= v[k] < 0 ? -v[k] : v[k];
