@@ -10,6 +10,11 @@ host's load. The counts are mapped to functions, source files and source lines o
 the ELF (its -g build); code inlined into a function counts in that function and
 at the inlined line. `calls` counts entries at a function's first instruction.
 
+Stages follow the calls: a shadow stack pushed at each call instruction (bl, blx;
+jal, jalr) and popped when execution reaches a pushed return address gives every
+instruction to the innermost stage function it runs under (STAGES below), helpers
+such as the reciprocal counting in the stage that called them.
+
 Usage: scripts/profile-target.py [--top N] [--tools PREFIX] ELF -- QEMU_COMMAND...
   e.g. scripts/profile-target.py build/firmware/qemu-m0/firmware.elf -- \\
          qemu-system-arm -M microbit -nographic -monitor none -serial none -icount shift=0 \\
@@ -19,6 +24,7 @@ Usage: scripts/profile-target.py [--top N] [--tools PREFIX] ELF -- QEMU_COMMAND.
 PREFIX is the toolchain's (arm-none-eabi- by default) for nm and addr2line.
 """
 import argparse
+import re
 import bisect
 import collections
 import os
@@ -27,30 +33,99 @@ import sys
 import tempfile
 
 
-def count_blocks(log):
+# The stage of each function that starts one: an instruction counts in the stage of
+# the innermost of these on the call stack, 'other' outside all of them.
+STAGES = {
+    'tarn_walk_triangles': 'geometry: transform, clip, project, vertex cache',
+    'tarn_raster_triangle': 'raster: coverage, depth, interpolation, texels',
+    'tarn_orient_triangle': 'triangle setup: edges, planes, exact depth',
+    'tarn_triangle_pixels': 'triangle setup: edges, planes, exact depth',
+    'tarn_setup_attributes': 'triangle setup: edges, planes, exact depth',
+    'tarn_exact_depth_at': 'triangle setup: edges, planes, exact depth',
+    'tarn_water_context_setup': 'water shading',
+    'tarn_water_shade': 'water shading',
+    'tarn_underwater_tile': 'water shading',
+    'tarn_bin_clusters': 'cluster bins',
+    'tarn_render_frame': 'frame: tiles, clears, copies',
+    'tarn_panel_send_tile': 'panel: RGB565 and the stream',
+    'tarn_panel_band_add': 'panel: RGB565 and the stream',
+}
+CALL = re.compile(r'^(bl|blx|jal|jalr|c\.jal|c\.jalr)\b')
+
+
+class Block:
+    """A translated block: its addresses, and the return address when it ends in a call."""
+    __slots__ = ('addresses', 'returns_to')
+
+    def __init__(self, listing):
+        self.addresses = [address for address, _, _ in listing]
+        address, size, mnemonic = listing[-1]
+        calls = CALL.match(mnemonic) and not mnemonic.startswith(('jal zero', 'jalr zero'))
+        self.returns_to = address + size if calls else None
+
+
+def parse_instruction(line):
+    """(address, size in bytes, the rest) of a listing line '0x...:  hex hex  mnemonic ...'."""
+    head, rest = line.split(':', 1)
+    fields = rest.split()
+    size = 0
+    while fields and re.fullmatch(r'[0-9a-f]{4}|[0-9a-f]{8}', fields[0]):
+        size += len(fields.pop(0)) // 2
+    return int(head, 16), size, ' '.join(fields)
+
+
+class Counter:
+    """Counts a log's executions into addresses, entries and stages as it streams."""
+
+    def __init__(self, stage_of_address):
+        self.stage_of_address = stage_of_address
+        self.blocks = {}
+        self.executions = collections.Counter()
+        self.stages = collections.Counter()
+        self.stack = []  # (return address, stage inside the call); the stage is set on entry
+        self.pending = False
+
+    def execute(self, block):
+        start = block.addresses[0]
+        if self.pending:  # the first block of a call: its function's stage, or the caller's
+            caller_stage = self.stack[-2][1] if len(self.stack) > 1 else 'other'
+            self.stack[-1] = (self.stack[-1][0], self.stage_of_address(start) or caller_stage)
+            self.pending = False
+        else:
+            for depth in range(len(self.stack) - 1, max(len(self.stack) - 8, -1), -1):
+                if self.stack[depth][0] == start:
+                    del self.stack[depth:]
+                    break
+        self.stages[self.stack[-1][1] if self.stack else 'other'] += len(block.addresses)
+        if block.returns_to is not None:
+            self.stack.append((block.returns_to, None))
+            self.pending = True
+
+
+def count_blocks(log, counter):
     """Instructions executed at each guest address, from QEMU's log lines."""
-    block_addresses = {}  # translated block (host pointer) -> its guest addresses
-    executions = collections.Counter()
     listing = None
     for line in log:
         if line.startswith('Trace'):
-            block = line.split(' ', 3)[2]
-            if listing is not None:  # the first execution follows the block's listing
-                block_addresses[block] = listing
-                listing = None
-            executions[block] += 1
+            key = line.split(' ', 3)[2]
+            if listing:  # the first execution follows the block's listing
+                counter.blocks[key] = Block(listing)
+            listing = None
+            block = counter.blocks.get(key)
+            if block is not None:
+                counter.executions[key] += 1
+                counter.execute(block)
         elif line.startswith('0x') and listing is not None:
-            listing.append(int(line[:line.index(':')], 16))
+            listing.append(parse_instruction(line))
         elif line.startswith('IN:'):
             listing = []
     per_address = collections.Counter()
     entries = collections.Counter()
-    for block, n in executions.items():
-        addresses = block_addresses.get(block, ())
+    for key, n in counter.executions.items():
+        addresses = counter.blocks[key].addresses
         for address in addresses:
             per_address[address] += n
-        if addresses:
-            entries[addresses[0]] += n
+        entries[addresses[0]] += n
     return per_address, entries
 
 
@@ -78,7 +153,7 @@ def print_table(title, counter, total, top, calls=None):
         print('%12d %6.2f%% %s%s' % (n, 100.0 * n / total, name, extra))
 
 
-def run_logged(qemu):
+def run_logged(qemu, counter):
     """Runs QEMU with its log into a pipe and counts it as it comes."""
     with tempfile.TemporaryDirectory() as scratch:
         fifo = os.path.join(scratch, 'log')
@@ -86,7 +161,7 @@ def run_logged(qemu):
         guest = subprocess.Popen(qemu + ['-d', 'in_asm,exec,nochain', '-D', fifo],
                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         with open(fifo, errors='replace') as log:
-            counts = count_blocks(log)
+            counts = count_blocks(log, counter)
         if guest.wait() != 0:
             sys.exit('profile-target: QEMU exited with status %d' % guest.returncode)
     return counts
@@ -102,12 +177,14 @@ def main():
     qemu = args.qemu[1:] if args.qemu[:1] == ['--'] else args.qemu
     if not qemu:
         parser.error('the QEMU command line follows --')
-    per_address, entries = run_logged(qemu)
+    table = symbols(args.tools, args.elf)
+    starts = [start for start, _, _ in table]
+    stage_starts = {start: STAGES[name] for start, _, name in table if name in STAGES}
+    counter = Counter(lambda address: stage_starts.get(address & ~1))
+    per_address, entries = run_logged(qemu, counter)
     total = sum(per_address.values())
     if total == 0:
         sys.exit('profile-target: no instructions logged (did the firmware start?)')
-    table = symbols(args.tools, args.elf)
-    starts = [start for start, _, _ in table]
     functions, calls = collections.Counter(), collections.Counter()
     for address, n in per_address.items():
         k = bisect.bisect_right(starts, address & ~1) - 1
@@ -120,6 +197,7 @@ def main():
         lines[place] += per_address[address]
         files[place.split(':')[0]] += per_address[address]
     print('profile elf=%s instructions=%d' % (args.elf, total))
+    print_table('stages', counter.stages, total, args.top)
     print_table('functions', functions, total, args.top, calls)
     print_table('files', files, total, args.top)
     print_table('lines', lines, total, args.top)
