@@ -35,18 +35,31 @@ static uint32_t reciprocal_of_q(uint32_t q, unsigned steps, unsigned *lz)
     return tarn_recip_q30(q << *lz, steps);
 }
 
-/* Exact T values of every attribute at pixel (i, j). */
+/* An affine triangle's attributes along row j: value(i) = origin[k] + step_x * i,
+ * modulo 2^32 as plane_at, so each pixel takes one product instead of two. */
+static void affine_row_origin(const attribute_set *set, const triangle_setup *t, int32_t j,
+                              uint32_t origin[ATTRIBUTES_MAX])
+{
+    for (int k = 0; k < set->count; k++) {
+        const plane *p = &set->premultiplied[k];
+        origin[k] = p->anchor + p->step_y * (uint32_t)(j - t->box.y0) - p->step_x * (uint32_t)t->box.x0;
+    }
+}
+
+static void affine_t(const attribute_set *set, const uint32_t origin[ATTRIBUTES_MAX], int32_t i,
+                     uint32_t out[ATTRIBUTES_MAX])
+{
+    for (int k = 0; k < set->count; k++) {
+        uint32_t v = origin[k] + set->premultiplied[k].step_x * (uint32_t)i;
+        if ((int32_t)v < (int32_t)set->t_min[k]) v = set->t_min[k];
+        out[k] = v > set->t_max[k] ? set->t_max[k] : v;
+    }
+}
+
+/* Exact T values of every attribute at pixel (i, j), perspective-correct. */
 static void exact_t(const attribute_set *set, const triangle_setup *t, int32_t i, int32_t j,
                     unsigned steps, uint32_t out[ATTRIBUTES_MAX])
 {
-    if (set->perspective == TARN_PERSPECTIVE_AFFINE) {
-        for (int k = 0; k < set->count; k++) {
-            uint32_t v = plane_at(&set->premultiplied[k], t, i, j);
-            if ((int32_t)v < (int32_t)set->t_min[k]) v = set->t_min[k];
-            out[k] = v > set->t_max[k] ? set->t_max[k] : v;
-        }
-        return;
-    }
     uint32_t q = plane_at(&set->q, t, i, j);
     if ((int32_t)q < (int32_t)set->q_min) q = set->q_min;
     if (q > set->q_max) q = set->q_max;
@@ -185,45 +198,61 @@ static tarn_water_input water_input(const attribute_set *set, const uint32_t val
     return in;
 }
 
+/* One covered pixel: its attributes, its colour (or water), its depth. */
+static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
+                       const tarn_texture *texture, int32_t i, int32_t j, uint32_t inv_depth,
+                       const uint32_t affine_origin[ATTRIBUTES_MAX], span_cache *cache, int32_t offset)
+{
+    const tarn_quality *quality = tile->quality;
+    const uint32_t closer = closer_depth(tile->depth, quality->depth_bits, offset, inv_depth);
+    if (closer == 0u) return;
+    uint32_t values[ATTRIBUTES_MAX];
+    if (set->perspective == TARN_PERSPECTIVE_AFFINE)
+        affine_t(set, affine_origin, i, values);
+    else if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN)
+        span_t(set, t, quality->perspective_span, quality->recip_newton_steps, i, j, cache, values);
+    else
+        exact_t(set, t, i, j, quality->recip_newton_steps, values);
+    if (TARN_LINK_WATER && tile->water != NULL) {
+        const tarn_water_input in = water_input(set, values, inv_depth);
+        write_water_pixel(tile, offset, tarn_water_shade(tile->water, i, j, &in));
+    } else {
+        tile->colour[offset] = shade_pixel(set, texture, values);
+    }
+    store_depth(tile->depth, quality->depth_bits, offset, closer);
+}
+
 static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
                        const tarn_texture *texture, int32_t j, int32_t i0, int32_t i1,
                        exact_value depth)
 {
-    const tarn_quality *quality = tile->quality;
     const unsigned s = t->subpixel_bits;
     const int32_t px = pixel_centre(i0, s), py = pixel_centre(j, s);
-    int32_t e[3];
-    int32_t e_step[3];
-    for (int k = 0; k < 3; k++) {
-        e[k] = edge_at(&t->edges[k], px, py);
-        e_step[k] = (int32_t)((uint32_t)t->edges[k].a << s);
+    int32_t e0 = edge_at(&t->edges[0], px, py), e1 = edge_at(&t->edges[1], px, py),
+            e2 = edge_at(&t->edges[2], px, py);
+    const int32_t step0 = (int32_t)((uint32_t)t->edges[0].a << s), step1 = (int32_t)((uint32_t)t->edges[1].a << s),
+                  step2 = (int32_t)((uint32_t)t->edges[2].a << s);
+    int32_t i = i0;
+    /* up to the covered run: only the edges and the depth move */
+    for (; i <= i1 && (e0 | e1 | e2) < 0; i++) {
+        e0 += step0;
+        e1 += step1;
+        e2 += step2;
+        exact_step(&depth, &set->depth.step_x, &set->depth.den);
     }
-    const int32_t row = (j - tile->origin_y) * tile->stride - tile->origin_x;
+    if (i > i1) return;
+    uint32_t affine_origin[ATTRIBUTES_MAX];
+    if (set->perspective == TARN_PERSPECTIVE_AFFINE) affine_row_origin(set, t, j, affine_origin);
     span_cache cache;
     cache.start = INT32_MIN;
-    int entered = 0;
-    for (int32_t i = i0; i <= i1; i++) {
-        const int covered = (e[0] | e[1] | e[2]) >= 0;
-        /* each edge is linear along the row, so the covered pixels are one run:
-         * after it, nothing more is covered */
-        if (!covered && entered) return;
-        entered = covered;
-        const uint32_t closer = covered ? closer_depth(tile->depth, quality->depth_bits, row + i, depth.quotient) : 0u;
-        if (closer != 0u) {
-            uint32_t values[ATTRIBUTES_MAX];
-            if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN)
-                span_t(set, t, quality->perspective_span, quality->recip_newton_steps, i, j, &cache, values);
-            else
-                exact_t(set, t, i, j, quality->recip_newton_steps, values);
-            if (TARN_LINK_WATER && tile->water != NULL) {
-                const tarn_water_input in = water_input(set, values, depth.quotient);
-                write_water_pixel(tile, row + i, tarn_water_shade(tile->water, i, j, &in));
-            } else {
-                tile->colour[row + i] = shade_pixel(set, texture, values);
-            }
-            store_depth(tile->depth, quality->depth_bits, row + i, closer);
-        }
-        for (int k = 0; k < 3; k++) e[k] += e_step[k];
+    const int32_t row = (j - tile->origin_y) * tile->stride - tile->origin_x;
+    /* each edge is linear along the row, so the covered pixels are one run: after
+     * it, nothing more is covered */
+    for (; i <= i1 && (e0 | e1 | e2) >= 0; i++) {
+        draw_pixel(tile, t, set, texture, i, j, depth.quotient, affine_origin, &cache, row + i);
+        e0 += step0;
+        e1 += step1;
+        e2 += step2;
         exact_step(&depth, &set->depth.step_x, &set->depth.den);
     }
 }
