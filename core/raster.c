@@ -76,8 +76,12 @@ static void exact_t(const attribute_set *set, const triangle_setup *t, int32_t i
  * are extrapolated, signed and unclamped (clamping them would bend the slope
  * between the ends); only the interpolated pixels are clamped to the triangle. */
 typedef struct {
-    int32_t start; /* first pixel of the cached span, or INT32_MIN */
+    unsigned log2_span;
+    int32_t limit;     /* the pixel after the cached span's grid cell; INT32_MIN before the first */
+    int32_t start;     /* the cached span's first pixel */
+    int32_t end;       /* and its far end, where the next span starts */
     int32_t t0[ATTRIBUTES_MAX], dt[ATTRIBUTES_MAX];
+    int32_t t_end[ATTRIBUTES_MAX]; /* the exact values at `end` */
 } span_cache;
 
 #define SPAN_END_MIN (-(1 << 28))
@@ -103,25 +107,36 @@ static void span_end(const attribute_set *set, const triangle_setup *t, int32_t 
         out[k] = span_end_t((int32_t)plane_at(&set->premultiplied[k], t, i, j), recip, lz);
 }
 
-static void span_t(const attribute_set *set, const triangle_setup *t, int32_t span, unsigned steps,
-                   int32_t i, int32_t j, span_cache *cache, uint32_t out[ATTRIBUTES_MAX])
+/* The span of pixel i: its exact ends, and the step between them. The far end of
+ * one span is the near end of the next, so its values are kept, not taken again. */
+static void span_fill(const attribute_set *set, const triangle_setup *t, unsigned steps, int32_t i,
+                      int32_t j, span_cache *cache)
 {
-    const unsigned log2_span = 31u - tarn_clz32((uint32_t)span);
-    const int32_t grid = (int32_t)((uint32_t)tarn_floor_shift(i, log2_span) << log2_span);
+    const int32_t span = (int32_t)1 << cache->log2_span;
+    const int32_t grid = (int32_t)((uint32_t)tarn_floor_shift(i, cache->log2_span) << cache->log2_span);
     const int32_t start = grid > t->box.x0 ? grid : t->box.x0;
-    if (cache->start != start) {
-        const int32_t end = grid + span < t->box.x1 ? grid + span : t->box.x1;
-        int32_t last[ATTRIBUTES_MAX];
+    const int32_t end = grid + span < t->box.x1 ? grid + span : t->box.x1;
+    if (cache->limit != INT32_MIN && start == cache->end) {
+        for (int k = 0; k < set->count; k++) cache->t0[k] = cache->t_end[k];
+    } else {
         span_end(set, t, start, j, steps, cache->t0);
-        span_end(set, t, end, j, steps, last);
-        /* per span, not per pixel: 1/length from the reciprocal, not a division */
-        const uint32_t inverse_length = end > start ? tarn_recip_u32((uint32_t)(end - start), 2) : 0u;
-        for (int k = 0; k < set->count; k++)
-            cache->dt[k] = tarn_mul_hi_s32_u32(last[k] - cache->t0[k], inverse_length);
-        cache->start = start;
     }
+    span_end(set, t, end, j, steps, cache->t_end);
+    /* per span, not per pixel: 1/length from the reciprocal, not a division */
+    const uint32_t inverse_length = end > start ? tarn_recip_u32((uint32_t)(end - start), 2) : 0u;
+    for (int k = 0; k < set->count; k++)
+        cache->dt[k] = tarn_mul_hi_s32_u32(cache->t_end[k] - cache->t0[k], inverse_length);
+    cache->start = start;
+    cache->end = end;
+    cache->limit = grid + span;
+}
+
+static void span_t(const attribute_set *set, const triangle_setup *t, unsigned steps, int32_t i, int32_t j,
+                   span_cache *cache, uint32_t out[ATTRIBUTES_MAX])
+{
+    if (i >= cache->limit) span_fill(set, t, steps, i, j, cache);
     for (int k = 0; k < set->count; k++) {
-        int32_t value = cache->t0[k] + cache->dt[k] * (i - start);
+        int32_t value = cache->t0[k] + cache->dt[k] * (i - cache->start);
         out[k] = (uint32_t)tarn_clamp_i32(value, (int32_t)set->t_min[k], (int32_t)set->t_max[k]);
     }
 }
@@ -210,7 +225,7 @@ static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const at
     if (set->perspective == TARN_PERSPECTIVE_AFFINE)
         affine_t(set, affine_origin, i, values);
     else if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN)
-        span_t(set, t, quality->perspective_span, quality->recip_newton_steps, i, j, cache, values);
+        span_t(set, t, quality->recip_newton_steps, i, j, cache, values);
     else
         exact_t(set, t, i, j, quality->recip_newton_steps, values);
     if (TARN_LINK_WATER && tile->water != NULL) {
@@ -244,7 +259,8 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
     uint32_t affine_origin[ATTRIBUTES_MAX];
     if (set->perspective == TARN_PERSPECTIVE_AFFINE) affine_row_origin(set, t, j, affine_origin);
     span_cache cache;
-    cache.start = INT32_MIN;
+    cache.limit = INT32_MIN;
+    cache.log2_span = 31u - tarn_clz32(tile->quality->perspective_span);
     const int32_t row = (j - tile->origin_y) * tile->stride - tile->origin_x;
     /* each edge is linear along the row, so the covered pixels are one run: after
      * it, nothing more is covered */
