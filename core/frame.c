@@ -31,6 +31,7 @@ static int quality_in_range(const tarn_quality *q)
            (q->depth_bits == 16 || q->depth_bits == 32) &&
            q->tile_size >= TARN_TILE_SIZE_MIN && q->tile_size <= TARN_TILE_SIZE_MAX &&
            (q->refraction_apron <= TARN_WATER_APRON_MAX || q->refraction_apron == TARN_APRON_FULL) &&
+           (TARN_LINK_APRON || q->refraction_apron == 0) &&
            q->cluster_bins <= 1 &&
            q->fog_argument_bits >= TARN_FOG_ARGUMENT_BITS_MIN && q->fog_argument_bits <= TARN_FOG_ARGUMENT_BITS_MAX;
 }

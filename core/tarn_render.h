@@ -126,6 +126,14 @@ tarn_quality tarn_quality_default(void);
 #define TARN_LINK_PERSPECTIVE_SPAN 1
 #endif
 
+/* Whether a refracted sample may move at all. tarn bake sets it to 0 when no baked
+ * quality has a refraction apron: every refracted sample is then the pixel's own, and
+ * the refraction code drops out of the image; a config with an apron is then refused
+ * (TARN_ERR_CONFIG). Without that file it is linked. */
+#ifndef TARN_LINK_APRON
+#define TARN_LINK_APRON 1
+#endif
+
 typedef struct {
     uint16_t width, height; /* pixels, 1..TARN_FRAME_SIZE_MAX */
     tarn_quality quality;

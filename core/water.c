@@ -110,7 +110,7 @@ uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j, con
     tarn_water_sample below = tarn_water_background(w, i, j);
     /* without an apron a refracted sample may not move (offset_limit 0): it is the
      * pixel's own, and the M0's fast preset would pay a third of the water pixel for it */
-    if (uses(w, TARN_WATER_REFRACTION) && w->offset_limit > 0)
+    if (TARN_LINK_APRON && uses(w, TARN_WATER_REFRACTION) && w->offset_limit > 0)
         below = tarn_water_refract(w, i, j, &n, below, surface_depth);
     const uint32_t diff = below.depth > surface_depth ? below.depth - surface_depth : 0u;
     uint32_t colour[3] = {below.colour[0], below.colour[1], below.colour[2]};

@@ -913,8 +913,13 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     fprintf(out, "#define TARN_LINK_WATER_FEATURES (%s)\n", names.text);
     fprintf(out, "#define TARN_LINK_UNDERWATER %d\n", p->scene->scene.underwater != NULL);
     int span = p->config.quality.perspective == TARN_PERSPECTIVE_SPAN;
-    for (size_t i = 0; i < p->points->count; i++) span |= p->points->qualities[i].perspective == TARN_PERSPECTIVE_SPAN;
+    int apron = p->config.quality.refraction_apron != 0;
+    for (size_t i = 0; i < p->points->count; i++) {
+        span |= p->points->qualities[i].perspective == TARN_PERSPECTIVE_SPAN;
+        apron |= p->points->qualities[i].refraction_apron != 0;
+    }
     fprintf(out, "#define TARN_LINK_PERSPECTIVE_SPAN %d\n", span);
+    fprintf(out, "#define TARN_LINK_APRON %d\n", apron);
 }
 
 /* The three files to temporaries, then renamed into place; a failure removes all. */

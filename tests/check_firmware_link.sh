@@ -1,6 +1,7 @@
 #!/bin/sh
 # check_firmware_link.sh: an effect a scene does not use is not linked, nor the span
-# perspective mode when the baked quality does not use it.
+# perspective mode when the baked quality does not use it, nor refraction when the
+# quality has no apron for a refracted sample to move in.
 #
 # Builds the qemu-m0 firmware for several scenes (each in its own directory under
 # build/firmware-link/, the board's own build untouched) and reads the images' symbols
@@ -56,9 +57,11 @@ check scenes/effects/none.json
 check scenes/effects/fog.json tarn_water_shade tarn_water_fog
 check scenes/effects/foam.json tarn_water_shade tarn_water_foam
 check scenes/effects/sparkles.json tarn_water_shade tarn_water_surface_normal tarn_water_sparkles
-check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal tarn_water_refract
+check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal
 check scenes/effects/underwater.json tarn_underwater_tile
 extra_name=-span extra_flags=" --perspective span:16"
 check scenes/effects/fog.json tarn_water_shade tarn_water_fog span_end
+extra_name=-apron extra_flags=" --apron 4"
+check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal tarn_water_refract
 echo "firmware-link: $passed passed, $failed failed"
 [ $failed -eq 0 ]

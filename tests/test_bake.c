@@ -411,6 +411,7 @@ static void test_points_are_baked(void **state)
     snprintf(link, sizeof link, "%s/swept_link.h", work_dir);
     char *link_text = read_all(link, NULL);
     assert_non_null(strstr(link_text, "#define TARN_LINK_PERSPECTIVE_SPAN 1\n"));
+    assert_non_null(strstr(link_text, "#define TARN_LINK_APRON 1\n")); /* the bake's own quality has one */
     free(link_text);
     if (shell("command -v arm-none-eabi-gcc > /dev/null") == 0 &&
         shell("arm-none-eabi-gcc " M0_FLAGS " -Icore -c %s -o %s/swept-m0.o", b.source, work_dir) != 0)
