@@ -82,6 +82,8 @@ typedef struct {
     int32_t end;       /* and its far end, where the next span starts */
     int32_t t0[ATTRIBUTES_MAX], dt[ATTRIBUTES_MAX];
     int32_t t_end[ATTRIBUTES_MAX]; /* the exact values at `end` */
+    int32_t length;                /* end - start of the last span filled, -1 before */
+    uint32_t inverse_length;       /* 2^32 / length, tarn_recip_u32's */
 } span_cache;
 
 #define SPAN_END_MIN (-(1 << 28))
@@ -91,9 +93,11 @@ typedef struct {
 static int32_t span_end_t(int32_t premultiplied, uint32_t recip, unsigned lz)
 {
     int32_t p = tarn_clamp_i32(premultiplied, -(1 << 30) + 1, (1 << 30) - 1);
-    int64_t t = tarn_mul_hi_s32_u32(p * 2, recip); /* |t| <= 2^30 */
-    t = t < 0 ? -((-t) << (lz - 1u)) : t << (lz - 1u);
-    return (int32_t)(t < SPAN_END_MIN ? SPAN_END_MIN : (t > SPAN_END_MAX ? SPAN_END_MAX : t));
+    const int32_t t = tarn_mul_hi_s32_u32(p * 2, recip); /* |t| <= 2^30 */
+    /* t * 2^(lz - 1), saturated: compared before the shift, so it stays in 32 bits */
+    const unsigned up = lz - 1u; /* 0..30 */
+    if (t >= 0) return (uint32_t)t > ((uint32_t)SPAN_END_MAX >> up) ? SPAN_END_MAX : t * (1 << up);
+    return (uint32_t)-t > ((uint32_t)-SPAN_END_MIN >> up) ? SPAN_END_MIN : -(-t * (1 << up));
 }
 
 static void span_end(const attribute_set *set, const triangle_setup *t, int32_t i, int32_t j,
@@ -122,10 +126,14 @@ static void span_fill(const attribute_set *set, const triangle_setup *t, unsigne
         span_end(set, t, start, j, steps, cache->t0);
     }
     span_end(set, t, end, j, steps, cache->t_end);
-    /* per span, not per pixel: 1/length from the reciprocal, not a division */
-    const uint32_t inverse_length = end > start ? tarn_recip_u32((uint32_t)(end - start), 2) : 0u;
+    /* per span, not per pixel: 1/length from the reciprocal, not a division, and
+     * taken again only when the length changes (inside a row it rarely does) */
+    if (end - start != cache->length) {
+        cache->length = end - start;
+        cache->inverse_length = cache->length > 0 ? tarn_recip_u32((uint32_t)cache->length, 2) : 0u;
+    }
     for (int k = 0; k < set->count; k++)
-        cache->dt[k] = tarn_mul_hi_s32_u32(cache->t_end[k] - cache->t0[k], inverse_length);
+        cache->dt[k] = tarn_mul_hi_s32_u32(cache->t_end[k] - cache->t0[k], cache->inverse_length);
     cache->start = start;
     cache->end = end;
     cache->limit = grid + span;
@@ -260,6 +268,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
     if (set->perspective == TARN_PERSPECTIVE_AFFINE) affine_row_origin(set, t, j, affine_origin);
     span_cache cache;
     cache.limit = INT32_MIN;
+    cache.length = -1;
     cache.log2_span = 31u - tarn_clz32(tile->quality->perspective_span);
     const int32_t row = (j - tile->origin_y) * tile->stride - tile->origin_x;
     /* each edge is linear along the row, so the covered pixels are one run: after

@@ -13,7 +13,7 @@ static void decode_normal(const uint8_t *texel, int32_t out[3])
  * Q2.14 with all of the strength's bits: floor(sum * strength / 2^17), from the
  * strength's top and bottom bits in two 32-bit products (the floor of a floor is
  * the floor), where a 32x32-bit high product costs the M0 three times as much. */
-static int32_t strength_times(int32_t sum, int32_t strength)
+static inline int32_t strength_times(int32_t sum, int32_t strength)
 {
     const int32_t low = tarn_floor_shift(sum * (strength & 0xFF), 8); /* below 2^24 */
     return tarn_floor_shift(sum * (strength >> 8) + low, 9);           /* below 2^28 */
