@@ -125,6 +125,10 @@ static plane make_plane(const triangle_setup *t, const tarn_divisor *area2, cons
     const unsigned s = t->subpixel_bits;
     const edge *e1 = &t->edges[1], *e2 = &t->edges[2];
     const int32_t d1 = (int32_t)(value[1] - value[0]), d2 = (int32_t)(value[2] - value[0]);
+    if (d1 == 0 && d2 == 0) { /* a flat plane: every quotient below would be 0 */
+        const plane flat = {value[0], 0u, 0u};
+        return flat;
+    }
     int64_t at_anchor = value[0] + tarn_divide_round_approx_i64(weighted_sum(anchor->e1, d1, anchor->e2, d2), area2);
     int64_t step_x = tarn_divide_round_approx_i64(coefficient_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
     int64_t step_y = tarn_divide_round_approx_i64(coefficient_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
