@@ -111,26 +111,27 @@ static uint32_t shade_q16(const tarn_view *view, int channel, int32_t n_dot_l_q1
 static int32_t fresnel_q15(const tarn_object_xform *xform, const tarn_vec3 *normal,
                            const tarn_view_vertex *at)
 {
-    const int64_t n_object[3] = {normal->x, normal->y, normal->z};
-    const int64_t position[3] = {at->x, at->y, at->d};
+    const int32_t n_object[3] = {normal->x, normal->y, normal->z};
+    const int32_t position[3] = {at->x, at->y, at->d};
     int64_t n_dot_p = 0; /* Q16.16 * Q16.16 */
     uint64_t length2 = 0;
+    /* every product has 32-bit operands: tarn_mul_i32_wide, not a 64x64 multiply */
     for (int i = 0; i < 3; i++) {
         int64_t n_view = 0;
-        for (int k = 0; k < 3; k++) n_view += xform->normal_to_view[i][k] * n_object[k];
+        for (int k = 0; k < 3; k++) n_view += tarn_mul_i32_wide(xform->normal_to_view[i][k], n_object[k]);
         /* the normal is bounded (tarn_unit_vector_bounded), so with any rotation the
          * component stays below 2^20 and the sum within 64 bits */
-        n_dot_p += tarn_round_shift_i64(n_view, 30) * position[i];
-        length2 += (uint64_t)(position[i] * position[i]);
+        n_dot_p += tarn_mul_i32_wide((int32_t)tarn_round_shift_i64(n_view, 30), position[i]);
+        length2 += (uint64_t)tarn_mul_i32_wide(position[i], position[i]);
     }
     int64_t length = (int64_t)tarn_isqrt_u64(length2); /* Q16.16 */
     if (length == 0) return 0;
     /* n.v = -(n.p)/|p|, as Q1.15 (truncated, as C's / would), clamped to [-1, 1] */
     int64_t n_dot_v = tarn_divide_once_i64(-n_dot_p, (uint32_t)length) / 2;
     n_dot_v = n_dot_v > 32768 ? 32768 : (n_dot_v < -32768 ? -32768 : n_dot_v);
-    int64_t one_minus = 32768 - n_dot_v; /* 0..65536 */
-    if (one_minus > 32768) one_minus = 32768; /* saturate(1 - n.v) */
-    return (int32_t)((one_minus * one_minus + 16384) >> 15);
+    uint32_t one_minus = (uint32_t)(32768 - n_dot_v); /* 0..65536 */
+    if (one_minus > 32768u) one_minus = 32768u; /* saturate(1 - n.v) */
+    return (int32_t)((one_minus * one_minus + 16384u) >> 15);
 }
 
 /* A unit vector's components lie within +-1; one far longer (the scene's normals and
