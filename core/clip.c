@@ -120,12 +120,13 @@ void tarn_clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_
     tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX] = {v[0], v[1], v[2]};
     const int count = tarn_clip_polygon(view, planes, polygon, 3);
     if (count < 3) return;
+    /* a fan around the first corner: each corner projected once, in one place */
     tarn_screen_vertex fan[3];
-    tarn_project(view, &polygon[0], &fan[0]);
-    tarn_project(view, &polygon[1], &fan[2]);
-    for (int i = 2; i < count; i++) {
-        fan[1] = fan[2];
-        tarn_project(view, &polygon[i], &fan[2]);
-        sink(ctx, fan, object);
+    for (int i = 0; i < count; i++) {
+        if (i >= 2) fan[1] = fan[2];
+        tarn_screen_vertex *corner = &fan[i == 0 ? 0 : 2];
+        tarn_project_position(view, &polygon[i], corner);
+        tarn_project_attributes(&polygon[i], corner);
+        if (i >= 2) sink(ctx, fan, object);
     }
 }

@@ -85,9 +85,8 @@ typedef void (*tarn_triangle_sink)(void *ctx, const tarn_screen_vertex vertex[3]
 void tarn_clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_vertex v[3],
                         const tarn_object *object, tarn_triangle_sink sink, void *ctx);
 
-/* Position, inverse depth and attributes; tarn_project_position only the first two,
- * tarn_project_attributes only the attributes. */
-void tarn_project(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out);
+/* Screen position and inverse depth; the attributes apart, as they are needed
+ * only once a triangle is known to reach the tile. */
 void tarn_project_position(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out);
 void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out);
 
