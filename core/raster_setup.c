@@ -222,7 +222,8 @@ void tarn_setup_attributes(const triangle_setup *t, const attribute_request *req
         if (q[n] > set->q_max) set->q_max = q[n];
     }
     const plane_anchor anchor = anchor_of(t);
-    set->q = make_plane(t, &set->depth.den, &anchor, q);
+    if (perspective != TARN_PERSPECTIVE_AFFINE) /* affine interpolation never reads q */
+        set->q = make_plane(t, &set->depth.den, &anchor, q);
     for (int c = 0; c < 3; c++) {
         uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
         add_attribute(set, t, &anchor, lit, q);
