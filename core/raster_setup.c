@@ -40,15 +40,22 @@ static int32_t edge_unbiased_at(const edge *e, int32_t px, int32_t py)
     return e->a * (px - e->x) + e->b * (py - e->y);
 }
 
-int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned s,
-                           triangle_setup *t)
+int64_t tarn_drawn_area2(const tarn_screen_vertex in[3], uint8_t cull)
 {
     /* coordinates inside the guard box differ by less than 2^15 */
     int64_t area2 = tarn_mul_i16_i32_wide(in[1].x - in[0].x, in[2].y - in[0].y) -
                     tarn_mul_i16_i32_wide(in[1].y - in[0].y, in[2].x - in[0].x);
-    if (area2 == 0) return 0;
     int front = area2 < 0; /* counter-clockwise in the y-up world */
     if ((cull == TARN_CULL_BACK && !front) || (cull == TARN_CULL_FRONT && front)) return 0;
+    return area2;
+}
+
+int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned s,
+                           triangle_setup *t)
+{
+    const int64_t area2 = tarn_drawn_area2(in, cull);
+    if (area2 == 0) return 0;
+    int front = area2 < 0;
     t->v[0] = &in[0];
     t->v[1] = front ? &in[2] : &in[1];
     t->v[2] = front ? &in[1] : &in[2];
