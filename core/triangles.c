@@ -24,6 +24,7 @@ static tile_frustum make_tile_frustum(const tarn_view *view, const tarn_pixel_re
     f.active = rect != NULL;
     if (!f.active) return f;
     const int32_t edges[4] = {rect->x0, rect->x1, rect->y0, rect->y1};
+    f.edges.tested = 0;
     for (int k = 0; k < 4; k++) {
         const int horizontal = k < 2;
         const int32_t centre = horizontal ? view->width : view->height; /* in half pixels: the extent in pixels */
@@ -35,7 +36,9 @@ static tile_frustum make_tile_frustum(const tarn_view *view, const tarn_pixel_re
          * frame is not tested, as the guard band may clamp a vertex short of it */
         const int inside_frame = f.side[k] > 0 ? edges[k] >= 0 : edges[k] <= centre;
         const int32_t offset_half = f.side[k] > 0 ? 2 * edges[k] - centre - 2 : centre - 2 * edges[k];
-        f.edges.slope_q10[k] = inside_frame ? tarn_tile_edge_slope(view, offset_half) : TARN_TILE_EDGE_UNTESTED;
+        const int32_t slope = inside_frame ? tarn_tile_edge_slope(view, offset_half) : TARN_TILE_EDGE_UNTESTED;
+        f.edges.slope_q10[k] = (int16_t)(slope != TARN_TILE_EDGE_UNTESTED ? slope : 0);
+        if (slope != TARN_TILE_EDGE_UNTESTED) f.edges.tested |= (uint8_t)(1u << k);
         uint64_t sum = (uint64_t)((int64_t)view->focal_q12 * view->focal_q12) +
                        (uint64_t)((int64_t)f.offset_q12[k] * f.offset_q12[k]);
         f.norm_q12[k] = (int64_t)tarn_isqrt_u64(sum) + 1; /* rounded up: conservative */

@@ -1,7 +1,7 @@
 /* vertex_cache.c: see vertex_cache.h. */
 #include "vertex_cache.h"
 
-int16_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half)
+int32_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half)
 {
     /* focal in half pixels, rounded down: 1024 * offset / focal is bounded from
      * below by dividing by one more for a positive offset, and by this (at least
@@ -10,11 +10,11 @@ int16_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half)
     const uint32_t magnitude = (uint32_t)(offset_half >= 0 ? offset_half : -offset_half) << 10; /* below 2^27 */
     if (offset_half >= 0) {
         const uint32_t slope = magnitude / (focal_half + 1u);
-        return (int16_t)(slope > 1023u ? 1023u : slope); /* smaller is still a bound */
+        return (int32_t)(slope > 1023u ? 1023u : slope); /* smaller is still a bound */
     }
     const uint32_t divisor = focal_half > 0u ? focal_half : 1u;
     const uint32_t slope = (magnitude + divisor - 1u) / divisor;
-    return slope > 1023u ? TARN_TILE_EDGE_UNTESTED : (int16_t)-(int32_t)slope; /* no bound that small */
+    return slope > 1023u ? TARN_TILE_EDGE_UNTESTED : -(int32_t)slope; /* no bound that small */
 }
 
 /* The tile edges (bits 0..3) the vertex lies beyond; none for a vertex not in
@@ -22,16 +22,16 @@ int16_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half)
 static unsigned beyond_tile_edges(const tarn_tile_edges *tile, const tarn_view *view, const tarn_view_vertex *v)
 {
     if (tile == NULL || v->d < view->near) return 0;
-    const int32_t depth_q6 = v->d >> 10; /* d >= near > 0; below 2^21 */
+    const int32_t depth_q6 = v->d >> 10; /* d >= near > 0: below 2^21 */
     unsigned beyond = 0;
     for (int k = 0; k < 4; k++) {
         const int32_t slope = tile->slope_q10[k], offset = k < 2 ? v->x : v->y;
-        const int32_t bound = (slope >= 0 ? depth_q6 : depth_q6 + 1) * slope; /* |bound| < 2^31 */
+        const int32_t bound = (slope >= 0 ? depth_q6 : depth_q6 + 1) * slope; /* |bound| <= 2^21 * 1023 */
         /* offset <= bound for the left and bottom edges, -offset <= bound for the others */
         const int negated = k == 1 || k == 2;
-        if (slope != TARN_TILE_EDGE_UNTESTED && (negated ? offset >= -bound : offset <= bound)) beyond |= 1u << k;
+        if (negated ? offset >= -bound : offset <= bound) beyond |= 1u << k;
     }
-    return beyond;
+    return beyond & tile->tested;
 }
 
 void tarn_vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,

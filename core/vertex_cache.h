@@ -32,10 +32,9 @@
  * Each slope is at most 1024 * (the edge's offset from the frame centre, with
  * that pixel) / focal, within +-1023. */
 typedef struct {
-    int16_t slope_q10[4]; /* TARN_TILE_EDGE_UNTESTED: an edge outside the frame */
+    int16_t slope_q10[4];
+    uint8_t tested; /* bit k: edge k has a slope (0 for an edge outside the frame) */
 } tarn_tile_edges;
-
-#define TARN_TILE_EDGE_UNTESTED INT16_MIN
 
 typedef struct {
     uint16_t index;
@@ -57,8 +56,11 @@ typedef struct {
 } tarn_vertex_cache;
 
 /* A tile edge's slope (tarn_tile_edges) from its offset from the frame centre in
- * half pixels, with the pixel beyond it, negated for the right and bottom edges. */
-int16_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half);
+ * half pixels, with the pixel beyond it, negated for the right and bottom edges;
+ * TARN_TILE_EDGE_UNTESTED when no slope in range bounds it. */
+int32_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half);
+
+#define TARN_TILE_EDGE_UNTESTED INT32_MIN
 
 /* An empty cache for one object's vertices, for a walk of the tile whose `tile`
  * edges are given, or of the whole frame (NULL). */
