@@ -87,8 +87,8 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
         unsigned outside_any;
         const unsigned outside_all = tarn_cached_triangle(cache, index, c, &outside_any);
         if (outside_all & TARN_CACHED_CLIP_PLANES) continue; /* wholly outside one plane */
-        tarn_view_vertex v[3];
         if (outside_any & TARN_CACHED_CLIP_PLANES) {
+            tarn_view_vertex v[3];
             for (int k = 0; k < 3; k++) tarn_cached_shading(cache, &c[k], &v[k]);
             tarn_clip_and_emit(view, outside_any & TARN_CACHED_CLIP_PLANES, v, object, sink, ctx);
             continue;
@@ -97,10 +97,7 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
         tarn_screen_vertex screen[3];
         for (int k = 0; k < 3; k++) tarn_cached_projection(cache, &c[k], &screen[k]);
         if (only_rect && bounds_miss_rect(screen, view->subpixel_bits, only_rect)) continue;
-        for (int k = 0; k < 3; k++) {
-            tarn_cached_shading(cache, &c[k], &v[k]);
-            tarn_project_attributes(&v[k], &screen[k]);
-        }
+        for (int k = 0; k < 3; k++) tarn_cached_attributes(cache, &c[k], &screen[k]);
         sink(ctx, screen, object);
     }
 }

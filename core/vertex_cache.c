@@ -148,3 +148,15 @@ void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, t
     v->fresnel = vertex->fresnel;
     v->uv = tarn_vertex_uv(mesh, vertex->index);
 }
+
+void tarn_cached_attributes(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_screen_vertex *screen)
+{
+    if (!(vertex->state & TARN_CACHED_SHADED)) {
+        tarn_view_vertex v;
+        tarn_cached_shading(cache, vertex, &v);
+    }
+    /* in range already (vertex_cache.h), which tarn_project_attributes would clamp to */
+    for (int c = 0; c < 3; c++) screen->lit[c] = vertex->lit[c];
+    screen->fresnel = vertex->fresnel;
+    screen->uv = tarn_vertex_uv(cache->mesh, vertex->index);
+}

@@ -84,4 +84,8 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
  * tarn_cached_projection keeps the screen position. */
 void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_view_vertex *v);
 
+/* The same shading straight into a screen vertex's attributes, as
+ * tarn_project_attributes would set them from the view vertex. */
+void tarn_cached_attributes(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_screen_vertex *screen);
+
 #endif
