@@ -37,13 +37,6 @@ uint64_t tarn_divide_u64(uint64_t n, const tarn_divisor *d, uint32_t *remainder)
         n = 0;
     }
     while (n >= d->divisor) {
-        /* a quotient of one, two or three (most often the last step: the
-         * reciprocal's quotient falls short by a unit or two) is cheaper subtracted */
-        if (n < (uint64_t)d->divisor << 2) {
-            n -= d->divisor;
-            quotient++;
-            continue;
-        }
         uint64_t step = times_reciprocal(n, d, 0u);
         uint64_t product = times_divisor(step, d->divisor);
         if (step == 0u || product > n) { /* the second cannot happen; if it did, a 1 is safe */
