@@ -1,7 +1,8 @@
 /* triangles.c: walks a scene's triangles through transform, clipping, projection
  * and culling-free emission; the rasterizer culls, since culling needs the
- * snapped screen winding. For a tile, whole clusters whose bounding sphere misses
- * the tile's slice of the view are skipped before any of their vertices is touched. */
+ * snapped screen winding. For a tile, whole clusters whose bin or bounding sphere
+ * misses the tile are skipped before any of their vertices is touched, and
+ * triangles beyond an edge of the tile before they are projected. */
 #include "cluster_bins.h"
 #include "raster_setup.h"
 #include "vertex_cache.h"

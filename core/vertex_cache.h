@@ -3,8 +3,8 @@
  *
  * Most vertices are shared by several triangles (six, inside a grid), and
  * neighbouring clusters share their borders. Keyed by the vertex index, the cache
- * keeps each vertex's view position, clip outcode and, once needed, its screen
- * position and its shading, so a walk transforms, projects and lights a vertex
+ * keeps each vertex's view position, clip outcode, the tile edges it lies beyond
+ * and, once needed, its screen position and its shading, so a walk transforms, projects and lights a vertex
  * about once instead of once per triangle. Direct-mapped: a colliding vertex simply replaces the older one.
  * It lives on the stack of the walk that uses it. */
 #ifndef TARN_VERTEX_CACHE_H
