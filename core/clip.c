@@ -21,8 +21,21 @@ static void plane_distances(const tarn_view *view, const tarn_view_vertex *v, in
     distance[PLANE_BOTTOM] = y_focal + y_extent;
 }
 
+/* 1 when |offset| <= (d >> 8) * slope_q8, for d > 0: then |offset| * focal <=
+ * d * half_extent, and the vertex is inside both guard planes of the axis. 32-bit:
+ * (d >> 8) is below 2^23 and the slope below 2^9. */
+static int within_guard_slope(int32_t offset, tarn_q16 d, uint16_t slope_q8)
+{
+    const uint32_t magnitude = offset < 0 ? (uint32_t)0 - (uint32_t)offset : (uint32_t)offset;
+    return magnitude <= ((uint32_t)d >> 8) * slope_q8;
+}
+
 unsigned tarn_clip_outcode(const tarn_view *view, const tarn_view_vertex *v)
 {
+    /* most vertices lie well inside every plane: four wide products spared */
+    if (v->d >= view->near && v->d <= view->far && within_guard_slope(v->x, v->d, view->guard_slope_q8[0]) &&
+        within_guard_slope(v->y, v->d, view->guard_slope_q8[1]))
+        return 0;
     int64_t distance[PLANE_COUNT];
     plane_distances(view, v, distance);
     unsigned code = 0;
@@ -107,12 +120,13 @@ void tarn_clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_
     tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX] = {v[0], v[1], v[2]};
     const int count = tarn_clip_polygon(view, planes, polygon, 3);
     if (count < 3) return;
+    /* a fan around the first corner: each corner projected once, in one place */
     tarn_screen_vertex fan[3];
-    tarn_project(view, &polygon[0], &fan[0]);
-    tarn_project(view, &polygon[1], &fan[2]);
-    for (int i = 2; i < count; i++) {
-        fan[1] = fan[2];
-        tarn_project(view, &polygon[i], &fan[2]);
-        sink(ctx, fan, object);
+    for (int i = 0; i < count; i++) {
+        if (i >= 2) fan[1] = fan[2];
+        tarn_screen_vertex *corner = &fan[i == 0 ? 0 : 2];
+        tarn_project_position(view, &polygon[i], corner);
+        tarn_project_attributes(&polygon[i], corner);
+        if (i >= 2) sink(ctx, fan, object);
     }
 }

@@ -71,10 +71,7 @@ static tarn_cluster_bin bin_run(tarn_vertex_cache *cache, const tarn_object *obj
         if (outside_any & NEAR_PLANE_BIT) return bin_whole;
         tarn_screen_vertex screen[3];
         for (int k = 0; k < 3; k++) tarn_cached_projection(cache, &c[k], &screen[k]);
-        triangle_setup setup;
-        if (outside_any == 0 &&
-            !tarn_orient_triangle(screen, object->material->cull, cache->view->subpixel_bits, &setup))
-            continue;
+        if (outside_any == 0 && tarn_drawn_area2(screen, object->material->cull) == 0) continue;
         if (outside_any) margin = 1;
         for (int k = 0; k < 3; k++) tarn_bounds_add(&bounds, &screen[k]);
     }
@@ -89,7 +86,7 @@ void tarn_bin_clusters(const tarn_scene *scene, const tarn_view *view, tarn_clus
         tarn_object_xform xform;
         tarn_object_xform_setup(view, object, &xform);
         tarn_vertex_cache cache;
-        tarn_vertex_cache_init(&cache, view, &xform, mesh);
+        tarn_vertex_cache_init(&cache, view, &xform, mesh, NULL);
         if (mesh->clusters == NULL) {
             *bins++ = bin_run(&cache, object, 0, mesh->triangle_count);
             continue;

@@ -10,6 +10,14 @@ int64_t tarn_round_shift_i64(int64_t v, unsigned shift)
      * v's floor is -1 - floor((-v - 1) / 2^shift), and -v - 1 is ~v: two shifts of
      * non-negative numbers, and no 64-bit negation or mask. */
     const uint64_t bits = (uint64_t)v;
+    if (shift < 32u) { /* the usual case, shifted word by word: no 64-bit shifts */
+        const uint32_t low = (uint32_t)bits, high = (uint32_t)(bits >> 32);
+        const int64_t half_bit = (int64_t)((low >> (shift - 1u)) & 1u);
+        /* the shifted magnitude of v, or of ~v for a negative v, as above */
+        const uint32_t m_low = v >= 0 ? low : ~low, m_high = v >= 0 ? high : ~high;
+        const uint64_t shifted = ((uint64_t)(m_high >> shift) << 32) | (m_high << (32u - shift)) | (m_low >> shift);
+        return v >= 0 ? (int64_t)shifted + half_bit : -(int64_t)shifted - 1 + half_bit;
+    }
     const int64_t half_bit = (int64_t)((bits >> (shift - 1u)) & 1u);
     if (v >= 0) return (int64_t)(bits >> shift) + half_bit;
     return -(int64_t)(~bits >> shift) - 1 + half_bit;

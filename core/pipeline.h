@@ -22,8 +22,11 @@ typedef struct {
     uint32_t focal_mantissa, near_mantissa;
     unsigned focal_shift, near_shift;
     int32_t half_extent_q12[2]; /* width/2 + guard, height/2 + guard, pixels Q20.12 */
-    int32_t guard_pixels;
+    int16_t guard_pixels;    /* tarn_guard_band_pixels: below 2^15 */
     uint16_t width, height;
+    /* at most half_extent / focal in Q8, and at most 511: |x| <= (d >> 8) * this
+     * puts a vertex inside both guard planes of its axis (tarn_clip_outcode) */
+    uint16_t guard_slope_q8[2];
     uint8_t subpixel_bits;
     uint32_t light_q16[3];   /* directional light colour / 255 per channel, Q0.16 */
     uint32_t ambient_q16[3]; /* ambient colour / 255 per channel, Q0.16 */
@@ -82,9 +85,8 @@ typedef void (*tarn_triangle_sink)(void *ctx, const tarn_screen_vertex vertex[3]
 void tarn_clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_vertex v[3],
                         const tarn_object *object, tarn_triangle_sink sink, void *ctx);
 
-/* Position, inverse depth and attributes; tarn_project_position only the first two,
- * tarn_project_attributes only the attributes. */
-void tarn_project(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out);
+/* Screen position and inverse depth; the attributes apart, as they are needed
+ * only once a triangle is known to reach the tile. */
 void tarn_project_position(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out);
 void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out);
 

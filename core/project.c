@@ -87,12 +87,6 @@ void tarn_project_position(const tarn_view *view, const tarn_view_vertex *in, ta
     out->inv_depth = inverse_depth_q30(view, depth_q16, depth, recip);
 }
 
-void tarn_project(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out)
-{
-    tarn_project_position(view, in, out);
-    tarn_project_attributes(in, out);
-}
-
 void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out)
 {
     out->uv = in->uv;

@@ -310,6 +310,23 @@ static attribute_request request_for(tarn_tile_target *tile, const tarn_object *
     return request;
 }
 
+/* 1 when some edge is negative at every pixel centre of the box, so no pixel of it
+ * is covered: an edge is linear, so its largest value over the box is at the
+ * corner its coefficients point to. Three edge values instead of the whole
+ * attribute setup for the triangles whose bounds reach into a tile that their
+ * area does not. */
+static int box_outside_an_edge(const triangle_setup *t, const pixel_box *box)
+{
+    const unsigned s = t->subpixel_bits;
+    for (int k = 0; k < 3; k++) {
+        const edge *e = &t->edges[k];
+        const int32_t px = pixel_centre(e->a > 0 ? box->x1 : box->x0, s);
+        const int32_t py = pixel_centre(e->b > 0 ? box->y1 : box->y0, s);
+        if (edge_at(e, px, py) < 0) return 1;
+    }
+    return 0;
+}
+
 void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex vertex[3],
                           const tarn_object *object)
 {
@@ -321,7 +338,7 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     if (draw.y0 < tile->rect.y0) draw.y0 = tile->rect.y0;
     if (draw.x1 > tile->rect.x1 - 1) draw.x1 = tile->rect.x1 - 1;
     if (draw.y1 > tile->rect.y1 - 1) draw.y1 = tile->rect.y1 - 1;
-    if (draw.x0 > draw.x1 || draw.y0 > draw.y1) return;
+    if (draw.x0 > draw.x1 || draw.y0 > draw.y1 || box_outside_an_edge(&t, &draw)) return;
     const attribute_request request = request_for(tile, object);
     attribute_set set;
     tarn_setup_attributes(&t, &request, perspective_mode(tile->quality, &t.box), &set);

@@ -40,15 +40,22 @@ static int32_t edge_unbiased_at(const edge *e, int32_t px, int32_t py)
     return e->a * (px - e->x) + e->b * (py - e->y);
 }
 
-int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned s,
-                           triangle_setup *t)
+int64_t tarn_drawn_area2(const tarn_screen_vertex in[3], uint8_t cull)
 {
     /* coordinates inside the guard box differ by less than 2^15 */
     int64_t area2 = tarn_mul_i16_i32_wide(in[1].x - in[0].x, in[2].y - in[0].y) -
                     tarn_mul_i16_i32_wide(in[1].y - in[0].y, in[2].x - in[0].x);
-    if (area2 == 0) return 0;
     int front = area2 < 0; /* counter-clockwise in the y-up world */
     if ((cull == TARN_CULL_BACK && !front) || (cull == TARN_CULL_FRONT && front)) return 0;
+    return area2;
+}
+
+int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned s,
+                           triangle_setup *t)
+{
+    const int64_t area2 = tarn_drawn_area2(in, cull);
+    if (area2 == 0) return 0;
+    int front = area2 < 0;
     t->v[0] = &in[0];
     t->v[1] = front ? &in[2] : &in[1];
     t->v[2] = front ? &in[1] : &in[2];
@@ -125,6 +132,10 @@ static plane make_plane(const triangle_setup *t, const tarn_divisor *area2, cons
     const unsigned s = t->subpixel_bits;
     const edge *e1 = &t->edges[1], *e2 = &t->edges[2];
     const int32_t d1 = (int32_t)(value[1] - value[0]), d2 = (int32_t)(value[2] - value[0]);
+    if (d1 == 0 && d2 == 0) { /* a flat plane: every quotient below would be 0 */
+        const plane flat = {value[0], 0u, 0u};
+        return flat;
+    }
     int64_t at_anchor = value[0] + tarn_divide_round_approx_i64(weighted_sum(anchor->e1, d1, anchor->e2, d2), area2);
     int64_t step_x = tarn_divide_round_approx_i64(coefficient_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
     int64_t step_y = tarn_divide_round_approx_i64(coefficient_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
@@ -218,7 +229,8 @@ void tarn_setup_attributes(const triangle_setup *t, const attribute_request *req
         if (q[n] > set->q_max) set->q_max = q[n];
     }
     const plane_anchor anchor = anchor_of(t);
-    set->q = make_plane(t, &set->depth.den, &anchor, q);
+    if (perspective != TARN_PERSPECTIVE_AFFINE) /* affine interpolation never reads q */
+        set->q = make_plane(t, &set->depth.den, &anchor, q);
     for (int c = 0; c < 3; c++) {
         uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
         add_attribute(set, t, &anchor, lit, q);

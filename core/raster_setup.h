@@ -94,6 +94,9 @@ static inline void exact_step(exact_value *v, const exact_value *step, const tar
 
 /* ---- setup, once per triangle per tile ------------------------------------------ */
 
+/* Twice the signed area of the screen triangle (negative when it faces the
+ * camera), or 0 when it has none or the material culls its side. */
+int64_t tarn_drawn_area2(const tarn_screen_vertex in[3], uint8_t cull);
 /* Culls by the material and orients the triangle; returns 0 when nothing draws. */
 int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned subpixel_bits,
                          triangle_setup *t);

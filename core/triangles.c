@@ -1,7 +1,8 @@
 /* triangles.c: walks a scene's triangles through transform, clipping, projection
  * and culling-free emission; the rasterizer culls, since culling needs the
- * snapped screen winding. For a tile, whole clusters whose bounding sphere misses
- * the tile's slice of the view are skipped before any of their vertices is touched. */
+ * snapped screen winding. For a tile, whole clusters whose bin or bounding sphere
+ * misses the tile are skipped before any of their vertices is touched, and
+ * triangles beyond an edge of the tile before they are projected. */
 #include "cluster_bins.h"
 #include "raster_setup.h"
 #include "vertex_cache.h"
@@ -14,6 +15,7 @@ typedef struct {
     int64_t norm_q12[4];   /* sqrt(focal^2 + offset^2), Q.12 */
     int use_x[4];         /* 1: the plane bounds x; 0: it bounds -y (screen y runs down) */
     int side[4];          /* +1: inside where x*focal >= offset*d; -1: where <= */
+    tarn_tile_edges edges; /* the same edges for single vertices (vertex_cache.h) */
     int active;           /* 0: no rectangle, every cluster is walked */
 } tile_frustum;
 
@@ -23,12 +25,21 @@ static tile_frustum make_tile_frustum(const tarn_view *view, const tarn_pixel_re
     f.active = rect != NULL;
     if (!f.active) return f;
     const int32_t edges[4] = {rect->x0, rect->x1, rect->y0, rect->y1};
+    f.edges.tested = 0;
     for (int k = 0; k < 4; k++) {
         const int horizontal = k < 2;
-        const int32_t centre = horizontal ? view->width : view->height; /* in half pixels */
+        const int32_t centre = horizontal ? view->width : view->height; /* in half pixels: the extent in pixels */
         f.offset_q12[k] = edges[k] * 4096 - centre * 2048;
         f.use_x[k] = horizontal;
         f.side[k] = (k % 2 == 0) ? 1 : -1;
+        /* a pixel beyond the first pixel centre of the left and top edges, half a
+         * pixel beyond the last of the right and bottom ones; an edge outside the
+         * frame is not tested, as the guard band may clamp a vertex short of it */
+        const int inside_frame = f.side[k] > 0 ? edges[k] >= 0 : edges[k] <= centre;
+        const int32_t offset_half = f.side[k] > 0 ? 2 * edges[k] - centre - 2 : centre - 2 * edges[k];
+        const int32_t slope = inside_frame ? tarn_tile_edge_slope(view, offset_half) : TARN_TILE_EDGE_UNTESTED;
+        f.edges.slope_q10[k] = (int16_t)(slope != TARN_TILE_EDGE_UNTESTED ? slope : 0);
+        if (slope != TARN_TILE_EDGE_UNTESTED) f.edges.tested |= (uint8_t)(1u << k);
         uint64_t sum = (uint64_t)((int64_t)view->focal_q12 * view->focal_q12) +
                        (uint64_t)((int64_t)f.offset_q12[k] * f.offset_q12[k]);
         f.norm_q12[k] = (int64_t)tarn_isqrt_u64(sum) + 1; /* rounded up: conservative */
@@ -76,20 +87,18 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
         tarn_cached_vertex c[3];
         unsigned outside_any;
         const unsigned outside_all = tarn_cached_triangle(cache, index, c, &outside_any);
-        if (outside_all) continue; /* wholly outside one plane */
-        tarn_view_vertex v[3];
-        if (outside_any) {
+        if (outside_all & TARN_CACHED_CLIP_PLANES) continue; /* wholly outside one plane */
+        if (outside_any & TARN_CACHED_CLIP_PLANES) {
+            tarn_view_vertex v[3];
             for (int k = 0; k < 3; k++) tarn_cached_shading(cache, &c[k], &v[k]);
-            tarn_clip_and_emit(view, outside_any, v, object, sink, ctx);
+            tarn_clip_and_emit(view, outside_any & TARN_CACHED_CLIP_PLANES, v, object, sink, ctx);
             continue;
         }
+        if (outside_all) continue; /* wholly beyond an edge of the tile: unprojected */
         tarn_screen_vertex screen[3];
         for (int k = 0; k < 3; k++) tarn_cached_projection(cache, &c[k], &screen[k]);
         if (only_rect && bounds_miss_rect(screen, view->subpixel_bits, only_rect)) continue;
-        for (int k = 0; k < 3; k++) {
-            tarn_cached_shading(cache, &c[k], &v[k]);
-            tarn_project_attributes(&v[k], &screen[k]);
-        }
+        for (int k = 0; k < 3; k++) tarn_cached_attributes(cache, &c[k], &screen[k]);
         sink(ctx, screen, object);
     }
 }
@@ -130,7 +139,7 @@ static void walk_object(const tarn_view *view, const tarn_object *object, const 
     tarn_object_xform xform;
     tarn_object_xform_setup(view, object, &xform);
     tarn_vertex_cache cache;
-    tarn_vertex_cache_init(&cache, view, &xform, mesh);
+    tarn_vertex_cache_init(&cache, view, &xform, mesh, frustum->active ? &frustum->edges : NULL);
     if (mesh->clusters == NULL) { /* its one bin, if any, was tested above */
         walk_run(object, 0, mesh->triangle_count, only_rect, &cache, sink, ctx);
         return;

@@ -96,12 +96,20 @@ void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,
     }
 }
 
+/* (a * b + 2^15) >> 16, for a result within 32 bits: one 32-bit product when both
+ * are below 2^16 (a shade, a colour, a unit dot product: nearly always), which
+ * the Cortex-M0 takes in one instruction instead of four and their carries. */
+static uint32_t mul_q16_rounded(uint32_t a, uint32_t b)
+{
+    if ((a | b) < 65536u) return (a * b + 32768u) >> 16; /* below 2^32 - 2^16 before the shift */
+    if (a == 65536u) return b; /* times one, a white tint: (2^16 b + 2^15) >> 16 */
+    return (uint32_t)((tarn_mul_u32_wide(a, b) + 32768u) >> 16);
+}
+
 /* shade = min(1, ambient + light * max(0, N.L)), Q0.16 per channel. */
 static uint32_t shade_q16(const tarn_view *view, int channel, int32_t n_dot_l_q16)
 {
-    uint32_t diffuse = n_dot_l_q16 > 0
-        ? (uint32_t)((tarn_mul_u32_wide(view->light_q16[channel], (uint32_t)n_dot_l_q16) + 32768u) >> 16)
-        : 0u;
+    uint32_t diffuse = n_dot_l_q16 > 0 ? mul_q16_rounded(view->light_q16[channel], (uint32_t)n_dot_l_q16) : 0u;
     uint32_t shade = view->ambient_q16[channel] + diffuse;
     return shade > 65536u ? 65536u : shade;
 }
@@ -111,26 +119,27 @@ static uint32_t shade_q16(const tarn_view *view, int channel, int32_t n_dot_l_q1
 static int32_t fresnel_q15(const tarn_object_xform *xform, const tarn_vec3 *normal,
                            const tarn_view_vertex *at)
 {
-    const int64_t n_object[3] = {normal->x, normal->y, normal->z};
-    const int64_t position[3] = {at->x, at->y, at->d};
+    const int32_t n_object[3] = {normal->x, normal->y, normal->z};
+    const int32_t position[3] = {at->x, at->y, at->d};
     int64_t n_dot_p = 0; /* Q16.16 * Q16.16 */
     uint64_t length2 = 0;
+    /* every product has 32-bit operands: tarn_mul_i32_wide, not a 64x64 multiply */
     for (int i = 0; i < 3; i++) {
         int64_t n_view = 0;
-        for (int k = 0; k < 3; k++) n_view += xform->normal_to_view[i][k] * n_object[k];
+        for (int k = 0; k < 3; k++) n_view += tarn_mul_i32_wide(xform->normal_to_view[i][k], n_object[k]);
         /* the normal is bounded (tarn_unit_vector_bounded), so with any rotation the
          * component stays below 2^20 and the sum within 64 bits */
-        n_dot_p += tarn_round_shift_i64(n_view, 30) * position[i];
-        length2 += (uint64_t)(position[i] * position[i]);
+        n_dot_p += tarn_mul_i32_wide((int32_t)tarn_round_shift_i64(n_view, 30), position[i]);
+        length2 += (uint64_t)tarn_mul_i32_wide(position[i], position[i]);
     }
     int64_t length = (int64_t)tarn_isqrt_u64(length2); /* Q16.16 */
     if (length == 0) return 0;
     /* n.v = -(n.p)/|p|, as Q1.15 (truncated, as C's / would), clamped to [-1, 1] */
     int64_t n_dot_v = tarn_divide_once_i64(-n_dot_p, (uint32_t)length) / 2;
     n_dot_v = n_dot_v > 32768 ? 32768 : (n_dot_v < -32768 ? -32768 : n_dot_v);
-    int64_t one_minus = 32768 - n_dot_v; /* 0..65536 */
-    if (one_minus > 32768) one_minus = 32768; /* saturate(1 - n.v) */
-    return (int32_t)((one_minus * one_minus + 16384) >> 15);
+    uint32_t one_minus = (uint32_t)(32768 - n_dot_v); /* 0..65536 */
+    if (one_minus > 32768u) one_minus = 32768u; /* saturate(1 - n.v) */
+    return (int32_t)((one_minus * one_minus + 16384u) >> 15);
 }
 
 /* A unit vector's components lie within +-1; one far longer (the scene's normals and
@@ -155,7 +164,7 @@ void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
     uint32_t vertex_rgb = mesh->colours ? mesh->colours[index] : 0xFFFFFFu;
     for (int c = 0; c < 3; c++) {
         uint32_t shade = xform->unlit ? 65536u : shade_q16(view, c, n_dot_l);
-        uint32_t factor = (uint32_t)((tarn_mul_u32_wide(xform->tint_q16[c], shade) + 32768u) >> 16);
+        uint32_t factor = mul_q16_rounded(xform->tint_q16[c], shade);
         uint32_t vertex_channel = (vertex_rgb >> (16 - 8 * c)) & 0xFFu;
         out->lit[c] = (int32_t)((vertex_channel * factor + 128u) >> 8); /* Q8.8 */
     }

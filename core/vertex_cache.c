@@ -1,12 +1,47 @@
 /* vertex_cache.c: see vertex_cache.h. */
 #include "vertex_cache.h"
 
+int32_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half)
+{
+    /* focal in half pixels, rounded down: 1024 * offset / focal is bounded from
+     * below by dividing by one more for a positive offset, and by this (at least
+     * 1) with the quotient rounded away from 0 for a negative one */
+    const uint32_t focal_half = (uint32_t)view->focal_q12 >> 11;
+    const uint32_t magnitude = (uint32_t)(offset_half >= 0 ? offset_half : -offset_half) << 10; /* below 2^27 */
+    if (offset_half >= 0) {
+        const uint32_t slope = magnitude / (focal_half + 1u);
+        return (int32_t)(slope > 1023u ? 1023u : slope); /* smaller is still a bound */
+    }
+    const uint32_t divisor = focal_half > 0u ? focal_half : 1u;
+    const uint32_t slope = (magnitude + divisor - 1u) / divisor;
+    return slope > 1023u ? TARN_TILE_EDGE_UNTESTED : -(int32_t)slope; /* no bound that small */
+}
+
+/* The tile edges (bits 0..3) the vertex lies beyond; none for a vertex not in
+ * front of the near plane, or without a tile. */
+static unsigned beyond_tile_edges(const tarn_tile_edges *tile, const tarn_view *view, const tarn_view_vertex *v)
+{
+    if (tile == NULL || v->d < view->near) return 0;
+    const int32_t depth_q6 = v->d >> 10; /* d >= near > 0: below 2^21 */
+    unsigned beyond = 0;
+    for (int k = 0; k < 4; k++) {
+        const int32_t slope = tile->slope_q10[k], offset = k < 2 ? v->x : v->y;
+        const int32_t bound = (slope >= 0 ? depth_q6 : depth_q6 + 1) * slope; /* |bound| <= 2^21 * 1023 */
+        /* offset <= bound for the left and bottom edges, -offset <= bound for the others */
+        const int negated = k == 1 || k == 2;
+        if (negated ? offset >= -bound : offset <= bound) beyond |= 1u << k;
+    }
+    return beyond & tile->tested;
+}
+
 void tarn_vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
-                            const tarn_object_xform *xform, const tarn_mesh *mesh)
+                            const tarn_object_xform *xform, const tarn_mesh *mesh,
+                            const tarn_tile_edges *tile)
 {
     cache->view = view;
     cache->xform = xform;
     cache->mesh = mesh;
+    cache->tile = tile;
     for (uint32_t i = 0; i < TARN_VERTEX_CACHE_SLOTS; i++) cache->slot[i].state = 0;
 }
 
@@ -28,7 +63,8 @@ static void cached_position(tarn_vertex_cache *cache, uint16_t index, tarn_cache
     tarn_view_vertex v;
     tarn_vertex_position(cache->xform, &cache->mesh->positions[index], &v);
     slot->index = index;
-    slot->state = TARN_CACHED_FILLED;
+    slot->state = (uint8_t)(TARN_CACHED_FILLED | beyond_tile_edges(cache->tile, cache->view, &v)
+                                                   << TARN_CACHED_BEYOND_TILE_SHIFT);
     slot->outcode = (uint8_t)tarn_clip_outcode(cache->view, &v);
     slot->x = v.x;
     slot->y = v.y;
@@ -42,8 +78,10 @@ unsigned tarn_cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3],
     unsigned all = ~0u, any = 0;
     for (int k = 0; k < 3; k++) {
         cached_position(cache, index[k], &c[k]);
-        all &= c[k].outcode;
-        any |= c[k].outcode;
+        const unsigned code = c[k].outcode | (unsigned)(c[k].state >> TARN_CACHED_BEYOND_TILE_SHIFT)
+                                                 << TARN_CACHED_TILE_OUTCODE_SHIFT;
+        all &= code;
+        any |= code;
     }
     *outside_any = any;
     return all;
@@ -72,8 +110,8 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
     if (!(vertex->state & TARN_CACHED_PROJECTED)) {
         const tarn_view_vertex v = view_vertex_of(vertex);
         tarn_project_position(cache->view, &v, screen);
-        vertex->screen_x = screen->x;
-        vertex->screen_y = screen->y;
+        vertex->screen_x = (int16_t)screen->x;
+        vertex->screen_y = (int16_t)screen->y;
         vertex->inv_depth = screen->inv_depth;
         vertex->state |= TARN_CACHED_PROJECTED;
         tarn_cached_vertex *slot = holding_slot(cache, vertex);
@@ -109,4 +147,16 @@ void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, t
     for (int c = 0; c < 3; c++) v->lit[c] = vertex->lit[c];
     v->fresnel = vertex->fresnel;
     v->uv = tarn_vertex_uv(mesh, vertex->index);
+}
+
+void tarn_cached_attributes(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_screen_vertex *screen)
+{
+    if (!(vertex->state & TARN_CACHED_SHADED)) {
+        tarn_view_vertex v;
+        tarn_cached_shading(cache, vertex, &v);
+    }
+    /* in range already (vertex_cache.h), which tarn_project_attributes would clamp to */
+    for (int c = 0; c < 3; c++) screen->lit[c] = vertex->lit[c];
+    screen->fresnel = vertex->fresnel;
+    screen->uv = tarn_vertex_uv(cache->mesh, vertex->index);
 }

@@ -109,9 +109,14 @@ void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, t
     view->focal_mantissa = (uint32_t)view->focal_q12 << view->focal_shift;
     view->near_shift = tarn_clz32((uint32_t)view->near);
     view->near_mantissa = (uint32_t)view->near << view->near_shift;
-    view->guard_pixels = tarn_guard_band_pixels(config);
+    view->guard_pixels = (int16_t)tarn_guard_band_pixels(config);
     view->half_extent_q12[0] = config->width * 2048 + view->guard_pixels * 4096;
     view->half_extent_q12[1] = config->height * 2048 + view->guard_pixels * 4096;
+    /* f / 256 < (f >> 8) + 1, so the quotient is at most h * 256 / f, as it must be */
+    for (int axis = 0; axis < 2; axis++) {
+        const uint32_t slope = (uint32_t)view->half_extent_q12[axis] / (((uint32_t)view->focal_q12 >> 8) + 1u);
+        view->guard_slope_q8[axis] = (uint16_t)(slope > 511u ? 511u : slope);
+    }
     for (int c = 0; c < 3; c++) {
         view->light_q16[c] = channel_q16(scene->light.colour_rgb, c);
         view->ambient_q16[c] = channel_q16(scene->light.ambient_rgb, c);
