@@ -19,14 +19,33 @@ static uint32_t recip_newton_step(uint32_t m, uint32_t y)
     return y - tarn_mul_hi_u32(y, (m_y - ONE_Q30) << 2);
 }
 
+/* mul_hi(x, seed << 15) = floor(x * seed / 2^17), exactly, from x's halves times the
+ * 16-bit seed (each below 2^32) joined by nested floors: two 16x16 products where
+ * the general high product takes four. For x = m the sum stays near 2^31 (the seed
+ * is 1/m to 2^-8); for the step's error term it is far smaller. */
+static uint32_t times_seed(uint32_t x, uint32_t seed)
+{
+    return ((x >> 16) * seed + (((x & 0xFFFFu) * seed) >> 16)) >> 1;
+}
+
+/* recip_newton_step(m, seed << 15), the same number, by times_seed. */
+static uint32_t recip_first_step(uint32_t m, uint32_t seed)
+{
+    const uint32_t y = seed << 15, m_y = times_seed(m, seed);
+    if (m_y <= ONE_Q30) return y + times_seed((ONE_Q30 - m_y) << 2, seed);
+    return y - times_seed((m_y - ONE_Q30) << 2, seed);
+}
+
 /* 1/m in Q2.30 for m in Q0.32 with its top bit set. */
 static uint32_t recip_normalised_q30(uint32_t m, unsigned newton_steps)
 {
     uint32_t seed_index = (m >> (31u - TARN_RECIP_SEED_BITS)) & ((1u << TARN_RECIP_SEED_BITS) - 1u);
-    uint32_t y = (uint32_t)tarn_recip_seed_q15[seed_index] << 15;
+    const uint32_t seed = tarn_recip_seed_q15[seed_index];
+    if (newton_steps == 0u) return seed << 15;
+    uint32_t y = recip_first_step(m, seed);
     /* more steps than the maximum gain nothing; clamping also bounds the time */
     unsigned steps = newton_steps < TARN_RECIP_STEPS_MAX ? newton_steps : TARN_RECIP_STEPS_MAX;
-    for (unsigned step = 0; step < steps; step++) y = recip_newton_step(m, y);
+    for (unsigned step = 1; step < steps; step++) y = recip_newton_step(m, y);
     return y;
 }
 

@@ -15,6 +15,7 @@
 #include <cmocka.h>
 
 #include "accuracy_math.h"
+#include "math_tables.h"
 #include "tarn_math.h"
 #include "tarn_render.h"
 
@@ -193,6 +194,43 @@ static void recip_q30_limits(void **state)
     /* tarn_recip_u32 is the same mantissa scaled and rounded: 2^32 / 3 and 2^32 / 6 */
     assert_int_equal(tarn_recip_u32(3, 2), tarn_recip_q30(3u << 30, 2));
     assert_int_equal(tarn_recip_u32(6, 2), (tarn_recip_q30(3u << 30, 2) + 1u) >> 1);
+}
+
+/* Newton's steps as 64-bit arithmetic writes them, for the mantissa's documented
+ * algorithm: the seed from the table, then y' = y + y (1 - m y) in Q2.30. */
+static uint32_t recip_q30_by_64_bits(uint32_t m, unsigned steps)
+{
+    const uint32_t index = (m >> (31u - TARN_RECIP_SEED_BITS)) & ((1u << TARN_RECIP_SEED_BITS) - 1u);
+    uint32_t y = (uint32_t)tarn_recip_seed_q15[index] << 15;
+    for (unsigned k = 0; k < steps; k++) {
+        const uint32_t m_y = (uint32_t)(((uint64_t)m * y) >> 32);
+        const uint32_t error = m_y <= (1u << 30) ? (1u << 30) - m_y : m_y - (1u << 30);
+        const uint32_t change = (uint32_t)(((uint64_t)y * (error << 2)) >> 32);
+        y = m_y <= (1u << 30) ? y + change : y - change;
+    }
+    return y;
+}
+
+/* The first step takes products by the 16-bit seed alone: it must give the same
+ * number as the full products, for every seed bucket and across each one. */
+static void recip_q30_steps_match_64_bit_arithmetic(void **state)
+{
+    (void)state;
+    uint64_t random = 0x9E3779B97F4A7C15u;
+    for (uint32_t n = 0; n < (1u << 21); n++) {
+        random ^= random << 13;
+        random ^= random >> 7;
+        random ^= random << 17;
+        /* each seed bucket's first and last mantissa, then random ones */
+        const uint32_t bucket_shift = 31u - TARN_RECIP_SEED_BITS, last = (1u << bucket_shift) - 1u;
+        const uint32_t m = n < (2u << TARN_RECIP_SEED_BITS)
+            ? 0x80000000u | (n >> 1) << bucket_shift | ((n & 1u) ? last : 0u)
+            : (uint32_t)random | 0x80000000u;
+        for (unsigned steps = 0; steps <= TARN_RECIP_STEPS_MAX; steps++)
+            if (tarn_recip_q30(m, steps) != recip_q30_by_64_bits(m, steps))
+                fail_msg("m=%08x steps=%u: %08x, by 64 bits %08x", m, steps, tarn_recip_q30(m, steps),
+                         recip_q30_by_64_bits(m, steps));
+    }
 }
 
 static uint64_t next_random(uint64_t *state)
@@ -400,6 +438,7 @@ int main(void)
         cmocka_unit_test(recip_sweeps_stay_within_documented_bounds),
         cmocka_unit_test(recip_limits),
         cmocka_unit_test(recip_q30_limits),
+        cmocka_unit_test(recip_q30_steps_match_64_bit_arithmetic),
         cmocka_unit_test(recip_extra_steps_clamp),
         cmocka_unit_test(divide_is_exact),
         cmocka_unit_test(sin_cos_every_angle_within_documented_bound),
