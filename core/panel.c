@@ -100,16 +100,49 @@ static int tile_fits(const tarn_panel *panel, const tarn_tile *tile)
            (uint32_t)tile->y + tile->height <= panel->height;
 }
 
+/* Dither thresholds, the 4x4 Bayer matrix indexed by (y & 3) * 4 + (x & 3). */
+static const uint8_t bayer4[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
+
+/* floor((value * levels + threshold) / 255) for value <= 255, levels <= 63 and
+ * threshold < 256: the numerator stays below 16575, where multiplying by 0x8081 and
+ * shifting by 23 divides by 255 exactly (the error stays under 1/255 of a step), so
+ * the Cortex-M0 needs no division. */
+static uint32_t quantise(uint32_t value, uint32_t levels, uint32_t threshold)
+{
+    return ((value * levels + threshold) * 0x8081u) >> 23;
+}
+
+/* Rounding to nearest is the threshold 127 (255 is odd, so there are no ties). The
+ * dither replaces it with 16 * bayer + 8, from 8 to 248: the same as adding between
+ * -0.47 and +0.47 of an output step before rounding, evenly spread over each 4x4 block.
+ * value * levels + threshold never reaches 256 * levels, so the result cannot leave
+ * the channel's range: the saturation is built in. This is the threshold of pixel
+ * (x, y) of the frame. */
+static uint32_t dither_threshold(uint32_t x, uint32_t y, int dither)
+{
+    return dither ? 16u * bayer4[(y & 3u) * 4u + (x & 3u)] + 8u : 127u;
+}
+
+static uint16_t rgb565_at_threshold(uint32_t rgb, uint32_t threshold)
+{
+    uint32_t r = quantise((rgb >> 16) & 0xFFu, 31u, threshold);
+    uint32_t g = quantise((rgb >> 8) & 0xFFu, 63u, threshold);
+    uint32_t b = quantise(rgb & 0xFFu, 31u, threshold);
+    return (uint16_t)((r << 11) | (g << 5) | b);
+}
+
 /* Rows [first, first + count) of the tile as RGB565, high byte first, dithered at
- * frame positions, `out_stride` bytes apart in `out`. */
+ * frame positions, `out_stride` bytes apart in `out`. A row's four thresholds are
+ * looked up once: they repeat every four pixels. */
 static void convert_rows(uint8_t *out, size_t out_stride, const tarn_tile *tile, uint16_t first,
                          uint16_t count, int dither)
 {
     for (uint16_t row = first; row < first + count; row++, out += out_stride) {
         const uint32_t *rgb = tile->rgb + (size_t)row * tile->stride;
+        uint32_t thresholds[4];
+        for (uint32_t k = 0; k < 4u; k++) thresholds[k] = dither_threshold(tile->x + k, tile->y + row, dither);
         for (uint16_t i = 0; i < tile->width; i++)
-            put_u16_be(out + 2u * i,
-                       tarn_rgb565(rgb[i], (uint16_t)(tile->x + i), (uint16_t)(tile->y + row), dither));
+            put_u16_be(out + 2u * i, rgb565_at_threshold(rgb[i], thresholds[i & 3u]));
     }
 }
 
@@ -218,28 +251,7 @@ tarn_status tarn_panel_band_add_tile(tarn_panel_band *band, const tarn_tile *til
     return send_band(band) == 0 ? TARN_OK : TARN_ERR_SINK;
 }
 
-/* Dither thresholds, the 4x4 Bayer matrix indexed by (y & 3) * 4 + (x & 3). */
-static const uint8_t bayer4[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
-
-/* floor((value * levels + threshold) / 255) for value <= 255, levels <= 63 and
- * threshold < 256: the numerator stays below 16575, where multiplying by 0x8081 and
- * shifting by 23 divides by 255 exactly (the error stays under 1/255 of a step), so
- * the Cortex-M0 needs no division. */
-static uint32_t quantise(uint32_t value, uint32_t levels, uint32_t threshold)
-{
-    return ((value * levels + threshold) * 0x8081u) >> 23;
-}
-
-/* Rounding to nearest is the threshold 127 (255 is odd, so there are no ties). The
- * dither replaces it with 16 * bayer + 8, from 8 to 248: the same as adding between
- * -0.47 and +0.47 of an output step before rounding, evenly spread over each 4x4 block.
- * value * levels + threshold never reaches 256 * levels, so the result cannot leave
- * the channel's range: the saturation is built in. */
 uint16_t tarn_rgb565(uint32_t rgb, uint16_t x, uint16_t y, int dither)
 {
-    uint32_t threshold = dither ? 16u * bayer4[(y & 3u) * 4u + (x & 3u)] + 8u : 127u;
-    uint32_t r = quantise((rgb >> 16) & 0xFFu, 31u, threshold);
-    uint32_t g = quantise((rgb >> 8) & 0xFFu, 63u, threshold);
-    uint32_t b = quantise(rgb & 0xFFu, 31u, threshold);
-    return (uint16_t)((r << 11) | (g << 5) | b);
+    return rgb565_at_threshold(rgb, dither_threshold(x, y, dither));
 }
