@@ -87,14 +87,13 @@ unsigned tarn_cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3],
     return all;
 }
 
-/* The view vertex of a cached vertex, its position alone. */
-static tarn_view_vertex view_vertex_of(const tarn_cached_vertex *vertex)
+/* A cached vertex's view position into *v, and nothing else: the callers read the
+ * position alone or write every other field (zeroing the rest cost a memset). */
+static void set_view_position(tarn_view_vertex *v, const tarn_cached_vertex *vertex)
 {
-    tarn_view_vertex v = {0};
-    v.x = vertex->x;
-    v.y = vertex->y;
-    v.d = vertex->d;
-    return v;
+    v->x = vertex->x;
+    v->y = vertex->y;
+    v->d = vertex->d;
 }
 
 /* The slot that still holds the vertex, or NULL once another took it over. */
@@ -108,7 +107,8 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
                             tarn_screen_vertex *screen)
 {
     if (!(vertex->state & TARN_CACHED_PROJECTED)) {
-        const tarn_view_vertex v = view_vertex_of(vertex);
+        tarn_view_vertex v;
+        set_view_position(&v, vertex);
         tarn_project_position(cache->view, &v, screen);
         vertex->screen_x = (int16_t)screen->x;
         vertex->screen_y = (int16_t)screen->y;
@@ -130,7 +130,7 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
 void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_view_vertex *v)
 {
     const tarn_mesh *mesh = cache->mesh;
-    *v = view_vertex_of(vertex);
+    set_view_position(v, vertex);
     if (!(vertex->state & TARN_CACHED_SHADED)) {
         tarn_vertex_shade(cache->view, cache->xform, mesh, vertex->index, v);
         for (int c = 0; c < 3; c++) vertex->lit[c] = (uint16_t)v->lit[c];
