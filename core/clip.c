@@ -117,7 +117,8 @@ int tarn_clip_polygon(const tarn_view *view, unsigned planes,
 void tarn_clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_vertex v[3],
                         const tarn_object *object, tarn_triangle_sink sink, void *ctx)
 {
-    tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX] = {v[0], v[1], v[2]};
+    tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX]; /* the corners past count unread: not zeroed */
+    for (int i = 0; i < 3; i++) polygon[i] = v[i];
     const int count = tarn_clip_polygon(view, planes, polygon, 3);
     if (count < 3) return;
     /* a fan around the first corner: each corner projected once, in one place */

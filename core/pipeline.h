@@ -43,9 +43,15 @@ typedef struct {
 
 /* Per-object constants for one frame. */
 typedef struct {
-    int32_t to_view[3][3];  /* basis * scale * rotation, `to_view_frac_bits` fraction bits */
+    /* to_view (basis * scale * rotation, `to_view_frac_bits` fraction bits, entries
+     * within +-2^29) as high * 2^16 + low, for 32-bit products in tarn_vertex_position */
+    uint16_t to_view_low[3][3];
+    int16_t to_view_high[3][3];
+    /* per row, what tarn_vertex_position's sum starts from (the object's origin in view
+     * space, the rounding half and the offsets of its unsigned forms), in 16-bit columns */
+    uint16_t row_start_low[3];
+    uint32_t row_start_middle[3], row_start_high[3];
     unsigned to_view_frac_bits;
-    tarn_q16 origin[3];     /* the object's origin in view space, Q16.16 */
     tarn_q16 light_dir[3];  /* light direction in object space, Q16.16 unit */
     uint32_t tint_q16[3];   /* material colour / 255 per channel, Q0.16 */
     int unlit;              /* the material ignores the light */

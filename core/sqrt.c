@@ -2,13 +2,13 @@
 #include "tarn_math.h"
 #include "math_tables.h"
 
-uint64_t tarn_isqrt_u64(uint64_t x)
+uint32_t tarn_isqrt_u32(uint32_t x)
 {
     /* Digit by digit in base 4, as in long division: `bit` walks down the even powers
      * of two from the highest one not above x; `root` holds the root's bits found so
      * far, scaled so that root + bit is what the next digit would subtract from x. */
-    uint64_t root = 0u;
-    uint64_t bit = (uint64_t)1 << 62;
+    uint32_t root = 0u;
+    uint32_t bit = (uint32_t)1 << 30;
     while (bit > x) bit >>= 2;
     while (bit != 0u) {
         if (x >= root + bit) {
@@ -22,9 +22,22 @@ uint64_t tarn_isqrt_u64(uint64_t x)
     return root;
 }
 
-uint32_t tarn_isqrt_u32(uint32_t x)
+uint64_t tarn_isqrt_u64(uint64_t x)
 {
-    return (uint32_t)tarn_isqrt_u64(x);
+    /* With e the least whole number for which q = floor(x / 4^e) fits 32 bits (0 for
+     * an x below 2^32) and r = isqrt(q): r^2 <= q <= x / 4^e and (r + 1)^2 >= q + 1 >
+     * x / 4^e, so the root R of x lies in [r 2^e, (r + 1) 2^e), below 2^32 (r < 2^16,
+     * e <= 16). Its last e bits are then found from the top down, each kept when the
+     * square of the root with it is not above x: a 32-bit root, 64-bit squares only
+     * for the last bits. */
+    const uint32_t top = (uint32_t)(x >> 32);
+    const unsigned e = top == 0u ? 0u : (33u - tarn_clz32(top)) >> 1; /* 2e: top's bit length or one more */
+    uint32_t root = tarn_isqrt_u32((uint32_t)(x >> (2u * e))) << e;
+    for (unsigned b = e; b-- > 0u;) {
+        const uint32_t candidate = root | ((uint32_t)1 << b);
+        if (tarn_mul_u32_wide(candidate, candidate) <= x) root = candidate;
+    }
+    return root;
 }
 
 #define ONE_Q28 (1u << 28)

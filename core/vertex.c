@@ -8,10 +8,30 @@ static unsigned bit_length_u64(uint64_t v)
     return n;
 }
 
+/* The view position's row i is floor(S / 2^f), saturated, f = to_view_frac_bits
+ * (11..30), where S = sum_k m_k p_k + origin_i 2^f + 2^(f-1): the rounded shift of
+ * the products' sum plus the origin, taken in one step (adding a multiple of 2^f
+ * before the floor is adding it after). tarn_vertex_position takes S in 32-bit
+ * words, with each product split into four of 16-bit halves:
+ *   m = mh 2^16 + ml   (ml in [0, 2^16), mh in [-2^13, 2^13] as |m| <= 2^29)
+ *   P = p + 2^31 = ph 2^16 + pl   (the coordinate's bits with the top one flipped:
+ *                                  ph, pl in [0, 2^16))
+ * so m p = mh ph 2^32 + (mh pl + ml ph) 2^16 + ml pl - m 2^31. The -2^31 sum_k m_k
+ * is the same for every vertex, and goes into the start with the origin and the half.
+ * Column sums (weights 1, 2^16, 2^32), each product below 2^32 unsigned or 2^29 in
+ * magnitude:
+ *   low    = start_low + sum lo16(ml pl)                       < 2^18
+ *   middle = start_middle + sum (hi16(ml pl) + lo16(ml ph) + mh pl)
+ *   high   = start_high + sum (hi16(ml ph) + mh ph)            (modulo 2^32)
+ * The three mh pl lie within +-3 2^29, so the middle starts 3 2^29 = 0x6000 2^16 up
+ * (and the high 0x6000 down): it stays in [0, 3 2^30 + 2^19), unsigned without
+ * wrapping, and its carry into the high word is a plain shift. |S| < 2^63 (|m p| <=
+ * 2^60, |origin 2^f| <= 2^61), so the high word, taken modulo 2^32, is S's. */
 /* to_view = basis (Q1.30) * scale * rotation (Q16.16 each), kept with as many
- * fraction bits as the largest entry allows (at most 30). */
+ * fraction bits as the largest entry allows (at most 30), split as above with the
+ * rows' starts from the object's origin in view space. */
 static void object_to_view_matrix(const tarn_view *view, const tarn_object *object,
-                                  tarn_object_xform *xform)
+                                  tarn_object_xform *xform, const tarn_q16 origin[3])
 {
     int64_t product[3][3]; /* Q?.46 */
     uint64_t largest = 0;
@@ -31,14 +51,27 @@ static void object_to_view_matrix(const tarn_view *view, const tarn_object *obje
      * the three-term sums in tarn_vertex_position cannot overflow. */
     unsigned drop = bit_length_u64(largest) > 29 ? bit_length_u64(largest) - 29 : 0;
     if (drop < 16) drop = 16; /* at most 30 fraction bits */
-    xform->to_view_frac_bits = 46 - drop;
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            xform->to_view[i][j] = (int32_t)tarn_round_shift_i64(product[i][j], drop);
+    const unsigned f = 46 - drop;
+    xform->to_view_frac_bits = f;
+    for (int i = 0; i < 3; i++) {
+        int32_t entries = 0; /* within +-3 2^29 */
+        for (int j = 0; j < 3; j++) {
+            const int32_t m = (int32_t)tarn_round_shift_i64(product[i][j], drop);
+            const int32_t low = (int32_t)((uint32_t)m & 0xFFFFu);
+            xform->to_view_low[i][j] = (uint16_t)low;
+            xform->to_view_high[i][j] = (int16_t)((m - low) / 65536); /* exact */
+            entries += m;
+        }
+        const int64_t start = tarn_mul_i32_wide(origin[i], (int32_t)1 << f) + ((int32_t)1 << (f - 1u)) -
+                              2 * tarn_mul_i32_wide(entries, (int32_t)1 << 30);
+        const uint64_t bits = (uint64_t)start;
+        xform->row_start_low[i] = (uint16_t)(bits & 0xFFFFu);
+        xform->row_start_middle[i] = ((uint32_t)bits >> 16) + 0x60000000u;
+        xform->row_start_high[i] = (uint32_t)(bits >> 32) - 0x6000u;
+    }
 }
 
-static void object_origin_in_view(const tarn_view *view, const tarn_object *object,
-                                  tarn_object_xform *xform)
+static void object_origin_in_view(const tarn_view *view, const tarn_object *object, tarn_q16 origin[3])
 {
     const int64_t offset[3] = {(int64_t)object->position.x - view->eye.x,
                                (int64_t)object->position.y - view->eye.y,
@@ -46,7 +79,7 @@ static void object_origin_in_view(const tarn_view *view, const tarn_object *obje
     for (int i = 0; i < 3; i++) {
         int64_t sum = 0;
         for (int k = 0; k < 3; k++) sum += view->basis[i][k] * offset[k];
-        xform->origin[i] = tarn_sat_i64_to_i32(tarn_round_shift_i64(sum, 30));
+        origin[i] = tarn_sat_i64_to_i32(tarn_round_shift_i64(sum, 30));
     }
 }
 
@@ -65,12 +98,13 @@ static void normal_to_view_matrix(const tarn_view *view, const tarn_object *obje
 void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
                              tarn_object_xform *xform)
 {
-    object_to_view_matrix(view, object, xform);
+    tarn_q16 origin[3];
+    object_origin_in_view(view, object, origin);
+    object_to_view_matrix(view, object, xform, origin);
     const tarn_water *water = object->material->water;
     xform->fresnel = TARN_LINK_WATER && water != NULL && (TARN_LINK_WATER_FEATURES & TARN_WATER_FRESNEL) != 0 &&
                      (water->features & TARN_WATER_FRESNEL);
     if (xform->fresnel) normal_to_view_matrix(view, object, xform);
-    object_origin_in_view(view, object, xform);
     /* The rotation is orthonormal: object-space light = rotation^T * light. */
     const tarn_q16 light[3] = {view->light_dir.x, view->light_dir.y, view->light_dir.z};
     for (int j = 0; j < 3; j++) {
@@ -87,12 +121,36 @@ void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
 void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,
                           tarn_view_vertex *out)
 {
+    /* the arithmetic and its bounds: above object_to_view_matrix. Each coordinate's
+     * bits with the top one flipped, p + 2^31, in 16-bit halves. */
+    const uint32_t x = (uint32_t)p->x ^ 0x80000000u, y = (uint32_t)p->y ^ 0x80000000u,
+                   z = (uint32_t)p->z ^ 0x80000000u;
+    const uint32_t half[6] = {x & 0xFFFFu, x >> 16, y & 0xFFFFu, y >> 16, z & 0xFFFFu, z >> 16};
+    const unsigned f = xform->to_view_frac_bits;
     tarn_q16 *dest[3] = {&out->x, &out->y, &out->d};
     for (int i = 0; i < 3; i++) {
-        int64_t sum = tarn_mul_i32_wide(xform->to_view[i][0], p->x) + tarn_mul_i32_wide(xform->to_view[i][1], p->y) +
-                      tarn_mul_i32_wide(xform->to_view[i][2], p->z);
-        int64_t view_q16 = tarn_round_shift_i64(sum, xform->to_view_frac_bits) + xform->origin[i];
-        *dest[i] = tarn_sat_i64_to_i32(view_q16);
+        uint32_t low = xform->row_start_low[i], middle = xform->row_start_middle[i],
+                 high = xform->row_start_high[i];
+        for (int k = 0; k < 3; k++) {
+            const uint32_t ml = xform->to_view_low[i][k];
+            const int32_t mh = xform->to_view_high[i][k];
+            const uint32_t pl = half[2 * k], ph = half[2 * k + 1];
+            const uint32_t ll = ml * pl, lh = ml * ph;
+            low += ll & 0xFFFFu;
+            middle += (ll >> 16) + (lh & 0xFFFFu) + (uint32_t)(mh * (int32_t)pl);
+            high += (lh >> 16) + (uint32_t)(mh * (int32_t)ph);
+        }
+        middle += low >> 16;
+        high += middle >> 16;
+        const uint32_t word = (middle << 16) | (low & 0xFFFFu);
+        /* floor(S / 2^f) = high 2^(32-f) + floor(word / 2^f) when that fits 32 bits,
+         * which is when the signed high word lies in [-2^(f-1), 2^(f-1)) */
+        int32_t v;
+        if (((high + (1u << (f - 1u))) >> f) == 0u)
+            v = (int32_t)((high << (32u - f)) | (word >> f));
+        else
+            v = (high >> 31) ? INT32_MIN : INT32_MAX;
+        *dest[i] = v;
     }
 }
 

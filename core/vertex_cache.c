@@ -17,21 +17,28 @@ int32_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half)
     return slope > 1023u ? TARN_TILE_EDGE_UNTESTED : -(int32_t)slope; /* no bound that small */
 }
 
+/* The bound on a vertex's signed offset beyond a tile edge (tarn_tile_edges): at
+ * most 2^21 * 1023 in magnitude, so its negation is safe too. */
+static inline int32_t edge_bound(int32_t depth_q6, int32_t slope)
+{
+    return (slope >= 0 ? depth_q6 : depth_q6 + 1) * slope;
+}
+
 /* The tile edges (bits 0..3) the vertex lies beyond; none for a vertex not in
- * front of the near plane, or without a tile. */
+ * front of the near plane, or without a tile. Edges without a slope are not
+ * tested at all (their bits would be masked off). */
 static unsigned beyond_tile_edges(const tarn_tile_edges *tile, const tarn_view *view, const tarn_view_vertex *v)
 {
     if (tile == NULL || v->d < view->near) return 0;
     const int32_t depth_q6 = v->d >> 10; /* d >= near > 0: below 2^21 */
+    const unsigned tested = tile->tested;
     unsigned beyond = 0;
-    for (int k = 0; k < 4; k++) {
-        const int32_t slope = tile->slope_q10[k], offset = k < 2 ? v->x : v->y;
-        const int32_t bound = (slope >= 0 ? depth_q6 : depth_q6 + 1) * slope; /* |bound| <= 2^21 * 1023 */
-        /* offset <= bound for the left and bottom edges, -offset <= bound for the others */
-        const int negated = k == 1 || k == 2;
-        if (negated ? offset >= -bound : offset <= bound) beyond |= 1u << k;
-    }
-    return beyond & tile->tested;
+    /* x <= bound for the left edge, -x <= bound for the right; y likewise, bottom and top */
+    if ((tested & 1u) && v->x <= edge_bound(depth_q6, tile->slope_q10[0])) beyond |= 1u;
+    if ((tested & 2u) && v->x >= -edge_bound(depth_q6, tile->slope_q10[1])) beyond |= 2u;
+    if ((tested & 4u) && v->y >= -edge_bound(depth_q6, tile->slope_q10[2])) beyond |= 4u;
+    if ((tested & 8u) && v->y <= edge_bound(depth_q6, tile->slope_q10[3])) beyond |= 8u;
+    return beyond;
 }
 
 void tarn_vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
@@ -87,14 +94,13 @@ unsigned tarn_cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3],
     return all;
 }
 
-/* The view vertex of a cached vertex, its position alone. */
-static tarn_view_vertex view_vertex_of(const tarn_cached_vertex *vertex)
+/* A cached vertex's view position into *v, and nothing else: the callers read the
+ * position alone or write every other field (zeroing the rest cost a memset). */
+static void set_view_position(tarn_view_vertex *v, const tarn_cached_vertex *vertex)
 {
-    tarn_view_vertex v = {0};
-    v.x = vertex->x;
-    v.y = vertex->y;
-    v.d = vertex->d;
-    return v;
+    v->x = vertex->x;
+    v->y = vertex->y;
+    v->d = vertex->d;
 }
 
 /* The slot that still holds the vertex, or NULL once another took it over. */
@@ -108,7 +114,8 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
                             tarn_screen_vertex *screen)
 {
     if (!(vertex->state & TARN_CACHED_PROJECTED)) {
-        const tarn_view_vertex v = view_vertex_of(vertex);
+        tarn_view_vertex v;
+        set_view_position(&v, vertex);
         tarn_project_position(cache->view, &v, screen);
         vertex->screen_x = (int16_t)screen->x;
         vertex->screen_y = (int16_t)screen->y;
@@ -130,7 +137,7 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
 void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_view_vertex *v)
 {
     const tarn_mesh *mesh = cache->mesh;
-    *v = view_vertex_of(vertex);
+    set_view_position(v, vertex);
     if (!(vertex->state & TARN_CACHED_SHADED)) {
         tarn_vertex_shade(cache->view, cache->xform, mesh, vertex->index, v);
         for (int c = 0; c < 3; c++) vertex->lit[c] = (uint16_t)v->lit[c];
