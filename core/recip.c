@@ -9,14 +9,25 @@
 #define ONE_Q30 (1u << 30)
 #define TOP_BIT 0x80000000u
 
+/* A Newton step for 1/m is y' = y + y (1 - m y), from m y (Q2.30, close to 1). In
+ * Q2.30, y (1 - m y) is y * |1 - m y| / 2^30 = mul_hi(y, |1 - m y| << 2); the seed
+ * keeps |1 - m y| below 2^-8, so the shift cannot overflow. */
+static uint32_t newton_error(uint32_t m_y)
+{
+    return (m_y <= ONE_Q30 ? ONE_Q30 - m_y : m_y - ONE_Q30) << 2;
+}
+
+/* y', given m y and the product y * newton_error(m y) / 2^32. */
+static uint32_t newton_corrected(uint32_t y, uint32_t m_y, uint32_t change)
+{
+    return m_y <= ONE_Q30 ? y + change : y - change;
+}
+
 /* One Newton step for 1/m. m in Q0.32, y in Q2.30 (1/m is in (1, 2]). */
 static uint32_t recip_newton_step(uint32_t m, uint32_t y)
 {
-    uint32_t m_y = tarn_mul_hi_u32(m, y); /* Q2.30, close to 1 */
-    /* y (1 - m y) in Q2.30 is y * |1 - m y| / 2^30 = mul_hi(y, |1 - m y| << 2); the
-     * seed keeps |1 - m y| below 2^-8, so the shift cannot overflow. */
-    if (m_y <= ONE_Q30) return y + tarn_mul_hi_u32(y, (ONE_Q30 - m_y) << 2);
-    return y - tarn_mul_hi_u32(y, (m_y - ONE_Q30) << 2);
+    const uint32_t m_y = tarn_mul_hi_u32(m, y);
+    return newton_corrected(y, m_y, tarn_mul_hi_u32(y, newton_error(m_y)));
 }
 
 /* mul_hi(x, seed << 15) = floor(x * seed / 2^17), exactly, from x's halves times the
@@ -31,9 +42,8 @@ static uint32_t times_seed(uint32_t x, uint32_t seed)
 /* recip_newton_step(m, seed << 15), the same number, by times_seed. */
 static uint32_t recip_first_step(uint32_t m, uint32_t seed)
 {
-    const uint32_t y = seed << 15, m_y = times_seed(m, seed);
-    if (m_y <= ONE_Q30) return y + times_seed((ONE_Q30 - m_y) << 2, seed);
-    return y - times_seed((m_y - ONE_Q30) << 2, seed);
+    const uint32_t m_y = times_seed(m, seed);
+    return newton_corrected(seed << 15, m_y, times_seed(newton_error(m_y), seed));
 }
 
 /* 1/m in Q2.30 for m in Q0.32 with its top bit set. */
