@@ -221,21 +221,47 @@ static tarn_water_input water_input(const attribute_set *set, const uint32_t val
     return in;
 }
 
+/* What one row keeps for its pixels' attributes, by the triangle's perspective
+ * mode: the affine origin, or the span cache. */
+typedef union {
+    uint32_t affine_origin[ATTRIBUTES_MAX];
+    span_cache span;
+} row_attributes;
+
+static void row_attributes_start(row_attributes *row, const tarn_quality *quality, const attribute_set *set,
+                                 const triangle_setup *t, int32_t j)
+{
+    if (set->perspective == TARN_PERSPECTIVE_AFFINE) {
+        affine_row_origin(set, t, j, row->affine_origin);
+    } else if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN) {
+        row->span.limit = INT32_MIN;
+        row->span.length = -1;
+        row->span.log2_span = 31u - tarn_clz32(quality->perspective_span);
+    }
+}
+
+/* The T values of every attribute at pixel (i, j) of the row. */
+static void row_attributes_at(row_attributes *row, const tarn_quality *quality, const attribute_set *set,
+                              const triangle_setup *t, int32_t i, int32_t j, uint32_t out[ATTRIBUTES_MAX])
+{
+    if (set->perspective == TARN_PERSPECTIVE_AFFINE)
+        affine_t(set, row->affine_origin, i, out);
+    else if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN)
+        span_t(set, t, quality->recip_newton_steps, i, j, &row->span, out);
+    else
+        exact_t(set, t, i, j, quality->recip_newton_steps, out);
+}
+
 /* One covered pixel: its attributes, its colour (or water), its depth. */
 static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
                        const tarn_texture *texture, int32_t i, int32_t j, uint32_t inv_depth,
-                       const uint32_t affine_origin[ATTRIBUTES_MAX], span_cache *cache, int32_t offset)
+                       row_attributes *row, int32_t offset)
 {
     const tarn_quality *quality = tile->quality;
     const uint32_t closer = closer_depth(tile->depth, quality->depth_bits, offset, inv_depth);
     if (closer == 0u) return;
     uint32_t values[ATTRIBUTES_MAX];
-    if (set->perspective == TARN_PERSPECTIVE_AFFINE)
-        affine_t(set, affine_origin, i, values);
-    else if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN)
-        span_t(set, t, quality->recip_newton_steps, i, j, cache, values);
-    else
-        exact_t(set, t, i, j, quality->recip_newton_steps, values);
+    row_attributes_at(row, quality, set, t, i, j, values);
     if (TARN_LINK_WATER && tile->water != NULL) {
         const tarn_water_input in = water_input(set, values, inv_depth);
         write_water_pixel(tile, offset, tarn_water_shade(tile->water, i, j, &in));
@@ -264,17 +290,13 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
         exact_step(&depth, &set->depth.step_x, &set->depth.den);
     }
     if (i > i1) return;
-    uint32_t affine_origin[ATTRIBUTES_MAX];
-    if (set->perspective == TARN_PERSPECTIVE_AFFINE) affine_row_origin(set, t, j, affine_origin);
-    span_cache cache;
-    cache.limit = INT32_MIN;
-    cache.length = -1;
-    cache.log2_span = 31u - tarn_clz32(tile->quality->perspective_span);
-    const int32_t row = (j - tile->origin_y) * tile->stride - tile->origin_x;
+    row_attributes row;
+    row_attributes_start(&row, tile->quality, set, t, j);
+    const int32_t offset = (j - tile->origin_y) * tile->stride - tile->origin_x;
     /* each edge is linear along the row, so the covered pixels are one run: after
      * it, nothing more is covered */
     for (; i <= i1 && (e0 | e1 | e2) >= 0; i++) {
-        draw_pixel(tile, t, set, texture, i, j, depth.quotient, affine_origin, &cache, row + i);
+        draw_pixel(tile, t, set, texture, i, j, depth.quotient, &row, offset + i);
         e0 += step0;
         e1 += step1;
         e2 += step2;
