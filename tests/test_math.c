@@ -368,32 +368,23 @@ static void sin_cos_q30_within_four_units(void **state)
 
 /* ---- square roots ------------------------------------------------------------------*/
 
-/* The bit-by-bit 64-bit root that tarn_isqrt_u64 replaced, as the reference. */
-static uint64_t isqrt_u64_bitwise(uint64_t x)
+/* 1 when r is floor(sqrt(x)): r^2 <= x < (r + 1)^2, with (r + 1)^2 beyond 64 bits
+ * only for r = 2^32 - 1, where it exceeds every x. */
+static int is_floor_root(uint64_t x, uint64_t r)
 {
-    uint64_t root = 0u, bit = (uint64_t)1 << 62;
-    while (bit > x) bit >>= 2;
-    while (bit != 0u) {
-        if (x >= root + bit) {
-            x -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    return root;
+    if (r > 0xFFFFFFFFu || r * r > x) return 0;
+    return r == 0xFFFFFFFFu || (r + 1u) * (r + 1u) > x;
 }
 
 /* Every power of two's neighbourhood, every square's neighbours, and random values of
- * every bit length, against the bitwise root. */
-static void isqrt_u64_matches_the_bitwise_root(void **state)
+ * every bit length: each root is the floor of the square root. */
+static void isqrt_u64_is_the_floor_root(void **state)
 {
     (void)state;
     for (unsigned b = 0; b < 64; b++)
         for (int64_t d = -70; d <= 70; d++) {
             const uint64_t x = ((uint64_t)1 << b) + (uint64_t)d;
-            assert_true(tarn_isqrt_u64(x) == isqrt_u64_bitwise(x));
+            assert_true(is_floor_root(x, tarn_isqrt_u64(x)));
         }
     uint64_t seed = 0x9E3779B97F4A7C15u;
     for (int i = 0; i < 400000; i++) {
@@ -401,10 +392,10 @@ static void isqrt_u64_matches_the_bitwise_root(void **state)
         seed ^= seed >> 7;
         seed ^= seed << 17;
         const uint64_t x = seed >> (i % 64);
-        assert_true(tarn_isqrt_u64(x) == isqrt_u64_bitwise(x));
-        const uint64_t r = isqrt_u64_bitwise(x); /* and around its square */
-        for (uint64_t s = r * r - 2u, k = 0; k < 5u; k++, s++)
-            assert_true(tarn_isqrt_u64(s) == isqrt_u64_bitwise(s));
+        const uint64_t r = tarn_isqrt_u64(x);
+        assert_true(is_floor_root(x, r));
+        for (uint64_t s = r * r - 2u, k = 0; k < 5u; k++, s++) /* around its square */
+            assert_true(is_floor_root(s, tarn_isqrt_u64(s)));
     }
 }
 
@@ -485,7 +476,7 @@ int main(void)
         cmocka_unit_test(sin_cos_exact_points_range_and_symmetry),
         cmocka_unit_test(sin_cos_q30_within_four_units),
         cmocka_unit_test(isqrt_is_exact),
-        cmocka_unit_test(isqrt_u64_matches_the_bitwise_root),
+        cmocka_unit_test(isqrt_u64_is_the_floor_root),
         cmocka_unit_test(rsqrt_sweep_within_documented_bound),
         cmocka_unit_test(rsqrt_limits),
         cmocka_unit_test(depth16_codes_are_monotone_and_fine),
