@@ -67,12 +67,7 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
         return 1;
     }
     uint64_t pixels = (uint64_t)scene_config.width * scene_config.height;
-    report_text(&r, "target board=");
-    report_text(&r, board_name);
-    report_text(&r, " scene=" FW_SCENE_LABEL " size=");
-    report_number(&r, scene_config.width);
-    report_text(&r, "x");
-    report_number(&r, scene_config.height);
+    report_frame_header(&r, "target", board_name, FW_SCENE_LABEL, scene_config.width, scene_config.height);
     report_text(&r, " insn_per_pixel=");
     report_number(&r, report_per_pixel(frame_instructions[0] + frame_instructions[1], 2u * pixels));
     report_text(&r, " render_insn_per_pixel=");

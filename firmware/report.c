@@ -63,3 +63,17 @@ uint64_t report_counter_check(void)
     uint64_t t2 = board_instructions();
     return (t2 - t1) - (t1 - t0);
 }
+
+void report_frame_header(report *r, const char *kind, const char *board, const char *scene,
+                         uint32_t width, uint32_t height)
+{
+    report_text(r, kind);
+    report_text(r, " board=");
+    report_text(r, board);
+    report_text(r, " scene=");
+    report_text(r, scene);
+    report_text(r, " size=");
+    report_number(r, width);
+    report_text(r, "x");
+    report_number(r, height);
+}

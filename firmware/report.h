@@ -22,6 +22,10 @@ void report_number(report *r, uint64_t value);
 /* Eight hexadecimal digits, upper case. */
 void report_hex32(report *r, uint32_t value);
 
+/* "KIND board=BOARD scene=SCENE size=WxH": how both programs' report lines begin. */
+void report_frame_header(report *r, const char *kind, const char *board, const char *scene,
+                         uint32_t width, uint32_t height);
+
 /* board_report of the text so far: 0, or non-zero when the link failed. */
 int report_send(const report *r);
 

@@ -111,12 +111,7 @@ static int __attribute__((noinline)) report_point(unsigned index, const tarn_fra
 static int __attribute__((noinline)) report_sweep(uint64_t counter)
 {
     report r = {{0}, 0};
-    report_text(&r, "sweep board=");
-    report_text(&r, board_name);
-    report_text(&r, " scene=" FW_SCENE_LABEL " size=");
-    report_number(&r, scene_config.width);
-    report_text(&r, "x");
-    report_number(&r, scene_config.height);
+    report_frame_header(&r, "sweep", board_name, FW_SCENE_LABEL, scene_config.width, scene_config.height);
     report_text(&r, " points=");
     report_number(&r, SCENE_POINT_COUNT);
     report_text(&r, " counter_check=");
