@@ -209,6 +209,7 @@ static void carve_buffers(frame_state *f, void *memory)
     f->opaque.water = NULL;
     f->opaque.water_mark = f->opaque.water_overlap = 0u;
     f->water.water = &f->water_context;
+    f->water_context.object = NULL; /* set up for the frame's first water object, kept across tiles */
     f->water.view = f->opaque.view = f->view;
     f->water.config = f->opaque.config = f->config;
 }
@@ -230,7 +231,6 @@ static tarn_pixel_rect around(int32_t x, int32_t y, int32_t size, int32_t apron,
 static void begin_water(frame_state *f)
 {
     tarn_water_context *c = &f->water_context;
-    c->object = NULL; /* set up again for the first water object of the tile */
     c->background = f->opaque.colour;
     c->background_depth = f->opaque.depth;
     c->depth_bits = f->config->quality.depth_bits;
