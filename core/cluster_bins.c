@@ -86,7 +86,7 @@ void tarn_bin_clusters(const tarn_scene *scene, const tarn_view *view, tarn_clus
         tarn_object_xform xform;
         tarn_object_xform_setup(view, object, &xform);
         tarn_vertex_cache cache;
-        tarn_vertex_cache_init(&cache, view, &xform, mesh, NULL);
+        tarn_vertex_cache_init(&cache, view, &xform, object, NULL);
         if (mesh->clusters == NULL) {
             *bins++ = bin_run(&cache, object, 0, mesh->triangle_count);
             continue;

@@ -31,6 +31,8 @@ typedef struct {
     uint32_t light_q16[3];   /* directional light colour / 255 per channel, Q0.16 */
     uint32_t ambient_q16[3]; /* ambient colour / 255 per channel, Q0.16 */
     tarn_vec3 light_dir;     /* Q16.16 unit, toward the light */
+    uint8_t static_vertices; /* the scene's static vertices apply (tarn_static_view_applies) */
+    uint8_t static_screen;   /* and so do their screen positions: the frame is theirs */
 } tarn_view;
 
 /* A vertex in view space with its shading inputs, before projection. */
@@ -63,7 +65,11 @@ typedef struct {
 #define TARN_CLIP_POLYGON_MAX 9 /* a triangle cut by six planes has at most 3 + 6 corners */
 
 void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, tarn_view *view);
+/* 1 when the scene has a static view and its camera and light are that view's. */
+int tarn_static_view_applies(const tarn_scene *scene);
 
+/* The object's transform into view space and, unless its static vertices apply
+ * (they come lit), its lighting constants. */
 void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
                              tarn_object_xform *xform);
 void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *object_pos,

@@ -50,15 +50,62 @@ static int water_valid(const tarn_water *w)
 }
 
 /* The clusters are checked even for a mesh without triangles: the walk follows
- * their runs. */
-static int mesh_valid(const tarn_mesh *m)
+ * their runs. Positions and normals are read unless static vertices stand in. */
+static int mesh_valid(const tarn_mesh *m, int needs_positions)
 {
     if (m->triangle_count > 0) {
-        if (m->positions == NULL || m->normals == NULL || m->indices == NULL) return 0;
+        if (m->indices == NULL || (needs_positions && (m->positions == NULL || m->normals == NULL))) return 0;
         for (uint32_t i = 0; i < 3u * m->triangle_count; i++)
             if (m->indices[i] >= m->vertex_count) return 0;
     }
     return clusters_valid(m);
+}
+
+/* The frame static screen positions were made for: a size and precision a frame
+ * may have (tarn_config_check's own limits). */
+static int static_view_valid(const tarn_static_view *v)
+{
+    return v->width >= 1u && v->width <= TARN_FRAME_SIZE_MAX && v->height >= 1u &&
+           v->height <= TARN_FRAME_SIZE_MAX && v->subpixel_bits >= TARN_SUBPIXEL_BITS_MIN &&
+           v->subpixel_bits <= TARN_SUBPIXEL_BITS_MAX;
+}
+
+/* A screen coordinate inside the guard band of its frame, as tarn_project_position
+ * clamps it: the edge functions' 32-bit bound rests on it. */
+static int screen_valid(int32_t subpixels, uint16_t extent, int32_t guard, unsigned s)
+{
+    return subpixels >= -((guard + 1) << s) && subpixels <= (((int32_t)extent + guard + 1) << s);
+}
+
+/* Static vertices hold what a frame would compute, in the ranges it computes them:
+ * shading that rasterizes without carrying into the next channel, and projections
+ * inside the guard band. */
+static int static_vertices_valid(const tarn_static_view *view, const tarn_static_vertex *vertices, uint32_t count)
+{
+    tarn_frame_config frame = {0};
+    frame.width = view->width;
+    frame.height = view->height;
+    const int32_t guard = tarn_guard_band_pixels(&frame);
+    for (uint32_t i = 0; i < count; i++) {
+        const tarn_static_vertex *v = &vertices[i];
+        if (v->lit[0] > 65280u || v->lit[1] > 65280u || v->lit[2] > 65280u || v->fresnel > 32768u) return 0;
+        if (v->inv_depth == 0u) continue;
+        if (v->inv_depth > (1u << 30) || !screen_valid(v->screen_x, view->width, guard, view->subpixel_bits) ||
+            !screen_valid(v->screen_y, view->height, guard, view->subpixel_bits))
+            return 0;
+    }
+    return 1;
+}
+
+/* An object's static vertices, where they apply, must be valid; where they do not,
+ * its mesh must have the positions and normals a frame computes them from. */
+static int object_vertices_valid(const tarn_scene *scene, const tarn_object *o, int static_view_applies)
+{
+    const int uses_static = TARN_LINK_STATIC_VERTICES && o->static_vertices != NULL && static_view_applies;
+    if (!uses_static && !TARN_LINK_COMPUTED_VERTICES) return 0;
+    if (uses_static && !static_vertices_valid(scene->static_view, o->static_vertices, o->mesh->vertex_count))
+        return 0;
+    return mesh_valid(o->mesh, !uses_static);
 }
 
 static int underwater_valid(const tarn_underwater *u)
@@ -71,9 +118,13 @@ tarn_status tarn_scene_check(const tarn_scene *scene)
     if (scene == NULL || (scene->object_count > 0 && scene->objects == NULL)) return TARN_ERR_SCENE;
     if (scene->camera.near <= 0 || scene->camera.far <= scene->camera.near) return TARN_ERR_SCENE;
     if (scene->underwater != NULL && !underwater_valid(scene->underwater)) return TARN_ERR_SCENE;
+    if (TARN_LINK_STATIC_VERTICES && scene->static_view != NULL && !static_view_valid(scene->static_view))
+        return TARN_ERR_SCENE;
+    const int static_view_applies = tarn_static_view_applies(scene);
     for (uint32_t i = 0; i < scene->object_count; i++) {
         const tarn_object *o = &scene->objects[i];
-        if (o->mesh == NULL || o->material == NULL || !mesh_valid(o->mesh)) return TARN_ERR_SCENE;
+        if (o->mesh == NULL || o->material == NULL || !object_vertices_valid(scene, o, static_view_applies))
+            return TARN_ERR_SCENE;
         if (o->material->texture != NULL && !texture_valid(o->material->texture)) return TARN_ERR_SCENE;
         if (o->material->water != NULL && !water_valid(o->material->water)) return TARN_ERR_SCENE;
     }

@@ -134,6 +134,22 @@ tarn_quality tarn_quality_default(void);
 #define TARN_LINK_APRON 1
 #endif
 
+/* Whether a frame can transform and light vertices itself. tarn bake sets it to 0
+ * when it gives every object static vertices (tarn_scene.h): the lighting code drops
+ * out of the image, and an object whose static vertices do not apply is then refused
+ * (TARN_ERR_SCENE). Without that file it is linked. */
+#ifndef TARN_LINK_COMPUTED_VERTICES
+#define TARN_LINK_COMPUTED_VERTICES 1
+#endif
+
+/* Whether a frame can read static vertices at all. tarn bake --static-view off sets
+ * it to 0: a scene's static view is then ignored (its meshes need their positions),
+ * and the code that checks and reads static vertices drops out. Without that file
+ * it is linked. */
+#ifndef TARN_LINK_STATIC_VERTICES
+#define TARN_LINK_STATIC_VERTICES 1
+#endif
+
 typedef struct {
     uint16_t width, height; /* pixels, 1..TARN_FRAME_SIZE_MAX */
     tarn_quality quality;

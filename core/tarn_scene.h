@@ -61,7 +61,8 @@ typedef struct {
 } tarn_cluster;
 
 typedef struct {
-    const tarn_vec3 *positions; /* object space, Q16.16 */
+    const tarn_vec3 *positions; /* object space, Q16.16; with normals, NULL only when every
+                                   object drawing the mesh has static vertices that apply */
     const tarn_vec3 *normals;   /* unit length, Q16.16, object space */
     const tarn_uv *uvs;         /* NULL if the mesh has no texture coordinates */
     const uint32_t *colours;    /* 0xRRGGBB per vertex, NULL for white */
@@ -73,6 +74,19 @@ typedef struct {
     uint16_t cluster_count;
 } tarn_mesh;
 
+/* A vertex as the scene's fixed camera sees it: exactly what a frame would compute
+ * from the object's mesh, transform and material, the camera and the light (tarn
+ * bake writes them, docs/bake.md "Static view"). A frame then neither transforms,
+ * lights nor (for the frame they were made for) projects the object's vertices. */
+typedef struct {
+    tarn_q16 x, y, d;           /* view space, Q16.16: right, up, depth */
+    uint32_t inv_depth;         /* near/d, Q1.30 (1..2^30), for a vertex inside every clip
+                                   plane of the static view's frame; 0: not projected */
+    int16_t screen_x, screen_y; /* subpixels of that frame, inside its guard band */
+    uint16_t lit[3];            /* lit colour, Q8.8 per channel, at most 65280 */
+    uint16_t fresnel;           /* (1 - n.v)^2, Q1.15, at most 32768; 0 but on water */
+} tarn_static_vertex;
+
 /* World = position + scale * rotation * object. The rotation is orthonormal, so
  * normals transform by the rotation alone. */
 typedef struct {
@@ -81,6 +95,9 @@ typedef struct {
     tarn_vec3 position;     /* Q16.16 world units */
     tarn_q16 rotation[3][3]; /* Q16.16 rows of an orthonormal matrix */
     tarn_q16 scale;         /* Q16.16, > 0 */
+    const tarn_static_vertex *static_vertices; /* NULL, or one per mesh vertex, for the
+                                                  scene's static_view; the object must
+                                                  then not move */
 } tarn_object;
 
 typedef struct {
@@ -97,6 +114,17 @@ typedef struct {
     uint32_t ambient_rgb;  /* ambient light colour */
 } tarn_light;
 
+/* What a scene's static vertices were computed for. They apply while the scene's
+ * camera and light are these, and their screen positions while the frame also has
+ * this size and subpixel precision; otherwise each frame computes what they hold
+ * (and an object whose mesh has no positions cannot be drawn: TARN_ERR_SCENE). */
+typedef struct {
+    tarn_camera camera;
+    tarn_light light;
+    uint16_t width, height; /* pixels, 1..TARN_FRAME_SIZE_MAX */
+    uint8_t subpixel_bits;  /* TARN_SUBPIXEL_BITS_MIN..MAX */
+} tarn_static_view;
+
 typedef struct {
     const tarn_object *objects;
     uint16_t object_count;
@@ -104,6 +132,7 @@ typedef struct {
     tarn_light light;
     uint32_t background_rgb; /* colour of pixels no triangle covers */
     const tarn_underwater *underwater; /* NULL: no underwater view */
+    const tarn_static_view *static_view; /* NULL when no object has static vertices */
 } tarn_scene;
 
 #endif

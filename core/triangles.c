@@ -139,7 +139,7 @@ static void walk_object(const tarn_view *view, const tarn_object *object, const 
     tarn_object_xform xform;
     tarn_object_xform_setup(view, object, &xform);
     tarn_vertex_cache cache;
-    tarn_vertex_cache_init(&cache, view, &xform, mesh, frustum->active ? &frustum->edges : NULL);
+    tarn_vertex_cache_init(&cache, view, &xform, object, frustum->active ? &frustum->edges : NULL);
     if (mesh->clusters == NULL) { /* its one bin, if any, was tested above */
         walk_run(object, 0, mesh->triangle_count, only_rect, &cache, sink, ctx);
         return;

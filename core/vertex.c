@@ -95,12 +95,10 @@ static void normal_to_view_matrix(const tarn_view *view, const tarn_object *obje
         }
 }
 
-void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
-                             tarn_object_xform *xform)
+/* What lighting a vertex takes: the light in object space, the material's tint,
+ * and for fresnel water the normals' rotation into view space. */
+static void object_lighting_setup(const tarn_view *view, const tarn_object *object, tarn_object_xform *xform)
 {
-    tarn_q16 origin[3];
-    object_origin_in_view(view, object, origin);
-    object_to_view_matrix(view, object, xform, origin);
     const tarn_water *water = object->material->water;
     xform->fresnel = TARN_LINK_WATER && water != NULL && (TARN_LINK_WATER_FEATURES & TARN_WATER_FRESNEL) != 0 &&
                      (water->features & TARN_WATER_FRESNEL);
@@ -116,6 +114,18 @@ void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
     const uint32_t tint = object->material->colour_rgb;
     for (int c = 0; c < 3; c++)
         xform->tint_q16[c] = ((((tint >> (16 - 8 * c)) & 0xFFu) * 65536u) + 127u) / 255u;
+}
+
+void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
+                             tarn_object_xform *xform)
+{
+    tarn_q16 origin[3];
+    object_origin_in_view(view, object, origin);
+    object_to_view_matrix(view, object, xform, origin);
+    /* static vertices come lit */
+    if (TARN_LINK_COMPUTED_VERTICES &&
+        !(TARN_LINK_STATIC_VERTICES && view->static_vertices && object->static_vertices != NULL))
+        object_lighting_setup(view, object, xform);
 }
 
 void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,

@@ -42,12 +42,13 @@ static unsigned beyond_tile_edges(const tarn_tile_edges *tile, const tarn_view *
 }
 
 void tarn_vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
-                            const tarn_object_xform *xform, const tarn_mesh *mesh,
+                            const tarn_object_xform *xform, const tarn_object *object,
                             const tarn_tile_edges *tile)
 {
     cache->view = view;
     cache->xform = xform;
-    cache->mesh = mesh;
+    cache->mesh = object->mesh;
+    cache->static_vertices = TARN_LINK_STATIC_VERTICES && view->static_vertices ? object->static_vertices : NULL;
     cache->tile = tile;
     for (uint32_t i = 0; i < TARN_VERTEX_CACHE_SLOTS; i++) cache->slot[i].state = 0;
 }
@@ -56,6 +57,21 @@ static tarn_cached_vertex *cache_slot(tarn_vertex_cache *cache, uint16_t index)
 {
     /* Fibonacci hashing spreads a grid's rows, whose indices differ by the row length */
     return &cache->slot[((uint32_t)index * 40503u >> 11) & (TARN_VERTEX_CACHE_SLOTS - 1u)];
+}
+
+/* A static vertex's shading, and its projection where it was projected for this
+ * frame, into the slot that holds its position and outcode. */
+static void take_static_vertex(const tarn_view *view, const tarn_static_vertex *vertex, tarn_cached_vertex *slot)
+{
+    for (int c = 0; c < 3; c++) slot->lit[c] = vertex->lit[c];
+    slot->fresnel = vertex->fresnel;
+    slot->state |= TARN_CACHED_SHADED;
+    if (view->static_screen && vertex->inv_depth != 0u && slot->outcode == 0u) {
+        slot->screen_x = vertex->screen_x;
+        slot->screen_y = vertex->screen_y;
+        slot->inv_depth = vertex->inv_depth;
+        slot->state |= TARN_CACHED_PROJECTED;
+    }
 }
 
 /* The vertex's view position and outcode, from the cache or computed into it, copied
@@ -67,8 +83,16 @@ static void cached_position(tarn_vertex_cache *cache, uint16_t index, tarn_cache
         *out = *slot;
         return;
     }
+    const tarn_static_vertex *baked =
+        TARN_LINK_STATIC_VERTICES && cache->static_vertices != NULL ? &cache->static_vertices[index] : NULL;
     tarn_view_vertex v;
-    tarn_vertex_position(cache->xform, &cache->mesh->positions[index], &v);
+    if (TARN_LINK_COMPUTED_VERTICES && baked == NULL) {
+        tarn_vertex_position(cache->xform, &cache->mesh->positions[index], &v);
+    } else { /* the scene check saw to it that every object has them */
+        v.x = baked->x;
+        v.y = baked->y;
+        v.d = baked->d;
+    }
     slot->index = index;
     slot->state = (uint8_t)(TARN_CACHED_FILLED | beyond_tile_edges(cache->tile, cache->view, &v)
                                                    << TARN_CACHED_BEYOND_TILE_SHIFT);
@@ -76,6 +100,7 @@ static void cached_position(tarn_vertex_cache *cache, uint16_t index, tarn_cache
     slot->x = v.x;
     slot->y = v.y;
     slot->d = v.d;
+    if (baked != NULL) take_static_vertex(cache->view, baked, slot);
     *out = *slot;
 }
 
@@ -138,7 +163,7 @@ void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, t
 {
     const tarn_mesh *mesh = cache->mesh;
     set_view_position(v, vertex);
-    if (!(vertex->state & TARN_CACHED_SHADED)) {
+    if (TARN_LINK_COMPUTED_VERTICES && !(vertex->state & TARN_CACHED_SHADED)) {
         tarn_vertex_shade(cache->view, cache->xform, mesh, vertex->index, v);
         for (int c = 0; c < 3; c++) vertex->lit[c] = (uint16_t)v->lit[c];
         vertex->fresnel = (uint16_t)v->fresnel;

@@ -51,6 +51,7 @@ typedef struct {
     const tarn_view *view;
     const tarn_object_xform *xform;
     const tarn_mesh *mesh;
+    const tarn_static_vertex *static_vertices; /* the object's, when they apply; else NULL */
     const tarn_tile_edges *tile; /* NULL: no tile edges in the outcodes */
     tarn_cached_vertex slot[TARN_VERTEX_CACHE_SLOTS];
 } tarn_vertex_cache;
@@ -63,9 +64,11 @@ int32_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half);
 #define TARN_TILE_EDGE_UNTESTED INT32_MIN
 
 /* An empty cache for one object's vertices, for a walk of the tile whose `tile`
- * edges are given, or of the whole frame (NULL). */
+ * edges are given, or of the whole frame (NULL). Where the object's static vertices
+ * apply (tarn_view's static_vertices), a vertex is read from them, already lit and,
+ * in their own frame, projected. */
 void tarn_vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
-                            const tarn_object_xform *xform, const tarn_mesh *mesh,
+                            const tarn_object_xform *xform, const tarn_object *object,
                             const tarn_tile_edges *tile);
 
 /* The three vertices of a triangle (`index` its three indices) into c[]; returns the

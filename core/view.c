@@ -93,6 +93,36 @@ int32_t tarn_guard_band_pixels(const tarn_frame_config *config)
     return larger / 4 + 16;
 }
 
+static int same_vec3(const tarn_vec3 *a, const tarn_vec3 *b)
+{
+    return a->x == b->x && a->y == b->y && a->z == b->z;
+}
+
+static int same_camera(const tarn_camera *a, const tarn_camera *b)
+{
+    return same_vec3(&a->position, &b->position) && same_vec3(&a->target, &b->target) &&
+           a->fov_y_degrees == b->fov_y_degrees && a->near == b->near && a->far == b->far;
+}
+
+static int same_light(const tarn_light *a, const tarn_light *b)
+{
+    return same_vec3(&a->direction, &b->direction) && a->colour_rgb == b->colour_rgb &&
+           a->ambient_rgb == b->ambient_rgb;
+}
+
+int tarn_static_view_applies(const tarn_scene *scene)
+{
+    const tarn_static_view *s = scene->static_view;
+    return TARN_LINK_STATIC_VERTICES && s != NULL && same_camera(&s->camera, &scene->camera) && same_light(&s->light, &scene->light);
+}
+
+/* Whether static screen positions made for `s` hold for this frame. */
+static int static_frame_matches(const tarn_static_view *s, const tarn_frame_config *config)
+{
+    return s->width == config->width && s->height == config->height &&
+           s->subpixel_bits == config->quality.subpixel_bits;
+}
+
 void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, tarn_view *view)
 {
     const tarn_camera *camera = &scene->camera;
@@ -122,4 +152,6 @@ void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, t
         view->ambient_q16[c] = channel_q16(scene->light.ambient_rgb, c);
     }
     view->light_dir = tarn_unit_vector_bounded(&scene->light.direction);
+    view->static_vertices = (uint8_t)tarn_static_view_applies(scene);
+    view->static_screen = (uint8_t)(view->static_vertices && static_frame_matches(scene->static_view, config));
 }

@@ -17,12 +17,14 @@
 
 #include "atomic_file.h"
 #include "bake_points.h"
+#include "static_view.h"
 
 /* ---- 1. types ------------------------------------------------------------------ */
 
 typedef enum {
     V_U8,       /* decimal */
     V_U16,
+    V_I16,      /* signed decimal */
     V_U32,      /* decimal with a u suffix */
     V_Q16,      /* signed decimal */
     V_RGB,      /* 0xRRGGBBu */
@@ -57,6 +59,7 @@ struct bake_type {
 
 static const bake_type T_U8 = SCALAR("uint8_t", V_U8, uint8_t);
 static const bake_type T_U16 = SCALAR("uint16_t", V_U16, uint16_t);
+static const bake_type T_I16 = SCALAR("int16_t", V_I16, int16_t);
 static const bake_type T_U32 = SCALAR("uint32_t", V_U32, uint32_t);
 static const bake_type T_Q16 = SCALAR("tarn_q16", V_Q16, tarn_q16);
 static const bake_type T_RGB = SCALAR("uint32_t", V_RGB, uint32_t);
@@ -126,10 +129,22 @@ static const bake_field material_fields[] = {
     FIELD(tarn_material, water, T_REF)};
 static const bake_type T_MATERIAL = STRUCT(tarn_material, material_fields, 0);
 
+/* uint16_t[3], written positionally like a one-line struct */
+static const bake_field u16_triple_fields[] = {
+    {"0", 0, &T_U16}, {"1", sizeof(uint16_t), &T_U16}, {"2", 2 * sizeof(uint16_t), &T_U16}};
+static const bake_type T_U16_TRIPLE = {"uint16_t[3]", V_STRUCT, sizeof(uint16_t[3]), u16_triple_fields, 3, 1};
+
+static const bake_field static_vertex_fields[] = {
+    FIELD(tarn_static_vertex, x, T_Q16),        FIELD(tarn_static_vertex, y, T_Q16),
+    FIELD(tarn_static_vertex, d, T_Q16),        FIELD(tarn_static_vertex, inv_depth, T_U32),
+    FIELD(tarn_static_vertex, screen_x, T_I16), FIELD(tarn_static_vertex, screen_y, T_I16),
+    FIELD(tarn_static_vertex, lit, T_U16_TRIPLE), FIELD(tarn_static_vertex, fresnel, T_U16)};
+static const bake_type T_STATIC_VERTEX = STRUCT(tarn_static_vertex, static_vertex_fields, 1);
+
 static const bake_field object_fields[] = {
     FIELD(tarn_object, mesh, T_REF),          FIELD(tarn_object, material, T_REF),
     FIELD(tarn_object, position, T_VEC3),     FIELD(tarn_object, rotation, T_MATRIX),
-    FIELD(tarn_object, scale, T_Q16)};
+    FIELD(tarn_object, scale, T_Q16),         FIELD(tarn_object, static_vertices, T_REF)};
 static const bake_type T_OBJECT = STRUCT(tarn_object, object_fields, 0);
 
 static const bake_field camera_fields[] = {
@@ -143,10 +158,17 @@ static const bake_field light_fields[] = {
     FIELD(tarn_light, ambient_rgb, T_RGB)};
 static const bake_type T_LIGHT = STRUCT(tarn_light, light_fields, 0);
 
+static const bake_field static_view_fields[] = {
+    FIELD(tarn_static_view, camera, T_CAMERA), FIELD(tarn_static_view, light, T_LIGHT),
+    FIELD(tarn_static_view, width, T_U16),     FIELD(tarn_static_view, height, T_U16),
+    FIELD(tarn_static_view, subpixel_bits, T_U8)};
+static const bake_type T_STATIC_VIEW = STRUCT(tarn_static_view, static_view_fields, 0);
+
 static const bake_field scene_fields[] = {
     FIELD(tarn_scene, objects, T_REF),        FIELD(tarn_scene, object_count, T_U16),
     FIELD(tarn_scene, camera, T_CAMERA),      FIELD(tarn_scene, light, T_LIGHT),
-    FIELD(tarn_scene, background_rgb, T_RGB), FIELD(tarn_scene, underwater, T_REF)};
+    FIELD(tarn_scene, background_rgb, T_RGB), FIELD(tarn_scene, underwater, T_REF),
+    FIELD(tarn_scene, static_view, T_REF)};
 static const bake_type T_SCENE = STRUCT(tarn_scene, scene_fields, 0);
 
 static const bake_field exp2_fields[] = {
@@ -170,7 +192,7 @@ static const bake_type T_CONFIG = STRUCT(tarn_frame_config, config_fields, 0);
 static const bake_type *const all_structs[] = {
     &T_VEC3,  &T_UV,       &T_CLUSTER,  &T_TEXTURE, &T_MESH,  &T_PANNING,
     &T_WATER, &T_UNDERWATER, &T_MATERIAL, &T_OBJECT, &T_CAMERA, &T_LIGHT,
-    &T_SCENE, &T_EXP2,     &T_QUALITY,  &T_CONFIG};
+    &T_SCENE, &T_EXP2,     &T_QUALITY,  &T_CONFIG, &T_U16_TRIPLE, &T_STATIC_VERTEX, &T_STATIC_VIEW};
 
 /* Bytes on a 32-bit target (Cortex-M, rv32): what the header comment reports. */
 #define TARGET_POINTER_BYTES 4u
@@ -189,7 +211,8 @@ static layout scalar_layout(value_kind kind, size_t pointer_bytes)
     switch (kind) {
     case V_U8:
     case V_BYTE: return (layout){1, 1};
-    case V_U16: return (layout){2, 2};
+    case V_U16:
+    case V_I16: return (layout){2, 2};
     case V_REF: return (layout){pointer_bytes, pointer_bytes};
     case V_MATRIX: return (layout){9 * 4, 4};
     default: return (layout){4, 4};
@@ -238,11 +261,11 @@ static int check_tables(tarn_error *err)
 /* ---- 2. plan ------------------------------------------------------------------- */
 
 typedef enum {
-    BYTES_MESH, BYTES_TEXTURE, BYTES_MATERIAL, BYTES_WATER, BYTES_OBJECT, BYTES_SCENE, BYTES_KINDS
+    BYTES_MESH, BYTES_TEXTURE, BYTES_MATERIAL, BYTES_WATER, BYTES_OBJECT, BYTES_STATIC, BYTES_SCENE, BYTES_KINDS
 } byte_kind;
 
 static const char *const byte_kind_names[BYTES_KINDS] = {
-    "mesh", "texture", "material", "water", "object", "scene"};
+    "mesh", "texture", "material", "water", "object", "static vertices", "scene"};
 
 #define SYMBOL_MAX 96
 #define NOTE_MAX 200
@@ -508,6 +531,27 @@ static void plan_materials(bake_plan *p)
     }
 }
 
+/* Each object's static vertices and the view they were made for (static_view.h). */
+static void plan_static_vertices(bake_plan *p)
+{
+    const tarn_scene *scene = &p->scene->scene;
+    if (scene->static_view == NULL) return;
+    for (size_t i = 0; i < scene->object_count; i++) {
+        const tarn_object *object = &scene->objects[i];
+        if (object->mesh->vertex_count == 0) {
+            add_alias(p, object->static_vertices, NO_ITEM);
+            continue;
+        }
+        bake_item *item = add_item(p, BYTES_STATIC, &T_STATIC_VERTEX, object->static_vertices,
+                                   object->mesh->vertex_count, "%s_object_%zu_static_vertices", p->name, i);
+        if (item)
+            snprintf(item->note, sizeof item->note,
+                     "objects[%zu] from the scene's camera: view position, near/d and screen position "
+                     "(subpixels), lit colour (Q8.8), fresnel (Q1.15)", i);
+    }
+    add_item(p, BYTES_STATIC, &T_STATIC_VIEW, scene->static_view, 0, "%s_static_view", p->name);
+}
+
 static void plan_scene(bake_plan *p)
 {
     const tarn_scene *scene = &p->scene->scene;
@@ -531,6 +575,7 @@ static int plan_build(bake_plan *p, tarn_error *err)
     plan_textures(p);
     plan_meshes(p);
     plan_materials(p);
+    plan_static_vertices(p);
     plan_scene(p);
     return p->out_of_memory ? tarn_fail(err, "out of memory planning the baked scene") : 0;
 }
@@ -673,6 +718,7 @@ static void format_value(emitter *e, const bake_type *t, const void *at, text_bu
     case V_U8: append(b, "%u", *(const uint8_t *)at); break;
     case V_BYTE: append(b, "0x%02x", *(const uint8_t *)at); break;
     case V_U16: append(b, "%u", read_u16(at)); break;
+    case V_I16: append(b, "%d", (int16_t)read_u16(at)); break;
     case V_U32: append(b, "%luu", (unsigned long)read_u32(at)); break;
     case V_RGB: append(b, "0x%06lxu", (unsigned long)read_u32(at)); break;
     case V_Q16: format_q16(b, (int32_t)read_u32(at)); break;
@@ -841,8 +887,8 @@ static void print_source_comment(FILE *out, const bake_plan *p, const tarn_bake_
     print_command(out, o);
     fputs(" *\n * Const bytes as a 32-bit target lays them out:\n", out);
     for (int k = 0; k < BYTES_KINDS; k++)
-        fprintf(out, " *   %-10s %9zu\n", byte_kind_names[k], totals->bytes[k]);
-    fprintf(out, " *   %-10s %9zu\n *\n", "total", totals->const_bytes);
+        fprintf(out, " *   %-15s %9zu\n", byte_kind_names[k], totals->bytes[k]);
+    fprintf(out, " *   %-15s %9zu\n *\n", "total", totals->const_bytes);
     fprintf(out, " * A %ux%u frame at the baked quality%s needs %zu bytes of working memory:\n * %s_MEMORY_BYTES in ",
             p->config.width, p->config.height, p->points->count ? " or any of the points" : "",
             totals->memory_bytes, macro);
@@ -920,6 +966,8 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     }
     fprintf(out, "#define TARN_LINK_PERSPECTIVE_SPAN %d\n", span);
     fprintf(out, "#define TARN_LINK_APRON %d\n", apron);
+    fprintf(out, "#define TARN_LINK_COMPUTED_VERTICES %d\n", p->scene->scene.static_view == NULL);
+    fprintf(out, "#define TARN_LINK_STATIC_VERTICES %d\n", p->scene->scene.static_view != NULL);
 }
 
 /* The three files to temporaries, then renamed into place; a failure removes all. */
@@ -1023,6 +1071,53 @@ static int choose_name(const tarn_loaded_scene *scene, const tarn_bake_options *
     return 0;
 }
 
+/* The loaded scene as baked with static vertices: each object's copy points to its
+ * vertices, and each mesh's copy has no positions, normals or colours, which only
+ * computed them. */
+typedef struct {
+    tarn_loaded_scene loaded;
+    tarn_static_vertices vertices;
+    tarn_object *objects;
+    tarn_mesh *meshes;
+} static_scene;
+
+static void static_scene_free(static_scene *s)
+{
+    tarn_static_vertices_free(&s->vertices);
+    free(s->objects);
+    free(s->meshes);
+}
+
+static int static_scene_make(const tarn_loaded_scene *scene, const tarn_frame_config *config, static_scene *out,
+                             tarn_error *err)
+{
+    memset(out, 0, sizeof *out);
+    const size_t count = scene->scene.object_count > 0 ? scene->scene.object_count : 1u;
+    out->objects = calloc(count, sizeof *out->objects);
+    out->meshes = calloc(count, sizeof *out->meshes);
+    if (out->objects == NULL || out->meshes == NULL) {
+        static_scene_free(out);
+        return tarn_fail(err, "out of memory computing static vertices");
+    }
+    if (tarn_static_vertices_build(&scene->scene, config, &out->vertices, err) != 0) {
+        static_scene_free(out);
+        return -1;
+    }
+    for (size_t i = 0; i < scene->scene.object_count; i++) {
+        out->meshes[i] = *scene->scene.objects[i].mesh;
+        out->meshes[i].positions = NULL;
+        out->meshes[i].normals = NULL;
+        out->meshes[i].colours = NULL;
+        out->objects[i] = scene->scene.objects[i];
+        out->objects[i].mesh = &out->meshes[i];
+        out->objects[i].static_vertices = out->vertices.vertices[i];
+    }
+    out->loaded = *scene;
+    out->loaded.scene.objects = out->objects;
+    out->loaded.scene.static_view = &out->vertices.view;
+    return 0;
+}
+
 int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_bake_result *result,
               tarn_error *err)
 {
@@ -1050,7 +1145,10 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     char *link_path = header_path ? path_beside(o->output_path, "_link.h", err) : NULL;
     totals.header_path = header_path;
     totals.link_path = link_path;
-    int failed = link_path == NULL || plan_build(&plan, err);
+    static_scene with_static;
+    int failed = link_path == NULL || (o->static_view && static_scene_make(scene, &plan.config, &with_static, err));
+    if (o->static_view && !failed) plan.scene = &with_static.loaded;
+    failed = failed || plan_build(&plan, err);
     if (!failed) {
         totals.const_bytes = plan_bytes(&plan, totals.bytes);
         failed = write_outputs(&plan, o, &totals, err);
@@ -1058,6 +1156,7 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     result->const_bytes = totals.const_bytes;
     result->memory_bytes = totals.memory_bytes;
     plan_free(&plan);
+    if (plan.scene != scene) static_scene_free(&with_static);
     tarn_bake_points_free(&points);
     free(header_path);
     free(link_path);

@@ -38,6 +38,9 @@ typedef struct {
     const char *output_path; /* must end in ".c"; the headers go beside it */
     const char *name;        /* C identifier prefixing every symbol; NULL: the scene's stem */
     const char *points_path; /* --points FILE (bake_points.h), or NULL */
+    int static_view;         /* 1: every object gets static vertices for the scene's camera
+                                and the config's frame, and the meshes lose the positions,
+                                normals and colours they replace (static_view.h) */
     tarn_frame_config config; /* frame size and quality; its time_ms is baked as 0 */
     int argc;                /* the command line, shown in the header comment */
     char *const *argv;

@@ -11,7 +11,8 @@ const char tarn_cli_usage[] =
     "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]\n"
     "       tarn accuracy --math\n"
     "       tarn memory SCENE [--size WxH] [QUALITY]\n"
-    "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE] [QUALITY]\n"
+    "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]\n"
+    "                 [--static-view on|off] [QUALITY]\n"
     "       tarn show SCENE --display DISPLAY --panel MODEL [...]   (tarn show --help)\n"
     "       tarn sweep [SCENE...] [--out DIR] [...]                 (tarn sweep --help)\n"
     "QUALITY: --quality fast|balanced|exact (a preset, balanced by default; the knobs below\n"
@@ -201,6 +202,16 @@ static int parse_sequence_option(const char *name, const char *value, tarn_cli_o
     return 0;
 }
 
+/* bake --static-view on|off: whether the baked objects carry static vertices. */
+static int parse_static_view(const char *value, tarn_cli_options *o, tarn_error *err)
+{
+    o->static_view_given = 1;
+    if (value && strcmp(value, "on") == 0) o->no_static_view = 0;
+    else if (value && strcmp(value, "off") == 0) o->no_static_view = 1;
+    else return tarn_fail(err, "--static-view: expected on or off, got '%s'", value ? value : "");
+    return 0;
+}
+
 /* Options with a value; returns 1 if `name` is none of them. */
 static int parse_valued_option(const char *name, const char *value, tarn_cli_options *o,
                                tarn_error *err)
@@ -209,6 +220,7 @@ static int parse_valued_option(const char *name, const char *value, tarn_cli_opt
     if (strcmp(name, "-o") == 0) o->output_path = value;
     else if (strcmp(name, "--diff") == 0) o->diff_path = value;
     else if (strcmp(name, "--points") == 0) o->points_path = value;
+    else if (strcmp(name, "--static-view") == 0) return parse_static_view(value, o, err);
     else if (strcmp(name, "--name") == 0) {
         o->name = value; /* checked by bake, so that "" gets the one-line error "3d" gets */
         return value ? 0 : tarn_fail(err, "--name: expected a C identifier");
@@ -265,6 +277,7 @@ static int check_combination(tarn_cli_options *o, tarn_error *err)
     if (o->command == TARN_CMD_BAKE && o->output_path == NULL) return tarn_fail(err, "bake: expected -o OUT.c");
     if (o->name && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--name applies to bake");
     if (o->points_path && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--points applies to bake");
+    if (o->static_view_given && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--static-view applies to bake");
     if (o->snapped && o->command == TARN_CMD_RENDER && !o->reference)
         return tarn_fail(err, "--snapped applies to the reference: add --reference");
     return check_sequence(o, err);

@@ -35,6 +35,8 @@ typedef struct {
     const char *diff_path;   /* compare: --diff, or NULL */
     const char *name;        /* bake: --name, or NULL (checked by the bake itself) */
     const char *points_path; /* bake: --points, or NULL (host/bake_points.h) */
+    int no_static_view;      /* bake --static-view off: vertices computed each frame */
+    int static_view_given;   /* --static-view appeared */
     uint16_t width, height;  /* 0: the scene's own frame size */
     uint32_t time_ms;
     uint16_t frames;         /* render --frames: 0 for one frame written to -o itself */

@@ -344,7 +344,7 @@ static void test_header_declares_memory_and_objects(void **state)
     assert_non_null(strstr(header, "extern const tarn_frame_config foam_header_config;\n"));
     free(header);
     char *source = read_all(b.source, NULL);
-    snprintf(define, sizeof define, " *   %-10s %9zu\n", "total", b.const_bytes);
+    snprintf(define, sizeof define, " *   %-15s %9zu\n", "total", b.const_bytes);
     assert_non_null(strstr(source, define));
     assert_non_null(strstr(source, "const tarn_scene foam_header_scene = {\n"));
     assert_non_null(strstr(source, "const tarn_frame_config foam_header_config = {\n    .width = 64,\n"));

@@ -118,6 +118,23 @@ static void test_presets_are_the_base_of_the_knobs(void **state)
     assert_rejected("compare s.json --fog-bits 3", "--fog-bits: expected a whole number 4..16, got '3'");
 }
 
+/* bake --static-view: on by default, off when asked, and nothing else. */
+static void test_static_view_option(void **state)
+{
+    (void)state;
+    tarn_cli_options o;
+    tarn_error err;
+    assert_int_equal(parse("bake s.json -o x.c", &o, &err), 0);
+    assert_int_equal(o.no_static_view, 0);
+    assert_int_equal(parse("bake s.json -o x.c --static-view off", &o, &err), 0);
+    assert_int_equal(o.no_static_view, 1);
+    assert_int_equal(parse("bake s.json -o x.c --static-view off --static-view on", &o, &err), 0);
+    assert_int_equal(o.no_static_view, 0);
+    assert_rejected("bake s.json -o x.c --static-view maybe", "--static-view: expected on or off, got 'maybe'");
+    assert_rejected("bake s.json -o x.c --static-view", "--static-view: expected on or off, got ''");
+    assert_rejected("render s.json -o x.png --static-view off", "--static-view applies to bake");
+}
+
 static void test_frame_sequences_parse(void **state)
 {
     (void)state;
@@ -299,6 +316,7 @@ int main(void)
         cmocka_unit_test(test_good_lines_parse),
         cmocka_unit_test(test_bad_lines_name_what_was_expected),
         cmocka_unit_test(test_binary_exits_2_and_writes_nothing),
+        cmocka_unit_test(test_static_view_option),
         cmocka_unit_test(test_frame_sequences_parse),
         cmocka_unit_test(test_presets_are_the_base_of_the_knobs),
         cmocka_unit_test(test_binary_writes_a_sequence),

@@ -31,7 +31,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     char output[4096];
     strncpy(output, fuzz_path(outputs[0]), sizeof output - 1);
     output[sizeof output - 1] = '\0';
-    tarn_bake_options options = {"scene.json", output, NULL, NULL,
+    tarn_bake_options options = {"scene.json", output, NULL, NULL, 1,
                                  {scene.width, scene.height, tarn_quality_default(), 0}, 0, NULL};
     tarn_bake_result result;
     const int status = tarn_bake(&scene, &options, &result, &err);

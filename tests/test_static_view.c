@@ -1,0 +1,211 @@
+/* test_static_view.c: a scene drawn with static vertices (tarn_scene.h) gives the
+ * frame it gives without them, byte for byte: on every scene, at each preset and two
+ * times, with the meshes' positions kept or left out, and in a frame other than the
+ * one their screen positions were made for. A moved camera drops them (or, without
+ * positions, refuses the scene), and static vertices out of their ranges are refused. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "core_render.h"
+#include "scene_load.h"
+#include "static_view.h"
+
+static const char *const scenes[] = {
+    "scenes/pond.json", "scenes/beach.json", "scenes/murky.json", "scenes/lake.json",
+    "scenes/underwater.json", "scenes/effects/refraction.json", "scenes/effects/fresnel.json",
+    "scenes/effects/sparkles.json", "scenes/extremes/dense.json", "scenes/extremes/far.json",
+    "scenes/extremes/grazing.json", "scenes/extremes/huge.json", "scenes/extremes/steep.json",
+    "scenes/extremes/tiny.json",
+};
+
+/* The loaded scene with static vertices for `made_for`, in arrays the test owns. */
+typedef struct {
+    tarn_loaded_scene loaded;
+    tarn_static_vertices vertices;
+    tarn_object *objects;
+    tarn_mesh *meshes; /* each object's mesh, copied, positions and normals left out */
+    tarn_scene scene;
+} static_scene;
+
+static void static_scene_make(static_scene *s, const char *path, const tarn_frame_config *made_for,
+                              int without_positions)
+{
+    tarn_error err;
+    if (tarn_scene_load(path, &s->loaded, &err) != 0) fail_msg("%s", err.message);
+    if (tarn_static_vertices_build(&s->loaded.scene, made_for, &s->vertices, &err) != 0)
+        fail_msg("%s: %s", path, err.message);
+    const uint32_t count = s->loaded.scene.object_count;
+    s->objects = calloc(count, sizeof *s->objects);
+    s->meshes = calloc(count, sizeof *s->meshes);
+    assert_non_null(s->objects);
+    assert_non_null(s->meshes);
+    for (uint32_t i = 0; i < count; i++) {
+        s->objects[i] = s->loaded.scene.objects[i];
+        s->objects[i].static_vertices = s->vertices.vertices[i];
+        if (without_positions) {
+            s->meshes[i] = *s->objects[i].mesh;
+            s->meshes[i].positions = NULL;
+            s->meshes[i].normals = NULL;
+            s->objects[i].mesh = &s->meshes[i];
+        }
+    }
+    s->scene = s->loaded.scene;
+    s->scene.objects = s->objects;
+    s->scene.static_view = &s->vertices.view;
+}
+
+static void static_scene_free(static_scene *s)
+{
+    free(s->objects);
+    free(s->meshes);
+    tarn_static_vertices_free(&s->vertices);
+    tarn_scene_free(&s->loaded);
+}
+
+static uint8_t *render(const tarn_scene *scene, const tarn_frame_config *config, const char *path)
+{
+    uint8_t *rgb = malloc(3u * config->width * config->height);
+    assert_non_null(rgb);
+    tarn_error err;
+    if (tarn_core_render(scene, config, rgb, NULL, &err) != 0) fail_msg("%s: %s", path, err.message);
+    return rgb;
+}
+
+/* The frame of `config` from the scene as loaded and with static vertices made for
+ * `made_for`: equal, byte for byte. */
+static void assert_same_frame(const char *path, const tarn_frame_config *config, const tarn_frame_config *made_for,
+                              int without_positions)
+{
+    static_scene s;
+    static_scene_make(&s, path, made_for, without_positions);
+    uint8_t *plain = render(&s.loaded.scene, config, path);
+    uint8_t *with_static = render(&s.scene, config, path);
+    const size_t bytes = 3u * config->width * config->height;
+    if (memcmp(plain, with_static, bytes) != 0)
+        fail_msg("%s (subpixel bits %u, %u ms): static vertices change the frame", path,
+                 config->quality.subpixel_bits, (unsigned)config->time_ms);
+    free(plain);
+    free(with_static);
+    static_scene_free(&s);
+}
+
+static tarn_frame_config scene_config(const char *path, tarn_preset preset, uint32_t time_ms)
+{
+    tarn_loaded_scene loaded;
+    tarn_error err;
+    if (tarn_scene_load(path, &loaded, &err) != 0) fail_msg("%s", err.message);
+    tarn_frame_config config = {loaded.width, loaded.height, tarn_quality_preset(preset), time_ms};
+    tarn_scene_free(&loaded);
+    return config;
+}
+
+static void test_every_scene_draws_the_same_frame(void **state)
+{
+    (void)state;
+    static const uint32_t times[] = {0, 1500};
+    for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++)
+        for (int preset = 0; preset < TARN_PRESET_COUNT; preset++)
+            for (size_t t = 0; t < 2; t++) {
+                const tarn_frame_config config = scene_config(scenes[k], (tarn_preset)preset, times[t]);
+                assert_same_frame(scenes[k], &config, &config, (int)t);
+            }
+}
+
+/* Screen positions made at 4 subpixel bits are not used at 5: the frame projects. */
+static void test_another_frame_projects_again(void **state)
+{
+    (void)state;
+    const tarn_frame_config fast = scene_config("scenes/pond.json", TARN_PRESET_FAST, 700);
+    const tarn_frame_config exact = scene_config("scenes/pond.json", TARN_PRESET_EXACT, 700);
+    assert_int_not_equal(fast.quality.subpixel_bits, exact.quality.subpixel_bits);
+    assert_same_frame("scenes/pond.json", &exact, &fast, 1);
+    tarn_frame_config smaller = fast;
+    smaller.width = 200;
+    assert_same_frame("scenes/pond.json", &smaller, &fast, 0);
+}
+
+static tarn_status render_status(const tarn_scene *scene, const tarn_frame_config *config)
+{
+    const size_t bytes = tarn_frame_memory_bytes(config, scene);
+    void *memory = malloc(bytes > 0 ? bytes : 1u);
+    assert_non_null(memory);
+    const tarn_status status = tarn_render_frame(scene, config, memory, bytes, NULL, NULL);
+    free(memory);
+    return status;
+}
+
+/* A camera moved after the bake: with positions the frame computes every vertex
+ * (and draws what the loaded scene draws from there); without, it refuses. */
+static void test_moved_camera_drops_static_vertices(void **state)
+{
+    (void)state;
+    const tarn_frame_config config = scene_config("scenes/pond.json", TARN_PRESET_FAST, 0);
+    static_scene kept, bare;
+    static_scene_make(&kept, "scenes/pond.json", &config, 0);
+    static_scene_make(&bare, "scenes/pond.json", &config, 1);
+    kept.scene.camera.position.x += 65536;
+    bare.scene.camera.position.x += 65536;
+    kept.loaded.scene.camera.position.x += 65536;
+    uint8_t *moved = render(&kept.loaded.scene, &config, "moved");
+    uint8_t *with_static = render(&kept.scene, &config, "moved, static");
+    assert_memory_equal(moved, with_static, 3u * config.width * config.height);
+    assert_int_equal(render_status(&bare.scene, &config), TARN_ERR_SCENE);
+    bare.scene.light.colour_rgb ^= 1u;
+    bare.scene.camera = bare.vertices.view.camera;
+    assert_int_equal(render_status(&bare.scene, &config), TARN_ERR_SCENE);
+    free(moved);
+    free(with_static);
+    static_scene_free(&kept);
+    static_scene_free(&bare);
+}
+
+/* Each out-of-range field of a static vertex, or of the static view, is refused. */
+static void test_out_of_range_static_vertices_are_refused(void **state)
+{
+    (void)state;
+    const tarn_frame_config config = scene_config("scenes/pond.json", TARN_PRESET_FAST, 0);
+    static_scene s;
+    static_scene_make(&s, "scenes/pond.json", &config, 1);
+    assert_int_equal(render_status(&s.scene, &config), TARN_OK);
+    tarn_static_vertex *v = &s.vertices.vertices[0][0];
+    const tarn_static_vertex saved = *v;
+    v->lit[1] = 65281;
+    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    *v = saved;
+    v->fresnel = 32769;
+    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    *v = saved;
+    v->inv_depth = (1u << 30) + 1u;
+    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    *v = saved;
+    v->inv_depth = 1u;
+    v->screen_x = INT16_MAX;
+    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    v->screen_x = 0;
+    v->screen_y = INT16_MIN;
+    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    *v = saved;
+    assert_int_equal(render_status(&s.scene, &config), TARN_OK);
+    s.vertices.view.subpixel_bits = 0;
+    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    s.vertices.view.subpixel_bits = config.quality.subpixel_bits;
+    s.vertices.view.width = 0;
+    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    static_scene_free(&s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_every_scene_draws_the_same_frame),
+        cmocka_unit_test(test_another_frame_projects_again),
+        cmocka_unit_test(test_moved_camera_drops_static_vertices),
+        cmocka_unit_test(test_out_of_range_static_vertices_are_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
