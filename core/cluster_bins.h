@@ -16,10 +16,7 @@
 
 #define TARN_BIN_CELL_SHIFT 2u /* a cell is 4 x 4 pixels */
 
-/* Cells [x0, x1] x [y0, y1], inclusive; x0 > x1 when the cluster draws nothing. */
-struct tarn_cluster_bin {
-    uint8_t x0, y0, x1, y1;
-};
+/* tarn_cluster_bin (tarn_scene.h): cells [x0, x1] x [y0, y1], inclusive. */
 
 /* Bins a mesh takes: one per cluster, or one for an unclustered mesh. */
 uint32_t tarn_cluster_bins_of(const tarn_mesh *mesh);

@@ -95,7 +95,8 @@ typedef struct {
     int underwater;
     int in_place;         /* the water pass draws over the opaque buffers */
     size_t depth_bytes;
-    uint32_t bins;        /* cluster bins, 0 without */
+    uint32_t bins;        /* cluster bins found in the frame's memory, 0 without */
+    const tarn_cluster_bin *static_bins; /* the static view's instead, or NULL */
 } frame_layout;
 
 static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene *scene)
@@ -116,7 +117,10 @@ static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene 
     l.region = l.tile + 2 * l.apron;
     l.water_region = l.tile + 2 * l.under_apron;
     l.depth_bytes = config->quality.depth_bits / 8u;
-    l.bins = scene != NULL && config->quality.cluster_bins ? tarn_cluster_bin_count(scene) : 0u;
+    const int binned = scene != NULL && config->quality.cluster_bins;
+    l.static_bins = binned && TARN_LINK_STATIC_VERTICES && tarn_static_screen_applies(scene, config)
+        ? scene->static_view->bins : NULL;
+    l.bins = binned && l.static_bins == NULL ? tarn_cluster_bin_count(scene) : 0u;
     return l;
 }
 
@@ -182,7 +186,8 @@ typedef struct {
     uint32_t *water_colour;       /* the water pass's own buffers */
     void *water_depth;
     uint32_t *final;              /* the underwater pass's tile */
-    tarn_cluster_bin *bins;       /* this frame's, or NULL */
+    tarn_cluster_bin *found_bins; /* bins this frame finds, or NULL */
+    const tarn_cluster_bin *bins; /* those, or the static view's, or NULL */
     tarn_water_context water_context;
     tarn_underwater_context underwater;
 } frame_state;
@@ -203,7 +208,8 @@ static void carve_buffers(frame_state *f, void *memory)
     next += region * l->depth_bytes;
     f->water_depth = next;
     next += water * l->depth_bytes;
-    f->bins = l->bins != 0u ? (tarn_cluster_bin *)(void *)next : NULL;
+    f->found_bins = l->bins != 0u ? (tarn_cluster_bin *)(void *)next : NULL;
+    f->bins = f->found_bins != NULL ? f->found_bins : l->static_bins;
     f->opaque.stride = l->region;
     f->opaque.quality = f->water.quality = &f->config->quality;
     f->opaque.water = NULL;
@@ -439,7 +445,7 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
     f.view = &view;
     f.layout = layout_of(config, scene);
     carve_buffers(&f, memory);
-    if (f.bins != NULL) tarn_bin_clusters(scene, &view, f.bins);
+    if (f.found_bins != NULL) tarn_bin_clusters(scene, &view, f.found_bins);
     if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn_underwater_setup(&f.underwater, &view, config, scene->underwater);
     for (int32_t y = 0; y < config->height; y += f.layout.tile)
         for (int32_t x = 0; x < config->width; x += f.layout.tile)

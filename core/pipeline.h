@@ -67,6 +67,8 @@ typedef struct {
 void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, tarn_view *view);
 /* 1 when the scene has a static view and its camera and light are that view's. */
 int tarn_static_view_applies(const tarn_scene *scene);
+/* 1 when moreover the frame is the static view's: its screen positions and bins hold. */
+int tarn_static_screen_applies(const tarn_scene *scene, const tarn_frame_config *config);
 
 /* The object's transform into view space and, unless its static vertices apply
  * (they come lit), its lighting constants. */
@@ -111,7 +113,6 @@ typedef enum {
     TARN_WALK_WATER   /* water objects only */
 } tarn_walk_pass;
 
-typedef struct tarn_cluster_bin tarn_cluster_bin; /* cluster_bins.h */
 
 /* Walks the triangles of the pass's objects in scene order; triangles whose screen
  * bounds miss `only_rect` (when not NULL) are skipped as early as possible, whole

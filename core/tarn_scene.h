@@ -114,15 +114,26 @@ typedef struct {
     uint32_t ambient_rgb;  /* ambient light colour */
 } tarn_light;
 
+/* Where on screen a cluster draws: cells [x0, x1] x [y0, y1] of 4x4 pixels,
+ * inclusive; x0 > x1 when it draws nothing, and 0, 0, 255, 255 when it is cut by the
+ * near plane (its bounding sphere decides). */
+typedef struct tarn_cluster_bin {
+    uint8_t x0, y0, x1, y1;
+} tarn_cluster_bin;
+
 /* What a scene's static vertices were computed for. They apply while the scene's
- * camera and light are these, and their screen positions while the frame also has
- * this size and subpixel precision; otherwise each frame computes what they hold
- * (and an object whose mesh has no positions cannot be drawn: TARN_ERR_SCENE). */
+ * camera and light are these, and their screen positions and bins while the frame
+ * also has this size and subpixel precision; otherwise each frame computes what they
+ * hold (and an object whose mesh has no positions cannot be drawn: TARN_ERR_SCENE). */
 typedef struct {
     tarn_camera camera;
     tarn_light light;
     uint16_t width, height; /* pixels, 1..TARN_FRAME_SIZE_MAX */
     uint8_t subpixel_bits;  /* TARN_SUBPIXEL_BITS_MIN..MAX */
+    const tarn_cluster_bin *bins; /* NULL, or every cluster's bin in this frame, the
+                                     objects' in scene order (one for a mesh without
+                                     clusters): a frame with cluster bins reads these
+                                     instead of finding them, and needs no memory for them */
 } tarn_static_view;
 
 typedef struct {

@@ -116,10 +116,10 @@ int tarn_static_view_applies(const tarn_scene *scene)
     return TARN_LINK_STATIC_VERTICES && s != NULL && same_camera(&s->camera, &scene->camera) && same_light(&s->light, &scene->light);
 }
 
-/* Whether static screen positions made for `s` hold for this frame. */
-static int static_frame_matches(const tarn_static_view *s, const tarn_frame_config *config)
+int tarn_static_screen_applies(const tarn_scene *scene, const tarn_frame_config *config)
 {
-    return s->width == config->width && s->height == config->height &&
+    const tarn_static_view *s = scene->static_view;
+    return tarn_static_view_applies(scene) && s->width == config->width && s->height == config->height &&
            s->subpixel_bits == config->quality.subpixel_bits;
 }
 
@@ -153,5 +153,5 @@ void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, t
     }
     view->light_dir = tarn_unit_vector_bounded(&scene->light.direction);
     view->static_vertices = (uint8_t)tarn_static_view_applies(scene);
-    view->static_screen = (uint8_t)(view->static_vertices && static_frame_matches(scene->static_view, config));
+    view->static_screen = (uint8_t)tarn_static_screen_applies(scene, config);
 }

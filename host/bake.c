@@ -158,10 +158,15 @@ static const bake_field light_fields[] = {
     FIELD(tarn_light, ambient_rgb, T_RGB)};
 static const bake_type T_LIGHT = STRUCT(tarn_light, light_fields, 0);
 
+static const bake_field bin_fields[] = {
+    FIELD(tarn_cluster_bin, x0, T_U8), FIELD(tarn_cluster_bin, y0, T_U8),
+    FIELD(tarn_cluster_bin, x1, T_U8), FIELD(tarn_cluster_bin, y1, T_U8)};
+static const bake_type T_BIN = STRUCT(tarn_cluster_bin, bin_fields, 1);
+
 static const bake_field static_view_fields[] = {
     FIELD(tarn_static_view, camera, T_CAMERA), FIELD(tarn_static_view, light, T_LIGHT),
     FIELD(tarn_static_view, width, T_U16),     FIELD(tarn_static_view, height, T_U16),
-    FIELD(tarn_static_view, subpixel_bits, T_U8)};
+    FIELD(tarn_static_view, subpixel_bits, T_U8), FIELD(tarn_static_view, bins, T_REF)};
 static const bake_type T_STATIC_VIEW = STRUCT(tarn_static_view, static_view_fields, 0);
 
 static const bake_field scene_fields[] = {
@@ -192,7 +197,8 @@ static const bake_type T_CONFIG = STRUCT(tarn_frame_config, config_fields, 0);
 static const bake_type *const all_structs[] = {
     &T_VEC3,  &T_UV,       &T_CLUSTER,  &T_TEXTURE, &T_MESH,  &T_PANNING,
     &T_WATER, &T_UNDERWATER, &T_MATERIAL, &T_OBJECT, &T_CAMERA, &T_LIGHT,
-    &T_SCENE, &T_EXP2,     &T_QUALITY,  &T_CONFIG, &T_U16_TRIPLE, &T_STATIC_VERTEX, &T_STATIC_VIEW};
+    &T_SCENE, &T_EXP2,     &T_QUALITY,  &T_CONFIG, &T_U16_TRIPLE, &T_STATIC_VERTEX, &T_BIN,
+    &T_STATIC_VIEW};
 
 /* Bytes on a 32-bit target (Cortex-M, rv32): what the header comment reports. */
 #define TARGET_POINTER_BYTES 4u
@@ -299,6 +305,7 @@ typedef struct {
     size_t alias_count, alias_capacity;
     int out_of_memory;
     const tarn_bake_points *points; /* --points: qualities baked as NAME_points; count 0 without */
+    uint32_t static_bin_count;      /* the static view's bins, when the scene has one */
 } bake_plan;
 
 /* `array` with room for one element past `count`: itself, moved, or NULL when out
@@ -549,6 +556,11 @@ static void plan_static_vertices(bake_plan *p)
                      "objects[%zu] from the scene's camera: view position, near/d and screen position "
                      "(subpixels), lit colour (Q8.8), fresnel (Q1.15)", i);
     }
+    bake_item *item = add_item(p, BYTES_STATIC, &T_BIN, scene->static_view->bins, p->static_bin_count,
+                               "%s_static_bins", p->name);
+    if (item)
+        snprintf(item->note, sizeof item->note,
+                 "each cluster's screen box in 4-pixel cells, every object's in scene order");
     add_item(p, BYTES_STATIC, &T_STATIC_VIEW, scene->static_view, 0, "%s_static_view", p->name);
 }
 
@@ -1073,7 +1085,7 @@ static int choose_name(const tarn_loaded_scene *scene, const tarn_bake_options *
 
 /* The loaded scene as baked with static vertices: each object's copy points to its
  * vertices, and each mesh's copy has no positions, normals or colours, which only
- * computed them. */
+ * computed what the static vertices hold. */
 typedef struct {
     tarn_loaded_scene loaded;
     tarn_static_vertices vertices;
@@ -1118,6 +1130,19 @@ static int static_scene_make(const tarn_loaded_scene *scene, const tarn_frame_co
     return 0;
 }
 
+/* The working memory of a frame of the scene as baked, at the config and at each
+ * --points quality (loaded into `points`): the largest. 0, or -1 with `err` set. */
+static int baked_memory(const bake_plan *p, const tarn_bake_options *o, tarn_bake_points *points,
+                        size_t *memory_bytes, tarn_error *err)
+{
+    *memory_bytes = tarn_frame_memory_bytes(&p->config, &p->scene->scene);
+    if (o->points_path == NULL) return 0;
+    return tarn_bake_points_load(o->points_path, &p->config.quality, points, err) != 0 ||
+                   tarn_bake_points_check(points, &p->config, &p->scene->scene, memory_bytes, err) != 0
+               ? -1
+               : 0;
+}
+
 int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_bake_result *result,
               tarn_error *err)
 {
@@ -1130,24 +1155,26 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     plan.name = result->name;
     plan.config = o->config;
     plan.config.time_ms = 0;
-    totals.memory_bytes = tarn_frame_memory_bytes(&plan.config, &scene->scene);
-    if (totals.memory_bytes == 0)
+    if (tarn_frame_memory_bytes(&plan.config, &scene->scene) == 0)
         return tarn_fail(err, "%s: %ux%u with these quality settings: %s", o->scene_path, plan.config.width,
                          plan.config.height, tarn_status_text(TARN_ERR_CONFIG));
+    static_scene with_static;
+    if (o->static_view) {
+        if (static_scene_make(scene, &plan.config, &with_static, err) != 0) return -1;
+        plan.scene = &with_static.loaded;
+        plan.static_bin_count = with_static.vertices.bin_count;
+    }
     tarn_bake_points points = {NULL, NULL, NULL, 0};
     plan.points = &points;
-    if (o->points_path && (tarn_bake_points_load(o->points_path, &plan.config.quality, &points, err) != 0 ||
-                        tarn_bake_points_check(&points, &plan.config, &scene->scene, &totals.memory_bytes, err) != 0)) {
-        tarn_bake_points_free(&points);
-        return -1;
+    char *header_path = NULL, *link_path = NULL;
+    int failed = baked_memory(&plan, o, &points, &totals.memory_bytes, err);
+    if (!failed) {
+        header_path = path_beside(o->output_path, ".h", err);
+        link_path = header_path ? path_beside(o->output_path, "_link.h", err) : NULL;
+        failed = link_path == NULL;
     }
-    char *header_path = path_beside(o->output_path, ".h", err);
-    char *link_path = header_path ? path_beside(o->output_path, "_link.h", err) : NULL;
     totals.header_path = header_path;
     totals.link_path = link_path;
-    static_scene with_static;
-    int failed = link_path == NULL || (o->static_view && static_scene_make(scene, &plan.config, &with_static, err));
-    if (o->static_view && !failed) plan.scene = &with_static.loaded;
     failed = failed || plan_build(&plan, err);
     if (!failed) {
         totals.const_bytes = plan_bytes(&plan, totals.bytes);
@@ -1156,7 +1183,7 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     result->const_bytes = totals.const_bytes;
     result->memory_bytes = totals.memory_bytes;
     plan_free(&plan);
-    if (plan.scene != scene) static_scene_free(&with_static);
+    if (o->static_view) static_scene_free(&with_static);
     tarn_bake_points_free(&points);
     free(header_path);
     free(link_path);

@@ -10,6 +10,7 @@
 #include "png_io.h"
 #include "reference.h"
 #include "scene_load.h"
+#include "static_view.h"
 
 /* Room for a sequence frame's file name: -o's name plus "-0000.png". */
 #define FRAME_PATH_MAX 4096
@@ -202,9 +203,10 @@ static int print_memory(const tarn_cli_options *o, const tarn_loaded_scene *scen
     if (bytes == 0)
         return tarn_fail(err, "%s: %ux%u with these quality settings: %s", scene->name, config->width,
                          config->height, tarn_status_text(TARN_ERR_CONFIG));
-    printf("memory scene=%s size=%ux%u tile=%u depth_bits=%u apron=%d bytes=%zu\n", scene->name,
+    printf("memory scene=%s size=%ux%u tile=%u depth_bits=%u apron=%d bytes=%zu baked_bytes=%zu\n", scene->name,
            config->width, config->height, config->quality.tile_size, config->quality.depth_bits,
-           (int)tarn_frame_apron_pixels(&scene->scene, config), bytes);
+           (int)tarn_frame_apron_pixels(&scene->scene, config), bytes,
+           tarn_static_memory_bytes(config, &scene->scene, config));
     return 0;
 }
 

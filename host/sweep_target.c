@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "child_process.h"
+#include "static_view.h"
 #include "sweep_grid.h"
 
 #define PATH_MAX_BYTES 4096
@@ -31,15 +32,17 @@ size_t tarn_sweep_board_memory(const char *board)
 
 /* The point at the largest tile the board holds (which walks the geometry the
  * fewest times), or 0 when none does. Points that vary the tile themselves are the
- * host's: a board picks its own. */
+ * host's: a board picks its own. The memory is the baked scene's, whose static view
+ * is made for the first point the board holds (`made_for`, or NULL while this is
+ * that point): a point in its frame reads the bins from flash. */
 static int fitted_quality(const tarn_sweep_scene *scene, const tarn_sweep_point *p, size_t budget,
-                          const tarn_scene *core_scene, tarn_quality *out)
+                          const tarn_scene *core_scene, const tarn_frame_config *made_for, tarn_quality *out)
 {
     if (p->host_tile_only) return 0;
     for (unsigned tile = TARN_TILE_SIZE_MAX; tile >= TARN_TILE_SIZE_MIN; tile--) {
         tarn_frame_config config = {scene->width, scene->height, p->quality, 0};
         config.quality.tile_size = (uint8_t)tile;
-        const size_t bytes = tarn_frame_memory_bytes(&config, core_scene);
+        const size_t bytes = tarn_static_memory_bytes(&config, core_scene, made_for ? made_for : &config);
         if (bytes > 0 && bytes <= budget) {
             *out = config.quality;
             return 1;
@@ -54,10 +57,12 @@ static size_t fit_points(tarn_sweep_scene *scene, const tarn_scene *core_scene, 
                          tarn_quality *fitted, size_t *map)
 {
     size_t count = 0;
+    tarn_frame_config made_for = {scene->width, scene->height, tarn_quality_default(), 0}; /* its quality: below */
     for (size_t i = 0; i < scene->count; i++) {
         tarn_sweep_point *p = &scene->points[i];
         p->tile[source] = 0;
-        if (!fitted_quality(scene, p, budget, core_scene, &fitted[count])) continue;
+        if (!fitted_quality(scene, p, budget, core_scene, count > 0 ? &made_for : NULL, &fitted[count])) continue;
+        if (count == 0) made_for.quality = fitted[0];
         p->tile[source] = fitted[count].tile_size;
         map[count++] = i;
     }

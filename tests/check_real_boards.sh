@@ -4,7 +4,7 @@
 # checks the images that do build).
 #
 # - A scene too large for the board's RAM: the STM32F411 (128 KB) and the pond at
-#   --tile 64, whose renderer alone needs 165,268 bytes (tarn memory). The link must fail, say by
+#   --tile 64, whose renderer alone needs 163,840 bytes as baked (tarn memory). The link must fail, say by
 #   how many bytes RAM overflowed and what to change, and leave no firmware.elf.
 # - A stack reserve smaller than the deepest call chain (firmware/stack_bound.sh):
 #   the build must fail, saying how many bytes the chain needs.
@@ -21,7 +21,7 @@ pass() { passed=$((passed + 1)); }
 fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
 
 rm -rf "$dir"
-needs=$(build/release/tarn memory scenes/pond.json --tile 64 | sed -n 's/.* bytes=\([0-9]*\)$/\1/p')
+needs=$(build/release/tarn memory scenes/pond.json --tile 64 | sed -n 's/.* baked_bytes=\([0-9]*\)$/\1/p')
 out=$(make --no-print-directory firmware BOARD=$board FW_DIR=$dir BAKE_FLAGS="--tile 64" 2>&1)
 status=$?
 overflow=$(printf '%s\n' "$out" | grep -E "region .RAM. overflowed by [0-9]+ bytes" | head -1)

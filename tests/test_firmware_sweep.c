@@ -24,6 +24,7 @@
 #include "firmware_conf.h"
 #include "image_checksum.h"
 #include "scene_load.h"
+#include "static_view.h"
 #include "tarn_checksum.h"
 
 #define SWEEP_DIR_DEFAULT "build/firmware-sweep-check/qemu-m0"
@@ -101,7 +102,7 @@ static void test_sweep_matches_host(void **state)
         tarn_frame_config point = config;
         point.quality = points.qualities[i];
         field(line, "memory_bytes", value, sizeof value);
-        assert_int_equal(strtoul(value, NULL, 10), tarn_frame_memory_bytes(&point, &scene.scene));
+        assert_int_equal(strtoul(value, NULL, 10), tarn_static_memory_bytes(&point, &scene.scene, &config));
         field(line, "insn_per_pixel", value, sizeof value);
         unsigned long per_pixel = strtoul(value, NULL, 10);
         field(line, "frame_insn", value, sizeof value);

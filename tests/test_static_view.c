@@ -1,7 +1,8 @@
-/* test_static_view.c: a scene drawn with static vertices (tarn_scene.h) gives the
- * frame it gives without them, byte for byte: on every scene, at each preset and two
- * times, with the meshes' positions kept or left out, and in a frame other than the
- * one their screen positions were made for. A moved camera drops them (or, without
+/* test_static_view.c: a scene drawn with static vertices and bins (tarn_scene.h)
+ * gives the frame it gives without them, byte for byte: on every scene, at each
+ * preset and two times, with the meshes' positions kept or left out, and in a frame
+ * other than the one their screen positions and bins were made for. The bins take
+ * the place of found ones; a moved camera drops the static view (or, without
  * positions, refuses the scene), and static vertices out of their ranges are refused. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -113,6 +114,10 @@ static void test_every_scene_draws_the_same_frame(void **state)
             for (size_t t = 0; t < 2; t++) {
                 const tarn_frame_config config = scene_config(scenes[k], (tarn_preset)preset, times[t]);
                 assert_same_frame(scenes[k], &config, &config, (int)t);
+                /* made at the coarsest precision: this one projects and bins again */
+                tarn_frame_config coarse = config;
+                coarse.quality.subpixel_bits = TARN_SUBPIXEL_BITS_MIN;
+                assert_same_frame(scenes[k], &config, &coarse, (int)t);
             }
 }
 
@@ -127,6 +132,39 @@ static void test_another_frame_projects_again(void **state)
     tarn_frame_config smaller = fast;
     smaller.width = 200;
     assert_same_frame("scenes/pond.json", &smaller, &fast, 0);
+}
+
+/* In their own frame the static bins are read, not found: no memory for them, and
+ * emptied they leave nothing to draw. A frame of another size or precision finds its
+ * own. */
+static void test_static_bins_stand_in_for_found_ones(void **state)
+{
+    (void)state;
+    const tarn_frame_config fast = scene_config("scenes/pond.json", TARN_PRESET_FAST, 0);
+    const tarn_frame_config exact = scene_config("scenes/pond.json", TARN_PRESET_EXACT, 0);
+    assert_true(fast.quality.cluster_bins && exact.quality.cluster_bins);
+    static_scene s;
+    static_scene_make(&s, "scenes/pond.json", &fast, 1);
+    assert_true(s.vertices.bin_count > 0);
+    assert_int_equal(tarn_frame_memory_bytes(&fast, &s.scene),
+                     tarn_frame_memory_bytes(&fast, &s.loaded.scene) - 4u * s.vertices.bin_count);
+    assert_int_equal(tarn_frame_memory_bytes(&exact, &s.scene), tarn_frame_memory_bytes(&exact, &s.loaded.scene));
+    tarn_frame_config smaller = fast;
+    smaller.width = 200;
+    assert_int_equal(tarn_frame_memory_bytes(&smaller, &s.scene), tarn_frame_memory_bytes(&smaller, &s.loaded.scene));
+    uint8_t *drawn = render(&s.scene, &fast, "pond");
+    for (uint32_t i = 0; i < s.vertices.bin_count; i++) {
+        const tarn_cluster_bin empty = {255, 255, 0, 0};
+        s.vertices.bins[i] = empty;
+    }
+    uint8_t *binned_out = render(&s.scene, &fast, "pond, empty bins");
+    const uint8_t background[3] = {0x87, 0xce, 0xeb};
+    for (size_t p = 0; p < (size_t)fast.width * fast.height; p++)
+        assert_memory_equal(&binned_out[3 * p], background, 3);
+    assert_memory_not_equal(drawn, binned_out, 3u * fast.width * fast.height);
+    free(drawn);
+    free(binned_out);
+    static_scene_free(&s);
 }
 
 static tarn_status render_status(const tarn_scene *scene, const tarn_frame_config *config)
@@ -204,6 +242,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_every_scene_draws_the_same_frame),
         cmocka_unit_test(test_another_frame_projects_again),
+        cmocka_unit_test(test_static_bins_stand_in_for_found_ones),
         cmocka_unit_test(test_moved_camera_drops_static_vertices),
         cmocka_unit_test(test_out_of_range_static_vertices_are_refused),
     };
