@@ -10,7 +10,7 @@
 
 /* Triangles per run: smaller runs skip more precisely, but every run costs a
  * sphere test per tile (docs/figures.md has the measurement behind this value). */
-#define TARN_CLUSTER_TRIANGLES 16u
+#define TARN_CLUSTER_TRIANGLES 8u
 
 /* Reorders m's triangles along a Z-order curve of their centroids and fills
  * m->clusters. 0, or -1 with `err` set (out of memory; m is left as it was). */
