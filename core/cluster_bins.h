@@ -7,7 +7,8 @@
  * several tiles. With bins (the quality's `cluster_bins`), one pass a frame
  * projects every cluster and keeps the screen box its drawable triangles cover, in
  * cells of 4 pixels; a tile then walks only the clusters whose box meets it. That
- * costs 4 bytes of frame memory a cluster. A cluster cut by the near plane has no
+ * costs 4 bytes of frame memory a cluster, or none where the scene's static view
+ * holds the boxes for the frame (tarn bake). A cluster cut by the near plane has no
  * meaningful screen box: its bin is the whole screen and the sphere decides. */
 #ifndef TARN_CLUSTER_BINS_H
 #define TARN_CLUSTER_BINS_H

@@ -10,8 +10,9 @@
  *  - exact: every knob at its most accurate;
  *  - fast: the Cortex-M0's choice. Its 16 KB hold no refraction apron; without one
  *    the water pass draws in place, so 16-bit depth and 40-pixel tiles fit (the
- *    pond's 11,508 bytes of the board's ~11,776: bigger tiles walk each cluster
- *    fewer times), span perspective and one Newton step are on the M0's front, and
+ *    baked pond's 10,080 bytes of the board's ~12,100: bigger tiles walk each
+ *    cluster fewer times, and 43 would leave the last tiles narrow), span
+ *    perspective and one Newton step are on the M0's front, and
  *    the smallest exp2 table and fog argument cost nothing visible once refraction
  *    is gone. */
 #include "tarn_render.h"

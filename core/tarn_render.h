@@ -173,7 +173,8 @@ int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config
  * without the underwater view, the water pass draws over the opaque buffers
  * instead, and needs two rows of the tile more: (tile_size^2 + 2 * tile_size) *
  * (4 + depth_bits/8). Cluster bins add 4 bytes for each cluster of the scene's
- * meshes (one for a mesh without clusters).
+ * meshes (one for a mesh without clusters), unless the scene's static view holds
+ * them for this frame (tarn_scene.h).
  * `scene` may be NULL for an opaque-only budget without bins. */
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene);
 
