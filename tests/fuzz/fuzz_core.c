@@ -1,6 +1,7 @@
 /* fuzz_core.c: the core itself, on scenes, cameras and quality settings built from
  * the fuzzer's bytes: any numbers in every field, indices and clusters that may run
- * past their arrays, textures of any size, water with any features. The frame's
+ * past their arrays, textures of any size, water with any features, and static
+ * vertices and bins (tarn_scene.h) that need not agree with anything. The frame's
  * memory is exactly tarn_frame_memory_bytes() from the heap, so AddressSanitizer
  * sees any byte written outside it. A render either refuses (a config or scene
  * error, with nothing sent) or hands over every pixel of the frame exactly once,
@@ -20,6 +21,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 typedef struct {
     tarn_vec3 positions[VERTICES_MAX], normals[VERTICES_MAX];
+    tarn_static_vertex static_vertices[VERTICES_MAX];
     tarn_uv uvs[VERTICES_MAX];
     uint32_t colours[VERTICES_MAX];
     uint16_t indices[3 * TRIANGLES_MAX];
@@ -33,6 +35,8 @@ typedef struct {
     fuzz_object parts[OBJECTS_MAX];
     tarn_object objects[OBJECTS_MAX];
     tarn_underwater underwater;
+    tarn_static_view static_view;
+    tarn_cluster_bin bins[2 * OBJECTS_MAX];
     tarn_scene scene;
     uint8_t texels[2][16 * 16 * 3];
     tarn_texture textures[2];
@@ -233,6 +237,53 @@ static tarn_frame_config make_config(fuzz_reader *r)
     return c;
 }
 
+/* A static vertex: mostly in the ranges the scene check takes, sometimes anything. */
+static tarn_static_vertex static_vertex(fuzz_reader *r)
+{
+    tarn_static_vertex v;
+    const uint8_t kind = fuzz_u8(r);
+    v.x = number(r);
+    v.y = number(r);
+    v.d = number(r);
+    v.inv_depth = kind & 1u ? 0u : (kind & 0xF0u) == 0xF0u ? fuzz_u32(r) : 1u + fuzz_u32(r) % (1u << 30);
+    v.screen_x = (int16_t)((kind & 0xF0u) == 0xF0u ? fuzz_u16(r) : fuzz_u16(r) % 2048u);
+    v.screen_y = (int16_t)((kind & 0xF0u) == 0xE0u ? fuzz_u16(r) : fuzz_u16(r) % 2048u);
+    for (int c = 0; c < 3; c++) v.lit[c] = (uint16_t)((kind & 0x0Eu) == 0x0Eu ? fuzz_u16(r) : fuzz_u16(r) % 65281u);
+    v.fresnel = (uint16_t)((kind & 0x0Eu) == 0x0Cu ? fuzz_u16(r) : fuzz_u16(r) % 32769u);
+    return v;
+}
+
+/* Sometimes a static view: mostly the scene's camera and light and the frame's
+ * size, with static vertices on some objects (whose positions may then be gone) and
+ * any bins at all. Never for an input that ran out of bytes (they read as 0), so the
+ * seeds made before static views still draw what they drew. */
+static void make_static_view(fuzz_scene *s, const tarn_frame_config *config, fuzz_reader *r)
+{
+    if (fuzz_u8(r) < 160) return;
+    tarn_static_view *v = &s->static_view;
+    const uint8_t kind = fuzz_u8(r);
+    v->camera = s->scene.camera;
+    v->light = s->scene.light;
+    if ((kind & 0x0Fu) == 0x0Fu) v->camera.near ^= 1;
+    v->width = (kind & 0x30u) == 0x30u ? fuzz_u16(r) : config->width;
+    v->height = config->height;
+    v->subpixel_bits = (kind & 0xC0u) == 0xC0u ? fuzz_u8(r) : config->quality.subpixel_bits;
+    for (size_t b = 0; b < sizeof s->bins / sizeof s->bins[0]; b++) {
+        const tarn_cluster_bin bin = {fuzz_u8(r), fuzz_u8(r), fuzz_u8(r), fuzz_u8(r)};
+        s->bins[b] = bin;
+    }
+    v->bins = fuzz_u8(r) < 200 ? s->bins : NULL;
+    s->scene.static_view = v;
+    for (unsigned k = 0; k < s->scene.object_count; k++) {
+        const uint8_t use = fuzz_u8(r);
+        if (use < 64) continue;
+        fuzz_object *o = &s->parts[k];
+        for (unsigned i = 0; i < o->mesh.vertex_count; i++) o->static_vertices[i] = static_vertex(r);
+        s->objects[k].static_vertices = o->static_vertices;
+        if (use >= 192) o->mesh.positions = o->mesh.normals = NULL;
+    }
+}
+
 typedef struct {
     uint16_t width, height;
     uint8_t seen[FRAME_MAX * FRAME_MAX];
@@ -258,6 +309,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     static fuzz_scene s;
     make_scene(&s, &r);
     const tarn_frame_config config = make_config(&r);
+    make_static_view(&s, &config, &r);
     const size_t bytes = tarn_frame_memory_bytes(&config, &s.scene);
     void *memory = malloc(bytes > 0 ? bytes : 1);
     static coverage seen;
