@@ -231,9 +231,12 @@ $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
 			echo "tarn: $(BOARD) has too little RAM for $(FW_SCENE) [$(strip $(FW_BAKE_FLAGS) $(FW_POINTS_FLAGS))]: the renderer needs" \
 				"$$(sed -n 's/^#define SCENE_MEMORY_BYTES //p' $(FW_DIR)/scene.h) bytes and the stack $(BOARD_STACK_BYTES);" \
 				"bake with a smaller --tile (or --depth 16, --apron off where they are not set yet;" \
-				"tarn memory SCENE QUALITY shows the bytes)" >&2; fi; \
+				"tarn memory SCENE QUALITY shows the bytes)$(if $(findstring --static-view off,$(FW_BAKE_FLAGS)),;" \
+				"without --static-view off the frame's cluster bins come from flash instead)" >&2; fi; \
 		if grep -q "region .FLASH. overflowed" $(FW_DIR)/link.err; then \
-			echo "tarn: $(BOARD)'s flash cannot hold $(FW_SCENE): use smaller textures or fewer mesh segments (the header of $(FW_DIR)/scene.c counts the bytes)" >&2; fi; \
+			echo "tarn: $(BOARD)'s flash cannot hold $(FW_SCENE): use smaller textures or fewer mesh segments" \
+				"$(if $(findstring --static-view off,$(FW_BAKE_FLAGS)),,(or bake with --static-view off: its meshes take less flash than static vertices and bins))" \
+				"(the header of $(FW_DIR)/scene.c counts the bytes)" >&2; fi; \
 		rm -f $@; exit 1; fi
 	@cat $(FW_DIR)/link.err >&2; rm -f $(FW_DIR)/link.err
 	@bound=$$(firmware/stack_bound.sh $(FW_CROSS) $(FW_DIR)/obj $(BOARD_STACK_ENTRY) 2>&1 | sed -n 's/^stack_bytes=//p'); \

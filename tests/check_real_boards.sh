@@ -10,6 +10,8 @@
 #   the build must fail, saying how many bytes the chain needs.
 # - A missing cross compiler: the build must stop before anything else, naming the
 #   compiler and the package that has it.
+# - A scene too large for a board's flash (the Cortex-M0's 256 KB): the link must fail
+#   the same way, and with the static view suggest baking without it.
 #
 # Both build into build/firmware-bad/, so the real builds stay as they are.
 set -u
@@ -54,6 +56,36 @@ if [ $status -ne 0 ] && printf '%s\n' "$out" |
 else
     fail "$board without its compiler should stop naming it (status $status): $out"
 fi
+
+# a scene too large for a board's flash: a sphere of 8,192 vertices on the Cortex-M0's
+# 256 KB. The link must fail saying by how much and what to change (with the static
+# view, that its meshes would take less), and leave no firmware.elf.
+m0_dir=build/firmware-bad/qemu-m0
+mkdir -p build/firmware-bad
+cat > build/firmware-bad/big-sphere.json <<'SCENE'
+{
+  "frame": {"width": 240, "height": 240},
+  "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "fov": 60, "near": 0.1, "far": 100},
+  "materials": {"red": {"colour": "#d0452f"}},
+  "objects": [{"type": "sphere", "material": "red", "radius": 1, "segments": 128, "rings": 64}]
+}
+SCENE
+for view in on off; do
+    rm -rf "$m0_dir"
+    out=$(make --no-print-directory firmware BOARD=qemu-m0 FW_DIR=$m0_dir SCENE=build/firmware-bad/big-sphere.json \
+        BAKE_FLAGS="--quality fast --static-view $view" 2>&1)
+    status=$?
+    note=$(printf '%s\n' "$out" | grep "^tarn: qemu-m0's flash cannot hold build/firmware-bad/big-sphere.json: use smaller textures")
+    suggests=$(printf '%s\n' "$note" | grep -c -- "or bake with --static-view off")
+    if [ $status -ne 0 ] && [ ! -e "$m0_dir/firmware.elf" ] && [ -n "$note" ] &&
+        printf '%s\n' "$out" | grep -qE "region .FLASH. overflowed by [0-9]+ bytes" &&
+        [ "$suggests" -eq "$([ $view = on ] && echo 1 || echo 0)" ]; then
+        pass
+    else
+        fail "qemu-m0 with a sphere too large for its flash (--static-view $view) should fail to link, saying what to change (status $status):"
+        printf '%s\n' "$out" | grep -v "gcc -std" | tail -4
+    fi
+done
 
 rm -rf build/firmware-bad
 echo "real boards, bad builds: $passed passed, $failed failed"
