@@ -212,6 +212,7 @@ static void carve_buffers(frame_state *f, void *memory)
     f->bins = f->found_bins != NULL ? f->found_bins : l->static_bins;
     f->opaque.stride = l->region;
     f->opaque.quality = f->water.quality = &f->config->quality;
+    f->opaque.log2_span = f->water.log2_span = (uint8_t)(31u - tarn_clz32(f->config->quality.perspective_span));
     f->opaque.water = NULL;
     f->opaque.water_mark = f->opaque.water_overlap = 0u;
     f->water.water = &f->water_context;

@@ -133,6 +133,7 @@ typedef struct {
     void *depth;        /* uint16_t or uint32_t per pixel by depth_bits, near/d */
     int32_t stride;
     const tarn_quality *quality;
+    uint8_t log2_span;  /* log2 of the quality's perspective_span, taken once a frame */
     /* the water pass only: the frame, and the water shading context (its buffers
      * point at the opaque pass's colour and depth) */
     const tarn_view *view;

@@ -228,7 +228,7 @@ typedef union {
     span_cache span;
 } row_attributes;
 
-static void row_attributes_start(row_attributes *row, const tarn_quality *quality, const attribute_set *set,
+static void row_attributes_start(row_attributes *row, const tarn_tile_target *tile, const attribute_set *set,
                                  const triangle_setup *t, int32_t j)
 {
     if (set->perspective == TARN_PERSPECTIVE_AFFINE) {
@@ -236,7 +236,7 @@ static void row_attributes_start(row_attributes *row, const tarn_quality *qualit
     } else if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN) {
         row->span.limit = INT32_MIN;
         row->span.length = -1;
-        row->span.log2_span = 31u - tarn_clz32(quality->perspective_span);
+        row->span.log2_span = tile->log2_span;
     }
 }
 
@@ -291,7 +291,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
     }
     if (i > i1) return;
     row_attributes row;
-    row_attributes_start(&row, tile->quality, set, t, j);
+    row_attributes_start(&row, tile, set, t, j);
     const int32_t offset = (j - tile->origin_y) * tile->stride - tile->origin_x;
     /* each edge is linear along the row, so the covered pixels are one run: after
      * it, nothing more is covered */

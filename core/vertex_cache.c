@@ -59,19 +59,30 @@ static tarn_cached_vertex *cache_slot(tarn_vertex_cache *cache, uint16_t index)
     return &cache->slot[((uint32_t)index * 40503u >> 11) & (TARN_VERTEX_CACHE_SLOTS - 1u)];
 }
 
+/* A vertex's screen position and inverse depth, kept. */
+static inline void keep_projection(tarn_cached_vertex *to, int16_t screen_x, int16_t screen_y, uint32_t inv_depth)
+{
+    to->screen_x = screen_x;
+    to->screen_y = screen_y;
+    to->inv_depth = inv_depth;
+    to->state |= TARN_CACHED_PROJECTED;
+}
+
+/* A vertex's shading, kept. */
+static inline void keep_shading(tarn_cached_vertex *to, const uint16_t lit[3], uint16_t fresnel)
+{
+    for (int c = 0; c < 3; c++) to->lit[c] = lit[c];
+    to->fresnel = fresnel;
+    to->state |= TARN_CACHED_SHADED;
+}
+
 /* A static vertex's shading, and its projection where it was projected for this
  * frame, into the slot that holds its position and outcode. */
 static void take_static_vertex(const tarn_view *view, const tarn_static_vertex *vertex, tarn_cached_vertex *slot)
 {
-    for (int c = 0; c < 3; c++) slot->lit[c] = vertex->lit[c];
-    slot->fresnel = vertex->fresnel;
-    slot->state |= TARN_CACHED_SHADED;
-    if (view->static_screen && vertex->inv_depth != 0u && slot->outcode == 0u) {
-        slot->screen_x = vertex->screen_x;
-        slot->screen_y = vertex->screen_y;
-        slot->inv_depth = vertex->inv_depth;
-        slot->state |= TARN_CACHED_PROJECTED;
-    }
+    keep_shading(slot, vertex->lit, vertex->fresnel);
+    if (view->static_screen && vertex->inv_depth != 0u && slot->outcode == 0u)
+        keep_projection(slot, vertex->screen_x, vertex->screen_y, vertex->inv_depth);
 }
 
 /* The vertex's view position and outcode, from the cache or computed into it, copied
@@ -142,17 +153,9 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
         tarn_view_vertex v;
         set_view_position(&v, vertex);
         tarn_project_position(cache->view, &v, screen);
-        vertex->screen_x = (int16_t)screen->x;
-        vertex->screen_y = (int16_t)screen->y;
-        vertex->inv_depth = screen->inv_depth;
-        vertex->state |= TARN_CACHED_PROJECTED;
+        keep_projection(vertex, (int16_t)screen->x, (int16_t)screen->y, screen->inv_depth);
         tarn_cached_vertex *slot = holding_slot(cache, vertex);
-        if (slot != NULL) {
-            slot->screen_x = vertex->screen_x;
-            slot->screen_y = vertex->screen_y;
-            slot->inv_depth = vertex->inv_depth;
-            slot->state |= TARN_CACHED_PROJECTED;
-        }
+        if (slot != NULL) keep_projection(slot, vertex->screen_x, vertex->screen_y, vertex->inv_depth);
     }
     screen->x = vertex->screen_x;
     screen->y = vertex->screen_y;
@@ -165,15 +168,10 @@ void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, t
     set_view_position(v, vertex);
     if (TARN_LINK_COMPUTED_VERTICES && !(vertex->state & TARN_CACHED_SHADED)) {
         tarn_vertex_shade(cache->view, cache->xform, mesh, vertex->index, v);
-        for (int c = 0; c < 3; c++) vertex->lit[c] = (uint16_t)v->lit[c];
-        vertex->fresnel = (uint16_t)v->fresnel;
-        vertex->state |= TARN_CACHED_SHADED;
+        const uint16_t lit[3] = {(uint16_t)v->lit[0], (uint16_t)v->lit[1], (uint16_t)v->lit[2]};
+        keep_shading(vertex, lit, (uint16_t)v->fresnel);
         tarn_cached_vertex *slot = holding_slot(cache, vertex);
-        if (slot != NULL) {
-            for (int c = 0; c < 3; c++) slot->lit[c] = vertex->lit[c];
-            slot->fresnel = vertex->fresnel;
-            slot->state |= TARN_CACHED_SHADED;
-        }
+        if (slot != NULL) keep_shading(slot, vertex->lit, vertex->fresnel);
         return;
     }
     for (int c = 0; c < 3; c++) v->lit[c] = vertex->lit[c];

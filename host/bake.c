@@ -1083,50 +1083,18 @@ static int choose_name(const tarn_loaded_scene *scene, const tarn_bake_options *
     return 0;
 }
 
-/* The loaded scene as baked with static vertices: each object's copy points to its
- * vertices, and each mesh's copy has no positions, normals or colours, which only
- * computed what the static vertices hold. */
+/* The loaded scene as baked with its static view (static_view.h). */
 typedef struct {
     tarn_loaded_scene loaded;
-    tarn_static_vertices vertices;
-    tarn_object *objects;
-    tarn_mesh *meshes;
+    tarn_static_scene with_view;
 } static_scene;
-
-static void static_scene_free(static_scene *s)
-{
-    tarn_static_vertices_free(&s->vertices);
-    free(s->objects);
-    free(s->meshes);
-}
 
 static int static_scene_make(const tarn_loaded_scene *scene, const tarn_frame_config *config, static_scene *out,
                              tarn_error *err)
 {
-    memset(out, 0, sizeof *out);
-    const size_t count = scene->scene.object_count > 0 ? scene->scene.object_count : 1u;
-    out->objects = calloc(count, sizeof *out->objects);
-    out->meshes = calloc(count, sizeof *out->meshes);
-    if (out->objects == NULL || out->meshes == NULL) {
-        static_scene_free(out);
-        return tarn_fail(err, "out of memory computing static vertices");
-    }
-    if (tarn_static_vertices_build(&scene->scene, config, &out->vertices, err) != 0) {
-        static_scene_free(out);
-        return -1;
-    }
-    for (size_t i = 0; i < scene->scene.object_count; i++) {
-        out->meshes[i] = *scene->scene.objects[i].mesh;
-        out->meshes[i].positions = NULL;
-        out->meshes[i].normals = NULL;
-        out->meshes[i].colours = NULL;
-        out->objects[i] = scene->scene.objects[i];
-        out->objects[i].mesh = &out->meshes[i];
-        out->objects[i].static_vertices = out->vertices.vertices[i];
-    }
+    if (tarn_static_scene_make(&scene->scene, config, 0, &out->with_view, err) != 0) return -1;
     out->loaded = *scene;
-    out->loaded.scene.objects = out->objects;
-    out->loaded.scene.static_view = &out->vertices.view;
+    out->loaded.scene = out->with_view.scene;
     return 0;
 }
 
@@ -1162,7 +1130,7 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     if (o->static_view) {
         if (static_scene_make(scene, &plan.config, &with_static, err) != 0) return -1;
         plan.scene = &with_static.loaded;
-        plan.static_bin_count = with_static.vertices.bin_count;
+        plan.static_bin_count = with_static.with_view.vertices.bin_count;
     }
     tarn_bake_points points = {NULL, NULL, NULL, 0};
     plan.points = &points;
@@ -1183,7 +1151,7 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     result->const_bytes = totals.const_bytes;
     result->memory_bytes = totals.memory_bytes;
     plan_free(&plan);
-    if (o->static_view) static_scene_free(&with_static);
+    if (o->static_view) tarn_static_scene_free(&with_static.with_view);
     tarn_bake_points_free(&points);
     free(header_path);
     free(link_path);

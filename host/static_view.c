@@ -2,6 +2,7 @@
 #include "static_view.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 #include "cluster_bins.h"
 #include "pipeline.h"
@@ -41,34 +42,17 @@ static tarn_static_vertex *object_vertices(const tarn_view *view, const tarn_obj
     return vertices;
 }
 
-/* The bins a frame of the scene with these static vertices finds: the same function
- * on the same vertices, so the same boxes. */
-static int static_bins(const tarn_scene *scene, const tarn_frame_config *config, tarn_static_vertices *s)
+static void static_vertices_free(tarn_static_vertices *s)
 {
-    tarn_object *objects = calloc(scene->object_count > 0 ? scene->object_count : 1u, sizeof *objects);
-    s->bin_count = tarn_cluster_bin_count(scene);
-    s->bins = malloc((s->bin_count > 0 ? s->bin_count : 1u) * sizeof *s->bins);
-    if (objects == NULL || s->bins == NULL) {
-        free(objects);
-        return -1;
-    }
-    for (uint32_t i = 0; i < scene->object_count; i++) {
-        objects[i] = scene->objects[i];
-        objects[i].static_vertices = s->vertices[i];
-    }
-    tarn_scene with_static = *scene;
-    with_static.objects = objects;
-    with_static.static_view = &s->view;
-    tarn_view view;
-    tarn_view_setup(&with_static, config, &view);
-    tarn_bin_clusters(&with_static, &view, s->bins);
-    free(objects);
-    s->view.bins = s->bins;
-    return 0;
+    for (uint32_t i = 0; s->vertices != NULL && i < s->object_count; i++) free(s->vertices[i]);
+    free(s->vertices);
+    free(s->bins);
 }
 
-int tarn_static_vertices_build(const tarn_scene *scene, const tarn_frame_config *config,
-                               tarn_static_vertices *out, tarn_error *err)
+/* Every object's static vertices, and the static view they are for (its bins not
+ * yet found). 0, or -1 out of memory. */
+static int static_vertices_build(const tarn_scene *scene, const tarn_frame_config *config,
+                                 tarn_static_vertices *out)
 {
     tarn_scene plain = *scene; /* a view of its own, whatever static view it had */
     plain.static_view = NULL;
@@ -80,22 +64,71 @@ int tarn_static_vertices_build(const tarn_scene *scene, const tarn_frame_config 
     out->view.height = config->height;
     out->view.subpixel_bits = config->quality.subpixel_bits;
     out->view.bins = NULL;
-    out->bins = NULL;
     out->object_count = scene->object_count;
     out->vertices = calloc(scene->object_count > 0 ? scene->object_count : 1u, sizeof *out->vertices);
-    if (out->vertices == NULL) return tarn_fail(err, "out of memory computing static vertices");
-    for (uint32_t i = 0; i < scene->object_count; i++) {
-        out->vertices[i] = object_vertices(&view, &scene->objects[i]);
-        if (out->vertices[i] == NULL) {
-            tarn_static_vertices_free(out);
-            return tarn_fail(err, "out of memory computing static vertices");
-        }
+    if (out->vertices == NULL) return -1;
+    for (uint32_t i = 0; i < scene->object_count; i++)
+        if ((out->vertices[i] = object_vertices(&view, &scene->objects[i])) == NULL) return -1;
+    return 0;
+}
+
+/* The bins a frame of the scene with its static vertices finds: the same function
+ * on the same vertices, so the same boxes. 0, or -1 out of memory. */
+static int static_bins(tarn_static_scene *s, const tarn_frame_config *config)
+{
+    tarn_static_vertices *v = &s->vertices;
+    v->bin_count = tarn_cluster_bin_count(&s->scene);
+    v->bins = malloc((v->bin_count > 0 ? v->bin_count : 1u) * sizeof *v->bins);
+    if (v->bins == NULL) return -1;
+    tarn_view view;
+    tarn_view_setup(&s->scene, config, &view);
+    tarn_bin_clusters(&s->scene, &view, v->bins);
+    v->view.bins = v->bins;
+    return 0;
+}
+
+/* Object i's copy, drawing from its static vertices and a copy of its mesh. */
+static void copy_object(tarn_static_scene *s, const tarn_object *object, uint32_t i, int keep_positions)
+{
+    s->meshes[i] = *object->mesh;
+    if (!keep_positions) {
+        s->meshes[i].positions = NULL;
+        s->meshes[i].normals = NULL;
+        s->meshes[i].colours = NULL;
     }
-    if (static_bins(scene, config, out) != 0) {
-        tarn_static_vertices_free(out);
+    s->objects[i] = *object;
+    s->objects[i].mesh = &s->meshes[i];
+    s->objects[i].static_vertices = s->vertices.vertices[i];
+}
+
+int tarn_static_scene_make(const tarn_scene *scene, const tarn_frame_config *config, int keep_positions,
+                           tarn_static_scene *out, tarn_error *err)
+{
+    memset(out, 0, sizeof *out);
+    const size_t count = scene->object_count > 0 ? scene->object_count : 1u;
+    out->objects = calloc(count, sizeof *out->objects);
+    out->meshes = calloc(count, sizeof *out->meshes);
+    int failed = out->objects == NULL || out->meshes == NULL || static_vertices_build(scene, config, &out->vertices);
+    if (!failed) {
+        for (uint32_t i = 0; i < scene->object_count; i++) copy_object(out, &scene->objects[i], i, keep_positions);
+        out->scene = *scene;
+        out->scene.objects = out->objects;
+        out->scene.static_view = &out->vertices.view;
+        failed = static_bins(out, config);
+    }
+    if (failed) {
+        tarn_static_scene_free(out);
         return tarn_fail(err, "out of memory computing static vertices");
     }
     return 0;
+}
+
+void tarn_static_scene_free(tarn_static_scene *s)
+{
+    static_vertices_free(&s->vertices);
+    free(s->objects);
+    free(s->meshes);
+    memset(s, 0, sizeof *s);
 }
 
 size_t tarn_static_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene,
@@ -106,15 +139,4 @@ size_t tarn_static_memory_bytes(const tarn_frame_config *config, const tarn_scen
         config->quality.subpixel_bits == made_for->quality.subpixel_bits)
         without_found_bins.quality.cluster_bins = 0;
     return tarn_frame_memory_bytes(&without_found_bins, scene);
-}
-
-void tarn_static_vertices_free(tarn_static_vertices *s)
-{
-    for (uint32_t i = 0; s->vertices != NULL && i < s->object_count; i++) free(s->vertices[i]);
-    free(s->vertices);
-    free(s->bins);
-    s->vertices = NULL;
-    s->bins = NULL;
-    s->object_count = 0;
-    s->bin_count = 0;
 }

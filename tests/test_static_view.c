@@ -24,13 +24,12 @@ static const char *const scenes[] = {
     "scenes/extremes/tiny.json",
 };
 
-/* The loaded scene with static vertices for `made_for`, in arrays the test owns. */
+/* The loaded scene with its static view made for `made_for`. */
 typedef struct {
     tarn_loaded_scene loaded;
-    tarn_static_vertices vertices;
-    tarn_object *objects;
-    tarn_mesh *meshes; /* each object's mesh, copied, positions and normals left out */
-    tarn_scene scene;
+    tarn_static_scene with_view;
+    tarn_scene scene; /* with_view.scene, which a test may change */
+    tarn_static_vertices *vertices;
 } static_scene;
 
 static void static_scene_make(static_scene *s, const char *path, const tarn_frame_config *made_for,
@@ -38,33 +37,15 @@ static void static_scene_make(static_scene *s, const char *path, const tarn_fram
 {
     tarn_error err;
     if (tarn_scene_load(path, &s->loaded, &err) != 0) fail_msg("%s", err.message);
-    if (tarn_static_vertices_build(&s->loaded.scene, made_for, &s->vertices, &err) != 0)
+    if (tarn_static_scene_make(&s->loaded.scene, made_for, !without_positions, &s->with_view, &err) != 0)
         fail_msg("%s: %s", path, err.message);
-    const uint32_t count = s->loaded.scene.object_count;
-    s->objects = calloc(count, sizeof *s->objects);
-    s->meshes = calloc(count, sizeof *s->meshes);
-    assert_non_null(s->objects);
-    assert_non_null(s->meshes);
-    for (uint32_t i = 0; i < count; i++) {
-        s->objects[i] = s->loaded.scene.objects[i];
-        s->objects[i].static_vertices = s->vertices.vertices[i];
-        if (without_positions) {
-            s->meshes[i] = *s->objects[i].mesh;
-            s->meshes[i].positions = NULL;
-            s->meshes[i].normals = NULL;
-            s->objects[i].mesh = &s->meshes[i];
-        }
-    }
-    s->scene = s->loaded.scene;
-    s->scene.objects = s->objects;
-    s->scene.static_view = &s->vertices.view;
+    s->scene = s->with_view.scene;
+    s->vertices = &s->with_view.vertices;
 }
 
 static void static_scene_free(static_scene *s)
 {
-    free(s->objects);
-    free(s->meshes);
-    tarn_static_vertices_free(&s->vertices);
+    tarn_static_scene_free(&s->with_view);
     tarn_scene_free(&s->loaded);
 }
 
@@ -145,17 +126,17 @@ static void test_static_bins_stand_in_for_found_ones(void **state)
     assert_true(fast.quality.cluster_bins && exact.quality.cluster_bins);
     static_scene s;
     static_scene_make(&s, "scenes/pond.json", &fast, 1);
-    assert_true(s.vertices.bin_count > 0);
+    assert_true(s.vertices->bin_count > 0);
     assert_int_equal(tarn_frame_memory_bytes(&fast, &s.scene),
-                     tarn_frame_memory_bytes(&fast, &s.loaded.scene) - 4u * s.vertices.bin_count);
+                     tarn_frame_memory_bytes(&fast, &s.loaded.scene) - 4u * s.vertices->bin_count);
     assert_int_equal(tarn_frame_memory_bytes(&exact, &s.scene), tarn_frame_memory_bytes(&exact, &s.loaded.scene));
     tarn_frame_config smaller = fast;
     smaller.width = 200;
     assert_int_equal(tarn_frame_memory_bytes(&smaller, &s.scene), tarn_frame_memory_bytes(&smaller, &s.loaded.scene));
     uint8_t *drawn = render(&s.scene, &fast, "pond");
-    for (uint32_t i = 0; i < s.vertices.bin_count; i++) {
+    for (uint32_t i = 0; i < s.vertices->bin_count; i++) {
         const tarn_cluster_bin empty = {255, 255, 0, 0};
-        s.vertices.bins[i] = empty;
+        s.vertices->bins[i] = empty;
     }
     uint8_t *binned_out = render(&s.scene, &fast, "pond, empty bins");
     const uint8_t background[3] = {0x87, 0xce, 0xeb};
@@ -194,7 +175,7 @@ static void test_moved_camera_drops_static_vertices(void **state)
     assert_memory_equal(moved, with_static, 3u * config.width * config.height);
     assert_int_equal(render_status(&bare.scene, &config), TARN_ERR_SCENE);
     bare.scene.light.colour_rgb ^= 1u;
-    bare.scene.camera = bare.vertices.view.camera;
+    bare.scene.camera = bare.vertices->view.camera;
     assert_int_equal(render_status(&bare.scene, &config), TARN_ERR_SCENE);
     free(moved);
     free(with_static);
@@ -210,7 +191,7 @@ static void test_out_of_range_static_vertices_are_refused(void **state)
     static_scene s;
     static_scene_make(&s, "scenes/pond.json", &config, 1);
     assert_int_equal(render_status(&s.scene, &config), TARN_OK);
-    tarn_static_vertex *v = &s.vertices.vertices[0][0];
+    tarn_static_vertex *v = &s.vertices->vertices[0][0];
     const tarn_static_vertex saved = *v;
     v->lit[1] = 65281;
     assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
@@ -229,10 +210,10 @@ static void test_out_of_range_static_vertices_are_refused(void **state)
     assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
     *v = saved;
     assert_int_equal(render_status(&s.scene, &config), TARN_OK);
-    s.vertices.view.subpixel_bits = 0;
+    s.vertices->view.subpixel_bits = 0;
     assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
-    s.vertices.view.subpixel_bits = config.quality.subpixel_bits;
-    s.vertices.view.width = 0;
+    s.vertices->view.subpixel_bits = config.quality.subpixel_bits;
+    s.vertices->view.width = 0;
     assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
     static_scene_free(&s);
 }
