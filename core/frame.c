@@ -33,7 +33,8 @@ static int quality_in_range(const tarn_quality *q)
            (q->refraction_apron <= TARN_WATER_APRON_MAX || q->refraction_apron == TARN_APRON_FULL) &&
            (TARN_LINK_APRON || q->refraction_apron == 0) &&
            q->cluster_bins <= 1 &&
-           q->fog_argument_bits >= TARN_FOG_ARGUMENT_BITS_MIN && q->fog_argument_bits <= TARN_FOG_ARGUMENT_BITS_MAX;
+           q->fog_argument_bits >= TARN_FOG_ARGUMENT_BITS_MIN && q->fog_argument_bits <= TARN_FOG_ARGUMENT_BITS_MAX &&
+           (q->water_block == 1 || (TARN_LINK_WATER_BLOCKS && q->water_block == 2 && q->tile_size % 2 == 0));
 }
 
 tarn_status tarn_config_check(const tarn_frame_config *config)
@@ -95,6 +96,7 @@ typedef struct {
     int underwater;
     int in_place;         /* the water pass draws over the opaque buffers */
     size_t depth_bytes;
+    uint32_t blocks;      /* water block slots (tarn_water_block), 0 without */
     uint32_t bins;        /* cluster bins found in the frame's memory, 0 without */
     const tarn_cluster_bin *static_bins; /* the static view's instead, or NULL */
 } frame_layout;
@@ -117,6 +119,10 @@ static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene 
     l.region = l.tile + 2 * l.apron;
     l.water_region = l.tile + 2 * l.under_apron;
     l.depth_bytes = config->quality.depth_bits / 8u;
+    /* the underwater pass reads displaced water pixels over an apron that need not
+     * hold whole blocks */
+    l.blocks = TARN_LINK_WATER_BLOCKS && l.water && !l.underwater && config->quality.water_block == 2
+        ? (uint32_t)l.tile / 2u : 0u;
     const int binned = scene != NULL && config->quality.cluster_bins;
     l.static_bins = binned && TARN_LINK_STATIC_VERTICES && tarn_static_screen_applies(scene, config)
         ? scene->static_view->bins : NULL;
@@ -137,7 +143,7 @@ static size_t layout_bytes(const frame_layout *l)
     const size_t region = (size_t)l->region * (size_t)l->region;
     const size_t tile = (size_t)l->tile * (size_t)l->tile;
     return (region + water_pixels(l)) * (4u + l->depth_bytes) + (l->underwater ? tile * 4u : 0u) +
-           (size_t)l->bins * sizeof(tarn_cluster_bin);
+           (size_t)l->blocks * sizeof(tarn_water_block) + (size_t)l->bins * sizeof(tarn_cluster_bin);
 }
 
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
@@ -204,6 +210,8 @@ static void carve_buffers(frame_state *f, void *memory)
     next += water * 4u;
     f->final = (uint32_t *)(void *)next;
     next += l->underwater ? (size_t)l->tile * (size_t)l->tile * 4u : 0u;
+    f->water_context.blocks = l->blocks != 0u ? (tarn_water_block *)(void *)next : NULL;
+    next += (size_t)l->blocks * sizeof(tarn_water_block);
     f->opaque.depth = next;
     next += region * l->depth_bytes;
     f->water_depth = next;
@@ -217,6 +225,8 @@ static void carve_buffers(frame_state *f, void *memory)
     f->opaque.water_mark = f->opaque.water_overlap = 0u;
     f->water.water = &f->water_context;
     f->water_context.object = NULL; /* set up for the frame's first water object, kept across tiles */
+    f->water_context.triangle_serial = 0u;
+    if (l->blocks != 0u) memset(f->water_context.blocks, 0, (size_t)l->blocks * sizeof(tarn_water_block));
     f->water.view = f->opaque.view = f->view;
     f->water.config = f->opaque.config = f->config;
 }

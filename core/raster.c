@@ -221,6 +221,48 @@ static tarn_water_input water_input(const attribute_set *set, const uint32_t val
     return in;
 }
 
+/* Whether a pixel's background (near/d, Q1.30) lies as deep as its block's. */
+static int as_deep_as(uint32_t depth_q30, const tarn_water_block *block)
+{
+    const uint32_t apart = depth_q30 > block->depth_q30 ? depth_q30 - block->depth_q30 : block->depth_q30 - depth_q30;
+    return apart <= block->depth_q30 >> TARN_WATER_BLOCK_DEPTH_SHIFT;
+}
+
+/* The effects that apply at water pixel (i, j) of a frame with water blocks: those
+ * its block's top-left pixel found if this triangle drew it over as deep a
+ * background (tarn_water_block), else its own, kept in its block's slot when it is
+ * that top-left pixel. Which pixels share depends on the triangles alone: even
+ * tiles hold whole blocks. */
+static const tarn_water_effects *block_effects(const tarn_tile_target *tile, int32_t i, int32_t j,
+                                               const tarn_water_input *in, tarn_water_effects *own)
+{
+    tarn_water_context *w = tile->water;
+    tarn_water_block *block = &w->blocks[(i - tile->rect.x0) >> 1];
+    const int32_t row = j & ~1;
+    const uint32_t depth_q30 = tarn_water_background_q30(w, i, j);
+    if (block->serial == w->triangle_serial && block->row == row && as_deep_as(depth_q30, block))
+        return &block->effects;
+    const int top_left = ((i | j) & 1) == 0;
+    tarn_water_effects *e = top_left ? &block->effects : own;
+    tarn_water_effects_at(w, i, j, in, e);
+    if (top_left) {
+        block->serial = w->triangle_serial;
+        block->row = row;
+        block->depth_q30 = depth_q30;
+    }
+    return e;
+}
+
+/* The colour of water pixel (i, j), with its block's effects or its own. */
+static uint32_t water_colour(const tarn_tile_target *tile, int32_t i, int32_t j, const tarn_water_input *in)
+{
+    if (!TARN_LINK_WATER_BLOCKS || tile->water->blocks == NULL) return tarn_water_shade(tile->water, i, j, in);
+    tarn_water_effects own;
+    const tarn_water_effects *e = block_effects(tile, i, j, in, &own);
+    const unsigned sharp = e == &own ? e->sharp : tarn_water_sharp_features(tile->water, in, e->diff);
+    return tarn_water_apply(tile->water, e, sharp, i, j);
+}
+
 /* What one row keeps for its pixels' attributes, by the triangle's perspective
  * mode: the affine origin, or the span cache. */
 typedef union {
@@ -264,7 +306,7 @@ static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const at
     row_attributes_at(row, quality, set, t, i, j, values);
     if (TARN_LINK_WATER && tile->water != NULL) {
         const tarn_water_input in = water_input(set, values, inv_depth);
-        write_water_pixel(tile, offset, tarn_water_shade(tile->water, i, j, &in));
+        write_water_pixel(tile, offset, water_colour(tile, i, j, &in));
     } else {
         tile->colour[offset] = shade_pixel(set, texture, values);
     }
@@ -362,6 +404,7 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     if (draw.y1 > tile->rect.y1 - 1) draw.y1 = tile->rect.y1 - 1;
     if (draw.x0 > draw.x1 || draw.y0 > draw.y1 || box_outside_an_edge(&t, &draw)) return;
     const attribute_request request = request_for(tile, object);
+    if (TARN_LINK_WATER && tile->water != NULL) tile->water->triangle_serial++;
     attribute_set set;
     tarn_setup_attributes(&t, &request, perspective_mode(tile->quality, &t.box), &set);
     exact_value depth = tarn_exact_depth_at(&t, &set.depth, draw.x0, draw.y0);

@@ -71,13 +71,14 @@ uint32_t tarn_water_decay(const tarn_water_context *w, uint32_t rate, uint32_t x
     return tarn_exp2_neg_q16(-(tarn_q16)tarn_fog_argument_q16(rate, x, w->fog_argument_bits), w->exp2);
 }
 
+uint32_t tarn_water_background_q30(const tarn_water_context *w, int32_t i, int32_t j)
+{
+    return background_depth_q30(w, background_offset(w, i, j));
+}
+
 tarn_water_sample tarn_water_background(const tarn_water_context *w, int32_t i, int32_t j)
 {
-    tarn_water_sample s;
-    const int32_t offset = background_offset(w, i, j);
-    const uint32_t rgb = w->background[offset];
-    for (int c = 0; c < 3; c++) s.colour[c] = tarn_water_channel_q8(rgb, c);
-    s.depth = linear_depth(w, background_depth_q30(w, offset));
+    tarn_water_sample s = {i, j, linear_depth(w, tarn_water_background_q30(w, i, j))};
     return s;
 }
 
@@ -85,24 +86,35 @@ tarn_water_sample tarn_water_background(const tarn_water_context *w, int32_t i, 
  * a constant, the calls of effects left out are removed at compile time. */
 static int uses(const tarn_water_context *w, uint32_t feature)
 {
-    return (TARN_LINK_WATER_FEATURES & feature) != 0 && (w->water->features & feature) != 0;
+    return (TARN_LINK_WATER_FEATURES & feature) != 0 && (w->features & feature) != 0;
 }
 
-/* Step 7: the lit surface S over the background by (fresnel-raised) alpha. */
-static void compose(const tarn_water_context *w, const tarn_water_input *in, const uint32_t surface[3],
-                    uint32_t colour[3])
+/* Step 7's surface: S * lit / 255 in Q8.8 per channel, and its fresnel-raised alpha. */
+static void lit_surface(const tarn_water_context *w, const tarn_water_input *in, const uint32_t surface[3],
+                        tarn_water_effects *e)
 {
     uint32_t alpha = (uint32_t)w->water->alpha >> 1; /* Q1.15; [0, 1] by the scene check */
     if (uses(w, TARN_WATER_FRESNEL)) alpha = tarn_water_fresnel_alpha(w, in, alpha);
+    e->alpha = (uint16_t)alpha;
     for (int c = 0; c < 3; c++) {
-        /* S * lit / 255 in Q8.8: product / 65280, as product * 257 / 2^24 (fits: < 2^32) */
+        /* product / 65280, as product * 257 / 2^24 (fits: < 2^32) */
         const uint32_t product = surface[c] * in->lit[c];
-        const uint32_t surface_lit = (product + (product >> 8) + 32768u) >> 16;
-        colour[c] = (surface_lit * alpha + colour[c] * (32768u - alpha)) >> 15;
+        e->surface_lit[c] = (uint16_t)((product + (product >> 8) + 32768u) >> 16);
     }
 }
 
-uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in)
+/* Foam and sparkles at a pixel, sparkles from its normal's map components. */
+static unsigned sharp_features(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff,
+                               const tarn_water_normal *n)
+{
+    unsigned sharp = 0u;
+    if (uses(w, TARN_WATER_FOAM) && tarn_water_foam(w, in, diff)) sharp |= TARN_WATER_SHOWS_FOAM;
+    if (uses(w, TARN_WATER_SPARKLES) && tarn_water_sparkles(w, n)) sharp |= TARN_WATER_SHOWS_SPARKLES;
+    return sharp;
+}
+
+void tarn_water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
+                           tarn_water_effects *e)
 {
     const uint32_t surface_depth = linear_depth(w, in->inv_depth);
     tarn_water_normal n =
@@ -112,23 +124,81 @@ uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j, con
      * pixel's own, and the M0's fast preset would pay a third of the water pixel for it */
     if (TARN_LINK_APRON && uses(w, TARN_WATER_REFRACTION) && w->offset_limit > 0)
         below = tarn_water_refract(w, i, j, &n, below, surface_depth);
+    e->offset[0] = (int8_t)(below.x - i); /* within the apron, at most TARN_WATER_APRON_MAX */
+    e->offset[1] = (int8_t)(below.y - j);
     const uint32_t diff = below.depth > surface_depth ? below.depth - surface_depth : 0u;
-    uint32_t colour[3] = {below.colour[0], below.colour[1], below.colour[2]};
-    if (uses(w, TARN_WATER_FOG)) tarn_water_fog(w, diff, colour);
-    if (uses(w, TARN_WATER_ABSORPTION)) tarn_water_absorb(w, diff, colour);
+    e->keep = uses(w, TARN_WATER_FOG) ? (uint16_t)tarn_water_fog(w, diff) : 0u;
+    if (uses(w, TARN_WATER_ABSORPTION)) tarn_water_absorb(w, diff, e->loss);
     uint32_t surface[3];
     if (uses(w, TARN_WATER_DEPTH_COLOUR))
         tarn_water_depth_colour(w, diff, surface);
     else
         for (int c = 0; c < 3; c++) surface[c] = tarn_water_channel_q8(w->water->albedo_rgb, c);
-    compose(w, in, surface, colour);
-    if (uses(w, TARN_WATER_SPECULAR)) tarn_water_specular(w, &n, colour);
-    if (uses(w, TARN_WATER_FOAM)) tarn_water_foam(w, in, diff, colour);
-    if (uses(w, TARN_WATER_SPARKLES)) tarn_water_sparkles(w, &n, colour);
+    lit_surface(w, in, surface, e);
+    e->highlighted = (uint8_t)(uses(w, TARN_WATER_SPECULAR) && tarn_water_specular(w, &n, e->highlight));
+    e->diff = diff;
+    e->sharp = (uint8_t)sharp_features(w, in, diff, &n);
+}
+
+/* The background colour under the effects' offset, Q8.8 per channel. */
+static void moved_background(const tarn_water_context *w, const tarn_water_effects *e, int32_t i, int32_t j,
+                             uint32_t colour[3])
+{
+    if (TARN_LINK_APRON && (e->offset[0] | e->offset[1]) != 0) {
+        i = tarn_clamp_i32(i + e->offset[0], w->sample_rect.x0, w->sample_rect.x1 - 1);
+        j = tarn_clamp_i32(j + e->offset[1], w->sample_rect.y0, w->sample_rect.y1 - 1);
+    }
+    const uint32_t rgb = w->background[background_offset(w, i, j)];
+    for (int c = 0; c < 3; c++) colour[c] = tarn_water_channel_q8(rgb, c);
+}
+
+/* Steps 4 and 5 on the background: the fog's keep toward its colour, then
+ * absorption's loss. */
+static void through_water(const tarn_water_context *w, const tarn_water_effects *e, uint32_t colour[3])
+{
+    if (uses(w, TARN_WATER_FOG)) {
+        for (int c = 0; c < 3; c++) {
+            const int32_t fog = (int32_t)tarn_water_channel_q8(w->water->fog_rgb, c);
+            colour[c] = (uint32_t)(fog + (((int32_t)colour[c] - fog) * (int32_t)e->keep) / Q15_ONE);
+        }
+    }
+    if (uses(w, TARN_WATER_ABSORPTION))
+        for (int c = 0; c < 3; c++) colour[c] = colour[c] > e->loss[c] ? colour[c] - e->loss[c] : 0u;
+}
+
+uint32_t tarn_water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
+                          int32_t j)
+{
+    uint32_t colour[3];
+    moved_background(w, e, i, j, colour);
+    through_water(w, e, colour);
+    const uint32_t alpha = e->alpha;
+    for (int c = 0; c < 3; c++) colour[c] = (e->surface_lit[c] * alpha + colour[c] * (32768u - alpha)) >> 15;
+    if (e->highlighted)
+        for (int c = 0; c < 3; c++) colour[c] += e->highlight[c];
+    if (sharp & TARN_WATER_SHOWS_FOAM) tarn_water_foam_over(w, colour);
+    if (sharp & TARN_WATER_SHOWS_SPARKLES)
+        for (int c = 0; c < 3; c++) colour[c] += tarn_water_channel_q8(w->water->sparkle_rgb, c);
     uint32_t rgb = 0;
     for (int c = 0; c < 3; c++) {
         uint32_t byte = (colour[c] + 128u) >> 8;
         rgb = (rgb << 8) | (byte > 255u ? 255u : byte);
     }
     return rgb;
+}
+
+unsigned tarn_water_sharp_features(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff)
+{
+    if (!uses(w, TARN_WATER_FOAM | TARN_WATER_SPARKLES)) return 0u;
+    /* the components tarn_water_effects_at reads: none without the normals step */
+    const tarn_water_normal n = uses(w, TARN_WATER_SPARKLES) && uses(w, TARN_WATER_NORMALS)
+        ? tarn_water_map_x(w, in) : tarn_water_flat_normal();
+    return sharp_features(w, in, diff, &n);
+}
+
+uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in)
+{
+    tarn_water_effects e;
+    tarn_water_effects_at(w, i, j, in, &e);
+    return tarn_water_apply(w, &e, e.sharp, i, j);
 }

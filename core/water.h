@@ -4,7 +4,7 @@
  * the frame's time-dependent pan offsets, the half vector in the object's tangent
  * frame, reciprocals of the material's distances, and the opaque background
  * buffers (the tile plus its apron) that refraction and fog read. Per pixel,
- * tarn_water_shade uses 32-bit products only (16x16-bit partial products where a
+ * tarn_water_effects_at and tarn_water_apply use 32-bit products only (16x16-bit partial products where a
  * result needs more), the table reciprocal, and no division. */
 #ifndef TARN_WATER_PRIVATE_H
 #define TARN_WATER_PRIVATE_H
@@ -14,6 +14,7 @@
 typedef struct tarn_water_context {
     const tarn_water *water;
     const tarn_object *object;  /* the object the context was made for */
+    uint32_t features;          /* the material's TARN_WATER_* the build links */
     uint16_t width, height;     /* the frame */
     tarn_q16 near, far;
     tarn_exp2_config exp2;
@@ -38,6 +39,10 @@ typedef struct tarn_water_context {
     int32_t offset_limit;            /* pixels a refracted sample may move, each axis:
                                         the frame's refraction apron */
     tarn_pixel_rect sample_rect;     /* where refracted samples may land: the frame */
+    /* the quality's water_block 2: the effects of each 2x2 block of the tile, found
+       at its top-left pixel, a slot per block column; NULL with water_block 1 */
+    struct tarn_water_block *blocks;
+    uint32_t triangle_serial; /* water triangles drawn this frame, 0 before the first */
 } tarn_water_context;
 
 /* Per-frame and per-object constants; buffers are set by the caller. */
@@ -79,10 +84,61 @@ uint32_t tarn_water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, u
 /* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.16. */
 uint16_t tarn_water_pan_offset(tarn_q16 speed, uint32_t time_ms);
 
-/* The colour (0x00RRGGBB) of water pixel (i, j): the steps of tarn_water.h, each
- * effect called only when the material has it and the build links it. */
-uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j,
-                          const tarn_water_input *in);
+/* What the water does to the background of one pixel: every step of tarn_water.h
+ * but the background's colour. The quality's water_block 2 finds it once for a
+ * 2x2 block of pixels and applies it to each pixel's own background; only the
+ * sharp features (TARN_WATER_SHOWS_*) are found again at every pixel. */
+typedef struct {
+    int8_t offset[2];        /* the background sample, from the pixel (refraction) */
+    uint8_t highlighted;     /* step 8 adds `highlight` */
+    uint8_t sharp;           /* TARN_WATER_SHOWS_* at the pixel that found them */
+    uint16_t keep;           /* step 4: share of the background the fog keeps, Q1.15 */
+    uint16_t alpha;          /* step 7: the surface's opacity, Q1.15 */
+    uint16_t loss[3];        /* step 5: what absorption takes, Q8.8 per channel */
+    uint16_t surface_lit[3]; /* step 7: the lit surface colour, Q8.8 */
+    uint32_t highlight[3];   /* step 8: what the specular adds, Q8.8 */
+    uint32_t diff;           /* the depth of water, Q16.16 world units */
+} tarn_water_effects;
+
+/* A block's effects, and who found them: the water triangle (its triangle_serial)
+ * and the block row (the block's top pixel row). A block's other pixels take them
+ * when the same triangle draws them next (the rest of that row, then the row below)
+ * and their background lies as deep as the top-left pixel's, within
+ * TARN_WATER_BLOCK_DEPTH_SHIFT: across a submerged object's edge the depth of water
+ * changes at once, and the block's effects would fog the object as deep water. */
+typedef struct tarn_water_block {
+    tarn_water_effects effects;
+    uint32_t serial;     /* 0: nobody */
+    int32_t row;
+    uint32_t depth_q30;  /* the top-left pixel's background, near/d (Q1.30) */
+} tarn_water_block;
+
+/* A pixel shares its block's effects when its background's near/d is within
+ * 1/2^TARN_WATER_BLOCK_DEPTH_SHIFT of the top-left pixel's. */
+#define TARN_WATER_BLOCK_DEPTH_SHIFT 6u
+
+/* The opaque background's near/d (Q1.30) at frame pixel (i, j). */
+uint32_t tarn_water_background_q30(const tarn_water_context *w, int32_t i, int32_t j);
+
+/* The effects at water pixel (i, j), each called only when the material has it and
+ * the build links it. */
+void tarn_water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
+                           tarn_water_effects *out);
+/* The features a pixel sharp, which blocks find at every pixel: step 9's foam
+ * lines and step 10's sparkles. */
+#define TARN_WATER_SHOWS_FOAM 1u
+#define TARN_WATER_SHOWS_SPARKLES 2u
+
+/* The colour (0x00RRGGBB) of water pixel (i, j): its background, moved by the
+ * effects' offset (kept inside the frame), through the effects, with the sharp
+ * features `sharp` (TARN_WATER_SHOWS_*: the effects' own, or the pixel's). */
+uint32_t tarn_water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
+                          int32_t j);
+/* The sharp features that show at a pixel over `diff` of water (TARN_WATER_SHOWS_*),
+ * of those the material has and the build links. */
+unsigned tarn_water_sharp_features(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff);
+/* Both at one pixel: the colour of water pixel (i, j) with its own effects. */
+uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in);
 
 /* ---- what the steps share (water.c) ---- */
 
@@ -105,11 +161,11 @@ static inline const uint8_t *tarn_water_panned_texel(const tarn_texture *t, cons
 uint32_t tarn_water_decay(const tarn_water_context *w, uint32_t rate, uint32_t x);
 
 typedef struct {
-    uint32_t colour[3]; /* the background B, Q8.8 */
-    uint32_t depth;     /* its linear depth db, Q16.16 world units */
+    int32_t x, y;   /* the frame pixel of the background B */
+    uint32_t depth; /* its linear depth db, Q16.16 world units */
 } tarn_water_sample;
 
-/* The opaque background at frame pixel (i, j). */
+/* The opaque background at frame pixel (i, j); its colour is read when applied. */
 tarn_water_sample tarn_water_background(const tarn_water_context *w, int32_t i, int32_t j);
 
 /* The surface normal N, or before tarn_water_normalise its direction: normalising
@@ -139,22 +195,32 @@ void tarn_water_normalise(tarn_water_normal *n);
 /* Step 1 (water_normals.c, TARN_WATER_NORMALS): the direction of N, to be normalised
  * by the steps that need N. */
 tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const tarn_water_input *in);
+/* Only the maps' own x components (a_x, b_x, has_b), which sparkles read: the flat
+ * normal with them. */
+tarn_water_normal tarn_water_map_x(const tarn_water_context *w, const tarn_water_input *in);
 /* Step 2 (water_refraction.c, TARN_WATER_REFRACTION): the refracted sample, or `own`
  * (the pixel's background) where the refracted one would lie in front of the water. */
 tarn_water_sample tarn_water_refract(const tarn_water_context *w, int32_t i, int32_t j,
                                      tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth);
-/* Steps 4 and 5 (water_fog.c), over `diff` (Q16.16 world units) of water. */
-void tarn_water_fog(const tarn_water_context *w, uint32_t diff, uint32_t colour[3]);
-void tarn_water_absorb(const tarn_water_context *w, uint32_t diff, uint32_t colour[3]);
+/* Steps 4 and 5 (water_fog.c), over `diff` (Q16.16 world units) of water: the share
+ * of the background the fog keeps (Q1.15), and what absorption takes from each
+ * channel (Q8.8). */
+uint32_t tarn_water_fog(const tarn_water_context *w, uint32_t diff);
+void tarn_water_absorb(const tarn_water_context *w, uint32_t diff, uint16_t loss[3]);
 /* Step 6's depth colour and step 7's fresnel raise of alpha (Q1.15) (water_surface.c). */
 void tarn_water_depth_colour(const tarn_water_context *w, uint32_t diff, uint32_t out[3]);
 uint32_t tarn_water_fresnel_alpha(const tarn_water_context *w, const tarn_water_input *in, uint32_t alpha);
 /* Steps 8, 9 and 10 (water_highlights.c, water_foam.c). Colours are Q8.8. */
-void tarn_water_specular(const tarn_water_context *w, tarn_water_normal *n, uint32_t colour[3]);
+/* 1 where the specular highlight shows, with what it adds to each channel (Q8.8). */
+int tarn_water_specular(const tarn_water_context *w, tarn_water_normal *n, uint32_t highlight[3]);
 /* The largest cosine N.h (Q1.15) whose specular adds nothing to a colour, for a
  * material; -1 when even a cosine of 0 adds something. */
 int32_t tarn_water_dark_cosine(const tarn_water *water);
-void tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff, uint32_t colour[3]);
-void tarn_water_sparkles(const tarn_water_context *w, const tarn_water_normal *n, uint32_t colour[3]);
+/* 1 where the foam shows over `diff` of water; tarn_water_foam_over turns a colour
+ * toward the foam's by its opacity. */
+int tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff);
+void tarn_water_foam_over(const tarn_water_context *w, uint32_t colour[3]);
+/* 1 where the sparkles show. */
+int tarn_water_sparkles(const tarn_water_context *w, const tarn_water_normal *n);
 
 #endif

@@ -4,18 +4,23 @@
 
 #define Q16_ONE 65536u
 
-void tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff, uint32_t colour[3])
+int tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff)
 {
     const tarn_water *water = w->water;
-    if (water->foam_texture == NULL) return;
+    if (water->foam_texture == NULL) return 0;
     uint32_t f = tarn_water_mul_q16(diff, w->inv_foam_distance);
-    if (f >= Q16_ONE) return;
+    if (f >= Q16_ONE) return 0;
     const uint16_t turns = (uint16_t)(water->foam_line_count * (f - w->foam_phase));
     int32_t wave = tarn_sin_q15(turns);
     uint32_t lines = wave > 0 ? ((uint32_t)wave * ((Q16_ONE - f) >> 1)) >> 14 : 0u; /* Q0.16 */
     /* foam where red / 255 >= f - lines: compared exactly, red * 2^16 against 255 * (f - lines) */
     const int32_t red = tarn_water_panned_texel(water->foam_texture, &water->foam_pan, w->foam_pan, in)[0];
-    if (red * 65536 < 255 * ((int32_t)f - (int32_t)lines)) return; /* both below 2^24 */
+    return red * 65536 >= 255 * ((int32_t)f - (int32_t)lines); /* both below 2^24 */
+}
+
+void tarn_water_foam_over(const tarn_water_context *w, uint32_t colour[3])
+{
+    const tarn_water *water = w->water;
     /* colour + (foam - colour) * opacity. The colour may be brighter than 255 here
      * (specular adds up to four times the light before the final clamp: below 2^19
      * in Q8.8), so the difference times the opacity can pass 2^31: a 16x16-bit high

@@ -4,26 +4,19 @@
 #include "water.h"
 
 #define Q16_ONE 65536u
-#define Q15_ONE 32768
 
-void tarn_water_fog(const tarn_water_context *w, uint32_t diff, uint32_t colour[3])
+uint32_t tarn_water_fog(const tarn_water_context *w, uint32_t diff)
 {
-    const tarn_water *water = w->water;
-    const int32_t keep = (int32_t)(tarn_water_decay(w, (uint32_t)water->fog_density, diff) >> 1); /* Q1.15 */
-    for (int c = 0; c < 3; c++) {
-        const int32_t fog = (int32_t)tarn_water_channel_q8(water->fog_rgb, c);
-        colour[c] = (uint32_t)(fog + (((int32_t)colour[c] - fog) * keep) / Q15_ONE);
-    }
+    return tarn_water_decay(w, (uint32_t)w->water->fog_density, diff) >> 1;
 }
 
-void tarn_water_absorb(const tarn_water_context *w, uint32_t diff, uint32_t colour[3])
+void tarn_water_absorb(const tarn_water_context *w, uint32_t diff, uint16_t loss[3])
 {
     const tarn_water *water = w->water;
     const uint32_t x = water->absorption_squared ? tarn_water_mul_q16(diff, diff) : diff;
     const uint32_t absorbed = (Q16_ONE - tarn_water_decay(w, (uint32_t)water->absorption, x)) >> 1; /* Q1.15 */
     for (int c = 0; c < 3; c++) {
         const uint32_t inverse = 65280u - tarn_water_channel_q8(water->absorb_rgb, c);
-        const uint32_t loss = (inverse * absorbed) >> 15;
-        colour[c] = colour[c] > loss ? colour[c] - loss : 0u;
+        loss[c] = (uint16_t)((inverse * absorbed) >> 15);
     }
 }

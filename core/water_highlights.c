@@ -72,17 +72,17 @@ static uint32_t specular_term(const tarn_water_context *w, const tarn_water_norm
     return power_q15((uint32_t)(cosine > Q15_ONE ? Q15_ONE : cosine), w->water->specular_power);
 }
 
-void tarn_water_specular(const tarn_water_context *w, tarn_water_normal *n, uint32_t colour[3])
+int tarn_water_specular(const tarn_water_context *w, tarn_water_normal *n, uint32_t highlight[3])
 {
-    if (highlight_cannot_show(w, n)) return;
+    if (highlight_cannot_show(w, n)) return 0;
     tarn_water_normalise(n);
     const uint32_t amount = specular_amount(w->water, specular_term(w, n)); /* Q2.14 */
-    for (int c = 0; c < 3; c++) colour[c] += (w->light_q8[c] * (amount >> 2)) >> 12;
+    for (int c = 0; c < 3; c++) highlight[c] = (w->light_q8[c] * (amount >> 2)) >> 12;
+    return 1;
 }
 
-void tarn_water_sparkles(const tarn_water_context *w, const tarn_water_normal *n, uint32_t colour[3])
+int tarn_water_sparkles(const tarn_water_context *w, const tarn_water_normal *n)
 {
     const uint32_t ax2 = (uint32_t)(n->a_x * n->a_x), bx2 = (uint32_t)(n->b_x * n->b_x);
-    if (ax2 <= w->sparkle_threshold || (n->has_b && bx2 <= w->sparkle_threshold)) return;
-    for (int c = 0; c < 3; c++) colour[c] += tarn_water_channel_q8(w->water->sparkle_rgb, c);
+    return ax2 > w->sparkle_threshold && (!n->has_b || bx2 > w->sparkle_threshold);
 }

@@ -19,6 +19,18 @@ static inline int32_t strength_times(int32_t sum, int32_t strength)
     return tarn_floor_shift(sum * (strength >> 8) + low, 9);           /* below 2^28 */
 }
 
+tarn_water_normal tarn_water_map_x(const tarn_water_context *w, const tarn_water_input *in)
+{
+    const tarn_water *water = w->water;
+    tarn_water_normal n = tarn_water_flat_normal();
+    if (water->normal_a == NULL) return n;
+    n.a_x = tarn_water_normal_component(tarn_water_panned_texel(water->normal_a, &water->pan_a, w->pan_a, in)[0]);
+    n.has_b = water->normal_b != NULL;
+    if (n.has_b)
+        n.b_x = tarn_water_normal_component(tarn_water_panned_texel(water->normal_b, &water->pan_b, w->pan_b, in)[0]);
+    return n;
+}
+
 /* Step 1's direction, strength * (a.xy + b.xy), a.z * b.z, left unnormalised. */
 tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const tarn_water_input *in)
 {

@@ -23,7 +23,7 @@ tarn_water_sample tarn_water_refract(const tarn_water_context *w, int32_t i, int
     }
     target[0] = tarn_clamp_i32(target[0], w->sample_rect.x0, w->sample_rect.x1 - 1);
     target[1] = tarn_clamp_i32(target[1], w->sample_rect.y0, w->sample_rect.y1 - 1);
-    if (target[0] == i && target[1] == j) return own; /* read already, depth and all */
+    if (target[0] == i && target[1] == j) return own; /* read already */
     tarn_water_sample shifted = tarn_water_background(w, target[0], target[1]);
     return shifted.depth < surface_depth ? own : shifted;
 }

@@ -51,6 +51,7 @@ void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
     const tarn_water *water = object->material->water;
     w->water = water;
     w->object = object;
+    w->features = TARN_LINK_WATER_FEATURES & water->features;
     w->width = config->width;
     w->height = config->height;
     w->near = view->near;
@@ -73,8 +74,7 @@ void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
     w->refraction_px = px > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)px;
     int64_t threshold = water->sparkle_amount > 0 ? tarn_divide_once_i64((int64_t)1 << 46, (uint32_t)water->sparkle_amount) : INT64_MAX;
     w->sparkle_threshold = threshold > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)threshold;
-    const uint32_t specular = TARN_LINK_WATER_FEATURES & water->features & TARN_WATER_SPECULAR;
-    w->dark_cosine = specular ? tarn_water_dark_cosine(water) : -1;
+    w->dark_cosine = (w->features & TARN_WATER_SPECULAR) != 0 ? tarn_water_dark_cosine(water) : -1;
 }
 
 int32_t tarn_water_reach_pixels(const tarn_water *water, uint16_t frame_width)

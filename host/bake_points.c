@@ -60,6 +60,8 @@ static int parse_line(const char *path, unsigned line_number, char *line, tarn_q
         if (result > 0) return tarn_fail(err, "%s:%u: unknown quality option '%s'", path, line_number, words[i]);
         if (result < 0) return tarn_fail(err, "%s:%u: %s", path, line_number, option_err.message);
     }
+    if (tarn_cli_check_quality(q, &option_err) != 0)
+        return tarn_fail(err, "%s:%u: %s", path, line_number, option_err.message);
     return 0;
 }
 

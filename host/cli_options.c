@@ -22,7 +22,9 @@ const char tarn_cli_usage[] =
     "         --fog-bits N (4..16: fraction bits of the depth of water in fog's exp2)\n"
     "         --apron on|off|N (how far refraction may move a sample, so how much opaque scene\n"
     "         each tile renders around its water: as far as it reaches, not at all, or N pixels 0..32)\n"
-    "         --bins on|off (find each cluster's screen box once a frame, 4 bytes a cluster)\n";
+    "         --bins on|off (find each cluster's screen box once a frame, 4 bytes a cluster)\n"
+    "         --water-block 1|2 (water effects found at every pixel, or once per 2x2 block:\n"
+    "         even tiles only)\n";
 
 /* Whole decimal number in [min, max], nothing else in the text. */
 static int parse_whole(const char *text, unsigned long min, unsigned long max, unsigned long *out)
@@ -153,6 +155,7 @@ static int parse_quality_option(const char *name, const char *value, tarn_qualit
                           &q->fog_argument_bits, err);
     if (strcmp(name, "--tile") == 0)
         return parse_knob(name, value, TARN_TILE_SIZE_MIN, TARN_TILE_SIZE_MAX, &q->tile_size, err);
+    if (strcmp(name, "--water-block") == 0) return parse_knob(name, value, 1, 2, &q->water_block, err);
     if (strcmp(name, "--subpixel") == 0)
         return parse_knob(name, value, TARN_SUBPIXEL_BITS_MIN, TARN_SUBPIXEL_BITS_MAX, &q->subpixel_bits, err);
     if (strcmp(name, "--recip-steps") == 0)
@@ -267,8 +270,17 @@ static int check_sequence(tarn_cli_options *o, tarn_error *err)
     return 0;
 }
 
+int tarn_cli_check_quality(const tarn_quality *q, tarn_error *err)
+{
+    if (q->water_block == 2 && q->tile_size % 2 != 0)
+        return tarn_fail(err, "--water-block 2: expected an even --tile (a tile must hold whole 2x2 blocks), "
+                         "got %u", (unsigned)q->tile_size);
+    return 0;
+}
+
 static int check_combination(tarn_cli_options *o, tarn_error *err)
 {
+    if (tarn_cli_check_quality(&o->quality, err) != 0) return -1;
     if (o->command == TARN_CMD_ACCURACY)
         return o->math ? 0 : tarn_fail(err, "accuracy: expected --math");
     if (o->scene_path == NULL) return tarn_fail(err, "expected a scene file");

@@ -10,7 +10,7 @@
  * QUALITY knobs (defaults from tarn_quality_default()):
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
  *   --depth 16|32  --recip-steps N (0..2)  --exp2 N[:nearest|:linear] (8..256)
- *   --apron on|off|N  --bins on|off  --fog-bits N (4..16)
+ *   --apron on|off|N  --bins on|off  --fog-bits N (4..16)  --water-block 1|2
  *   --quality fast|balanced|exact   a preset (core/quality.c) as the base of the others */
 #ifndef TARN_HOST_CLI_OPTIONS_H
 #define TARN_HOST_CLI_OPTIONS_H
@@ -74,6 +74,10 @@ int tarn_cli_parse_quality_option(const char *name, const char *value, tarn_qual
 /* Applies the list's --quality NAME to `quality`, if it has one: 0, or -1 with
  * `err` set for an unknown name or a second --quality. */
 int tarn_cli_apply_preset(int argc, char *const argv[], tarn_quality *quality, tarn_error *err);
+
+/* The knobs' constraints on each other, once every option is applied: 0, or -1
+ * with `err` naming the options (--water-block 2 needs an even --tile). */
+int tarn_cli_check_quality(const tarn_quality *q, tarn_error *err);
 
 extern const char tarn_cli_usage[];
 

@@ -189,6 +189,7 @@ int tarn_show_parse(int argc, char **argv, tarn_show_options *o, tarn_error *err
         i++;
     }
     if (check_combination(o, via_given, send_given, err) != 0) return -1;
+    if (tarn_cli_check_quality(&o->quality, err) != 0) return -1;
     o->panel = tarn_panel_preset((tarn_panel_model)o->panel.model, (unsigned)rotation);
     return 0;
 }

@@ -2,7 +2,8 @@
 # check_firmware_link.sh: an effect a scene does not use is not linked, nor the span
 # perspective mode when the baked quality does not use it, nor refraction when the
 # quality has no apron for a refracted sample to move in, nor vertex lighting when
-# every object carries static vertices (the bake's default, --static-view on).
+# every object carries static vertices (the bake's default, --static-view on), nor
+# the water blocks' code (tarn_water_sharp_features) when no baked quality has water_block 2.
 #
 # Builds the qemu-m0 firmware for several scenes (each in its own directory under
 # build/firmware-link/, the board's own build untouched) and reads the images' symbols
@@ -14,7 +15,7 @@
 set -u
 board=qemu-m0
 flags="--apron off --tile 16 --depth 16"
-effects="tarn_water_shade tarn_water_surface_normal tarn_water_refract tarn_water_fog tarn_water_absorb
+effects="tarn_water_shade tarn_water_sharp_features tarn_water_surface_normal tarn_water_refract tarn_water_fog tarn_water_absorb
 tarn_water_depth_colour tarn_water_fresnel_alpha tarn_water_specular tarn_water_foam tarn_water_sparkles
 tarn_underwater_tile span_end tarn_vertex_shade"
 passed=0
@@ -64,6 +65,8 @@ extra_name=-span extra_flags=" --perspective span:16"
 check scenes/effects/fog.json tarn_water_shade tarn_water_fog span_end
 extra_name=-apron extra_flags=" --apron 4"
 check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal tarn_water_refract
+extra_name=-blocks extra_flags=" --water-block 2"
+check scenes/effects/fog.json tarn_water_shade tarn_water_sharp_features tarn_water_fog
 extra_name=-moving extra_flags=" --static-view off"
 check scenes/effects/fog.json tarn_water_shade tarn_water_fog tarn_vertex_shade
 echo "firmware-link: $passed passed, $failed failed"

@@ -86,7 +86,7 @@ static int same_quality(const tarn_quality *a, const tarn_quality *b)
            a->perspective == b->perspective && a->perspective_span == b->perspective_span &&
            a->depth_bits == b->depth_bits && a->tile_size == b->tile_size &&
            a->refraction_apron == b->refraction_apron && a->cluster_bins == b->cluster_bins &&
-           a->fog_argument_bits == b->fog_argument_bits;
+           a->fog_argument_bits == b->fog_argument_bits && a->water_block == b->water_block;
 }
 
 /* A preset is the base; a knob changes it wherever it stands on the line. */
@@ -116,6 +116,23 @@ static void test_presets_are_the_base_of_the_knobs(void **state)
     assert_rejected("compare s.json --quality", "--quality: expected fast, balanced or exact, got ''");
     assert_rejected("render s.json -o x.png --points p.txt", "--points applies to bake");
     assert_rejected("compare s.json --fog-bits 3", "--fog-bits: expected a whole number 4..16, got '3'");
+}
+
+/* --water-block 1|2, and 2 only with an even tile, wherever the tile comes from. */
+static void test_water_block_option(void **state)
+{
+    (void)state;
+    tarn_cli_options o;
+    tarn_error err;
+    assert_int_equal(parse("render s.json -o x.png --water-block 2", &o, &err), 0);
+    assert_int_equal(o.quality.water_block, 2);
+    assert_int_equal(parse("bake s.json -o x.c --quality exact --water-block 2 --tile 32", &o, &err), 0);
+    assert_int_equal(o.quality.water_block, 2);
+    assert_int_equal(o.quality.tile_size, 32);
+    assert_rejected("render s.json -o x.png --water-block 3", "--water-block: expected a whole number 1..2, got '3'");
+    assert_rejected("render s.json -o x.png --water-block 2 --tile 43",
+                    "--water-block 2: expected an even --tile (a tile must hold whole 2x2 blocks), got 43");
+    assert_rejected("compare s.json --tile 9 --water-block 2", "--water-block 2: expected an even --tile");
 }
 
 /* bake --static-view: on by default, off when asked, and nothing else. */
@@ -317,6 +334,7 @@ int main(void)
         cmocka_unit_test(test_bad_lines_name_what_was_expected),
         cmocka_unit_test(test_binary_exits_2_and_writes_nothing),
         cmocka_unit_test(test_static_view_option),
+        cmocka_unit_test(test_water_block_option),
         cmocka_unit_test(test_frame_sequences_parse),
         cmocka_unit_test(test_presets_are_the_base_of_the_knobs),
         cmocka_unit_test(test_binary_writes_a_sequence),
