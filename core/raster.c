@@ -228,39 +228,38 @@ static int as_deep_as(uint32_t depth_q30, const tarn_water_block *block)
     return apart <= block->depth_q30 >> TARN_WATER_BLOCK_DEPTH_SHIFT;
 }
 
-/* The effects that apply at water pixel (i, j) of a frame with water blocks: those
- * its block's top-left pixel found if this triangle drew it over as deep a
- * background (tarn_water_block), else its own, kept in its block's slot when it is
- * that top-left pixel. Which pixels share depends on the triangles alone: even
- * tiles hold whole blocks. */
-static const tarn_water_effects *block_effects(const tarn_tile_target *tile, int32_t i, int32_t j,
-                                               const tarn_water_input *in, tarn_water_effects *own)
+/* The slot of the block of water pixel (i, j), in a frame with water blocks. */
+static tarn_water_block *block_slot(const tarn_tile_target *tile, int32_t i)
+{
+    return &tile->water->blocks[(i - tile->rect.x0) >> 1];
+}
+
+/* Whether pixel (i, j), its background at depth_q30, takes its block's effects:
+ * this triangle found them at the block's top-left pixel over as deep a
+ * background (tarn_water_block). Which pixels share depends on the triangles
+ * alone: even tiles hold whole blocks. */
+static int shares_block(const tarn_water_context *w, const tarn_water_block *block, int32_t j, uint32_t depth_q30)
+{
+    return block->serial == w->triangle_serial && block->row == (j & ~1) && as_deep_as(depth_q30, block);
+}
+
+/* The effects of a pixel that does not share its block's: its own, kept in the
+ * block's slot when it is the block's top-left pixel. */
+static const tarn_water_effects *own_effects(const tarn_tile_target *tile, int32_t i, int32_t j,
+                                             const tarn_water_input *in, uint32_t depth_q30,
+                                             tarn_water_effects *own)
 {
     tarn_water_context *w = tile->water;
-    tarn_water_block *block = &w->blocks[(i - tile->rect.x0) >> 1];
-    const int32_t row = j & ~1;
-    const uint32_t depth_q30 = tarn_water_background_q30(w, i, j);
-    if (block->serial == w->triangle_serial && block->row == row && as_deep_as(depth_q30, block))
-        return &block->effects;
+    tarn_water_block *block = block_slot(tile, i);
     const int top_left = ((i | j) & 1) == 0;
     tarn_water_effects *e = top_left ? &block->effects : own;
     tarn_water_effects_at(w, i, j, in, e);
     if (top_left) {
         block->serial = w->triangle_serial;
-        block->row = row;
+        block->row = j;
         block->depth_q30 = depth_q30;
     }
     return e;
-}
-
-/* The colour of water pixel (i, j), with its block's effects or its own. */
-static uint32_t water_colour(const tarn_tile_target *tile, int32_t i, int32_t j, const tarn_water_input *in)
-{
-    if (!TARN_LINK_WATER_BLOCKS || tile->water->blocks == NULL) return tarn_water_shade(tile->water, i, j, in);
-    tarn_water_effects own;
-    const tarn_water_effects *e = block_effects(tile, i, j, in, &own);
-    const unsigned sharp = e == &own ? e->sharp : tarn_water_sharp_features(tile->water, in, e->diff);
-    return tarn_water_apply(tile->water, e, sharp, i, j);
 }
 
 /* What one row keeps for its pixels' attributes, by the triangle's perspective
@@ -294,6 +293,40 @@ static void row_attributes_at(row_attributes *row, const tarn_quality *quality, 
         exact_t(set, t, i, j, quality->recip_newton_steps, out);
 }
 
+/* The inputs of water pixel (i, j) from its interpolated attributes. */
+static tarn_water_input water_input_at(const tarn_tile_target *tile, const triangle_setup *t,
+                                       const attribute_set *set, int32_t i, int32_t j, uint32_t inv_depth,
+                                       row_attributes *row)
+{
+    uint32_t values[ATTRIBUTES_MAX];
+    row_attributes_at(row, tile->quality, set, t, i, j, values);
+    return water_input(set, values, inv_depth);
+}
+
+/* The colour of water pixel (i, j). A pixel that shares its block's effects and
+ * can show no sharp feature needs no inputs of its own: its attributes are not
+ * interpolated. */
+static uint32_t water_colour(const tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
+                             int32_t i, int32_t j, uint32_t inv_depth, row_attributes *row)
+{
+    tarn_water_context *w = tile->water;
+    if (!TARN_LINK_WATER_BLOCKS || w->blocks == NULL) {
+        const tarn_water_input in = water_input_at(tile, t, set, i, j, inv_depth, row);
+        return tarn_water_shade(w, i, j, &in);
+    }
+    const uint32_t depth_q30 = tarn_water_background_q30(w, i, j);
+    const tarn_water_block *block = block_slot(tile, i);
+    if (shares_block(w, block, j, depth_q30)) {
+        if (!tarn_water_sharp_possible(w, &block->effects)) return tarn_water_apply(w, &block->effects, 0u, i, j);
+        const tarn_water_input in = water_input_at(tile, t, set, i, j, inv_depth, row);
+        return tarn_water_apply(w, &block->effects, tarn_water_sharp_features(w, &in, &block->effects), i, j);
+    }
+    tarn_water_effects own;
+    const tarn_water_input in = water_input_at(tile, t, set, i, j, inv_depth, row);
+    const tarn_water_effects *e = own_effects(tile, i, j, &in, depth_q30, &own);
+    return tarn_water_apply(w, e, e->sharp, i, j);
+}
+
 /* One covered pixel: its attributes, its colour (or water), its depth. */
 static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
                        const tarn_texture *texture, int32_t i, int32_t j, uint32_t inv_depth,
@@ -302,12 +335,11 @@ static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const at
     const tarn_quality *quality = tile->quality;
     const uint32_t closer = closer_depth(tile->depth, quality->depth_bits, offset, inv_depth);
     if (closer == 0u) return;
-    uint32_t values[ATTRIBUTES_MAX];
-    row_attributes_at(row, quality, set, t, i, j, values);
     if (TARN_LINK_WATER && tile->water != NULL) {
-        const tarn_water_input in = water_input(set, values, inv_depth);
-        write_water_pixel(tile, offset, water_colour(tile, i, j, &in));
+        write_water_pixel(tile, offset, water_colour(tile, t, set, i, j, inv_depth, row));
     } else {
+        uint32_t values[ATTRIBUTES_MAX];
+        row_attributes_at(row, quality, set, t, i, j, values);
         tile->colour[offset] = shade_pixel(set, texture, values);
     }
     store_depth(tile->depth, quality->depth_bits, offset, closer);

@@ -104,11 +104,11 @@ static void lit_surface(const tarn_water_context *w, const tarn_water_input *in,
 }
 
 /* Foam and sparkles at a pixel, sparkles from its normal's map components. */
-static unsigned sharp_features(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff,
+static unsigned sharp_features(const tarn_water_context *w, const tarn_water_input *in, uint32_t foam_band,
                                const tarn_water_normal *n)
 {
     unsigned sharp = 0u;
-    if (uses(w, TARN_WATER_FOAM) && tarn_water_foam(w, in, diff)) sharp |= TARN_WATER_SHOWS_FOAM;
+    if (uses(w, TARN_WATER_FOAM) && tarn_water_foam(w, in, foam_band)) sharp |= TARN_WATER_SHOWS_FOAM;
     if (uses(w, TARN_WATER_SPARKLES) && tarn_water_sparkles(w, n)) sharp |= TARN_WATER_SHOWS_SPARKLES;
     return sharp;
 }
@@ -136,8 +136,8 @@ void tarn_water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, co
         for (int c = 0; c < 3; c++) surface[c] = tarn_water_channel_q8(w->water->albedo_rgb, c);
     lit_surface(w, in, surface, e);
     e->highlighted = (uint8_t)(uses(w, TARN_WATER_SPECULAR) && tarn_water_specular(w, &n, e->highlight));
-    e->diff = diff;
-    e->sharp = (uint8_t)sharp_features(w, in, diff, &n);
+    e->foam_band = uses(w, TARN_WATER_FOAM) ? tarn_water_foam_band(w, diff) : Q16_ONE;
+    e->sharp = (uint8_t)sharp_features(w, in, e->foam_band, &n);
 }
 
 /* The background colour under the effects' offset, Q8.8 per channel. */
@@ -187,13 +187,23 @@ uint32_t tarn_water_apply(const tarn_water_context *w, const tarn_water_effects 
     return rgb;
 }
 
-unsigned tarn_water_sharp_features(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff)
+/* Sparkles show only from the maps' components, which the normals step reads. */
+static int sparkles_possible(const tarn_water_context *w)
 {
-    if (!uses(w, TARN_WATER_FOAM | TARN_WATER_SPARKLES)) return 0u;
-    /* the components tarn_water_effects_at reads: none without the normals step */
-    const tarn_water_normal n = uses(w, TARN_WATER_SPARKLES) && uses(w, TARN_WATER_NORMALS)
-        ? tarn_water_map_x(w, in) : tarn_water_flat_normal();
-    return sharp_features(w, in, diff, &n);
+    return uses(w, TARN_WATER_SPARKLES) && uses(w, TARN_WATER_NORMALS);
+}
+
+int tarn_water_sharp_possible(const tarn_water_context *w, const tarn_water_effects *e)
+{
+    return sparkles_possible(w) || (uses(w, TARN_WATER_FOAM) && e->foam_band < Q16_ONE);
+}
+
+unsigned tarn_water_sharp_features(const tarn_water_context *w, const tarn_water_input *in,
+                                   const tarn_water_effects *e)
+{
+    if (!tarn_water_sharp_possible(w, e)) return 0u;
+    const tarn_water_normal n = sparkles_possible(w) ? tarn_water_map_x(w, in) : tarn_water_flat_normal();
+    return sharp_features(w, in, e->foam_band, &n);
 }
 
 uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in)

@@ -97,7 +97,8 @@ typedef struct {
     uint16_t loss[3];        /* step 5: what absorption takes, Q8.8 per channel */
     uint16_t surface_lit[3]; /* step 7: the lit surface colour, Q8.8 */
     uint32_t highlight[3];   /* step 8: what the specular adds, Q8.8 */
-    uint32_t diff;           /* the depth of water, Q16.16 world units */
+    uint32_t foam_band;      /* step 9: where in the shore's foam band, Q0.16 (0 at the
+                                shore); 65536 or more beyond it, where no foam shows */
 } tarn_water_effects;
 
 /* A block's effects, and who found them: the water triangle (its triangle_serial)
@@ -134,9 +135,14 @@ void tarn_water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, co
  * features `sharp` (TARN_WATER_SHOWS_*: the effects' own, or the pixel's). */
 uint32_t tarn_water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
                           int32_t j);
-/* The sharp features that show at a pixel over `diff` of water (TARN_WATER_SHOWS_*),
- * of those the material has and the build links. */
-unsigned tarn_water_sharp_features(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff);
+/* The sharp features that show at a pixel sharing effects `e` (TARN_WATER_SHOWS_*),
+ * of those the material has and the build links; 0 without looking when none can
+ * (tarn_water_sharp_possible). */
+unsigned tarn_water_sharp_features(const tarn_water_context *w, const tarn_water_input *in,
+                                   const tarn_water_effects *e);
+/* Whether a sharp feature could show at a pixel sharing effects `e`: sparkles, or
+ * foam within its band. A pixel where none can needs no inputs of its own. */
+int tarn_water_sharp_possible(const tarn_water_context *w, const tarn_water_effects *e);
 /* Both at one pixel: the colour of water pixel (i, j) with its own effects. */
 uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in);
 
@@ -216,9 +222,11 @@ int tarn_water_specular(const tarn_water_context *w, tarn_water_normal *n, uint3
 /* The largest cosine N.h (Q1.15) whose specular adds nothing to a colour, for a
  * material; -1 when even a cosine of 0 adds something. */
 int32_t tarn_water_dark_cosine(const tarn_water *water);
-/* 1 where the foam shows over `diff` of water; tarn_water_foam_over turns a colour
- * toward the foam's by its opacity. */
-int tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff);
+/* Where `diff` of water lies in the foam band (tarn_water_effects.foam_band); 1
+ * where the foam shows at a pixel at that place of the band; tarn_water_foam_over
+ * turns a colour toward the foam's by its opacity. */
+uint32_t tarn_water_foam_band(const tarn_water_context *w, uint32_t diff);
+int tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t f);
 void tarn_water_foam_over(const tarn_water_context *w, uint32_t colour[3]);
 /* 1 where the sparkles show. */
 int tarn_water_sparkles(const tarn_water_context *w, const tarn_water_normal *n);

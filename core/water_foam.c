@@ -4,11 +4,14 @@
 
 #define Q16_ONE 65536u
 
-int tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff)
+uint32_t tarn_water_foam_band(const tarn_water_context *w, uint32_t diff)
+{
+    return w->water->foam_texture == NULL ? Q16_ONE : tarn_water_mul_q16(diff, w->inv_foam_distance);
+}
+
+int tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t f)
 {
     const tarn_water *water = w->water;
-    if (water->foam_texture == NULL) return 0;
-    uint32_t f = tarn_water_mul_q16(diff, w->inv_foam_distance);
     if (f >= Q16_ONE) return 0;
     const uint16_t turns = (uint16_t)(water->foam_line_count * (f - w->foam_phase));
     int32_t wave = tarn_sin_q15(turns);
