@@ -293,37 +293,40 @@ static void row_attributes_at(row_attributes *row, const tarn_quality *quality, 
         exact_t(set, t, i, j, quality->recip_newton_steps, out);
 }
 
-/* The inputs of water pixel (i, j) from its interpolated attributes. */
-static tarn_water_input water_input_at(const tarn_tile_target *tile, const triangle_setup *t,
-                                       const attribute_set *set, int32_t i, int32_t j, uint32_t inv_depth,
-                                       row_attributes *row)
+/* How a water pixel gets its effects: its block's, when it shares them, or its own;
+ * and whether it needs its inputs from its attributes (not when it shares and no
+ * sharp feature can show). */
+typedef struct {
+    tarn_water_block *block; /* NULL without water blocks */
+    uint32_t depth_q30;      /* the background's near/d, with blocks */
+    int shares;
+    int needs_inputs;
+} water_choice;
+
+static water_choice water_choice_at(const tarn_tile_target *tile, int32_t i, int32_t j)
 {
-    uint32_t values[ATTRIBUTES_MAX];
-    row_attributes_at(row, tile->quality, set, t, i, j, values);
-    return water_input(set, values, inv_depth);
+    water_choice c = {NULL, 0u, 0, 1};
+    const tarn_water_context *w = tile->water;
+    if (!TARN_LINK_WATER_BLOCKS || w->blocks == NULL) return c;
+    c.block = block_slot(tile, i);
+    c.depth_q30 = tarn_water_background_q30(w, i, j);
+    c.shares = shares_block(w, c.block, j, c.depth_q30);
+    c.needs_inputs = !c.shares || tarn_water_sharp_possible(w, &c.block->effects);
+    return c;
 }
 
-/* The colour of water pixel (i, j). A pixel that shares its block's effects and
- * can show no sharp feature needs no inputs of its own: its attributes are not
- * interpolated. */
-static uint32_t water_colour(const tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
-                             int32_t i, int32_t j, uint32_t inv_depth, row_attributes *row)
+/* The colour of water pixel (i, j) from its attributes `values`. */
+static uint32_t water_colour(const tarn_tile_target *tile, const water_choice *c, const attribute_set *set,
+                             const uint32_t values[ATTRIBUTES_MAX], uint32_t inv_depth, int32_t i, int32_t j)
 {
     tarn_water_context *w = tile->water;
-    if (!TARN_LINK_WATER_BLOCKS || w->blocks == NULL) {
-        const tarn_water_input in = water_input_at(tile, t, set, i, j, inv_depth, row);
-        return tarn_water_shade(w, i, j, &in);
-    }
-    const uint32_t depth_q30 = tarn_water_background_q30(w, i, j);
-    const tarn_water_block *block = block_slot(tile, i);
-    if (shares_block(w, block, j, depth_q30)) {
-        if (!tarn_water_sharp_possible(w, &block->effects)) return tarn_water_apply(w, &block->effects, 0u, i, j);
-        const tarn_water_input in = water_input_at(tile, t, set, i, j, inv_depth, row);
-        return tarn_water_apply(w, &block->effects, tarn_water_sharp_features(w, &in, &block->effects), i, j);
-    }
+    if (c->shares && !c->needs_inputs) return tarn_water_apply(w, &c->block->effects, 0u, i, j);
+    const tarn_water_input in = water_input(set, values, inv_depth);
+    if (c->block == NULL) return tarn_water_shade(w, i, j, &in);
+    if (c->shares)
+        return tarn_water_apply(w, &c->block->effects, tarn_water_sharp_features(w, &in, &c->block->effects), i, j);
     tarn_water_effects own;
-    const tarn_water_input in = water_input_at(tile, t, set, i, j, inv_depth, row);
-    const tarn_water_effects *e = own_effects(tile, i, j, &in, depth_q30, &own);
+    const tarn_water_effects *e = own_effects(tile, i, j, &in, c->depth_q30, &own);
     return tarn_water_apply(w, e, e->sharp, i, j);
 }
 
@@ -335,11 +338,12 @@ static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const at
     const tarn_quality *quality = tile->quality;
     const uint32_t closer = closer_depth(tile->depth, quality->depth_bits, offset, inv_depth);
     if (closer == 0u) return;
+    uint32_t values[ATTRIBUTES_MAX];
+    row_attributes_at(row, quality, set, t, i, j, values);
     if (TARN_LINK_WATER && tile->water != NULL) {
-        write_water_pixel(tile, offset, water_colour(tile, t, set, i, j, inv_depth, row));
+        const water_choice choice = water_choice_at(tile, i, j);
+        write_water_pixel(tile, offset, water_colour(tile, &choice, set, values, inv_depth, i, j));
     } else {
-        uint32_t values[ATTRIBUTES_MAX];
-        row_attributes_at(row, quality, set, t, i, j, values);
         tile->colour[offset] = shade_pixel(set, texture, values);
     }
     store_depth(tile->depth, quality->depth_bits, offset, closer);
