@@ -244,7 +244,9 @@ static int shares_block(const tarn_water_context *w, const tarn_water_block *blo
 }
 
 /* The effects of a pixel that does not share its block's: its own, kept in the
- * block's slot when it is the block's top-left pixel. */
+ * block's slot when it is the block's top-left pixel, unless they refract: a
+ * refracted sample moves with each pixel's own normal, and shared it would move
+ * the block's other pixels by the top-left pixel's. */
 static const tarn_water_effects *own_effects(const tarn_tile_target *tile, int32_t i, int32_t j,
                                              const tarn_water_input *in, uint32_t depth_q30,
                                              tarn_water_effects *own)
@@ -255,7 +257,8 @@ static const tarn_water_effects *own_effects(const tarn_tile_target *tile, int32
     tarn_water_effects *e = top_left ? &block->effects : own;
     tarn_water_effects_at(w, i, j, in, e);
     if (top_left) {
-        block->serial = w->triangle_serial;
+        const int refracts = TARN_LINK_APRON && (e->offset[0] | e->offset[1]) != 0;
+        block->serial = refracts ? 0u : w->triangle_serial;
         block->row = j;
         block->depth_q30 = depth_q30;
     }

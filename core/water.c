@@ -140,13 +140,15 @@ void tarn_water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, co
     e->sharp = (uint8_t)sharp_features(w, in, e->foam_band, &n);
 }
 
-/* The background colour under the effects' offset, Q8.8 per channel. */
+/* The background colour under the effects' offset, Q8.8 per channel. The offset
+ * was kept inside the frame for the pixel that found it, and only that pixel
+ * applies an offset: blocks share no refracted effects. */
 static void moved_background(const tarn_water_context *w, const tarn_water_effects *e, int32_t i, int32_t j,
                              uint32_t colour[3])
 {
-    if (TARN_LINK_APRON && (e->offset[0] | e->offset[1]) != 0) {
-        i = tarn_clamp_i32(i + e->offset[0], w->sample_rect.x0, w->sample_rect.x1 - 1);
-        j = tarn_clamp_i32(j + e->offset[1], w->sample_rect.y0, w->sample_rect.y1 - 1);
+    if (TARN_LINK_APRON) {
+        i += e->offset[0];
+        j += e->offset[1];
     }
     const uint32_t rgb = w->background[background_offset(w, i, j)];
     for (int c = 0; c < 3; c++) colour[c] = tarn_water_channel_q8(rgb, c);

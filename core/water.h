@@ -131,8 +131,8 @@ void tarn_water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, co
 #define TARN_WATER_SHOWS_SPARKLES 2u
 
 /* The colour (0x00RRGGBB) of water pixel (i, j): its background, moved by the
- * effects' offset (kept inside the frame), through the effects, with the sharp
- * features `sharp` (TARN_WATER_SHOWS_*: the effects' own, or the pixel's). */
+ * effects' offset (found for this pixel: never shared), through the effects, with
+ * the sharp features `sharp` (TARN_WATER_SHOWS_*: the effects' own, or the pixel's). */
 uint32_t tarn_water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
                           int32_t j);
 /* The sharp features that show at a pixel sharing effects `e` (TARN_WATER_SHOWS_*),

@@ -1,7 +1,8 @@
 /* test_water_blocks.c: the quality's water_block 2, which finds the water's effects
  * once per 2x2 block of pixels (tarn_render.h): its image does not depend on the
  * tile size or the cluster bins, it stays close to the image of water_block 1 and
- * to the float reference where the water has no refraction, it changes nothing
+ * to the float reference where the water has no refraction and within 10 dB of
+ * it where it refracts (refracted effects are never shared), it changes nothing
  * where there is no water or under the underwater view, and odd tiles are refused. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -102,6 +103,31 @@ static void test_blocks_stay_close_without_refraction(void **state)
     tarn_scene_free(&s);
 }
 
+/* Refracted effects are never shared (each pixel's sample moves with its own
+ * normal), so with refraction the blocks cost the pond less than 10 dB against the
+ * reference at the balanced preset; shared, the refracted samples cost it 19. */
+static void test_blocks_share_no_refraction(void **state)
+{
+    (void)state;
+    tarn_loaded_scene s;
+    load("scenes/pond.json", &s);
+    const size_t pixels = (size_t)s.width * s.height;
+    const tarn_quality one = with_block(TARN_PRESET_BALANCED, 1), two = with_block(TARN_PRESET_BALANCED, 2);
+    uint8_t *a = render(&s, "pond", one, 0), *b = render(&s, "pond", two, 0);
+    uint8_t *ref = malloc(3u * pixels);
+    tarn_reference_options options = {.subpixel_bits = one.subpixel_bits, .time_ms = 0};
+    assert_int_equal(tarn_reference_render(&s.scene, s.width, s.height, &options, ref, NULL), 0);
+    tarn_compare_metrics to_ref_a, to_ref_b;
+    tarn_compare_images(a, ref, NULL, NULL, s.width, s.height, &to_ref_a);
+    tarn_compare_images(b, ref, NULL, NULL, s.width, s.height, &to_ref_b);
+    assert_true(memcmp(a, b, 3u * pixels) != 0);
+    assert_true(to_ref_b.psnr_db > to_ref_a.psnr_db - 10.0);
+    free(a);
+    free(b);
+    free(ref);
+    tarn_scene_free(&s);
+}
+
 /* A scene without water, and the underwater view (whose displaced pass ignores
  * blocks), draw exactly as with water_block 1. */
 static void test_blocks_change_nothing_without_water_pixels(void **state)
@@ -152,6 +178,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_blocks_do_not_depend_on_the_tile),
         cmocka_unit_test(test_blocks_stay_close_without_refraction),
+        cmocka_unit_test(test_blocks_share_no_refraction),
         cmocka_unit_test(test_blocks_change_nothing_without_water_pixels),
         cmocka_unit_test(test_block_memory_and_odd_tiles),
     };
