@@ -296,38 +296,39 @@ static void row_attributes_at(row_attributes *row, const tarn_quality *quality, 
         exact_t(set, t, i, j, quality->recip_newton_steps, out);
 }
 
-/* How a water pixel gets its effects: its block's, when it shares them, or its own;
- * and whether it needs its inputs from its attributes (not when it shares and no
- * sharp feature can show). */
+/* How a water pixel gets its effects: its block's, when it shares them, or its own. */
 typedef struct {
     tarn_water_block *block; /* NULL without water blocks */
     uint32_t depth_q30;      /* the background's near/d, with blocks */
     int shares;
-    int needs_inputs;
 } water_choice;
 
 static water_choice water_choice_at(const tarn_tile_target *tile, int32_t i, int32_t j)
 {
-    water_choice c = {NULL, 0u, 0, 1};
+    water_choice c = {NULL, 0u, 0};
     const tarn_water_context *w = tile->water;
     if (!TARN_LINK_WATER_BLOCKS || w->blocks == NULL) return c;
     c.block = block_slot(tile, i);
     c.depth_q30 = tarn_water_background_q30(w, i, j);
     c.shares = shares_block(w, c.block, j, c.depth_q30);
-    c.needs_inputs = !c.shares || tarn_water_sharp_possible(w, &c.block->effects);
     return c;
 }
 
-/* The colour of water pixel (i, j) from its attributes `values`. */
+/* The colour of water pixel (i, j) from its attributes `values`. A pixel that
+ * shares its block's effects where no sharp feature can show needs no water
+ * inputs of its own. */
 static uint32_t water_colour(const tarn_tile_target *tile, const water_choice *c, const attribute_set *set,
                              const uint32_t values[ATTRIBUTES_MAX], uint32_t inv_depth, int32_t i, int32_t j)
 {
     tarn_water_context *w = tile->water;
-    if (c->shares && !c->needs_inputs) return tarn_water_apply(w, &c->block->effects, 0u, i, j);
+    if (c->shares) {
+        const tarn_water_effects *shared = &c->block->effects;
+        if (!tarn_water_sharp_possible(w, shared)) return tarn_water_apply(w, shared, 0u, i, j);
+        const tarn_water_input in = water_input(set, values, inv_depth);
+        return tarn_water_apply(w, shared, tarn_water_sharp_features(w, &in, shared), i, j);
+    }
     const tarn_water_input in = water_input(set, values, inv_depth);
     if (c->block == NULL) return tarn_water_shade(w, i, j, &in);
-    if (c->shares)
-        return tarn_water_apply(w, &c->block->effects, tarn_water_sharp_features(w, &in, &c->block->effects), i, j);
     tarn_water_effects own;
     const tarn_water_effects *e = own_effects(tile, i, j, &in, c->depth_q30, &own);
     return tarn_water_apply(w, e, e->sharp, i, j);

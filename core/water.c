@@ -203,7 +203,6 @@ int tarn_water_sharp_possible(const tarn_water_context *w, const tarn_water_effe
 unsigned tarn_water_sharp_features(const tarn_water_context *w, const tarn_water_input *in,
                                    const tarn_water_effects *e)
 {
-    if (!tarn_water_sharp_possible(w, e)) return 0u;
     const tarn_water_normal n = sparkles_possible(w) ? tarn_water_map_x(w, in) : tarn_water_flat_normal();
     return sharp_features(w, in, e->foam_band, &n);
 }

@@ -136,7 +136,7 @@ void tarn_water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, co
 uint32_t tarn_water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
                           int32_t j);
 /* The sharp features that show at a pixel sharing effects `e` (TARN_WATER_SHOWS_*),
- * of those the material has and the build links; 0 without looking when none can
+ * of those the material has and the build links; for a pixel where one can
  * (tarn_water_sharp_possible). */
 unsigned tarn_water_sharp_features(const tarn_water_context *w, const tarn_water_input *in,
                                    const tarn_water_effects *e);

@@ -19,15 +19,26 @@ static inline int32_t strength_times(int32_t sum, int32_t strength)
     return tarn_floor_shift(sum * (strength >> 8) + low, 9);           /* below 2^28 */
 }
 
-tarn_water_normal tarn_water_map_x(const tarn_water_context *w, const tarn_water_input *in)
+/* The texels of the two maps under the pixel, b NULL without a second map; 0
+ * without normal maps. */
+static int map_texels(const tarn_water_context *w, const tarn_water_input *in, const uint8_t **a,
+                      const uint8_t **b)
 {
     const tarn_water *water = w->water;
+    if (water->normal_a == NULL) return 0;
+    *a = tarn_water_panned_texel(water->normal_a, &water->pan_a, w->pan_a, in);
+    *b = water->normal_b != NULL ? tarn_water_panned_texel(water->normal_b, &water->pan_b, w->pan_b, in) : NULL;
+    return 1;
+}
+
+tarn_water_normal tarn_water_map_x(const tarn_water_context *w, const tarn_water_input *in)
+{
     tarn_water_normal n = tarn_water_flat_normal();
-    if (water->normal_a == NULL) return n;
-    n.a_x = tarn_water_normal_component(tarn_water_panned_texel(water->normal_a, &water->pan_a, w->pan_a, in)[0]);
-    n.has_b = water->normal_b != NULL;
-    if (n.has_b)
-        n.b_x = tarn_water_normal_component(tarn_water_panned_texel(water->normal_b, &water->pan_b, w->pan_b, in)[0]);
+    const uint8_t *a, *b;
+    if (!map_texels(w, in, &a, &b)) return n;
+    n.a_x = tarn_water_normal_component(a[0]);
+    n.has_b = b != NULL;
+    if (n.has_b) n.b_x = tarn_water_normal_component(b[0]);
     return n;
 }
 
@@ -36,11 +47,12 @@ tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const t
 {
     const tarn_water *water = w->water;
     tarn_water_normal n = tarn_water_flat_normal();
-    if (water->normal_a == NULL) return n;
+    const uint8_t *texel_a, *texel_b;
+    if (!map_texels(w, in, &texel_a, &texel_b)) return n;
     int32_t a[3], b[3] = {0, 0, Q15_ONE};
-    decode_normal(tarn_water_panned_texel(water->normal_a, &water->pan_a, w->pan_a, in), a);
-    n.has_b = water->normal_b != NULL;
-    if (n.has_b) decode_normal(tarn_water_panned_texel(water->normal_b, &water->pan_b, w->pan_b, in), b);
+    decode_normal(texel_a, a);
+    n.has_b = texel_b != NULL;
+    if (n.has_b) decode_normal(texel_b, b);
     n.a_x = a[0];
     n.b_x = b[0];
     const int32_t strength = water->normal_strength;
