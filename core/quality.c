@@ -14,8 +14,8 @@
  *    cluster fewer times, and 42 would leave the last tiles narrow), span
  *    perspective and one Newton step are on the M0's front, and
  *    the smallest exp2 table and fog argument cost nothing visible once refraction
- *    is gone. Without refraction, water blocks cost the pond 0.13 dB for 13% of
- *    the M0's instructions (1704 against 1960); with it they save next to nothing
+ *    is gone. Without refraction, water blocks cost the pond 0.13 dB for 14% of
+ *    the M0's instructions (1694 against 1973); with it they save next to nothing
  *    (refracted effects are never shared) and cost 2.6 dB, so only fast takes
  *    them. */
 #include "tarn_render.h"
