@@ -1,5 +1,7 @@
 #include "mesh_gen.h"
 
+#include "grid_merge.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -98,6 +100,27 @@ void tarn_mesh_add_triangle(tarn_mesh_buffer *m, uint32_t a, uint32_t b, uint32_
     tri[2] = (uint16_t)c;
 }
 
+int tarn_mesh_drop_unused_vertices(tarn_mesh_buffer *m, const char *what, tarn_error *err)
+{
+    const uint32_t vertices = m->mesh.vertex_count, indices = 3u * m->mesh.triangle_count;
+    uint32_t *renumber = calloc(vertices + 1u, sizeof *renumber); /* new index + 1, 0 unused */
+    if (!renumber) return tarn_fail(err, "%s: out of memory for %u vertices", what, vertices);
+    for (uint32_t k = 0; k < indices; k++) renumber[m->indices[k]] = 1;
+    uint32_t kept = 0;
+    for (uint32_t v = 0; v < vertices; v++) {
+        if (!renumber[v]) continue;
+        m->positions[kept] = m->positions[v];
+        m->normals[kept] = m->normals[v];
+        if (m->uvs) m->uvs[kept] = m->uvs[v];
+        if (m->colours) m->colours[kept] = m->colours[v];
+        renumber[v] = ++kept;
+    }
+    for (uint32_t k = 0; k < indices; k++) m->indices[k] = (uint16_t)(renumber[m->indices[k]] - 1u);
+    m->mesh.vertex_count = (uint16_t)kept;
+    free(renumber);
+    return 0;
+}
+
 void tarn_mesh_buffer_free(tarn_mesh_buffer *m)
 {
     if (!m) return;
@@ -118,6 +141,7 @@ typedef struct {
     double u_scale, v_scale;
     const uint8_t *gray; /* columns*rows heights, or NULL for a flat grid */
     double height;       /* world height of gray 255 */
+    int merge_level;     /* merge level squares into fewer triangles (grid_merge.h) */
 } grid_spec;
 
 static double grid_height(const grid_spec *g, uint32_t i, uint32_t j)
@@ -138,6 +162,37 @@ static double grid_slope(const grid_spec *g, uint32_t i, uint32_t j, int along_x
     return (h_hi - h_lo) / ((hi - lo) * spacing);
 }
 
+/* Per vertex, the key grid_merge.h merges by: 1 + its height code where its
+ * normal points straight up, so that vertices with equal keys draw alike; 0
+ * elsewhere, and everywhere when the grid does not merge. */
+static uint32_t *level_keys(const grid_spec *g)
+{
+    uint32_t *keys = calloc((size_t)g->columns * g->rows, sizeof *keys);
+    for (uint32_t j = 0; keys && g->merge_level && j < g->rows; j++) {
+        for (uint32_t i = 0; i < g->columns; i++) {
+            const int level = grid_slope(g, i, j, 1) == 0.0 && grid_slope(g, i, j, 0) == 0.0;
+            const uint32_t code = g->gray ? g->gray[(size_t)j * g->columns + i] : 0u;
+            keys[(size_t)j * g->columns + i] = level ? code + 1u : 0u;
+        }
+    }
+    return keys;
+}
+
+/* The grid's triangles: two per cell, or fewer where level squares merge. */
+static int add_grid_triangles(tarn_mesh_buffer *out, const grid_spec *g, const char *what,
+                              tarn_error *err)
+{
+    uint32_t *keys = level_keys(g);
+    if (!keys) return tarn_fail(err, "%s: out of memory for %u x %u vertices", what, g->columns, g->rows);
+    tarn_grid_blocks blocks;
+    const int found = tarn_grid_blocks_find(&blocks, g->columns, g->rows, keys, what, err);
+    free(keys);
+    if (found) return -1;
+    out->mesh.triangle_count = (uint16_t)tarn_grid_blocks_triangles(&blocks, out->indices);
+    tarn_grid_blocks_free(&blocks);
+    return tarn_mesh_drop_unused_vertices(out, what, err);
+}
+
 static int build_grid(tarn_mesh_buffer *out, const grid_spec *g, const char *what,
                       tarn_error *err)
 {
@@ -155,13 +210,9 @@ static int build_grid(tarn_mesh_buffer *out, const grid_spec *g, const char *wha
             tarn_mesh_add_vertex(out, position, normal, uv);
         }
     }
-    /* Seen from above, +x then +z turns counter-clockwise ((+z) x (+x) = +y). */
-    for (uint32_t j = 0; j + 1 < g->rows; j++) {
-        for (uint32_t i = 0; i + 1 < g->columns; i++) {
-            uint32_t a = j * g->columns + i, b = a + g->columns, c = a + 1, d = b + 1;
-            tarn_mesh_add_triangle(out, a, b, c);
-            tarn_mesh_add_triangle(out, c, b, d);
-        }
+    if (add_grid_triangles(out, g, what, err)) {
+        tarn_mesh_buffer_free(out);
+        return -1;
     }
     return 0;
 }
@@ -177,11 +228,11 @@ int tarn_mesh_plane(tarn_mesh_buffer *out, double width, double depth, uint32_t 
 
 int tarn_mesh_heightfield(tarn_mesh_buffer *out, const tarn_image *gray, double width,
                           double depth, double height, double u_scale, double v_scale,
-                          const char *what, tarn_error *err)
+                          int merge_level, const char *what, tarn_error *err)
 {
     grid_spec g = { .columns = gray->width, .rows = gray->height, .width = width,
                     .depth = depth, .u_scale = u_scale, .v_scale = v_scale,
-                    .gray = gray->pixels, .height = height };
+                    .gray = gray->pixels, .height = height, .merge_level = merge_level };
     return build_grid(out, &g, what, err);
 }
 

@@ -48,6 +48,9 @@ uint16_t tarn_mesh_add_vertex(tarn_mesh_buffer *m, const double position[3],
 /* Appends a triangle; a, b, c counter-clockwise seen from its front. */
 void tarn_mesh_add_triangle(tarn_mesh_buffer *m, uint32_t a, uint32_t b, uint32_t c);
 
+/* Removes the vertices no triangle uses, keeping the others' order. */
+int tarn_mesh_drop_unused_vertices(tarn_mesh_buffer *m, const char *what, tarn_error *err);
+
 void tarn_mesh_buffer_free(tarn_mesh_buffer *m);
 
 /* A flat grid in XZ, centred, facing +y: `segments_x` by `segments_z` quads,
@@ -68,9 +71,12 @@ int tarn_mesh_sphere(tarn_mesh_buffer *out, double radius, uint32_t segments, ui
 
 /* One vertex per pixel of a gray image, at height gray/255 * height, spread over
  * width x depth in XZ and centred; the image's top row lies toward -z. Normals are
- * smooth (from neighbouring heights); uvs run 0..u_scale, 0..v_scale. */
+ * smooth (from neighbouring heights); uvs run 0..u_scale, 0..v_scale. With
+ * `merge_level`, level squares are drawn with fewer triangles (grid_merge.h) and
+ * the vertices inside them are dropped: for a material lit per vertex alone,
+ * not for water, whose vertices also carry a view-dependent fresnel term. */
 int tarn_mesh_heightfield(tarn_mesh_buffer *out, const tarn_image *gray, double width,
                           double depth, double height, double u_scale, double v_scale,
-                          const char *what, tarn_error *err);
+                          int merge_level, const char *what, tarn_error *err);
 
 #endif

@@ -497,12 +497,15 @@ static int load_materials(tarn_loader *l, const json_t *root)
 
 /* ---- objects ------------------------------------------------------------------ */
 
-/* Builds an object's mesh from its type-specific fields. */
+/* Builds an object's mesh from its type-specific fields; its material decides what
+ * a heightfield may merge. */
 typedef int (*mesh_builder)(tarn_loader *l, const json_t *o, const char *field,
-                            tarn_mesh_buffer *mesh);
+                            const tarn_material *material, tarn_mesh_buffer *mesh);
 
-static int build_plane(tarn_loader *l, const json_t *o, const char *field, tarn_mesh_buffer *mesh)
+static int build_plane(tarn_loader *l, const json_t *o, const char *field,
+                       const tarn_material *material, tarn_mesh_buffer *mesh)
 {
+    (void)material;
     static const double one_by_one[2] = { 1, 1 };
     double size[2], segments[2], uv_scale[2];
     char what[TARN_FIELD_PATH_MAX + 64];
@@ -516,8 +519,10 @@ static int build_plane(tarn_loader *l, const json_t *o, const char *field, tarn_
                            uv_scale[0], uv_scale[1], what, l->err);
 }
 
-static int build_box(tarn_loader *l, const json_t *o, const char *field, tarn_mesh_buffer *mesh)
+static int build_box(tarn_loader *l, const json_t *o, const char *field,
+                     const tarn_material *material, tarn_mesh_buffer *mesh)
 {
+    (void)material;
     double size[3];
     char what[TARN_FIELD_PATH_MAX + 64];
     snprintf(what, sizeof what, "%s: %s", l->file, field);
@@ -525,8 +530,10 @@ static int build_box(tarn_loader *l, const json_t *o, const char *field, tarn_me
     return tarn_mesh_box(mesh, size[0], size[1], size[2], what, l->err);
 }
 
-static int build_sphere(tarn_loader *l, const json_t *o, const char *field, tarn_mesh_buffer *mesh)
+static int build_sphere(tarn_loader *l, const json_t *o, const char *field,
+                        const tarn_material *material, tarn_mesh_buffer *mesh)
 {
+    (void)material;
     static const double default_segments = 16, default_rings = 8;
     double radius, segments, rings;
     char what[TARN_FIELD_PATH_MAX + 64];
@@ -540,7 +547,7 @@ static int build_sphere(tarn_loader *l, const json_t *o, const char *field, tarn
 }
 
 static int build_heightfield(tarn_loader *l, const json_t *o, const char *field,
-                             tarn_mesh_buffer *mesh)
+                             const tarn_material *material, tarn_mesh_buffer *mesh)
 {
     static const double one_by_one[2] = { 1, 1 };
     double size[2], height, uv_scale[2];
@@ -555,7 +562,7 @@ static int build_heightfield(tarn_loader *l, const json_t *o, const char *field,
     int result = tarn_png_read_heightfield(path, &image, l->err);
     if (result == 0) {
         result = tarn_mesh_heightfield(mesh, &image, size[0], size[1], height, uv_scale[0],
-                                       uv_scale[1], path, l->err);
+                                       uv_scale[1], material->water == NULL, path, l->err);
     }
     tarn_image_free(&image);
     free(path);
@@ -563,8 +570,9 @@ static int build_heightfield(tarn_loader *l, const json_t *o, const char *field,
 }
 
 static int build_obj_mesh(tarn_loader *l, const json_t *o, const char *field,
-                          tarn_mesh_buffer *mesh)
+                          const tarn_material *material, tarn_mesh_buffer *mesh)
 {
+    (void)material;
     char *path;
     if (get_asset_path(l, o, field, "file", "an OBJ file name", &path)) return -1;
     int result = tarn_obj_load(path, mesh, l->err);
@@ -670,7 +678,7 @@ static int load_object(tarn_loader *l, const json_t *o, size_t index)
         get_vec3(l, o, field, "position", origin, position) ||
         get_vec3(l, o, field, "rotation", origin, rotation) ||
         tarn_get_number(l, o, field, "scale", &TARN_POSITIVE, &unit_scale, &scale) ||
-        type->build(l, o, field, mesh) || tarn_mesh_build_clusters(mesh, l->err)) {
+        type->build(l, o, field, object->material, mesh) || tarn_mesh_build_clusters(mesh, l->err)) {
         return -1;
     }
     object->mesh = &mesh->mesh;

@@ -146,6 +146,19 @@ static void remove_temp_dir(char *dir)
 }
 
 /* Writes `text` to dir/name and returns the path (static buffer). */
+/* Writes a width x height PNG of one repeated texel to dir/name. */
+static void write_flat_png(const char *dir, const char *name, uint16_t width, uint16_t height,
+                           const uint8_t texel[3])
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    uint8_t rgb[8 * 8 * 3];
+    assert_true((size_t)width * height * 3 <= sizeof rgb);
+    for (size_t k = 0; k < (size_t)width * height; k++) memcpy(rgb + 3 * k, texel, 3);
+    tarn_error err;
+    if (tarn_png_write_rgb(path, rgb, width, height, &err)) fail_msg("%s", err.message);
+}
+
 static const char *write_temp(const char *dir, const char *name, const char *text)
 {
     static char path[1024];
@@ -272,7 +285,7 @@ static void test_heightfield(void **state)
     tarn_image image = { 5, 5, 1, gray };
     tarn_error err;
     tarn_mesh_buffer b;
-    assert_int_equal(tarn_mesh_heightfield(&b, &image, 8, 4, 2, 1, 1, "hf", &err), 0);
+    assert_int_equal(tarn_mesh_heightfield(&b, &image, 8, 4, 2, 1, 1, 0, "hf", &err), 0);
     const tarn_mesh *m = &b.mesh;
     assert_int_equal(m->vertex_count, 25);
     assert_int_equal(m->triangle_count, 32);
@@ -294,6 +307,111 @@ static void test_heightfield(void **state)
     assert_int_equal(m->uvs[24].u, 65536);
     assert_int_equal(m->uvs[24].v, 65536);
     tarn_mesh_buffer_free(&b);
+}
+
+/* No crack: every edge of the mesh meets the opposite edge of exactly one other
+ * triangle, unless it lies on the border of the width x depth grid. */
+static void check_no_cracks(const tarn_mesh *m, tarn_q16 half_width, tarn_q16 half_depth)
+{
+    for (uint32_t t = 0; t < m->triangle_count; t++) {
+        for (int e = 0; e < 3; e++) {
+            uint16_t a = m->indices[3 * t + e], b = m->indices[3 * t + (e + 1) % 3];
+            const tarn_vec3 *pa = &m->positions[a], *pb = &m->positions[b];
+            int on_border = (pa->x == pb->x && (pa->x == half_width || pa->x == -half_width)) ||
+                            (pa->z == pb->z && (pa->z == half_depth || pa->z == -half_depth));
+            int matches = 0;
+            for (uint32_t u = 0; u < m->triangle_count; u++) {
+                for (int f = 0; f < 3; f++) {
+                    uint16_t c = m->indices[3 * u + f], d = m->indices[3 * u + (f + 1) % 3];
+                    if (same_position(m, a, d) && same_position(m, b, c)) matches++;
+                }
+            }
+            assert_int_equal(matches, on_border ? 0 : 1);
+        }
+    }
+}
+
+/* Twice the area the mesh covers seen from above, in Q16.16 units squared. */
+static double covered_area2_xz(const tarn_mesh *m)
+{
+    double sum = 0;
+    for (uint32_t t = 0; t < m->triangle_count; t++) {
+        const tarn_vec3 *p = &m->positions[m->indices[3 * t]], *q = &m->positions[m->indices[3 * t + 1]],
+                        *r = &m->positions[m->indices[3 * t + 2]];
+        sum += fabs((double)(q->x - p->x) * (r->z - p->z) - (double)(q->z - p->z) * (r->x - p->x));
+    }
+    return sum;
+}
+
+static void test_heightfield_merges_level_squares(void **state)
+{
+    (void)state;
+    /* 17x17 at one height but for a bump near one corner */
+    uint8_t gray[17 * 17];
+    memset(gray, 200, sizeof gray);
+    gray[4 * 17 + 12] = 250;
+    tarn_image image = { 17, 17, 1, gray };
+    tarn_error err;
+    tarn_mesh_buffer whole, merged;
+    assert_int_equal(tarn_mesh_heightfield(&whole, &image, 16, 16, 2, 1, 1, 0, "hf", &err), 0);
+    assert_int_equal(tarn_mesh_heightfield(&merged, &image, 16, 16, 2, 1, 1, 1, "hf", &err), 0);
+    assert_int_equal(whole.mesh.triangle_count, 2 * 16 * 16);
+    /* the bump and its four neighbours lean (9 cells around it stay whole) while
+     * the 8x8 and 4x4 squares clear of it merge */
+    assert_true(merged.mesh.triangle_count < whole.mesh.triangle_count / 4);
+    assert_true(merged.mesh.vertex_count < whole.mesh.vertex_count / 2);
+    check_mesh_consistent(&merged.mesh);
+    check_faces_up(&merged.mesh);
+    check_no_cracks(&merged.mesh, 8 * 65536, 8 * 65536);
+    assert_true(covered_area2_xz(&merged.mesh) == covered_area2_xz(&whole.mesh));
+    /* the bump keeps its vertex, height and normal */
+    int found = 0;
+    for (uint32_t v = 0; v < merged.mesh.vertex_count; v++) {
+        if (merged.mesh.positions[v].x != whole.mesh.positions[4 * 17 + 12].x ||
+            merged.mesh.positions[v].z != whole.mesh.positions[4 * 17 + 12].z)
+            continue;
+        assert_memory_equal(&merged.mesh.positions[v], &whole.mesh.positions[4 * 17 + 12], sizeof(tarn_vec3));
+        assert_memory_equal(&merged.mesh.normals[v], &whole.mesh.normals[4 * 17 + 12], sizeof(tarn_vec3));
+        found++;
+    }
+    assert_int_equal(found, 1);
+    tarn_mesh_buffer_free(&whole);
+    tarn_mesh_buffer_free(&merged);
+
+    /* a field with no level square is drawn cell by cell, as without merging */
+    for (size_t k = 0; k < sizeof gray; k++) gray[k] = (uint8_t)(k * 7 % 251);
+    assert_int_equal(tarn_mesh_heightfield(&whole, &image, 16, 16, 2, 1, 1, 0, "hf", &err), 0);
+    assert_int_equal(tarn_mesh_heightfield(&merged, &image, 16, 16, 2, 1, 1, 1, "hf", &err), 0);
+    assert_int_equal(merged.mesh.triangle_count, whole.mesh.triangle_count);
+    assert_memory_equal(merged.mesh.indices, whole.mesh.indices, 6u * whole.mesh.triangle_count);
+    tarn_mesh_buffer_free(&whole);
+    tarn_mesh_buffer_free(&merged);
+}
+
+/* A level heightfield merges under an opaque material, not under water, whose
+ * vertices carry a fresnel term that depends on where they are. */
+static void test_water_heightfield_stays_whole(void **state)
+{
+    (void)state;
+    static const uint8_t level[3] = { 100, 100, 100 };
+    char *dir = make_temp_dir();
+    write_flat_png(dir, "flat.png", 8, 8, level);
+    const char *path = write_temp(
+        dir, "hf.json",
+        "{\"frame\": {\"width\": 64, \"height\": 64},"
+        " \"camera\": {\"position\": [0, 4, 6], \"target\": [0, 0, 0], \"fov\": 60},"
+        " \"materials\": {\"sand\": {}, \"sea\": {\"water\": {\"albedo\": \"#102030\"}}},"
+        " \"objects\": [{\"type\": \"heightfield\", \"material\": \"sand\", \"image\": \"flat.png\","
+        "                \"size\": [4, 4], \"height\": 1},"
+        "               {\"type\": \"heightfield\", \"material\": \"sea\", \"image\": \"flat.png\","
+        "                \"size\": [4, 4], \"height\": 1}]}");
+    tarn_loaded_scene s;
+    tarn_error err = { "" };
+    if (tarn_scene_load(path, &s, &err)) fail_msg("%s", err.message);
+    assert_true(s.objects[0].mesh->triangle_count < 2 * 7 * 7);
+    assert_int_equal(s.objects[1].mesh->triangle_count, 2 * 7 * 7);
+    tarn_scene_free(&s);
+    remove_temp_dir(dir);
 }
 
 static void test_primitive_limits(void **state)
@@ -670,10 +788,11 @@ static void test_pond(void **state)
     }
     assert_int_equal(spheres, 2);
     assert_true(plants >= 4);
-    /* the pit: 48x48 vertices, so that the pond fits the Cortex-M0 board's flash; the
+    /* the pit: 48x48 samples, so that the pond fits the Cortex-M0 board's flash, less
+     * what its level rim merges (1704 vertices and 3288 triangles are left); the
      * water: a 12 x 12 grid at the end of the list */
-    assert_int_equal(s.objects[0].mesh->vertex_count, 48 * 48);
-    assert_int_equal(s.objects[0].mesh->triangle_count, 47 * 47 * 2);
+    assert_int_equal(s.objects[0].mesh->vertex_count, 1704);
+    assert_int_equal(s.objects[0].mesh->triangle_count, 3288);
     check_faces_up(s.objects[11].mesh);
     assert_int_equal(s.objects[11].mesh->triangle_count, 12 * 12 * 2);
     /* the seeds' water: fog #4E83A9 at 0.15, refraction 0.25 within the apron at 240 */
@@ -777,19 +896,6 @@ static const tarn_water *only_water(const tarn_loaded_scene *s)
         found = s->materials[k].water;
     }
     return found;
-}
-
-/* Writes a width x height PNG of one repeated texel to dir/name. */
-static void write_flat_png(const char *dir, const char *name, uint16_t width, uint16_t height,
-                           const uint8_t texel[3])
-{
-    char path[1024];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    uint8_t rgb[8 * 8 * 3];
-    assert_true((size_t)width * height * 3 <= sizeof rgb);
-    for (size_t k = 0; k < (size_t)width * height; k++) memcpy(rgb + 3 * k, texel, 3);
-    tarn_error err;
-    if (tarn_png_write_rgb(path, rgb, width, height, &err)) fail_msg("%s", err.message);
 }
 
 static void test_water_fields(void **state)
@@ -1140,6 +1246,8 @@ int main(void)
         cmocka_unit_test(test_box),
         cmocka_unit_test(test_sphere),
         cmocka_unit_test(test_heightfield),
+        cmocka_unit_test(test_heightfield_merges_level_squares),
+        cmocka_unit_test(test_water_heightfield_stays_whole),
         cmocka_unit_test(test_primitive_limits),
         cmocka_unit_test(test_obj_polygons),
         cmocka_unit_test(test_obj_negative_indices),
