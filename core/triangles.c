@@ -76,30 +76,69 @@ static int bounds_miss_rect(const tarn_screen_vertex s[3], unsigned subpixel_bit
            bounds.y1 < pixel_centre(rect->y0, subpixel_bits) || bounds.y0 > pixel_centre(rect->y1 - 1, subpixel_bits);
 }
 
+/* The screen vertices of a triangle whose three static vertices were projected
+ * for this frame (tarn_view's static_screen), read straight from them: a projected
+ * vertex lies inside every clip plane, so neither outcodes nor the cache are
+ * needed. 0 when one was not projected; the cached walk then clips the triangle. */
+static int static_screen_triangle(const tarn_static_vertex *baked, const tarn_mesh *mesh,
+                                  const uint16_t index[3], tarn_screen_vertex screen[3])
+{
+    for (int k = 0; k < 3; k++) {
+        const tarn_static_vertex *v = &baked[index[k]];
+        if (v->inv_depth == 0u) return 0;
+        screen[k].x = v->screen_x;
+        screen[k].y = v->screen_y;
+        screen[k].inv_depth = v->inv_depth;
+    }
+    for (int k = 0; k < 3; k++) {
+        const tarn_static_vertex *v = &baked[index[k]];
+        for (int c = 0; c < 3; c++) screen[k].lit[c] = v->lit[c];
+        screen[k].fresnel = v->fresnel;
+        screen[k].uv = tarn_vertex_uv(mesh, index[k]);
+    }
+    return 1;
+}
+
+/* A triangle through the vertex cache: clipped where it crosses a clip plane,
+ * dropped beyond one plane or beyond an edge of the tile. `screen` is room for its
+ * screen vertices, the caller's, whose stack holds one such array for both walks. */
+static void walk_cached_triangle(const tarn_object *object, const uint16_t index[3],
+                                 const tarn_pixel_rect *only_rect, tarn_vertex_cache *cache,
+                                 tarn_screen_vertex screen[3], tarn_triangle_sink sink, void *ctx)
+{
+    const tarn_view *view = cache->view;
+    tarn_cached_vertex c[3];
+    unsigned outside_any;
+    const unsigned outside_all = tarn_cached_triangle(cache, index, c, &outside_any);
+    if (outside_all & TARN_CACHED_CLIP_PLANES) return; /* wholly outside one plane */
+    if (outside_any & TARN_CACHED_CLIP_PLANES) {
+        tarn_view_vertex v[3];
+        for (int k = 0; k < 3; k++) tarn_cached_shading(cache, &c[k], &v[k]);
+        tarn_clip_and_emit(view, outside_any & TARN_CACHED_CLIP_PLANES, v, object, sink, ctx);
+        return;
+    }
+    if (outside_all) return; /* wholly beyond an edge of the tile: unprojected */
+    for (int k = 0; k < 3; k++) tarn_cached_projection(cache, &c[k], &screen[k]);
+    if (only_rect && bounds_miss_rect(screen, view->subpixel_bits, only_rect)) return;
+    for (int k = 0; k < 3; k++) tarn_cached_attributes(cache, &c[k], &screen[k]);
+    sink(ctx, screen, object);
+}
+
 static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
                      const tarn_pixel_rect *only_rect, tarn_vertex_cache *cache,
                      tarn_triangle_sink sink, void *ctx)
 {
     const tarn_view *view = cache->view;
     const tarn_mesh *mesh = object->mesh;
+    const tarn_static_vertex *projected =
+        TARN_LINK_STATIC_VERTICES && view->static_screen ? cache->static_vertices : NULL;
+    tarn_screen_vertex screen[3];
     for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
-        tarn_cached_vertex c[3];
-        unsigned outside_any;
-        const unsigned outside_all = tarn_cached_triangle(cache, index, c, &outside_any);
-        if (outside_all & TARN_CACHED_CLIP_PLANES) continue; /* wholly outside one plane */
-        if (outside_any & TARN_CACHED_CLIP_PLANES) {
-            tarn_view_vertex v[3];
-            for (int k = 0; k < 3; k++) tarn_cached_shading(cache, &c[k], &v[k]);
-            tarn_clip_and_emit(view, outside_any & TARN_CACHED_CLIP_PLANES, v, object, sink, ctx);
-            continue;
-        }
-        if (outside_all) continue; /* wholly beyond an edge of the tile: unprojected */
-        tarn_screen_vertex screen[3];
-        for (int k = 0; k < 3; k++) tarn_cached_projection(cache, &c[k], &screen[k]);
-        if (only_rect && bounds_miss_rect(screen, view->subpixel_bits, only_rect)) continue;
-        for (int k = 0; k < 3; k++) tarn_cached_attributes(cache, &c[k], &screen[k]);
-        sink(ctx, screen, object);
+        if (projected == NULL || !static_screen_triangle(projected, mesh, index, screen))
+            walk_cached_triangle(object, index, only_rect, cache, screen, sink, ctx);
+        else if (!only_rect || !bounds_miss_rect(screen, view->subpixel_bits, only_rect))
+            sink(ctx, screen, object);
     }
 }
 
