@@ -40,7 +40,7 @@ static uint32_t reciprocal_of_q(uint32_t q, unsigned steps, unsigned *lz)
 static void affine_row_origin(const attribute_set *set, const triangle_setup *t, int32_t j,
                               uint32_t origin[ATTRIBUTES_MAX])
 {
-    for (int k = 0; k < set->count; k++) {
+    for (int k = set->first_varying; k < set->count; k++) {
         const plane *p = &set->premultiplied[k];
         origin[k] = p->anchor + p->step_y * (uint32_t)(j - t->box.y0) - p->step_x * (uint32_t)t->box.x0;
     }
@@ -49,7 +49,7 @@ static void affine_row_origin(const attribute_set *set, const triangle_setup *t,
 static void affine_t(const attribute_set *set, const uint32_t origin[ATTRIBUTES_MAX], int32_t i,
                      uint32_t out[ATTRIBUTES_MAX])
 {
-    for (int k = 0; k < set->count; k++) {
+    for (int k = set->first_varying; k < set->count; k++) {
         uint32_t v = origin[k] + set->premultiplied[k].step_x * (uint32_t)i;
         if ((int32_t)v < (int32_t)set->t_min[k]) v = set->t_min[k];
         out[k] = v > set->t_max[k] ? set->t_max[k] : v;
@@ -65,7 +65,7 @@ static void exact_t(const attribute_set *set, const triangle_setup *t, int32_t i
     if (q > set->q_max) q = set->q_max;
     unsigned lz;
     uint32_t recip = reciprocal_of_q(q, steps, &lz);
-    for (int k = 0; k < set->count; k++)
+    for (int k = set->first_varying; k < set->count; k++)
         out[k] = divide_by_q(plane_at(&set->premultiplied[k], t, i, j), recip, lz,
                              set->t_min[k], set->t_max[k]);
 }
@@ -107,7 +107,7 @@ static void span_end(const attribute_set *set, const triangle_setup *t, int32_t 
     int32_t q_floor = (int32_t)(set->q_min / 2u) > 1 ? (int32_t)(set->q_min / 2u) : 1;
     unsigned lz;
     uint32_t recip = reciprocal_of_q((uint32_t)tarn_clamp_i32(q, q_floor, (int32_t)T_ONE), steps, &lz);
-    for (int k = 0; k < set->count; k++)
+    for (int k = set->first_varying; k < set->count; k++)
         out[k] = span_end_t((int32_t)plane_at(&set->premultiplied[k], t, i, j), recip, lz);
 }
 
@@ -121,7 +121,7 @@ static void span_fill(const attribute_set *set, const triangle_setup *t, unsigne
     const int32_t start = grid > t->box.x0 ? grid : t->box.x0;
     const int32_t end = grid + span < t->box.x1 ? grid + span : t->box.x1;
     if (cache->limit != INT32_MIN && start == cache->end) {
-        for (int k = 0; k < set->count; k++) cache->t0[k] = cache->t_end[k];
+        for (int k = set->first_varying; k < set->count; k++) cache->t0[k] = cache->t_end[k];
     } else {
         span_end(set, t, start, j, steps, cache->t0);
     }
@@ -132,7 +132,7 @@ static void span_fill(const attribute_set *set, const triangle_setup *t, unsigne
         cache->length = end - start;
         cache->inverse_length = cache->length > 0 ? tarn_recip_u32((uint32_t)cache->length, 2) : 0u;
     }
-    for (int k = 0; k < set->count; k++)
+    for (int k = set->first_varying; k < set->count; k++)
         cache->dt[k] = tarn_mul_hi_s32_u32(cache->t_end[k] - cache->t0[k], cache->inverse_length);
     cache->start = start;
     cache->end = end;
@@ -143,7 +143,7 @@ static void span_t(const attribute_set *set, const triangle_setup *t, unsigned s
                    span_cache *cache, uint32_t out[ATTRIBUTES_MAX])
 {
     if (i >= cache->limit) span_fill(set, t, steps, i, j, cache);
-    for (int k = 0; k < set->count; k++) {
+    for (int k = set->first_varying; k < set->count; k++) {
         int32_t value = cache->t0[k] + cache->dt[k] * (i - cache->start);
         out[k] = (uint32_t)tarn_clamp_i32(value, (int32_t)set->t_min[k], (int32_t)set->t_max[k]);
     }
@@ -334,15 +334,15 @@ static uint32_t water_colour(const tarn_tile_target *tile, const water_choice *c
     return tarn_water_apply(w, e, e->sharp, i, j);
 }
 
-/* One covered pixel: its attributes, its colour (or water), its depth. */
+/* One covered pixel: its attributes, its colour (or water), its depth. `values`
+ * holds the triangle's constant attributes already (tarn_setup_attributes). */
 static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
                        const tarn_texture *texture, int32_t i, int32_t j, uint32_t inv_depth,
-                       row_attributes *row, int32_t offset)
+                       row_attributes *row, int32_t offset, uint32_t values[ATTRIBUTES_MAX])
 {
     const tarn_quality *quality = tile->quality;
     const uint32_t closer = closer_depth(tile->depth, quality->depth_bits, offset, inv_depth);
     if (closer == 0u) return;
-    uint32_t values[ATTRIBUTES_MAX];
     row_attributes_at(row, quality, set, t, i, j, values);
     if (TARN_LINK_WATER && tile->water != NULL) {
         const water_choice choice = water_choice_at(tile, i, j);
@@ -355,7 +355,7 @@ static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const at
 
 static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
                        const tarn_texture *texture, int32_t j, int32_t i0, int32_t i1,
-                       exact_value depth)
+                       exact_value depth, uint32_t values[ATTRIBUTES_MAX])
 {
     const unsigned s = t->subpixel_bits;
     const int32_t px = pixel_centre(i0, s), py = pixel_centre(j, s);
@@ -378,7 +378,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
     /* each edge is linear along the row, so the covered pixels are one run: after
      * it, nothing more is covered */
     for (; i <= i1 && (e0 | e1 | e2) >= 0; i++) {
-        draw_pixel(tile, t, set, texture, i, j, depth.quotient, &row, offset + i);
+        draw_pixel(tile, t, set, texture, i, j, depth.quotient, &row, offset + i, values);
         e0 += step0;
         e1 += step1;
         e2 += step2;
@@ -447,9 +447,11 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     if (TARN_LINK_WATER && tile->water != NULL) tile->water->triangle_serial++;
     attribute_set set;
     tarn_setup_attributes(&t, &request, perspective_mode(tile->quality, &t.box), &set);
+    uint32_t values[ATTRIBUTES_MAX];
+    for (int k = 0; k < set.first_varying; k++) values[k] = set.t_min[k]; /* = t_max: constant */
     exact_value depth = tarn_exact_depth_at(&t, &set.depth, draw.x0, draw.y0);
     for (int32_t j = draw.y0; j <= draw.y1; j++) {
-        raster_row(tile, &t, &set, request.texture, j, draw.x0, draw.x1, depth);
+        raster_row(tile, &t, &set, request.texture, j, draw.x0, draw.x1, depth, values);
         exact_step(&depth, &set.depth.step_y, &set.depth.den);
     }
 }

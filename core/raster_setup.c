@@ -143,7 +143,8 @@ static plane make_plane(const triangle_setup *t, const tarn_divisor *area2, cons
     return p;
 }
 
-/* Scales one attribute's three values toward 2^30 and premultiplies by q. */
+/* Scales one attribute's three values toward 2^30 and premultiplies by q; an
+ * attribute below set->first_varying is constant and gets no plane. */
 static void add_attribute(attribute_set *set, const triangle_setup *t, const plane_anchor *anchor,
                           const uint32_t value[3], const uint32_t q[3])
 {
@@ -163,7 +164,15 @@ static void add_attribute(attribute_set *set, const triangle_setup *t, const pla
             : (uint32_t)(tarn_mul_u32_wide(scaled, q[n]) >> 30);
     }
     set->t_shift[k] = shift;
-    set->premultiplied[k] = make_plane(t, &set->depth.den, anchor, premultiplied);
+    if (k >= set->first_varying) set->premultiplied[k] = make_plane(t, &set->depth.den, anchor, premultiplied);
+}
+
+/* Whether the three vertices are lit alike: on a level surface or a flat-lit one. */
+static int lit_alike(const triangle_setup *t)
+{
+    for (int c = 0; c < 3; c++)
+        if (t->v[1]->lit[c] != t->v[0]->lit[c] || t->v[2]->lit[c] != t->v[0]->lit[c]) return 0;
+    return 1;
 }
 
 /* Texture coordinates less their whole repeats (which do not move a texel). */
@@ -216,6 +225,7 @@ void tarn_setup_attributes(const triangle_setup *t, const attribute_request *req
 {
     uint32_t q[3], largest = 0;
     set->count = 0;
+    set->first_varying = lit_alike(t) ? 3 : 0;
     set->perspective = perspective;
     for (int n = 0; n < 3; n++)
         if (t->v[n]->inv_depth > largest) largest = t->v[n]->inv_depth;

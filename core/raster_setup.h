@@ -52,6 +52,9 @@ typedef struct {
 
 typedef struct {
     int count;
+    int first_varying; /* attributes below it are constant over the triangle (0, or 3 when
+                          its lit colour is): t_min = t_max is their value and they
+                          have no plane, so the pixels neither step nor divide them */
     int perspective; /* tarn_perspective */
     exact_plane depth; /* near/d, Q1.30 */
     plane q;         /* normalised near/d, perspective modes */
