@@ -68,14 +68,6 @@ int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned 
     return 1;
 }
 
-void tarn_bounds_add(subpixel_bounds *b, const tarn_screen_vertex *v)
-{
-    if (v->x < b->x0) b->x0 = v->x;
-    if (v->x > b->x1) b->x1 = v->x;
-    if (v->y < b->y0) b->y0 = v->y;
-    if (v->y > b->y1) b->y1 = v->y;
-}
-
 pixel_box tarn_bounds_pixels(const subpixel_bounds *b, unsigned s)
 {
     const int32_t half = (int32_t)1 << (s - 1);

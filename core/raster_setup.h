@@ -117,7 +117,14 @@ static inline subpixel_bounds tarn_bounds_empty(void)
     return b;
 }
 
-void tarn_bounds_add(subpixel_bounds *b, const tarn_screen_vertex *v);
+/* Grows the bounds by a vertex: inline, since the walk takes three a triangle. */
+static inline void tarn_bounds_add(subpixel_bounds *b, const tarn_screen_vertex *v)
+{
+    if (v->x < b->x0) b->x0 = v->x;
+    if (v->x > b->x1) b->x1 = v->x;
+    if (v->y < b->y0) b->y0 = v->y;
+    if (v->y > b->y1) b->y1 = v->y;
+}
 /* Pixels whose centres lie in non-empty bounds: from ceil((min - half) / 2^s) to
  * floor((max - half) / 2^s), half a pixel being 2^(s-1) subpixels. */
 pixel_box tarn_bounds_pixels(const subpixel_bounds *b, unsigned subpixel_bits);

@@ -76,12 +76,12 @@ static int bounds_miss_rect(const tarn_screen_vertex s[3], unsigned subpixel_bit
            bounds.y1 < pixel_centre(rect->y0, subpixel_bits) || bounds.y0 > pixel_centre(rect->y1 - 1, subpixel_bits);
 }
 
-/* The screen vertices of a triangle whose three static vertices were projected
+/* The screen positions of a triangle whose three static vertices were projected
  * for this frame (tarn_view's static_screen), read straight from them: a projected
  * vertex lies inside every clip plane, so neither outcodes nor the cache are
  * needed. 0 when one was not projected; the cached walk then clips the triangle. */
-static int static_screen_triangle(const tarn_static_vertex *baked, const tarn_mesh *mesh,
-                                  const uint16_t index[3], tarn_screen_vertex screen[3])
+static int static_screen_positions(const tarn_static_vertex *baked, const uint16_t index[3],
+                                   tarn_screen_vertex screen[3])
 {
     for (int k = 0; k < 3; k++) {
         const tarn_static_vertex *v = &baked[index[k]];
@@ -90,13 +90,19 @@ static int static_screen_triangle(const tarn_static_vertex *baked, const tarn_me
         screen[k].y = v->screen_y;
         screen[k].inv_depth = v->inv_depth;
     }
+    return 1;
+}
+
+/* Their shading, read once the triangle is known to reach the tile. */
+static void static_screen_attributes(const tarn_static_vertex *baked, const tarn_mesh *mesh,
+                                     const uint16_t index[3], tarn_screen_vertex screen[3])
+{
     for (int k = 0; k < 3; k++) {
         const tarn_static_vertex *v = &baked[index[k]];
         for (int c = 0; c < 3; c++) screen[k].lit[c] = v->lit[c];
         screen[k].fresnel = v->fresnel;
         screen[k].uv = tarn_vertex_uv(mesh, index[k]);
     }
-    return 1;
 }
 
 /* A triangle through the vertex cache: clipped where it crosses a clip plane,
@@ -135,10 +141,12 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
     tarn_screen_vertex screen[3];
     for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
-        if (projected == NULL || !static_screen_triangle(projected, mesh, index, screen))
+        if (projected == NULL || !static_screen_positions(projected, index, screen)) {
             walk_cached_triangle(object, index, only_rect, cache, screen, sink, ctx);
-        else if (!only_rect || !bounds_miss_rect(screen, view->subpixel_bits, only_rect))
+        } else if (!only_rect || !bounds_miss_rect(screen, view->subpixel_bits, only_rect)) {
+            static_screen_attributes(projected, mesh, index, screen);
             sink(ctx, screen, object);
+        }
     }
 }
 
