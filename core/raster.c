@@ -158,9 +158,8 @@ static uint32_t shade_pixel(const attribute_set *set, const tarn_texture *textur
         for (int c = 0; c < 3; c++) rgb = (rgb << 8) | ((lit[c] + 128u) >> 8);
         return rgb;
     }
-    const uint32_t u = t[3] >> set->t_shift[3], v = t[4] >> set->t_shift[4]; /* Q16.16 */
-    const uint32_t tx = (u >> (16u - set->log2_width)) & (texture->width - 1u);
-    const uint32_t ty = (v >> (16u - set->log2_height)) & (texture->height - 1u);
+    const uint32_t tx = (t[ATTRIBUTE_U] >> set->texel_shift[0]) & set->texel_mask[0];
+    const uint32_t ty = (t[ATTRIBUTE_V] >> set->texel_shift[1]) & set->texel_mask[1];
     const uint8_t *texel = &texture->rgb[3u * ((ty << set->log2_width) + tx)];
     for (int c = 0; c < 3; c++) {
         uint32_t product = texel[c] * lit[c]; /* / (255 * 256), to nearest */

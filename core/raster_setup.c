@@ -212,6 +212,24 @@ exact_value tarn_exact_depth_at(const triangle_setup *t, const exact_plane *dept
     return floor_divmod(num, &depth->den);
 }
 
+/* The texel a pixel samples, from u or v's T value: (T >> t_shift) is Q16.16, whose
+ * top log2(size) fraction bits pick the texel. Taken as one shift, which at 31
+ * gives 0 as the two would (T is at most 2^30). */
+static uint8_t texel_shift(unsigned t_shift, uint32_t size)
+{
+    const unsigned shift = t_shift + 16u - (31u - tarn_clz32(size));
+    return (uint8_t)(shift > 31u ? 31u : shift);
+}
+
+static void set_texel_lookup(attribute_set *set, const tarn_texture *texture)
+{
+    set->texel_shift[0] = texel_shift(set->t_shift[ATTRIBUTE_U], texture->width);
+    set->texel_shift[1] = texel_shift(set->t_shift[ATTRIBUTE_V], texture->height);
+    set->texel_mask[0] = texture->width - 1u;
+    set->texel_mask[1] = texture->height - 1u;
+    set->log2_width = 31u - tarn_clz32(texture->width);
+}
+
 void tarn_setup_attributes(const triangle_setup *t, const attribute_request *request,
                            uint8_t perspective, attribute_set *set)
 {
@@ -238,15 +256,12 @@ void tarn_setup_attributes(const triangle_setup *t, const attribute_request *req
         add_attribute(set, t, &anchor, lit, q);
     }
     if (request->uv) {
-        if (request->texture != NULL) {
-            set->log2_width = 31u - tarn_clz32(request->texture->width);
-            set->log2_height = 31u - tarn_clz32(request->texture->height);
-        }
         uint32_t coordinate[3];
         texture_coordinates(t, 0, coordinate, &set->u_base);
         add_attribute(set, t, &anchor, coordinate, q);
         texture_coordinates(t, 1, coordinate, &set->v_base);
         add_attribute(set, t, &anchor, coordinate, q);
+        if (request->texture != NULL) set_texel_lookup(set, request->texture);
     }
     if (request->fresnel) {
         uint32_t fresnel[3] = {t->v[0]->fresnel, t->v[1]->fresnel, t->v[2]->fresnel};

@@ -63,7 +63,11 @@ typedef struct {
     uint32_t t_min[ATTRIBUTES_MAX], t_max[ATTRIBUTES_MAX];
     unsigned t_shift[ATTRIBUTES_MAX];    /* attribute = T >> t_shift */
     uint32_t u_base, v_base;             /* whole texture repeats removed from u, v (Q16.16) */
-    unsigned log2_width, log2_height;    /* of the texture, when textured */
+    /* when textured: texel column (T_u >> texel_shift[0]) & texel_mask[0], row
+     * likewise from T_v, at index (row << log2_width) + column */
+    uint8_t texel_shift[2];
+    uint32_t texel_mask[2];
+    unsigned log2_width;
 } attribute_set;
 
 /* ---- per-pixel helpers shared with setup (32-bit arithmetic only) ------------ */
