@@ -29,6 +29,8 @@ static int quality_in_range(const tarn_quality *q)
            (TARN_LINK_PERSPECTIVE_SPAN || q->perspective != TARN_PERSPECTIVE_SPAN) &&
            tarn_is_power_of_two(q->perspective_span) && q->perspective_span >= 2 && q->perspective_span <= 64 &&
            (q->depth_bits == 16 || q->depth_bits == 32) &&
+           (q->depth_interpolation == TARN_DEPTH_PLANE ||
+            (TARN_LINK_EXACT_DEPTH && q->depth_interpolation == TARN_DEPTH_EXACT)) &&
            q->tile_size >= TARN_TILE_SIZE_MIN && q->tile_size <= TARN_TILE_SIZE_MAX &&
            (q->refraction_apron <= TARN_WATER_APRON_MAX || q->refraction_apron == TARN_APRON_FULL) &&
            (TARN_LINK_APRON || q->refraction_apron == 0) &&

@@ -368,7 +368,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
         e0 += step0;
         e1 += step1;
         e2 += step2;
-        exact_step(&depth, &set->depth.step_x, &set->depth.den);
+        step_depth(&depth, &set->depth.step_x);
     }
     if (i > i1) return;
     row_attributes row;
@@ -381,7 +381,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
         e0 += step0;
         e1 += step1;
         e2 += step2;
-        exact_step(&depth, &set->depth.step_x, &set->depth.den);
+        step_depth(&depth, &set->depth.step_x);
     }
 }
 
@@ -445,12 +445,13 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     const attribute_request request = request_for(tile, object);
     if (TARN_LINK_WATER && tile->water != NULL) tile->water->triangle_serial++;
     attribute_set set;
-    tarn_setup_attributes(&t, &request, perspective_mode(tile->quality, &t.box), &set);
+    tarn_setup_attributes(&t, &request, perspective_mode(tile->quality, &t.box), tile->quality->depth_interpolation,
+                          &set);
     uint32_t values[ATTRIBUTES_MAX];
     for (int k = 0; k < set.first_varying; k++) values[k] = set.t_min[k]; /* = t_max: constant */
-    exact_value depth = tarn_exact_depth_at(&t, &set.depth, draw.x0, draw.y0);
+    exact_value depth = tarn_depth_at(&t, &set.depth, draw.x0, draw.y0);
     for (int32_t j = draw.y0; j <= draw.y1; j++) {
         raster_row(tile, &t, &set, request.texture, j, draw.x0, draw.x1, depth, values);
-        exact_step(&depth, &set.depth.step_y, &set.depth.den);
+        step_depth(&depth, &set.depth.step_y);
     }
 }

@@ -12,6 +12,13 @@ static exact_value floor_divmod(int64_t num, const tarn_divisor *den)
     return v;
 }
 
+static exact_step_value exact_step_of(int64_t num, const tarn_divisor *den)
+{
+    const exact_value v = floor_divmod(num, den);
+    const exact_step_value step = {v.quotient, v.remainder, den->divisor - v.remainder};
+    return step;
+}
+
 static unsigned bit_length_u32(uint32_t v)
 {
     return 32u - tarn_clz32(v);
@@ -190,18 +197,35 @@ static int64_t depth_numerator_step(const triangle_setup *t, int32_t a1, int32_t
     return coefficient_sum(a1, depth_difference(t, 1), a2, depth_difference(t, 2)) * ((int64_t)1 << t->subpixel_bits);
 }
 
-static exact_plane make_exact_depth_plane(const triangle_setup *t)
+static depth_plane make_exact_depth_plane(const triangle_setup *t)
 {
-    exact_plane p;
+    depth_plane p;
     p.den = tarn_divisor_of((uint32_t)t->area2);
-    p.step_x = floor_divmod(depth_numerator_step(t, t->edges[1].a, t->edges[2].a), &p.den);
-    p.step_y = floor_divmod(depth_numerator_step(t, t->edges[1].b, t->edges[2].b), &p.den);
+    p.step_x = exact_step_of(depth_numerator_step(t, t->edges[1].a, t->edges[2].a), &p.den);
+    p.step_y = exact_step_of(depth_numerator_step(t, t->edges[1].b, t->edges[2].b), &p.den);
+    p.anchor = 0u;
+    p.exact = 1u;
+    return p;
+}
+
+/* Depth on a plane through the vertices' near/d, as the attributes' planes. */
+static depth_plane make_depth_plane(const triangle_setup *t, const plane_anchor *anchor)
+{
+    depth_plane p;
+    p.den = tarn_divisor_of((uint32_t)t->area2);
+    const uint32_t value[3] = {t->v[0]->inv_depth, t->v[1]->inv_depth, t->v[2]->inv_depth};
+    const plane steps = make_plane(t, &p.den, anchor, value);
+    const exact_step_value step_x = {steps.step_x, 0u, UINT32_MAX}, step_y = {steps.step_y, 0u, UINT32_MAX};
+    p.step_x = step_x;
+    p.step_y = step_y;
+    p.anchor = steps.anchor;
+    p.exact = 0u;
     return p;
 }
 
 /* Exact depth at pixel (i, j): (area2*z0 + E1*(z1 - z0) + E2*(z2 - z0) + area2/2) / area2,
  * each term below 2^61 inside the guard box. */
-exact_value tarn_exact_depth_at(const triangle_setup *t, const exact_plane *depth, int32_t i, int32_t j)
+exact_value tarn_exact_depth_at(const triangle_setup *t, const depth_plane *depth, int32_t i, int32_t j)
 {
     const unsigned s = t->subpixel_bits;
     const int32_t px = pixel_centre(i, s), py = pixel_centre(j, s);
@@ -231,7 +255,7 @@ static void set_texel_lookup(attribute_set *set, const tarn_texture *texture)
 }
 
 void tarn_setup_attributes(const triangle_setup *t, const attribute_request *request,
-                           uint8_t perspective, attribute_set *set)
+                           uint8_t perspective, uint8_t depth_interpolation, attribute_set *set)
 {
     uint32_t q[3], largest = 0;
     set->count = 0;
@@ -239,7 +263,6 @@ void tarn_setup_attributes(const triangle_setup *t, const attribute_request *req
     set->perspective = perspective;
     for (int n = 0; n < 3; n++)
         if (t->v[n]->inv_depth > largest) largest = t->v[n]->inv_depth;
-    set->depth = make_exact_depth_plane(t);
     unsigned normalise = tarn_clz32(largest) > 2u ? tarn_clz32(largest) - 2u : 0u;
     set->q_min = T_ONE;
     set->q_max = 0;
@@ -249,6 +272,8 @@ void tarn_setup_attributes(const triangle_setup *t, const attribute_request *req
         if (q[n] > set->q_max) set->q_max = q[n];
     }
     const plane_anchor anchor = anchor_of(t);
+    set->depth = TARN_LINK_EXACT_DEPTH && depth_interpolation == TARN_DEPTH_EXACT ? make_exact_depth_plane(t)
+                                                                                   : make_depth_plane(t, &anchor);
     if (perspective != TARN_PERSPECTIVE_AFFINE) /* affine interpolation never reads q */
         set->q = make_plane(t, &set->depth.den, &anchor, q);
     for (int c = 0; c < 3; c++) {

@@ -35,20 +35,29 @@ typedef struct {
     edge edges[3];
 } triangle_setup;
 
-/* near/d rounded to Q1.30 exactly, as quotient and remainder of N(p) / area2: N is
- * the barycentric numerator (plus area2/2 to round), linear in the pixel, so it
- * steps exactly. Exact depth makes the depth test's outcome a property of the
- * triangle, not of how its interpolation rounded: where two surfaces meet, the
- * float reference (which rounds the exact value the same way) agrees pixel for pixel. */
+/* near/d in Q1.30 at a pixel, as quotient and remainder of N(p) / area2: N is the
+ * barycentric numerator (plus area2/2 to round), linear in the pixel, so it steps
+ * exactly. Exact depth makes the depth test's outcome a property of the triangle,
+ * not of how its interpolation rounded: where two surfaces meet, the float reference
+ * (which rounds the exact value the same way) agrees pixel for pixel. Plane depth
+ * (TARN_DEPTH_PLANE) keeps the remainder at 0 and steps the quotient alone. */
 typedef struct {
     uint32_t quotient;  /* modulo 2^32; in range at covered pixels */
     uint32_t remainder; /* in [0, den) */
 } exact_value;
 
+/* A step of an exact value: its quotient and remainder, and den - remainder, the
+ * remainder at which the step carries into the quotient (taken once, not per pixel). */
+typedef struct {
+    uint32_t quotient, remainder, carry_at;
+} exact_step_value;
+
 typedef struct {
     tarn_divisor den; /* area2 */
-    exact_value step_x, step_y;
-} exact_plane;
+    exact_step_value step_x, step_y;
+    uint32_t anchor;  /* plane depth: near/d at the triangle's first pixel (box.x0, box.y0) */
+    uint8_t exact;    /* 1: TARN_DEPTH_EXACT; 0: a plane, whose steps have no remainder */
+} depth_plane;
 
 typedef struct {
     int count;
@@ -56,7 +65,7 @@ typedef struct {
                           its lit colour is): t_min = t_max is their value and they
                           have no plane, so the pixels neither step nor divide them */
     int perspective; /* tarn_perspective */
-    exact_plane depth; /* near/d, Q1.30 */
+    depth_plane depth; /* near/d, Q1.30 */
     plane q;         /* normalised near/d, perspective modes */
     uint32_t q_min, q_max;
     plane premultiplied[ATTRIBUTES_MAX]; /* T * q / 2^30, or T when affine */
@@ -87,12 +96,11 @@ static inline uint32_t plane_at(const plane *p, const triangle_setup *t, int32_t
     return p->anchor + p->step_x * (uint32_t)(i - t->box.x0) + p->step_y * (uint32_t)(j - t->box.y0);
 }
 
-static inline void exact_step(exact_value *v, const exact_value *step, const tarn_divisor *divisor)
+static inline void exact_step(exact_value *v, const exact_step_value *step)
 {
-    const uint32_t den = divisor->divisor;
     v->quotient += step->quotient;
-    if (v->remainder >= den - step->remainder) {
-        v->remainder -= den - step->remainder;
+    if (v->remainder >= step->carry_at) {
+        v->remainder -= step->carry_at;
         v->quotient++;
     } else {
         v->remainder += step->remainder;
@@ -140,8 +148,28 @@ typedef struct {
 } attribute_request;
 
 void tarn_setup_attributes(const triangle_setup *t, const attribute_request *request,
-                           uint8_t perspective, attribute_set *set);
-/* Exact depth at pixel (i, j), to be stepped from there with exact_step. */
-exact_value tarn_exact_depth_at(const triangle_setup *t, const exact_plane *depth, int32_t i, int32_t j);
+                           uint8_t perspective, uint8_t depth_interpolation, attribute_set *set);
+/* The depth one step on. A plane's steps have no remainder and never carry
+ * (carry_at UINT32_MAX), so exact_step steps either kind, with no test of the mode
+ * at each pixel; a build without exact depth just adds the quotient. */
+static inline void step_depth(exact_value *v, const exact_step_value *step)
+{
+    if (TARN_LINK_EXACT_DEPTH)
+        exact_step(v, step);
+    else
+        v->quotient += step->quotient;
+}
+
+/* Exact depth (TARN_DEPTH_EXACT) at pixel (i, j). */
+exact_value tarn_exact_depth_at(const triangle_setup *t, const depth_plane *depth, int32_t i, int32_t j);
+
+/* Depth at pixel (i, j), to be stepped from there with exact_step. */
+static inline exact_value tarn_depth_at(const triangle_setup *t, const depth_plane *depth, int32_t i, int32_t j)
+{
+    if (TARN_LINK_EXACT_DEPTH && depth->exact) return tarn_exact_depth_at(t, depth, i, j);
+    const plane p = {depth->anchor, depth->step_x.quotient, depth->step_y.quotient};
+    const exact_value v = {plane_at(&p, t, i, j), 0u};
+    return v;
+}
 
 #endif

@@ -60,6 +60,15 @@ typedef enum {
     TARN_PERSPECTIVE_PIXEL = 2   /* exact at every pixel */
 } tarn_perspective;
 
+typedef enum {
+    TARN_DEPTH_EXACT = 0, /* near/d rounded exactly at every pixel: a quotient and its
+                             remainder step across the triangle, so where two surfaces
+                             meet the depth test agrees with the float reference */
+    TARN_DEPTH_PLANE = 1  /* near/d on a plane set up like the attributes' (one
+                             rounded product per step, no exact division): within a
+                             few units of 2^-30, and a division less per triangle */
+} tarn_depth_interpolation;
+
 #define TARN_SUBPIXEL_BITS_MIN 1u
 #define TARN_SUBPIXEL_BITS_MAX 8u
 #define TARN_TILE_SIZE_MIN 8u
@@ -76,6 +85,7 @@ typedef struct {
     uint8_t perspective;        /* tarn_perspective */
     uint8_t perspective_span;   /* 2..64, a power of two; SPAN mode only */
     uint8_t depth_bits;         /* 16 or 32 bits per depth-buffer entry */
+    uint8_t depth_interpolation; /* tarn_depth_interpolation */
     uint8_t tile_size;          /* 8..64 pixels, square tiles; does not change the image */
     uint8_t refraction_apron;   /* how far (pixels, each axis) a refracted or underwater
                                    sample may move from its pixel, and so how much opaque
@@ -148,6 +158,14 @@ tarn_quality tarn_quality_default(void);
  * Without that file it is linked. */
 #ifndef TARN_LINK_WATER_BLOCKS
 #define TARN_LINK_WATER_BLOCKS 1
+#endif
+
+/* Whether exact depth (TARN_DEPTH_EXACT) is linked. tarn bake sets it to 0 when
+ * every baked quality interpolates depth on a plane: the exact division drops out,
+ * and a config asking for exact depth is then refused (TARN_ERR_CONFIG). Without
+ * that file it is linked. */
+#ifndef TARN_LINK_EXACT_DEPTH
+#define TARN_LINK_EXACT_DEPTH 1
 #endif
 
 /* Whether a frame can transform and light vertices itself. tarn bake sets it to 0

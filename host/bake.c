@@ -184,7 +184,8 @@ static const bake_field quality_fields[] = {
     FIELD(tarn_quality, exp2, T_EXP2),
     FIELD(tarn_quality, recip_newton_steps, T_U8), FIELD(tarn_quality, subpixel_bits, T_U8),
     FIELD(tarn_quality, perspective, T_U8),        FIELD(tarn_quality, perspective_span, T_U8),
-    FIELD(tarn_quality, depth_bits, T_U8),         FIELD(tarn_quality, tile_size, T_U8),
+    FIELD(tarn_quality, depth_bits, T_U8),         FIELD(tarn_quality, depth_interpolation, T_U8),
+    FIELD(tarn_quality, tile_size, T_U8),
     FIELD(tarn_quality, refraction_apron, T_U8),   FIELD(tarn_quality, cluster_bins, T_U8),
     FIELD(tarn_quality, fog_argument_bits, T_U8),  FIELD(tarn_quality, water_block, T_U8)};
 static const bake_type T_QUALITY = STRUCT(tarn_quality, quality_fields, 0);
@@ -973,14 +974,17 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     int span = p->config.quality.perspective == TARN_PERSPECTIVE_SPAN;
     int apron = p->config.quality.refraction_apron != 0;
     int blocks = p->config.quality.water_block == 2;
+    int exact_depth = p->config.quality.depth_interpolation == TARN_DEPTH_EXACT;
     for (size_t i = 0; i < p->points->count; i++) {
         span |= p->points->qualities[i].perspective == TARN_PERSPECTIVE_SPAN;
         apron |= p->points->qualities[i].refraction_apron != 0;
         blocks |= p->points->qualities[i].water_block == 2;
+        exact_depth |= p->points->qualities[i].depth_interpolation == TARN_DEPTH_EXACT;
     }
     fprintf(out, "#define TARN_LINK_PERSPECTIVE_SPAN %d\n", span);
     fprintf(out, "#define TARN_LINK_APRON %d\n", apron);
     fprintf(out, "#define TARN_LINK_WATER_BLOCKS %d\n", blocks);
+    fprintf(out, "#define TARN_LINK_EXACT_DEPTH %d\n", exact_depth);
     fprintf(out, "#define TARN_LINK_COMPUTED_VERTICES %d\n", p->scene->scene.static_view == NULL);
     fprintf(out, "#define TARN_LINK_STATIC_VERTICES %d\n", p->scene->scene.static_view != NULL);
 }

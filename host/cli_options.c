@@ -19,6 +19,8 @@ const char tarn_cli_usage[] =
     "         override it wherever they stand)\n"
     "         --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
     "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n"
+    "         --depth-interpolation exact|plane (near/d rounded exactly at each pixel, or on a\n"
+    "         plane like the attributes': a division less a triangle)\n"
     "         --fog-bits N (4..16: fraction bits of the depth of water in fog's exp2)\n"
     "         --apron on|off|N (how far refraction may move a sample, so how much opaque scene\n"
     "         each tile renders around its water: as far as it reaches, not at all, or N pixels 0..32)\n"
@@ -132,6 +134,16 @@ static int parse_bins(const char *value, tarn_quality *q, tarn_error *err)
     return 0;
 }
 
+static int parse_depth_interpolation(const char *value, tarn_quality *q, tarn_error *err)
+{
+    if (value && strcmp(value, "exact") == 0) q->depth_interpolation = TARN_DEPTH_EXACT;
+    else if (value && strcmp(value, "plane") == 0) q->depth_interpolation = TARN_DEPTH_PLANE;
+    else
+        return tarn_fail(err, "--depth-interpolation: expected exact (near/d rounded exactly at each pixel) or "
+                         "plane (stepped on a plane, a division less a triangle), got '%s'", value ? value : "");
+    return 0;
+}
+
 static int parse_preset(const char *value, tarn_quality *q, tarn_error *err)
 {
     for (int p = 0; p < TARN_PRESET_COUNT; p++) {
@@ -169,6 +181,7 @@ static int parse_quality_option(const char *name, const char *value, tarn_qualit
     }
     if (strcmp(name, "--apron") == 0) return parse_apron(value, q, err);
     if (strcmp(name, "--bins") == 0) return parse_bins(value, q, err);
+    if (strcmp(name, "--depth-interpolation") == 0) return parse_depth_interpolation(value, q, err);
     if (strcmp(name, "--perspective") == 0) return parse_perspective(value, q, err);
     if (strcmp(name, "--exp2") == 0) return parse_exp2(value, q, err);
     return 1; /* not a quality option */

@@ -9,7 +9,8 @@
  *                                              (the scene as const C data: host/bake.h)
  * QUALITY knobs (defaults from tarn_quality_default()):
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
- *   --depth 16|32  --recip-steps N (0..2)  --exp2 N[:nearest|:linear] (8..256)
+ *   --depth 16|32  --depth-interpolation exact|plane  --recip-steps N (0..2)
+ *   --exp2 N[:nearest|:linear] (8..256)
  *   --apron on|off|N  --bins on|off  --fog-bits N (4..16)  --water-block 1|2
  *   --quality fast|balanced|exact   a preset (core/quality.c) as the base of the others */
 #ifndef TARN_HOST_CLI_OPTIONS_H

@@ -31,6 +31,7 @@ static const sweep_knob knobs[] = {
     {"--tile", {"16", "32", "64"}, {NULL}, {NULL}, {NULL}},
     {"--bins", {"on", "off"}, {NULL}, {NULL}, {NULL}},
     {"--water-block", {"1", "2"}, {NULL}, {NULL}, {NULL}},
+    {"--depth-interpolation", {"exact", "plane"}, {NULL}, {NULL}, {NULL}},
 };
 
 #define KNOB_COUNT (sizeof knobs / sizeof knobs[0])
@@ -165,17 +166,22 @@ const char *tarn_sweep_apron_text(const tarn_quality *q, char *buffer, size_t si
     return buffer;
 }
 
+const char *tarn_sweep_depth_text(const tarn_quality *q)
+{
+    return q->depth_interpolation == TARN_DEPTH_PLANE ? "plane" : "exact";
+}
+
 void tarn_sweep_quality_text(const tarn_quality *q, char *out, size_t size)
 {
     char span[16], apron[16];
     snprintf(out, size,
              "--perspective %s --recip-steps %u --depth %u --apron %s --exp2 %u:%s --fog-bits %u "
-             "--subpixel %u --tile %u --bins %s --water-block %u",
+             "--subpixel %u --tile %u --bins %s --water-block %u --depth-interpolation %s",
              tarn_sweep_perspective_text(q, span, sizeof span), (unsigned)q->recip_newton_steps,
              (unsigned)q->depth_bits, tarn_sweep_apron_text(q, apron, sizeof apron), (unsigned)q->exp2.entries,
              q->exp2.interpolate ? "linear" : "nearest", (unsigned)q->fog_argument_bits,
              (unsigned)q->subpixel_bits, (unsigned)q->tile_size, q->cluster_bins ? "on" : "off",
-             (unsigned)q->water_block);
+             (unsigned)q->water_block, tarn_sweep_depth_text(q));
 }
 
 int tarn_sweep_write_points(const char *path, const tarn_quality *qualities, size_t count, tarn_error *err)

@@ -39,5 +39,7 @@ int tarn_sweep_write_points(const char *path, const tarn_quality *qualities, siz
  * `buffer` holds the text when it is not a constant. */
 const char *tarn_sweep_perspective_text(const tarn_quality *q, char *buffer, size_t size);
 const char *tarn_sweep_apron_text(const tarn_quality *q, char *buffer, size_t size);
+/* "exact" or "plane": the quality's --depth-interpolation. */
+const char *tarn_sweep_depth_text(const tarn_quality *q);
 
 #endif

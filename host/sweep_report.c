@@ -30,7 +30,7 @@ static int close_written(FILE *f, const char *path, tarn_error *err)
 static void csv_header(FILE *f, const tarn_sweep_sources *sources)
 {
     fprintf(f, "scene,preset,perspective,recip_steps,depth_bits,apron,exp2_entries,exp2_mode,fog_bits,"
-               "subpixel_bits,tile,bins,water_block,psnr_db,max_error,over2_pct,over8_pct,coverage_mismatches,"
+               "subpixel_bits,tile,bins,water_block,depth_interpolation,psnr_db,max_error,over2_pct,over8_pct,coverage_mismatches,"
                "exp2_max_lsb,recip_max_rel,rgb565_psnr_db,rgb565_dither_psnr_db");
     for (size_t s = 0; s < sources->count; s++)
         fprintf(f, ",%s_insn_per_pixel,%s_tile", sources->names[s], sources->names[s]);
@@ -44,12 +44,12 @@ static void csv_row(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_poi
 {
     const tarn_quality *q = &p->quality;
     char span[16], apron[16], options[TARN_SWEEP_OPTIONS_MAX];
-    fprintf(f, "%s,%s,%s,%u,%u,%s,%u,%s,%u,%u,%u,%s,%u,%.2f,%d,%.3f,%.3f,%ld,%.2f,%.3g", scene->name,
+    fprintf(f, "%s,%s,%s,%u,%u,%s,%u,%s,%u,%u,%u,%s,%u,%s,%.2f,%d,%.3f,%.3f,%ld,%.2f,%.3g", scene->name,
             p->preset ? p->preset : "", tarn_sweep_perspective_text(q, span, sizeof span),
             (unsigned)q->recip_newton_steps, (unsigned)q->depth_bits, tarn_sweep_apron_text(q, apron, sizeof apron),
             (unsigned)q->exp2.entries, q->exp2.interpolate ? "linear" : "nearest", (unsigned)q->fog_argument_bits,
             (unsigned)q->subpixel_bits, (unsigned)q->tile_size, q->cluster_bins ? "on" : "off",
-            (unsigned)q->water_block, p->error.psnr_db,
+            (unsigned)q->water_block, tarn_sweep_depth_text(q), p->error.psnr_db,
             p->error.max_channel_error, 100.0 * p->error.share_over2, 100.0 * p->error.share_over8,
             p->error.coverage_mismatches, p->exp2_max_lsb, p->recip_max_rel);
     fprintf(f, ",%.2f,%.2f", p->panel[0].psnr_db, p->panel[1].psnr_db);

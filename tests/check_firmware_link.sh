@@ -3,7 +3,8 @@
 # perspective mode when the baked quality does not use it, nor refraction when the
 # quality has no apron for a refracted sample to move in, nor vertex lighting when
 # every object carries static vertices (the bake's default, --static-view on), nor
-# the water blocks' code (tarn_water_sharp_features) when no baked quality has water_block 2.
+# the water blocks' code (tarn_water_sharp_features) when no baked quality has water_block 2,
+# nor exact depth (tarn_exact_depth_at) when every baked quality steps depth on a plane.
 #
 # Builds the qemu-m0 firmware for several scenes (each in its own directory under
 # build/firmware-link/, the board's own build untouched) and reads the images' symbols
@@ -17,7 +18,7 @@ board=qemu-m0
 flags="--apron off --tile 16 --depth 16"
 effects="tarn_water_shade tarn_water_sharp_features tarn_water_surface_normal tarn_water_refract tarn_water_fog tarn_water_absorb
 tarn_water_depth_colour tarn_water_fresnel_alpha tarn_water_specular tarn_water_foam tarn_water_sparkles
-tarn_underwater_tile span_end tarn_vertex_shade"
+tarn_underwater_tile span_end tarn_vertex_shade tarn_exact_depth_at"
 passed=0
 failed=0
 
@@ -55,19 +56,21 @@ check() {
 }
 
 extra_name= extra_flags=
-check scenes/effects/none.json
-check scenes/effects/fog.json tarn_water_shade tarn_water_fog
-check scenes/effects/foam.json tarn_water_shade tarn_water_foam
-check scenes/effects/sparkles.json tarn_water_shade tarn_water_surface_normal tarn_water_sparkles
-check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal
-check scenes/effects/underwater.json tarn_underwater_tile
+check scenes/effects/none.json tarn_exact_depth_at
+check scenes/effects/fog.json tarn_water_shade tarn_water_fog tarn_exact_depth_at
+check scenes/effects/foam.json tarn_water_shade tarn_water_foam tarn_exact_depth_at
+check scenes/effects/sparkles.json tarn_water_shade tarn_water_surface_normal tarn_water_sparkles tarn_exact_depth_at
+check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal tarn_exact_depth_at
+check scenes/effects/underwater.json tarn_underwater_tile tarn_exact_depth_at
 extra_name=-span extra_flags=" --perspective span:16"
-check scenes/effects/fog.json tarn_water_shade tarn_water_fog span_end
+check scenes/effects/fog.json tarn_water_shade tarn_water_fog span_end tarn_exact_depth_at
 extra_name=-apron extra_flags=" --apron 4"
-check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal tarn_water_refract
+check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal tarn_water_refract tarn_exact_depth_at
 extra_name=-blocks extra_flags=" --water-block 2"
-check scenes/effects/fog.json tarn_water_shade tarn_water_sharp_features tarn_water_fog
+check scenes/effects/fog.json tarn_water_shade tarn_water_sharp_features tarn_water_fog tarn_exact_depth_at
+extra_name=-plane extra_flags=" --depth-interpolation plane"
+check scenes/effects/fog.json tarn_water_shade tarn_water_fog
 extra_name=-moving extra_flags=" --static-view off"
-check scenes/effects/fog.json tarn_water_shade tarn_water_fog tarn_vertex_shade
+check scenes/effects/fog.json tarn_water_shade tarn_water_fog tarn_vertex_shade tarn_exact_depth_at
 echo "firmware-link: $passed passed, $failed failed"
 [ $failed -eq 0 ]

@@ -86,7 +86,8 @@ static int same_quality(const tarn_quality *a, const tarn_quality *b)
            a->perspective == b->perspective && a->perspective_span == b->perspective_span &&
            a->depth_bits == b->depth_bits && a->tile_size == b->tile_size &&
            a->refraction_apron == b->refraction_apron && a->cluster_bins == b->cluster_bins &&
-           a->fog_argument_bits == b->fog_argument_bits && a->water_block == b->water_block;
+           a->fog_argument_bits == b->fog_argument_bits && a->water_block == b->water_block &&
+           a->depth_interpolation == b->depth_interpolation;
 }
 
 /* A preset is the base; a knob changes it wherever it stands on the line. */
@@ -116,6 +117,24 @@ static void test_presets_are_the_base_of_the_knobs(void **state)
     assert_rejected("compare s.json --quality", "--quality: expected fast, balanced or exact, got ''");
     assert_rejected("render s.json -o x.png --points p.txt", "--points applies to bake");
     assert_rejected("compare s.json --fog-bits 3", "--fog-bits: expected a whole number 4..16, got '3'");
+}
+
+/* --depth-interpolation exact|plane; the fast preset steps depth on a plane. */
+static void test_depth_interpolation_option(void **state)
+{
+    (void)state;
+    tarn_cli_options o;
+    tarn_error err;
+    assert_int_equal(tarn_quality_preset(TARN_PRESET_FAST).depth_interpolation, TARN_DEPTH_PLANE);
+    assert_int_equal(tarn_quality_default().depth_interpolation, TARN_DEPTH_EXACT);
+    assert_int_equal(parse("render s.json -o x.png --depth-interpolation plane", &o, &err), 0);
+    assert_int_equal(o.quality.depth_interpolation, TARN_DEPTH_PLANE);
+    assert_int_equal(parse("bake s.json -o x.c --depth-interpolation exact --quality fast", &o, &err), 0);
+    assert_int_equal(o.quality.depth_interpolation, TARN_DEPTH_EXACT);
+    assert_rejected("render s.json -o x.png --depth-interpolation linear",
+                    "--depth-interpolation: expected exact (near/d rounded exactly at each pixel) or plane "
+                    "(stepped on a plane, a division less a triangle), got 'linear'");
+    assert_rejected("compare s.json --depth-interpolation", "--depth-interpolation: expected exact");
 }
 
 /* --water-block 1|2, and 2 only with an even tile, wherever the tile comes from. */
@@ -335,6 +354,7 @@ int main(void)
         cmocka_unit_test(test_binary_exits_2_and_writes_nothing),
         cmocka_unit_test(test_static_view_option),
         cmocka_unit_test(test_water_block_option),
+        cmocka_unit_test(test_depth_interpolation_option),
         cmocka_unit_test(test_frame_sequences_parse),
         cmocka_unit_test(test_presets_are_the_base_of_the_knobs),
         cmocka_unit_test(test_binary_writes_a_sequence),

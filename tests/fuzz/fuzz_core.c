@@ -222,7 +222,7 @@ static tarn_frame_config make_config(fuzz_reader *r)
     static const uint8_t entries_log2[] = {3, 4, 5, 6, 7, 8}, steps[] = {0, 1, 2}, bits[] = {1, 2, 4, 6, 8},
                          modes[] = {0, 1, 2}, spans[] = {2, 4, 8, 16, 32, 64}, depths[] = {16, 32},
                          tiles[] = {8, 13, 16, 24, 32, 64}, aprons[] = {0, 1, 4, 32, 255}, flags[] = {0, 1},
-                         fog_bits[] = {4, 11, 16}, blocks[] = {1, 2, 2, 3};
+                         fog_bits[] = {4, 11, 16}, blocks[] = {1, 2, 2, 3}, depth_modes[] = {0, 1, 2};
     c.quality.exp2.entries = (uint16_t)(1u << (pick(r, entries_log2, 6) & 15u));
     c.quality.exp2.interpolate = pick(r, flags, 2);
     c.quality.recip_newton_steps = pick(r, steps, 3);
@@ -235,6 +235,7 @@ static tarn_frame_config make_config(fuzz_reader *r)
     c.quality.cluster_bins = pick(r, flags, 2);
     c.quality.fog_argument_bits = pick(r, fog_bits, 3);
     c.quality.water_block = pick(r, blocks, 4); /* 3, and 2 with tile 13, are refused */
+    c.quality.depth_interpolation = pick(r, depth_modes, 3); /* 2 is refused */
     return c;
 }
 
