@@ -148,22 +148,20 @@ static void add_attribute(attribute_set *set, const triangle_setup *t, const pla
                           const uint32_t value[3], const uint32_t q[3])
 {
     const int k = set->count++;
-    uint32_t largest = value[0] | value[1] | value[2];
-    unsigned shift = 30u - (bit_length_u32(largest) > 30u ? 30u : bit_length_u32(largest));
-    uint32_t premultiplied[3];
-    set->t_min[k] = T_ONE;
-    set->t_max[k] = 0;
+    const unsigned length = bit_length_u32(value[0] | value[1] | value[2]);
+    const unsigned shift = 30u - (length > 30u ? 30u : length);
+    uint32_t scaled[3];
     for (int n = 0; n < 3; n++) {
-        uint32_t scaled = (value[n] > T_ONE ? T_ONE : value[n]) << shift;
-        if (scaled > T_ONE) scaled = T_ONE;
-        if (scaled < set->t_min[k]) set->t_min[k] = scaled;
-        if (scaled > set->t_max[k]) set->t_max[k] = scaled;
-        premultiplied[n] = set->perspective == TARN_PERSPECTIVE_AFFINE
-            ? scaled
-            : (uint32_t)(tarn_mul_u32_wide(scaled, q[n]) >> 30);
+        const uint32_t v = (value[n] > T_ONE ? T_ONE : value[n]) << shift;
+        scaled[n] = v > T_ONE ? T_ONE : v;
     }
+    set->t_min[k] = tarn_min3_u32(scaled[0], scaled[1], scaled[2]);
+    set->t_max[k] = tarn_max3_u32(scaled[0], scaled[1], scaled[2]);
     set->t_shift[k] = shift;
-    if (k >= set->first_varying) set->premultiplied[k] = make_plane(t, &set->depth.den, anchor, premultiplied);
+    if (k < set->first_varying) return; /* constant: no plane */
+    if (set->perspective != TARN_PERSPECTIVE_AFFINE)
+        for (int n = 0; n < 3; n++) scaled[n] = (uint32_t)(tarn_mul_u32_wide(scaled[n], q[n]) >> 30);
+    set->premultiplied[k] = make_plane(t, &set->depth.den, anchor, scaled);
 }
 
 /* Whether the three vertices are lit alike: on a level surface or a flat-lit one. */

@@ -32,6 +32,18 @@ static inline int32_t tarn_clamp_i32(int32_t v, int32_t lo, int32_t hi)
     return v < lo ? lo : (v > hi ? hi : v);
 }
 
+static inline uint32_t tarn_min3_u32(uint32_t a, uint32_t b, uint32_t c)
+{
+    const uint32_t ab = a < b ? a : b;
+    return ab < c ? ab : c;
+}
+
+static inline uint32_t tarn_max3_u32(uint32_t a, uint32_t b, uint32_t c)
+{
+    const uint32_t ab = a > b ? a : b;
+    return ab > c ? ab : c;
+}
+
 /* Arithmetic shift right of a signed 64-bit value, rounding to nearest (ties up),
  * for shift < 64, over the whole int64_t range. Written with division-free
  * operations so the result does not depend on how a compiler treats >> of negative
