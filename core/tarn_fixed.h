@@ -32,6 +32,18 @@ static inline int32_t tarn_clamp_i32(int32_t v, int32_t lo, int32_t hi)
     return v < lo ? lo : (v > hi ? hi : v);
 }
 
+static inline int32_t tarn_min3_i32(int32_t a, int32_t b, int32_t c)
+{
+    const int32_t ab = a < b ? a : b;
+    return ab < c ? ab : c;
+}
+
+static inline int32_t tarn_max3_i32(int32_t a, int32_t b, int32_t c)
+{
+    const int32_t ab = a > b ? a : b;
+    return ab > c ? ab : c;
+}
+
 static inline uint32_t tarn_min3_u32(uint32_t a, uint32_t b, uint32_t c)
 {
     const uint32_t ab = a < b ? a : b;

@@ -63,17 +63,23 @@ static int sphere_misses_tile(const tarn_view *view, const tile_frustum *f,
     return 0;
 }
 
-/* 1 when no pixel centre of the rectangle can lie in the triangle's bounds: when
- * the bounds end before the centre of the rectangle's first pixel or begin after
- * that of its last, compared in subpixels (tarn_bounds_pixels' pixel box, without
- * its divisions). */
-static int bounds_miss_rect(const tarn_screen_vertex s[3], unsigned subpixel_bits,
-                            const tarn_pixel_rect *rect)
+/* The subpixel positions of the centres of a rectangle's first and last pixels,
+ * taken once a run: a triangle whose bounds end before the first or begin after
+ * the last cannot cover a pixel centre of the rectangle (tarn_bounds_pixels' pixel
+ * box, without its divisions). */
+static subpixel_bounds rect_centres(const tarn_pixel_rect *rect, unsigned subpixel_bits)
 {
-    subpixel_bounds bounds = tarn_bounds_empty();
-    for (int k = 0; k < 3; k++) tarn_bounds_add(&bounds, &s[k]);
-    return bounds.x1 < pixel_centre(rect->x0, subpixel_bits) || bounds.x0 > pixel_centre(rect->x1 - 1, subpixel_bits) ||
-           bounds.y1 < pixel_centre(rect->y0, subpixel_bits) || bounds.y0 > pixel_centre(rect->y1 - 1, subpixel_bits);
+    const subpixel_bounds b = {pixel_centre(rect->x0, subpixel_bits), pixel_centre(rect->y0, subpixel_bits),
+                               pixel_centre(rect->x1 - 1, subpixel_bits), pixel_centre(rect->y1 - 1, subpixel_bits)};
+    return b;
+}
+
+/* 1 when the triangle's bounds miss the centres; across first, as most do. */
+static int bounds_miss(const tarn_screen_vertex s[3], const subpixel_bounds *centres)
+{
+    if (tarn_max3_i32(s[0].x, s[1].x, s[2].x) < centres->x0 || tarn_min3_i32(s[0].x, s[1].x, s[2].x) > centres->x1)
+        return 1;
+    return tarn_max3_i32(s[0].y, s[1].y, s[2].y) < centres->y0 || tarn_min3_i32(s[0].y, s[1].y, s[2].y) > centres->y1;
 }
 
 /* The screen positions of a triangle whose three static vertices were projected
@@ -109,7 +115,7 @@ static void static_screen_attributes(const tarn_static_vertex *baked, const tarn
  * dropped beyond one plane or beyond an edge of the tile. `screen` is room for its
  * screen vertices, the caller's, whose stack holds one such array for both walks. */
 static void walk_cached_triangle(const tarn_object *object, const uint16_t index[3],
-                                 const tarn_pixel_rect *only_rect, tarn_vertex_cache *cache,
+                                 const subpixel_bounds *centres, tarn_vertex_cache *cache,
                                  tarn_screen_vertex screen[3], tarn_triangle_sink sink, void *ctx)
 {
     const tarn_view *view = cache->view;
@@ -125,7 +131,7 @@ static void walk_cached_triangle(const tarn_object *object, const uint16_t index
     }
     if (outside_all) return; /* wholly beyond an edge of the tile: unprojected */
     for (int k = 0; k < 3; k++) tarn_cached_projection(cache, &c[k], &screen[k]);
-    if (only_rect && bounds_miss_rect(screen, view->subpixel_bits, only_rect)) return;
+    if (centres && bounds_miss(screen, centres)) return;
     for (int k = 0; k < 3; k++) tarn_cached_attributes(cache, &c[k], &screen[k]);
     sink(ctx, screen, object);
 }
@@ -138,12 +144,14 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
     const tarn_mesh *mesh = object->mesh;
     const tarn_static_vertex *projected =
         TARN_LINK_STATIC_VERTICES && view->static_screen ? cache->static_vertices : NULL;
+    const subpixel_bounds tile_centres = only_rect ? rect_centres(only_rect, view->subpixel_bits) : tarn_bounds_empty();
+    const subpixel_bounds *centres = only_rect ? &tile_centres : NULL;
     tarn_screen_vertex screen[3];
     for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
         if (projected == NULL || !static_screen_positions(projected, index, screen)) {
-            walk_cached_triangle(object, index, only_rect, cache, screen, sink, ctx);
-        } else if (!only_rect || !bounds_miss_rect(screen, view->subpixel_bits, only_rect)) {
+            walk_cached_triangle(object, index, centres, cache, screen, sink, ctx);
+        } else if (!centres || !bounds_miss(screen, centres)) {
             static_screen_attributes(projected, mesh, index, screen);
             sink(ctx, screen, object);
         }
