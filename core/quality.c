@@ -10,16 +10,17 @@
  *  - exact: every knob at its most accurate;
  *  - fast: the Cortex-M0's choice. Its 16 KB hold no refraction apron; without one
  *    the water pass draws in place, so 16-bit depth and 40-pixel tiles fit (the
- *    baked pond's 11,040 bytes of the board's ~12,100: bigger tiles walk each
- *    cluster fewer times, and 42 would leave the last tiles narrow), span
- *    perspective and one Newton step are on the M0's front, and
+ *    baked pond's 11,040 bytes of the board's ~11,800: bigger tiles walk each
+ *    cluster fewer times, and 42 no longer fits), span perspective and one
+ *    Newton step are on the M0's front, and
  *    the smallest exp2 table and fog argument cost nothing visible once refraction
- *    is gone. Without refraction, water blocks cost the pond 0.13 dB for 14% of
- *    the M0's instructions (1694 against 1973); with it they save next to nothing
+ *    is gone. Without refraction, water blocks cost the pond 0.14 dB for 16% of
+ *    the M0's instructions (1398 against 1674); with it they save next to nothing
  *    (refracted effects are never shared) and cost 2.6 dB, so only fast takes
- *    them. Fast also steps depth on a plane (TARN_DEPTH_PLANE): a division less
- *    a triangle and a cheaper step a pixel, 4.7% of the M0's instructions, and
- *    its images differ from exact depth's in a few pixels where surfaces meet. */
+ *    them. Fast also steps depth on a plane (TARN_DEPTH_PLANE): three exact
+ *    divisions less a triangle and a plain add a pixel, 6% of the M0's
+ *    instructions (1398 against 1482), the pond the same to 0.01 dB; its images
+ *    differ from exact depth's in a few pixels where surfaces meet. */
 #include "tarn_render.h"
 
 static tarn_quality preset_exact(void)

@@ -362,13 +362,14 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
             e2 = edge_at(&t->edges[2], px, py);
     const int32_t step0 = (int32_t)((uint32_t)t->edges[0].a << s), step1 = (int32_t)((uint32_t)t->edges[1].a << s),
                   step2 = (int32_t)((uint32_t)t->edges[2].a << s);
+    const int exact_depth = set->depth.exact;
     int32_t i = i0;
     /* up to the covered run: only the edges and the depth move */
     for (; i <= i1 && (e0 | e1 | e2) < 0; i++) {
         e0 += step0;
         e1 += step1;
         e2 += step2;
-        step_depth(&depth, &set->depth.step_x);
+        step_depth(&depth, &set->depth.step_x, exact_depth);
     }
     if (i > i1) return;
     row_attributes row;
@@ -381,7 +382,7 @@ static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const at
         e0 += step0;
         e1 += step1;
         e2 += step2;
-        step_depth(&depth, &set->depth.step_x);
+        step_depth(&depth, &set->depth.step_x, exact_depth);
     }
 }
 
@@ -452,6 +453,6 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     exact_value depth = tarn_depth_at(&t, &set.depth, draw.x0, draw.y0);
     for (int32_t j = draw.y0; j <= draw.y1; j++) {
         raster_row(tile, &t, &set, request.texture, j, draw.x0, draw.x1, depth, values);
-        step_depth(&depth, &set.depth.step_y);
+        step_depth(&depth, &set.depth.step_y, set.depth.exact);
     }
 }

@@ -149,12 +149,13 @@ typedef struct {
 
 void tarn_setup_attributes(const triangle_setup *t, const attribute_request *request,
                            uint8_t perspective, uint8_t depth_interpolation, attribute_set *set);
-/* The depth one step on. A plane's steps have no remainder and never carry
- * (carry_at UINT32_MAX), so exact_step steps either kind, with no test of the mode
- * at each pixel; a build without exact depth just adds the quotient. */
-static inline void step_depth(exact_value *v, const exact_step_value *step)
+/* The depth one step on: exactly, or along the plane, whose steps have no
+ * remainder. `exact` is the triangle's depth.exact, taken into a local by the
+ * caller: read through the set at each pixel, it would be read again after every
+ * store to the tile. */
+static inline void step_depth(exact_value *v, const exact_step_value *step, int exact)
 {
-    if (TARN_LINK_EXACT_DEPTH)
+    if (TARN_LINK_EXACT_DEPTH && exact)
         exact_step(v, step);
     else
         v->quotient += step->quotient;

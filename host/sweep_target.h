@@ -5,8 +5,10 @@
  * boot renders them all: make firmware-sweep (firmware/sweep_main.c) under QEMU
  * with -icount shift=0. Each point's report line gives its instructions per pixel
  * and the checksum of its frame, which must equal the host's: a point the board
- * drew differently is an error, not a figure. Points the board cannot hold keep a
- * negative cost. Run from the top of the tarn tree (it calls make there). */
+ * drew differently is an error, not a figure. The presets among them are then
+ * measured again in a boot of their own, linking only what they use, as a board
+ * that bakes one builds it. Points the board cannot hold keep a negative cost.
+ * Run from the top of the tarn tree (it calls make there). */
 #ifndef TARN_HOST_SWEEP_TARGET_H
 #define TARN_HOST_SWEEP_TARGET_H
 

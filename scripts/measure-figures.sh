@@ -28,7 +28,8 @@ echo "| --- | --- | --- | --- |"
 for knob in "" "--quality exact" "--quality fast" "--perspective span:4" "--perspective span:16" \
             "--perspective affine" "--recip-steps 2" "--recip-steps 0" "--fog-bits 16" "--depth 16" \
             "--subpixel 2" "--subpixel 5" "--subpixel 6" "--tile 16" "--tile 64" "--apron off" \
-            "--apron off --tile 16" "--bins off" "--water-block 2" "--quality fast --water-block 1"; do
+            "--apron off --tile 16" "--bins off" "--water-block 2" "--quality fast --water-block 1" \
+            "--depth-interpolation plane" "--quality fast --depth-interpolation exact"; do
     # shellcheck disable=SC2086
     unsnapped=$("$TARN" compare scenes/pond.json $knob | tail -1 | figures)
     # shellcheck disable=SC2086
