@@ -388,6 +388,46 @@ static void test_heightfield_merges_level_squares(void **state)
     tarn_mesh_buffer_free(&merged);
 }
 
+/* Random fields of two heights in patches, any size: level squares of every size
+ * sit beside leaning cells, and the merged mesh stays watertight and covers the
+ * whole field, facing up. */
+static void test_random_heightfields_merge_watertight(void **state)
+{
+    (void)state;
+    uint32_t seed = 99, triangles_whole = 0, triangles_merged = 0;
+    for (int n = 0; n < 40; n++) {
+        seed = seed * 1664525u + 1013904223u;
+        const uint16_t width = (uint16_t)(2 + (seed >> 8) % 23), height = (uint16_t)(2 + (seed >> 16) % 23);
+        uint8_t gray[24 * 24];
+        for (uint16_t y = 0; y < height; y++) {
+            for (uint16_t x = 0; x < width; x++) {
+                seed = seed * 1664525u + 1013904223u;
+                /* 8x8 patches, most of them level, with a bump now and then */
+                const uint32_t patch = ((uint32_t)(x / 8) * 7u + (uint32_t)(y / 8) * 13u + (uint32_t)n) % 4u;
+                gray[y * width + x] = (uint8_t)(patch == 0 ? 60 : 200) + ((seed >> 24) % 150 == 0 ? 30 : 0);
+            }
+        }
+        tarn_image image = { width, height, 1, gray };
+        tarn_error err;
+        tarn_mesh_buffer whole, merged;
+        assert_int_equal(tarn_mesh_heightfield(&whole, &image, 10, 10, 3, 1, 1, 0, "hf", &err), 0);
+        assert_int_equal(tarn_mesh_heightfield(&merged, &image, 10, 10, 3, 1, 1, 1, "hf", &err), 0);
+        assert_true(merged.mesh.triangle_count <= whole.mesh.triangle_count);
+        check_mesh_consistent(&merged.mesh);
+        check_faces_up(&merged.mesh);
+        check_no_cracks(&merged.mesh, 5 * 65536, 5 * 65536);
+        assert_true(covered_area2_xz(&merged.mesh) == covered_area2_xz(&whole.mesh));
+        triangles_whole += whole.mesh.triangle_count;
+        triangles_merged += merged.mesh.triangle_count;
+        tarn_mesh_buffer_free(&whole);
+        tarn_mesh_buffer_free(&merged);
+    }
+    print_message("random heightfields: %u triangles merged into %u\n", (unsigned)triangles_whole,
+                  (unsigned)triangles_merged);
+    /* the merge ran, not only the whole cells: 11,360 become 7,863 */
+    assert_true(triangles_merged < triangles_whole - triangles_whole / 4);
+}
+
 /* A level heightfield merges under an opaque material, not under water, whose
  * vertices carry a fresnel term that depends on where they are. */
 static void test_water_heightfield_stays_whole(void **state)
@@ -1247,6 +1287,7 @@ int main(void)
         cmocka_unit_test(test_sphere),
         cmocka_unit_test(test_heightfield),
         cmocka_unit_test(test_heightfield_merges_level_squares),
+        cmocka_unit_test(test_random_heightfields_merge_watertight),
         cmocka_unit_test(test_water_heightfield_stays_whole),
         cmocka_unit_test(test_primitive_limits),
         cmocka_unit_test(test_obj_polygons),
