@@ -155,8 +155,9 @@ static void add_attribute(attribute_set *set, const triangle_setup *t, const pla
         const uint32_t v = (value[n] > T_ONE ? T_ONE : value[n]) << shift;
         scaled[n] = v > T_ONE ? T_ONE : v;
     }
-    set->t_min[k] = tarn_min3_u32(scaled[0], scaled[1], scaled[2]);
-    set->t_max[k] = tarn_max3_u32(scaled[0], scaled[1], scaled[2]);
+    /* at most T_ONE: the signed least and largest are the same numbers */
+    set->t_min[k] = (uint32_t)tarn_min3_i32((int32_t)scaled[0], (int32_t)scaled[1], (int32_t)scaled[2]);
+    set->t_max[k] = (uint32_t)tarn_max3_i32((int32_t)scaled[0], (int32_t)scaled[1], (int32_t)scaled[2]);
     set->t_shift[k] = shift;
     if (k < set->first_varying) return; /* constant: no plane */
     if (set->perspective != TARN_PERSPECTIVE_AFFINE)

@@ -44,18 +44,6 @@ static inline int32_t tarn_max3_i32(int32_t a, int32_t b, int32_t c)
     return ab > c ? ab : c;
 }
 
-static inline uint32_t tarn_min3_u32(uint32_t a, uint32_t b, uint32_t c)
-{
-    const uint32_t ab = a < b ? a : b;
-    return ab < c ? ab : c;
-}
-
-static inline uint32_t tarn_max3_u32(uint32_t a, uint32_t b, uint32_t c)
-{
-    const uint32_t ab = a > b ? a : b;
-    return ab > c ? ab : c;
-}
-
 /* Arithmetic shift right of a signed 64-bit value, rounding to nearest (ties up),
  * for shift < 64, over the whole int64_t range. Written with division-free
  * operations so the result does not depend on how a compiler treats >> of negative
