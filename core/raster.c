@@ -152,17 +152,18 @@ static void span_t(const attribute_set *set, const triangle_setup *t, unsigned s
 static uint32_t shade_pixel(const attribute_set *set, const tarn_texture *texture,
                             const uint32_t t[ATTRIBUTES_MAX])
 {
-    uint32_t lit[3], rgb = 0;
-    for (int c = 0; c < 3; c++) lit[c] = t[c] >> set->t_shift[c]; /* Q8.8 */
+    uint32_t rgb = 0;
     if (texture == NULL) {
-        for (int c = 0; c < 3; c++) rgb = (rgb << 8) | ((lit[c] + 128u) >> 8);
+        for (int c = 0; c < 3; c++) rgb = (rgb << 8) | (((t[c] >> set->t_shift[c]) + 128u) >> 8);
         return rgb;
     }
     const uint32_t tx = (t[ATTRIBUTE_U] >> set->texel_shift[0]) & set->texel_mask[0];
     const uint32_t ty = (t[ATTRIBUTE_V] >> set->texel_shift[1]) & set->texel_mask[1];
     const uint8_t *texel = &texture->rgb[3u * ((ty << set->log2_width) + tx)];
+    if (set->lit_full) /* the product below is then the texel itself */
+        return ((uint32_t)texel[0] << 16) | ((uint32_t)texel[1] << 8) | texel[2];
     for (int c = 0; c < 3; c++) {
-        uint32_t product = texel[c] * lit[c]; /* / (255 * 256), to nearest */
+        const uint32_t product = texel[c] * (t[c] >> set->t_shift[c]); /* lit Q8.8; / (255 * 256), to nearest */
         rgb = (rgb << 8) | ((product + (product >> 8) + 32768u) >> 16);
     }
     return rgb;

@@ -165,6 +165,14 @@ static void add_attribute(attribute_set *set, const triangle_setup *t, const pla
     set->premultiplied[k] = make_plane(t, &set->depth.den, anchor, scaled);
 }
 
+/* Whether the lit colour's three channels are all 255.0 (65280 in Q8.8). */
+static int lit_is_full(const attribute_set *set)
+{
+    for (int c = 0; c < 3; c++)
+        if ((set->t_min[c] >> set->t_shift[c]) != 65280u) return 0;
+    return 1;
+}
+
 /* Whether the three vertices are lit alike: on a level surface or a flat-lit one. */
 static int lit_alike(const triangle_setup *t)
 {
@@ -279,6 +287,7 @@ void tarn_setup_attributes(const triangle_setup *t, const attribute_request *req
         uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
         add_attribute(set, t, &anchor, lit, q);
     }
+    set->lit_full = (uint8_t)(set->first_varying == 3 && lit_is_full(set));
     if (request->uv) {
         uint32_t coordinate[3];
         texture_coordinates(t, 0, coordinate, &set->u_base);

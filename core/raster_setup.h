@@ -64,6 +64,8 @@ typedef struct {
     int first_varying; /* attributes below it are constant over the triangle (0, or 3 when
                           its lit colour is): t_min = t_max is their value and they
                           have no plane, so the pixels neither step nor divide them */
+    uint8_t lit_full;  /* the lit colour is constant and 255.0 in every channel (a white
+                          material in full light): a textured pixel is its texel */
     int perspective; /* tarn_perspective */
     depth_plane depth; /* near/d, Q1.30 */
     plane q;         /* normalised near/d, perspective modes */
