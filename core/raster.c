@@ -353,16 +353,39 @@ static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const at
     store_depth(tile->depth, quality->depth_bits, offset, closer);
 }
 
-static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
-                       const tarn_texture *texture, int32_t j, int32_t i0, int32_t i1,
-                       exact_value depth, uint32_t values[ATTRIBUTES_MAX])
+/* The three edge values at the first pixel of a row, with their steps along a row
+ * and down to the next: a row starts from the row above's values by adds, not from
+ * products. */
+typedef struct {
+    int32_t at[3];
+    int32_t step_x[3], step_y[3];
+} row_edges;
+
+static row_edges row_edges_at(const triangle_setup *t, int32_t i, int32_t j)
 {
     const unsigned s = t->subpixel_bits;
-    const int32_t px = pixel_centre(i0, s), py = pixel_centre(j, s);
-    int32_t e0 = edge_at(&t->edges[0], px, py), e1 = edge_at(&t->edges[1], px, py),
-            e2 = edge_at(&t->edges[2], px, py);
-    const int32_t step0 = (int32_t)((uint32_t)t->edges[0].a << s), step1 = (int32_t)((uint32_t)t->edges[1].a << s),
-                  step2 = (int32_t)((uint32_t)t->edges[2].a << s);
+    row_edges r;
+    for (int k = 0; k < 3; k++) {
+        r.at[k] = edge_at(&t->edges[k], pixel_centre(i, s), pixel_centre(j, s));
+        r.step_x[k] = (int32_t)((uint32_t)t->edges[k].a << s);
+        r.step_y[k] = (int32_t)((uint32_t)t->edges[k].b << s);
+    }
+    return r;
+}
+
+/* The edges one row down, stepped modulo 2^32: after the last row they may leave
+ * the range that rows inside the triangle's box keep to. */
+static void row_edges_down(row_edges *r)
+{
+    for (int k = 0; k < 3; k++) r->at[k] = (int32_t)((uint32_t)r->at[k] + (uint32_t)r->step_y[k]);
+}
+
+static void raster_row(tarn_tile_target *tile, const triangle_setup *t, const attribute_set *set,
+                       const tarn_texture *texture, int32_t j, int32_t i0, int32_t i1,
+                       exact_value depth, const row_edges *edges, uint32_t values[ATTRIBUTES_MAX])
+{
+    int32_t e0 = edges->at[0], e1 = edges->at[1], e2 = edges->at[2];
+    const int32_t step0 = edges->step_x[0], step1 = edges->step_x[1], step2 = edges->step_x[2];
     const int exact_depth = set->depth.exact;
     int32_t i = i0;
     /* up to the covered run: only the edges and the depth move */
@@ -452,8 +475,10 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
     uint32_t values[ATTRIBUTES_MAX];
     for (int k = 0; k < set.first_varying; k++) values[k] = set.t_min[k]; /* = t_max: constant */
     exact_value depth = tarn_depth_at(&t, &set.depth, draw.x0, draw.y0);
+    row_edges edges = row_edges_at(&t, draw.x0, draw.y0);
     for (int32_t j = draw.y0; j <= draw.y1; j++) {
-        raster_row(tile, &t, &set, request.texture, j, draw.x0, draw.x1, depth, values);
+        raster_row(tile, &t, &set, request.texture, j, draw.x0, draw.x1, depth, &edges, values);
         step_depth(&depth, &set.depth.step_y, set.depth.exact);
+        row_edges_down(&edges);
     }
 }
