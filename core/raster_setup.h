@@ -139,6 +139,7 @@ static inline void tarn_bounds_add(subpixel_bounds *b, const tarn_screen_vertex 
     if (v->y < b->y0) b->y0 = v->y;
     if (v->y > b->y1) b->y1 = v->y;
 }
+
 /* Pixels whose centres lie in non-empty bounds: from ceil((min - half) / 2^s) to
  * floor((max - half) / 2^s), half a pixel being 2^(s-1) subpixels. */
 pixel_box tarn_bounds_pixels(const subpixel_bounds *b, unsigned subpixel_bits);
@@ -166,7 +167,7 @@ static inline void step_depth(exact_value *v, const exact_step_value *step, int 
 /* Exact depth (TARN_DEPTH_EXACT) at pixel (i, j). */
 exact_value tarn_exact_depth_at(const triangle_setup *t, const depth_plane *depth, int32_t i, int32_t j);
 
-/* Depth at pixel (i, j), to be stepped from there with exact_step. */
+/* Depth at pixel (i, j), to be stepped from there with step_depth. */
 static inline exact_value tarn_depth_at(const triangle_setup *t, const depth_plane *depth, int32_t i, int32_t j)
 {
     if (TARN_LINK_EXACT_DEPTH && depth->exact) return tarn_exact_depth_at(t, depth, i, j);
