@@ -62,11 +62,12 @@ typedef enum {
 
 typedef enum {
     TARN_DEPTH_EXACT = 0, /* near/d rounded exactly at every pixel: a quotient and its
-                             remainder step across the triangle, so where two surfaces
-                             meet the depth test agrees with the float reference */
+                           * remainder step across the triangle, so where two surfaces
+                           * meet the depth test agrees with host/reference.c */
     TARN_DEPTH_PLANE = 1  /* near/d on a plane set up like the attributes' (one
-                             rounded product per step, no exact division): within a
-                             few units of 2^-30, and a division less per triangle */
+                           * rounded product per step, no exact division): within
+                           * 128 units of 2^-30 (tests/test_raster.c), and three
+                           * exact divisions less per triangle */
 } tarn_depth_interpolation;
 
 #define TARN_SUBPIXEL_BITS_MIN 1u

@@ -120,16 +120,13 @@ static uint32_t block_triangles(const tarn_grid_blocks *b, uint32_t i, uint32_t 
     const uint32_t size = block_size(block_log2);
     if (size == 1) {
         const uint32_t a = vertex_at(b, i, j), c = a + 1, below = a + b->columns, d = below + 1;
-        if (*out) {
-            put_triangle(out, a, below, c);
-            put_triangle(out, c, below, d);
-        }
+        put_triangle(out, a, below, c);
+        put_triangle(out, c, below, d);
         return 2;
     }
-    uint32_t *ring = b->ring;
-    const uint32_t n = border_corners(b, i, j, size, ring);
+    const uint32_t n = border_corners(b, i, j, size, b->ring);
     const uint32_t centre = vertex_at(b, i + size / 2, j + size / 2);
-    for (uint32_t k = 0; *out && k < n; k++) put_triangle(out, centre, ring[k], ring[(k + 1) % n]);
+    for (uint32_t k = 0; k < n; k++) put_triangle(out, centre, b->ring[k], b->ring[(k + 1) % n]);
     return n;
 }
 

@@ -32,7 +32,8 @@ int tarn_grid_blocks_find(tarn_grid_blocks *b, uint32_t columns, uint32_t rows,
 
 /* The blocks' triangles as vertex indices (row-major grid numbering), in the order
  * of their first cells, wound as the grid's own (a, b, c) = ((i, j), (i, j+1),
- * (i+1, j)). Returns how many; `indices` may be NULL to count them. */
+ * (i+1, j)), into `indices`, which has room for the grid's two a cell (a block
+ * takes at most as many). Returns how many. */
 uint32_t tarn_grid_blocks_triangles(const tarn_grid_blocks *b, uint16_t *indices);
 
 void tarn_grid_blocks_free(tarn_grid_blocks *b);
