@@ -101,6 +101,7 @@ typedef struct {
     uint32_t blocks;      /* water block slots (tarn_water_block), 0 without */
     uint32_t bins;        /* cluster bins found in the frame's memory, 0 without */
     const tarn_cluster_bin *static_bins; /* the static view's instead, or NULL */
+    const tarn_backdrop *backdrop; /* the opaque pass's pixels, or NULL: drawn */
 } frame_layout;
 
 static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene *scene)
@@ -129,6 +130,7 @@ static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene 
     l.static_bins = binned && TARN_LINK_STATIC_VERTICES && tarn_static_screen_applies(scene, config)
         ? scene->static_view->bins : NULL;
     l.bins = binned && l.static_bins == NULL ? tarn_cluster_bin_count(scene) : 0u;
+    l.backdrop = scene != NULL && tarn_backdrop_applies(scene, config) ? tarn_backdrop_of(scene) : NULL;
     return l;
 }
 
@@ -392,11 +394,17 @@ static tarn_pixel_rect opaque_rect(const frame_state *f, const tarn_pixel_rect *
     return rect_union(*tile_rect, intersect(reach, whole));
 }
 
-static void draw_opaque(frame_state *f)
+/* The opaque pass over the target's rect, drawn or read from the backdrop:
+ * TARN_OK, or TARN_ERR_SCENE where the backdrop holds a colour past its palette. */
+static tarn_status draw_opaque(frame_state *f)
 {
     tarn_tile_target *o = &f->opaque;
+    if (TARN_LINK_BACKDROP && f->layout.backdrop != NULL)
+        return tarn_backdrop_fill(f->layout.backdrop, f->config->width, o, f->layout.depth_bytes) == 0
+            ? TARN_OK : TARN_ERR_SCENE;
     clear_rect(o, f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
     tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, f->bins, &o->rect, raster_into_tile, o);
+    return TARN_OK;
 }
 
 /* The water pass in place over the tile, or, where a water pixel landed on another,
@@ -404,11 +412,11 @@ static void draw_opaque(frame_state *f)
 static void draw_water_over_opaque(frame_state *f, const tarn_pixel_rect *tile_rect)
 {
     if (draw_water_in_place(f, tile_rect)) return;
-    draw_opaque(f);
+    (void)draw_opaque(f); /* the same pixels as the first time, which were valid */
     draw_water_in_strips(f, tile_rect);
 }
 
-static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, void *user)
+static tarn_status draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, void *user)
 {
     const int32_t size = f->layout.tile;
     const tarn_pixel_rect frame = {0, 0, f->config->width, f->config->height};
@@ -418,7 +426,7 @@ static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, 
     o->origin_x = x - f->layout.apron;
     o->origin_y = y - f->layout.apron;
     o->rect = opaque_rect(f, &tile_rect, &frame, &has_water);
-    draw_opaque(f);
+    if (draw_opaque(f) != TARN_OK) return TARN_ERR_SCENE;
     const tarn_tile_target *out = o;
     if ((TARN_LINK_WATER || TARN_LINK_UNDERWATER) && has_water) {
         if (f->layout.in_place) {
@@ -432,13 +440,14 @@ static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, 
     tarn_tile tile = {(uint16_t)x, (uint16_t)y, (uint16_t)(tile_rect.x1 - x), (uint16_t)(tile_rect.y1 - y),
                       out->colour + first, (const uint8_t *)out->depth + (size_t)first * f->layout.depth_bytes,
                       (uint16_t)out->stride, f->config->quality.depth_bits};
+    if (TARN_LINK_BACKDROP && f->layout.backdrop != NULL) tile.depth = NULL; /* kept under water only */
     if (TARN_LINK_UNDERWATER && f->layout.underwater) {
         draw_underwater(f, &tile_rect);
         tile.rgb = f->final;
         tile.stride = (uint16_t)size;
         tile.depth = NULL; /* the displaced image has no single depth per pixel */
     }
-    return sink != NULL ? sink(user, &tile) : 0;
+    return sink != NULL && sink(user, &tile) != 0 ? TARN_ERR_SINK : TARN_OK;
 }
 
 tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *config,
@@ -461,8 +470,10 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
     if (f.found_bins != NULL) tarn_bin_clusters(scene, &view, f.found_bins);
     if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn_underwater_setup(&f.underwater, &view, config, scene->underwater);
     for (int32_t y = 0; y < config->height; y += f.layout.tile)
-        for (int32_t x = 0; x < config->width; x += f.layout.tile)
-            if (draw_tile(&f, x, y, sink, user) != 0) return TARN_ERR_SINK;
+        for (int32_t x = 0; x < config->width; x += f.layout.tile) {
+            status = draw_tile(&f, x, y, sink, user);
+            if (status != TARN_OK) return status;
+        }
     return TARN_OK;
 }
 

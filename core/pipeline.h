@@ -151,9 +151,21 @@ typedef struct {
 void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex vertex[3],
                           const tarn_object *object);
 
+/* The scene's backdrop (backdrop.c), or NULL; whether it applies to the frame
+ * (the static view's screen, the quality it was drawn at); whether its arrays hold
+ * what it says for the view's frame. */
+const tarn_backdrop *tarn_backdrop_of(const tarn_scene *scene);
+int tarn_backdrop_applies(const tarn_scene *scene, const tarn_frame_config *config);
+int tarn_backdrop_valid(const tarn_backdrop *backdrop, const tarn_static_view *view);
+/* The target's rect from the backdrop of a frame `frame_width` pixels wide, as the
+ * opaque pass would draw it: 0, or -1 at a palette index past the palette. */
+int tarn_backdrop_fill(const tarn_backdrop *backdrop, uint16_t frame_width, tarn_tile_target *target,
+                        size_t depth_bytes);
+
 /* Validates the scene's arrays so the walk never reads past them. */
 tarn_status tarn_scene_check(const tarn_scene *scene);
-/* TARN_ERR_SCENE when a water material's refraction reaches past the widest apron. */
+/* TARN_ERR_SCENE when a water material's refraction reaches past the widest apron,
+ * or when the scene has a backdrop that does not apply to the frame. */
 tarn_status tarn_scene_check_reach(const tarn_scene *scene, const tarn_frame_config *config);
 /* Validates a frame config; TARN_OK or TARN_ERR_CONFIG. */
 tarn_status tarn_config_check(const tarn_frame_config *config);

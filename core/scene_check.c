@@ -67,7 +67,8 @@ static int static_view_valid(const tarn_static_view *v)
 {
     return v->width >= 1u && v->width <= TARN_FRAME_SIZE_MAX && v->height >= 1u &&
            v->height <= TARN_FRAME_SIZE_MAX && v->subpixel_bits >= TARN_SUBPIXEL_BITS_MIN &&
-           v->subpixel_bits <= TARN_SUBPIXEL_BITS_MAX;
+           v->subpixel_bits <= TARN_SUBPIXEL_BITS_MAX &&
+           (v->backdrop == NULL || (TARN_LINK_BACKDROP && tarn_backdrop_valid(v->backdrop, v)));
 }
 
 /* A screen coordinate inside the guard band of its frame, as tarn_project_position
@@ -133,6 +134,9 @@ tarn_status tarn_scene_check(const tarn_scene *scene)
 
 tarn_status tarn_scene_check_reach(const tarn_scene *scene, const tarn_frame_config *config)
 {
+    /* the objects a backdrop stands for are gone from the scene */
+    if (scene->static_view != NULL && scene->static_view->backdrop != NULL && !tarn_backdrop_applies(scene, config))
+        return TARN_ERR_SCENE;
     for (uint32_t i = 0; i < scene->object_count; i++)
         if (tarn_water_reach_pixels(scene->objects[i].material->water, config->width) >
             (int32_t)TARN_WATER_APRON_MAX)

@@ -47,8 +47,11 @@ typedef enum {
     TARN_OK = 0,
     TARN_ERR_CONFIG,  /* a frame or quality field is out of range */
     TARN_ERR_MEMORY,  /* the memory given is smaller than tarn_frame_memory_bytes() */
-    TARN_ERR_SCENE,   /* the scene is malformed (null arrays, index past the end...), or
-                         needs an effect this build left out (TARN_LINK_*, tarn_water.h) */
+    TARN_ERR_SCENE,   /* the scene is malformed (null arrays, index past the end...),
+                         needs an effect this build left out (TARN_LINK_*, tarn_water.h),
+                         or has a backdrop that does not apply to the frame; a backdrop's
+                         palette index is checked as its tile is drawn, so tiles before
+                         a bad one have reached the sink */
     TARN_ERR_SINK     /* the tile sink asked to stop */
 } tarn_status;
 
@@ -185,6 +188,13 @@ tarn_quality tarn_quality_default(void);
 #define TARN_LINK_STATIC_VERTICES 1
 #endif
 
+/* Whether a frame can start its tiles from a backdrop (tarn_scene.h). tarn bake
+ * sets it to 0 unless it bakes one: the code that reads it drops out, and a scene
+ * with one is then refused (TARN_ERR_SCENE). Without that file it is linked. */
+#ifndef TARN_LINK_BACKDROP
+#define TARN_LINK_BACKDROP 1
+#endif
+
 typedef struct {
     uint16_t width, height; /* pixels, 1..TARN_FRAME_SIZE_MAX */
     tarn_quality quality;
@@ -241,7 +251,8 @@ typedef struct {
     const void *depth;            /* near/d per pixel (uint16_t tarn_depth16 code or uint32_t
                                      Q1.30 by depth_bits), same layout; 0 where no triangle drew.
                                      NULL under the underwater view, whose displaced
-                                     pixels have no single depth */
+                                     pixels have no single depth, and over a backdrop,
+                                     which keeps depth only where water may draw */
     uint16_t stride;
     uint8_t depth_bits;
 } tarn_tile;

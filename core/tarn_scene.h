@@ -121,6 +121,43 @@ typedef struct tarn_cluster_bin {
     uint8_t x0, y0, x1, y1;
 } tarn_cluster_bin;
 
+/* The pixels of one row of a backdrop whose depth it keeps: [x0, x1), stored at
+ * depth[first .. first + x1 - x0). */
+typedef struct {
+    uint16_t x0, x1;
+    uint32_t first;
+} tarn_backdrop_row;
+
+#define TARN_BACKDROP_COLOURS_MAX 65536u
+
+/* The scene's opaque objects as the static view's frame draws them, drawn once by
+ * tarn bake (docs/bake.md, "Backdrop"): every pixel's colour, and its depth in each
+ * row's span of pixels where water draws or samples. A frame starts each tile from
+ * it instead of drawing the opaque pass (the scene's opaque objects, if it still
+ * lists them, are not drawn); outside the spans the depth reads as in front of
+ * every water pixel, since none draws there. It stands for a quality's opaque
+ * image, so it applies only to frames the static view's screen applies to with
+ * these quality settings (tarn_quality); a frame it does not apply to is refused
+ * (TARN_ERR_SCENE), the objects it replaced being gone. */
+typedef struct {
+    uint8_t recip_newton_steps, perspective, perspective_span; /* tarn_quality's */
+    uint8_t depth_bits, depth_interpolation;
+    uint8_t index_bits;        /* 1..16: bits of a palette index */
+    const uint32_t *palette;   /* 0xRRGGBB colours */
+    uint32_t palette_count;    /* 1..TARN_BACKDROP_COLOURS_MAX, at most 2^index_bits */
+    const uint16_t *colour;    /* a palette index per pixel, rows top to bottom: pixel
+                                  (i, j)'s index_bits bits start at bit
+                                  (j * width + i) * index_bits, counted from bit 0 of
+                                  colour[0] up through each uint16_t; one uint16_t
+                                  more at the end, read but unused. An index past the
+                                  palette stops the frame (TARN_ERR_SCENE) */
+    const tarn_backdrop_row *rows; /* one per pixel row */
+    const void *depth;         /* near/d of the kept pixels, as the depth buffer holds
+                                  it by depth_bits (a uint16_t tarn_depth16 code or a
+                                  uint32_t Q1.30), 0 where no triangle drew */
+    uint32_t depth_count;      /* entries of depth */
+} tarn_backdrop;
+
 /* What a scene's static vertices were computed for. They apply while the scene's
  * camera and light are these, and their screen positions and bins while the frame
  * also has this size and subpixel precision; otherwise each frame computes what they
@@ -134,6 +171,7 @@ typedef struct {
                                      objects' in scene order (one for a mesh without
                                      clusters): a frame with cluster bins reads these
                                      instead of finding them, and needs no memory for them */
+    const tarn_backdrop *backdrop; /* NULL, or the scene's opaque objects already drawn */
 } tarn_static_view;
 
 typedef struct {

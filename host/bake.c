@@ -17,6 +17,7 @@
 
 #include "atomic_file.h"
 #include "bake_points.h"
+#include "backdrop.h"
 #include "static_view.h"
 
 /* ---- 1. types ------------------------------------------------------------------ */
@@ -163,10 +164,26 @@ static const bake_field bin_fields[] = {
     FIELD(tarn_cluster_bin, x1, T_U8), FIELD(tarn_cluster_bin, y1, T_U8)};
 static const bake_type T_BIN = STRUCT(tarn_cluster_bin, bin_fields, 1);
 
+static const bake_field backdrop_row_fields[] = {
+    FIELD(tarn_backdrop_row, x0, T_U16), FIELD(tarn_backdrop_row, x1, T_U16),
+    FIELD(tarn_backdrop_row, first, T_U32)};
+static const bake_type T_BACKDROP_ROW = STRUCT(tarn_backdrop_row, backdrop_row_fields, 1);
+
+static const bake_field backdrop_fields[] = {
+    FIELD(tarn_backdrop, recip_newton_steps, T_U8), FIELD(tarn_backdrop, perspective, T_U8),
+    FIELD(tarn_backdrop, perspective_span, T_U8),   FIELD(tarn_backdrop, depth_bits, T_U8),
+    FIELD(tarn_backdrop, depth_interpolation, T_U8), FIELD(tarn_backdrop, index_bits, T_U8),
+    FIELD(tarn_backdrop, palette, T_REF),
+    FIELD(tarn_backdrop, palette_count, T_U32),     FIELD(tarn_backdrop, colour, T_REF),
+    FIELD(tarn_backdrop, rows, T_REF),              FIELD(tarn_backdrop, depth, T_REF),
+    FIELD(tarn_backdrop, depth_count, T_U32)};
+static const bake_type T_BACKDROP = STRUCT(tarn_backdrop, backdrop_fields, 0);
+
 static const bake_field static_view_fields[] = {
     FIELD(tarn_static_view, camera, T_CAMERA), FIELD(tarn_static_view, light, T_LIGHT),
     FIELD(tarn_static_view, width, T_U16),     FIELD(tarn_static_view, height, T_U16),
-    FIELD(tarn_static_view, subpixel_bits, T_U8), FIELD(tarn_static_view, bins, T_REF)};
+    FIELD(tarn_static_view, subpixel_bits, T_U8), FIELD(tarn_static_view, bins, T_REF),
+    FIELD(tarn_static_view, backdrop, T_REF)};
 static const bake_type T_STATIC_VIEW = STRUCT(tarn_static_view, static_view_fields, 0);
 
 static const bake_field scene_fields[] = {
@@ -199,7 +216,7 @@ static const bake_type *const all_structs[] = {
     &T_VEC3,  &T_UV,       &T_CLUSTER,  &T_TEXTURE, &T_MESH,  &T_PANNING,
     &T_WATER, &T_UNDERWATER, &T_MATERIAL, &T_OBJECT, &T_CAMERA, &T_LIGHT,
     &T_SCENE, &T_EXP2,     &T_QUALITY,  &T_CONFIG, &T_U16_TRIPLE, &T_STATIC_VERTEX, &T_BIN,
-    &T_STATIC_VIEW};
+    &T_BACKDROP_ROW, &T_BACKDROP, &T_STATIC_VIEW};
 
 /* Bytes on a 32-bit target (Cortex-M, rv32): what the header comment reports. */
 #define TARGET_POINTER_BYTES 4u
@@ -268,11 +285,12 @@ static int check_tables(tarn_error *err)
 /* ---- 2. plan ------------------------------------------------------------------- */
 
 typedef enum {
-    BYTES_MESH, BYTES_TEXTURE, BYTES_MATERIAL, BYTES_WATER, BYTES_OBJECT, BYTES_STATIC, BYTES_SCENE, BYTES_KINDS
+    BYTES_MESH, BYTES_TEXTURE, BYTES_MATERIAL, BYTES_WATER, BYTES_OBJECT, BYTES_STATIC, BYTES_BACKDROP,
+    BYTES_SCENE, BYTES_KINDS
 } byte_kind;
 
 static const char *const byte_kind_names[BYTES_KINDS] = {
-    "mesh", "texture", "material", "water", "object", "static vertices", "scene"};
+    "mesh", "texture", "material", "water", "object", "static vertices", "backdrop", "scene"};
 
 #define SYMBOL_MAX 96
 #define NOTE_MAX 200
@@ -307,6 +325,7 @@ typedef struct {
     int out_of_memory;
     const tarn_bake_points *points; /* --points: qualities baked as NAME_points; count 0 without */
     uint32_t static_bin_count;      /* the static view's bins, when the scene has one */
+    size_t backdrop_colour_words;   /* its backdrop's packed indices, when it has one */
 } bake_plan;
 
 /* `array` with room for one element past `count`: itself, moved, or NULL when out
@@ -539,6 +558,33 @@ static void plan_materials(bake_plan *p)
     }
 }
 
+/* The static view's backdrop (backdrop.h), when it has one. */
+static void plan_backdrop(bake_plan *p, const tarn_static_view *view)
+{
+    const tarn_backdrop *b = view->backdrop;
+    if (b == NULL) return;
+    bake_item *item = add_item(p, BYTES_BACKDROP, &T_RGB, b->palette, b->palette_count, "%s_backdrop_palette",
+                               p->name);
+    if (item)
+        snprintf(item->note, sizeof item->note, "backdrop: the %lu colours the opaque objects draw",
+                 (unsigned long)b->palette_count);
+    item = add_item(p, BYTES_BACKDROP, &T_U16, b->colour, p->backdrop_colour_words, "%s_backdrop_colour", p->name);
+    if (item)
+        snprintf(item->note, sizeof item->note, "backdrop: a %u-bit palette index per pixel, rows top to bottom, "
+                 "packed low bits first", b->index_bits);
+    add_item(p, BYTES_BACKDROP, &T_BACKDROP_ROW, b->rows, view->height, "%s_backdrop_rows", p->name);
+    if (b->depth_count == 0) {
+        add_alias(p, b->depth, NO_ITEM);
+    } else {
+        item = add_item(p, BYTES_BACKDROP, b->depth_bits == 16 ? &T_U16 : &T_U32, b->depth, b->depth_count,
+                        "%s_backdrop_depth", p->name);
+        if (item)
+            snprintf(item->note, sizeof item->note, "backdrop: near/d (%s) of each row's pixels [x0, x1), "
+                     "where water may draw or sample", b->depth_bits == 16 ? "tarn_depth16 codes" : "Q1.30");
+    }
+    add_item(p, BYTES_BACKDROP, &T_BACKDROP, b, 0, "%s_backdrop", p->name);
+}
+
 /* Each object's static vertices and the view they were made for (static_view.h). */
 static void plan_static_vertices(bake_plan *p)
 {
@@ -562,6 +608,7 @@ static void plan_static_vertices(bake_plan *p)
     if (item)
         snprintf(item->note, sizeof item->note,
                  "each cluster's screen box in 4-pixel cells, every object's in scene order");
+    plan_backdrop(p, scene->static_view);
     add_item(p, BYTES_STATIC, &T_STATIC_VIEW, scene->static_view, 0, "%s_static_view", p->name);
 }
 
@@ -987,6 +1034,8 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     fprintf(out, "#define TARN_LINK_EXACT_DEPTH %d\n", exact_depth);
     fprintf(out, "#define TARN_LINK_COMPUTED_VERTICES %d\n", p->scene->scene.static_view == NULL);
     fprintf(out, "#define TARN_LINK_STATIC_VERTICES %d\n", p->scene->scene.static_view != NULL);
+    fprintf(out, "#define TARN_LINK_BACKDROP %d\n",
+            p->scene->scene.static_view != NULL && p->scene->scene.static_view->backdrop != NULL);
 }
 
 /* The three files to temporaries, then renamed into place; a failure removes all. */
@@ -1090,19 +1139,35 @@ static int choose_name(const tarn_loaded_scene *scene, const tarn_bake_options *
     return 0;
 }
 
-/* The loaded scene as baked with its static view (static_view.h). */
+/* The loaded scene as baked with its static view (static_view.h), and with
+ * --backdrop on, only its water over the backdrop (backdrop.h). */
 typedef struct {
     tarn_loaded_scene loaded;
     tarn_static_scene with_view;
+    tarn_backdrop_scene over_backdrop;
+    int backdrop;
 } static_scene;
 
-static int static_scene_make(const tarn_loaded_scene *scene, const tarn_frame_config *config, static_scene *out,
-                             tarn_error *err)
+static int static_scene_make(const tarn_loaded_scene *scene, const tarn_frame_config *config, int backdrop,
+                             static_scene *out, tarn_error *err)
 {
-    if (tarn_static_scene_make(&scene->scene, config, 0, &out->with_view, err) != 0) return -1;
+    out->backdrop = backdrop;
+    if (backdrop && tarn_backdrop_scene_make(&scene->scene, config, 0, &out->over_backdrop, err) != 0) return -1;
+    if (!backdrop && tarn_static_scene_make(&scene->scene, config, 0, &out->with_view, err) != 0) return -1;
     out->loaded = *scene;
-    out->loaded.scene = out->with_view.scene;
+    out->loaded.scene = backdrop ? out->over_backdrop.water.scene : out->with_view.scene;
     return 0;
+}
+
+static uint32_t static_bin_count(const static_scene *s)
+{
+    return s->backdrop ? s->over_backdrop.water.vertices.bin_count : s->with_view.vertices.bin_count;
+}
+
+static void static_scene_free(static_scene *s)
+{
+    if (s->backdrop) tarn_backdrop_scene_free(&s->over_backdrop);
+    else tarn_static_scene_free(&s->with_view);
 }
 
 /* The working memory of a frame of the scene as baked, at the config and at each
@@ -1135,9 +1200,10 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
                          plan.config.height, tarn_status_text(TARN_ERR_CONFIG));
     static_scene with_static;
     if (o->static_view) {
-        if (static_scene_make(scene, &plan.config, &with_static, err) != 0) return -1;
+        if (static_scene_make(scene, &plan.config, o->backdrop, &with_static, err) != 0) return -1;
         plan.scene = &with_static.loaded;
-        plan.static_bin_count = with_static.with_view.vertices.bin_count;
+        plan.static_bin_count = static_bin_count(&with_static);
+        plan.backdrop_colour_words = o->backdrop ? with_static.over_backdrop.image.colour_words : 0u;
     }
     tarn_bake_points points = {NULL, NULL, NULL, 0};
     plan.points = &points;
@@ -1158,7 +1224,7 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     result->const_bytes = totals.const_bytes;
     result->memory_bytes = totals.memory_bytes;
     plan_free(&plan);
-    if (o->static_view) tarn_static_scene_free(&with_static.with_view);
+    if (o->static_view) static_scene_free(&with_static);
     tarn_bake_points_free(&points);
     free(header_path);
     free(link_path);

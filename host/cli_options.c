@@ -7,12 +7,14 @@
 
 const char tarn_cli_usage[] =
     "usage: tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]\n"
-    "                   [--reference [--snapped]] [QUALITY]\n"
+    "                   [--reference [--snapped]] [--backdrop on|off] [QUALITY]\n"
     "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]\n"
     "       tarn accuracy --math\n"
     "       tarn memory SCENE [--size WxH] [QUALITY]\n"
     "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]\n"
-    "                 [--static-view on|off] [QUALITY]\n"
+    "                 [--static-view on|off] [--backdrop on|off] [QUALITY]\n"
+    "       (--backdrop on: the opaque objects drawn once, for the frame and quality, into\n"
+    "        a palette image the water draws over; the image is the same)\n"
     "       tarn show SCENE --display DISPLAY --panel MODEL [...]   (tarn show --help)\n"
     "       tarn sweep [SCENE...] [--out DIR] [...]                 (tarn sweep --help)\n"
     "QUALITY: --quality fast|balanced|exact (a preset, balanced by default; the knobs below\n"
@@ -228,6 +230,15 @@ static int parse_static_view(const char *value, tarn_cli_options *o, tarn_error 
     return 0;
 }
 
+/* render, bake --backdrop on|off. */
+static int parse_backdrop(const char *value, tarn_cli_options *o, tarn_error *err)
+{
+    if (value && strcmp(value, "on") == 0) o->backdrop = 1;
+    else if (value && strcmp(value, "off") == 0) o->backdrop = 0;
+    else return tarn_fail(err, "--backdrop: expected on or off, got '%s'", value ? value : "");
+    return 0;
+}
+
 /* Options with a value; returns 1 if `name` is none of them. */
 static int parse_valued_option(const char *name, const char *value, tarn_cli_options *o,
                                tarn_error *err)
@@ -237,6 +248,7 @@ static int parse_valued_option(const char *name, const char *value, tarn_cli_opt
     else if (strcmp(name, "--diff") == 0) o->diff_path = value;
     else if (strcmp(name, "--points") == 0) o->points_path = value;
     else if (strcmp(name, "--static-view") == 0) return parse_static_view(value, o, err);
+    else if (strcmp(name, "--backdrop") == 0) return parse_backdrop(value, o, err);
     else if (strcmp(name, "--name") == 0) {
         o->name = value; /* checked by bake, so that "" gets the one-line error "3d" gets */
         return value ? 0 : tarn_fail(err, "--name: expected a C identifier");
@@ -303,6 +315,11 @@ static int check_combination(tarn_cli_options *o, tarn_error *err)
     if (o->name && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--name applies to bake");
     if (o->points_path && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--points applies to bake");
     if (o->static_view_given && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--static-view applies to bake");
+    if (o->backdrop && o->command != TARN_CMD_RENDER && o->command != TARN_CMD_BAKE)
+        return tarn_fail(err, "--backdrop applies to render and bake");
+    if (o->backdrop && (o->reference || o->points_path || o->no_static_view))
+        return tarn_fail(err, "--backdrop on: draws one quality of the core with static vertices; "
+                         "it excludes %s", o->reference ? "--reference" : o->points_path ? "--points" : "--static-view off");
     if (o->snapped && o->command == TARN_CMD_RENDER && !o->reference)
         return tarn_fail(err, "--snapped applies to the reference: add --reference");
     return check_sequence(o, err);

@@ -10,6 +10,7 @@
 #include "png_io.h"
 #include "reference.h"
 #include "scene_load.h"
+#include "backdrop.h"
 #include "static_view.h"
 
 /* Room for a sequence frame's file name: -o's name plus "-0000.png". */
@@ -139,7 +140,7 @@ static int render_sequence(const tarn_cli_options *o, const tarn_loaded_scene *s
     return 0;
 }
 
-static int render_to_png(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+static int render_images(const tarn_cli_options *o, const tarn_loaded_scene *scene,
                          const tarn_frame_config *config, tarn_error *err)
 {
     frame_image f = {0, 0, NULL, NULL};
@@ -148,6 +149,22 @@ static int render_to_png(const tarn_cli_options *o, const tarn_loaded_scene *sce
                             : render_frame_to(o->output_path, o, scene, config, &f, err));
     frame_free(&f);
     return failed ? -1 : 0;
+}
+
+/* --backdrop on: the scene's water over its opaque objects drawn once, as firmware
+ * baked with the option draws it. The opaque image does not change with time, so
+ * one backdrop serves every frame of a sequence. */
+static int render_to_png(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+                         const tarn_frame_config *config, tarn_error *err)
+{
+    if (!o->backdrop) return render_images(o, scene, config, err);
+    tarn_backdrop_scene backdrop;
+    if (tarn_backdrop_scene_make(&scene->scene, config, 0, &backdrop, err) != 0) return -1;
+    tarn_loaded_scene over = *scene;
+    over.scene = backdrop.water.scene;
+    const int failed = render_images(o, &over, config, err);
+    tarn_backdrop_scene_free(&backdrop);
+    return failed;
 }
 
 int tarn_command_render(const tarn_cli_options *o)
@@ -218,7 +235,7 @@ int tarn_command_memory(const tarn_cli_options *o)
 static int bake_to_c(const tarn_cli_options *o, const tarn_loaded_scene *scene,
                      const tarn_frame_config *config, tarn_error *err)
 {
-    tarn_bake_options options = {o->scene_path, o->output_path, o->name, o->points_path, !o->no_static_view,
+    tarn_bake_options options = {o->scene_path, o->output_path, o->name, o->points_path, !o->no_static_view, o->backdrop,
                                   *config, o->argc, o->argv};
     tarn_bake_result result;
     if (tarn_bake(scene, &options, &result, err) != 0) return -1;

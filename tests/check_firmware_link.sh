@@ -4,7 +4,8 @@
 # quality has no apron for a refracted sample to move in, nor vertex lighting when
 # every object carries static vertices (the bake's default, --static-view on), nor
 # the water blocks' code (tarn_water_sharp_features) when no baked quality has water_block 2,
-# nor exact depth (tarn_exact_depth_at) when every baked quality steps depth on a plane.
+# nor exact depth (tarn_exact_depth_at) when every baked quality steps depth on a plane,
+# nor the backdrop's reader (tarn_backdrop_fill) unless the scene is baked with one.
 #
 # Builds the qemu-m0 firmware for several scenes (each in its own directory under
 # build/firmware-link/, the board's own build untouched) and reads the images' symbols
@@ -18,7 +19,7 @@ board=qemu-m0
 flags="--apron off --tile 16 --depth 16"
 effects="tarn_water_shade tarn_water_sharp_features tarn_water_surface_normal tarn_water_refract tarn_water_fog tarn_water_absorb
 tarn_water_depth_colour tarn_water_fresnel_alpha tarn_water_specular tarn_water_foam tarn_water_sparkles
-tarn_underwater_tile span_end tarn_vertex_shade tarn_exact_depth_at"
+tarn_underwater_tile span_end tarn_vertex_shade tarn_exact_depth_at tarn_backdrop_fill"
 passed=0
 failed=0
 
@@ -72,5 +73,7 @@ extra_name=-plane extra_flags=" --depth-interpolation plane"
 check scenes/effects/fog.json tarn_water_shade tarn_water_fog
 extra_name=-moving extra_flags=" --static-view off"
 check scenes/effects/fog.json tarn_water_shade tarn_water_fog tarn_vertex_shade tarn_exact_depth_at
+extra_name=-backdrop extra_flags=" --backdrop on"
+check scenes/effects/fog.json tarn_water_shade tarn_water_fog tarn_exact_depth_at tarn_backdrop_fill
 echo "firmware-link: $passed passed, $failed failed"
 [ $failed -eq 0 ]

@@ -311,6 +311,36 @@ static void test_underwater_bakes_without_loss(void **state)
     round_trip("scenes/effects/underwater.json", "underwater", "", NULL, 1500);
 }
 
+static void fast_quality(tarn_frame_config *config)
+{
+    config->quality = tarn_quality_preset(TARN_PRESET_FAST);
+}
+
+/* --backdrop on: the water objects alone, with the picture of the rest, render the
+ * loaded scene's frames; the ground's texture and meshes are left out. */
+static void test_backdrop_bakes_without_loss(void **state)
+{
+    (void)state;
+    round_trip("scenes/pond.json", "pond_backdrop", "--name pond_backdrop --quality fast --backdrop on",
+               fast_quality, 2750);
+    round_trip("scenes/effects/underwater.json", "underwater_backdrop", "--name underwater_backdrop --backdrop on",
+               NULL, 1500);
+    char path[PATH_SIZE];
+    snprintf(path, sizeof path, "%s/pond_backdrop.c", work_dir);
+    char *source = read_all(path, NULL);
+    assert_int_equal(occurrences(source, "ground.png"), 0);
+    assert_int_equal(occurrences(source, "static const tarn_mesh "), 1);
+    assert_non_null(strstr(source, "static const tarn_object pond_backdrop_objects[1] = {"));
+    assert_non_null(strstr(source, "static const uint32_t pond_backdrop_backdrop_palette[5719] = {"));
+    assert_non_null(strstr(source, "    .backdrop = &pond_backdrop_backdrop\n"));
+    assert_non_null(strstr(source, " *   backdrop "));
+    free(source);
+    snprintf(path, sizeof path, "%s/pond_backdrop_link.h", work_dir);
+    char *link = read_all(path, NULL);
+    assert_non_null(strstr(link, "#define TARN_LINK_BACKDROP 1\n"));
+    free(link);
+}
+
 /* tests/bake_unused.json: an unused material with its own texture, and two boxes
  * of identical mesh data. Only the used texture and material are baked, the mesh
  * once; and the result still renders the same. */
@@ -543,6 +573,7 @@ static void test_bad_input_exits_2_and_writes_nothing(void **state)
     }
     snprintf(args, sizeof args, "scenes/effects/foam.json -o %s/x.c --points %s/none.txt", out, work_dir);
     assert_bake_refused(args, out, "plain_file", "--points: cannot open");
+
 }
 
 /* The header cannot be renamed into place (a non-empty directory has its name):
@@ -566,6 +597,7 @@ int main(void)
         cmocka_unit_test(test_foam_bakes_without_loss),
         cmocka_unit_test(test_size_quality_and_name_are_baked),
         cmocka_unit_test(test_underwater_bakes_without_loss),
+        cmocka_unit_test(test_backdrop_bakes_without_loss),
         cmocka_unit_test(test_only_what_is_used_is_baked),
         cmocka_unit_test(test_header_declares_memory_and_objects),
         cmocka_unit_test(test_points_are_baked),

@@ -171,6 +171,27 @@ static void test_static_view_option(void **state)
     assert_rejected("render s.json -o x.png --static-view off", "--static-view applies to bake");
 }
 
+/* render, bake --backdrop: off by default, on when asked; one core quality with
+ * static vertices, so not with the reference, points or --static-view off. */
+static void test_backdrop_option(void **state)
+{
+    (void)state;
+    tarn_cli_options o;
+    tarn_error err;
+    assert_int_equal(parse("bake s.json -o x.c", &o, &err), 0);
+    assert_int_equal(o.backdrop, 0);
+    assert_int_equal(parse("bake s.json -o x.c --backdrop on", &o, &err), 0);
+    assert_int_equal(o.backdrop, 1);
+    assert_int_equal(parse("render s.json -o x.png --backdrop on --backdrop off", &o, &err), 0);
+    assert_int_equal(o.backdrop, 0);
+    assert_rejected("bake s.json -o x.c --backdrop yes", "--backdrop: expected on or off, got 'yes'");
+    assert_rejected("render s.json -o x.png --backdrop", "--backdrop: expected on or off, got ''");
+    assert_rejected("compare s.json --backdrop on", "--backdrop applies to render and bake");
+    assert_rejected("render s.json -o x.png --reference --backdrop on", "it excludes --reference");
+    assert_rejected("bake s.json -o x.c --backdrop on --points p.txt", "it excludes --points");
+    assert_rejected("bake s.json -o x.c --backdrop on --static-view off", "it excludes --static-view off");
+}
+
 static void test_frame_sequences_parse(void **state)
 {
     (void)state;
@@ -355,6 +376,7 @@ int main(void)
         cmocka_unit_test(test_static_view_option),
         cmocka_unit_test(test_water_block_option),
         cmocka_unit_test(test_depth_interpolation_option),
+        cmocka_unit_test(test_backdrop_option),
         cmocka_unit_test(test_frame_sequences_parse),
         cmocka_unit_test(test_presets_are_the_base_of_the_knobs),
         cmocka_unit_test(test_binary_writes_a_sequence),
