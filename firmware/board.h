@@ -16,9 +16,6 @@
 #include <stdint.h>
 #include "tarn_panel.h"
 
-/* The board's name, as make knows it ("qemu-m3"). */
-extern const char board_name[];
-
 /* Clocks, the counter and the panel's link (emulated boards: the output channel;
  * real boards: pins, SPI and DMA). Returns 0, or non-zero when the output channel
  * could not be opened or a clock did not start. */

@@ -196,7 +196,7 @@ $(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h
 $(FW_OBJ): firmware/firmware.mk boards/$(BOARD)/board.mk
 FW_MAIN_OBJ := $(patsubst %,$(FW_DIR)/obj/firmware/%.o,main sweep_main display_main)
 $(FW_MAIN_OBJ): $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
-$(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"'
+$(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"'
 $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-distribute-patterns -fno-strict-aliasing
 # Code that runs once a frame, or once a water object a tile (the scene check, the
 # view and water setup, the presets, the report), is compiled for size (on top of the scene_link.h switches): it is far
@@ -239,6 +239,7 @@ $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
 		if grep -q "region .FLASH. overflowed" $(FW_DIR)/link.err; then \
 			echo "tarn: $(BOARD)'s flash cannot hold $(FW_SCENE): use smaller textures or fewer mesh segments" \
 				"$(if $(findstring --static-view off,$(FW_BAKE_FLAGS)),,(or bake with --static-view off: its meshes take less flash than static vertices and bins))" \
+				"$(if $(findstring --backdrop on,$(FW_BAKE_FLAGS)),(or bake without --backdrop on: its picture of the opaque objects takes a palette index a pixel))" \
 				"(the header of $(FW_DIR)/scene.c counts the bytes)" >&2; fi; \
 		rm -f $@; exit 1; fi
 	@cat $(FW_DIR)/link.err >&2; rm -f $(FW_DIR)/link.err

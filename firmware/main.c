@@ -29,6 +29,9 @@
 #ifndef FW_SCENE_LABEL
 #define FW_SCENE_LABEL "scene"
 #endif
+#ifndef FW_BOARD_NAME /* the board's folder in boards/, from firmware.mk */
+#define FW_BOARD_NAME "board"
+#endif
 #ifndef FW_TIME_0
 #define FW_TIME_0 0u
 #endif
@@ -59,7 +62,7 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
     report r = {{0}, 0};
     if (status != TARN_OK) {
         report_text(&r, "error board=");
-        report_text(&r, board_name);
+        report_text(&r, FW_BOARD_NAME);
         report_text(&r, " status=");
         report_text(&r, tarn_status_text(status));
         report_text(&r, "\n");
@@ -67,7 +70,7 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
         return 1;
     }
     uint64_t pixels = (uint64_t)scene_config.width * scene_config.height;
-    report_frame_header(&r, "target", board_name, FW_SCENE_LABEL, scene_config.width, scene_config.height);
+    report_frame_header(&r, "target", FW_BOARD_NAME, FW_SCENE_LABEL, scene_config.width, scene_config.height);
     report_text(&r, " insn_per_pixel=");
     report_number(&r, report_per_pixel(frame_instructions[0] + frame_instructions[1], 2u * pixels));
     report_text(&r, " render_insn_per_pixel=");

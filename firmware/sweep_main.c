@@ -32,6 +32,9 @@
 #ifndef FW_SCENE_LABEL
 #define FW_SCENE_LABEL "scene"
 #endif
+#ifndef FW_BOARD_NAME /* the board's folder in boards/, from firmware.mk */
+#define FW_BOARD_NAME "board"
+#endif
 #ifndef FW_TIME_1
 #define FW_TIME_1 1000u
 #endif
@@ -111,7 +114,7 @@ static int __attribute__((noinline)) report_point(unsigned index, const tarn_fra
 static int __attribute__((noinline)) report_sweep(uint64_t counter)
 {
     report r = {{0}, 0};
-    report_frame_header(&r, "sweep", board_name, FW_SCENE_LABEL, scene_config.width, scene_config.height);
+    report_frame_header(&r, "sweep", FW_BOARD_NAME, FW_SCENE_LABEL, scene_config.width, scene_config.height);
     report_text(&r, " points=");
     report_number(&r, SCENE_POINT_COUNT);
     report_text(&r, " counter_check=");

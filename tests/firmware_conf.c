@@ -54,11 +54,12 @@ tarn_frame_config firmware_bake_config(const char *scene_path, const char *bake_
                                        const tarn_loaded_scene *scene, uint32_t time_ms)
 {
     char flags[512];
-    char *argv[FLAGS_MAX + 3] = {"tarn", "memory", (char *)scene_path};
-    int argc = 3;
+    /* parsed as the bake's command line, which is what they were; nothing is written */
+    char *argv[FLAGS_MAX + 5] = {"tarn", "bake", (char *)scene_path, "-o", "parsed-only.c"};
+    int argc = 5;
     snprintf(flags, sizeof flags, "%s", bake_flags);
     for (char *word = strtok(flags, " "); word != NULL; word = strtok(NULL, " ")) {
-        if (argc == FLAGS_MAX + 3) fail_msg("too many bake flags: %s", bake_flags);
+        if (argc == FLAGS_MAX + 5) fail_msg("too many bake flags: %s", bake_flags);
         argv[argc++] = word;
     }
     tarn_cli_options options;

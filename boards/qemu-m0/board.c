@@ -5,8 +5,6 @@
 #include "board.h"
 #include "cortex_m.h"
 
-const char board_name[] = "qemu-m0";
-
 uint64_t board_instructions(void)
 {
     return systick_ticks() * 125u / 2u;

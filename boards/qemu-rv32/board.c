@@ -7,8 +7,6 @@
 #include "board.h"
 #include "semihosting.h"
 
-const char board_name[] = "qemu-rv32";
-
 #define UART0_TXDATA (*(volatile uint32_t *)0x10013000u)
 #define UART0_TXCTRL (*(volatile uint32_t *)0x10013008u)
 #define UART_TX_FULL 0x80000000u

@@ -9,8 +9,6 @@
 
 void panel_spi_init(void);
 
-const char board_name[] = "rp2040-st7789";
-
 #define TICKS_PER_MS (CLOCK_SYS_HZ / 1000u)
 
 int board_init(void)

@@ -8,8 +8,6 @@
 
 void panel_spi_init(void);
 
-const char board_name[] = "stm32f411-st7789";
-
 #define TICKS_PER_MS (CLOCK_HCLK_HZ / 1000u)
 
 int board_init(void)
