@@ -89,17 +89,44 @@ static int uses(const tarn_water_context *w, uint32_t feature)
     return (TARN_LINK_WATER_FEATURES & feature) != 0 && (w->features & feature) != 0;
 }
 
-/* Step 7's surface: S * lit / 255 in Q8.8 per channel, and its fresnel-raised alpha. */
-static void lit_surface(const tarn_water_context *w, const tarn_water_input *in, const uint32_t surface[3],
-                        tarn_water_effects *e)
+/* Step 7's surface: S * lit / 255 in Q8.8 per channel. */
+static void lit_surface(const tarn_water_input *in, const uint32_t surface[3], uint32_t lit[3])
 {
-    uint32_t alpha = (uint32_t)w->water->alpha >> 1; /* Q1.15; [0, 1] by the scene check */
-    if (uses(w, TARN_WATER_FRESNEL)) alpha = tarn_water_fresnel_alpha(w, in, alpha);
-    e->alpha = (uint16_t)alpha;
     for (int c = 0; c < 3; c++) {
         /* product / 65280, as product * 257 / 2^24 (fits: < 2^32) */
         const uint32_t product = surface[c] * in->lit[c];
-        e->surface_lit[c] = (uint16_t)((product + (product >> 8) + 32768u) >> 16);
+        lit[c] = (product + (product >> 8) + 32768u) >> 16;
+    }
+}
+
+/* Step 7's opacity, Q1.15: the material's, raised by the fresnel term. */
+static uint32_t surface_alpha(const tarn_water_context *w, const tarn_water_input *in)
+{
+    const uint32_t alpha = (uint32_t)w->water->alpha >> 1; /* Q1.15; [0, 1] by the scene check */
+    return uses(w, TARN_WATER_FRESNEL) ? tarn_water_fresnel_alpha(w, in, alpha) : alpha;
+}
+
+/* Steps 4 to 8 gathered into the effects' gain, through, base and lift from the
+ * fog keep (Q1.15), the lit surface and its alpha and the specular (Q8.8 each).
+ * Every product stays below 2^32: each share is at most 65280 * 32768. */
+static void gather(const tarn_water_context *w, uint32_t diff, uint32_t keep, const uint32_t surface[3],
+                   uint32_t alpha, const uint32_t highlight[3], tarn_water_effects *e)
+{
+    const uint32_t through = 32768u - alpha;
+    uint16_t loss[3] = {0, 0, 0};
+    const int absorbs = uses(w, TARN_WATER_ABSORPTION);
+    if (absorbs) tarn_water_absorb(w, diff, loss);
+    e->gain = (uint16_t)(absorbs ? keep : (keep * through) >> 15);
+    e->through = (uint16_t)through;
+    for (int c = 0; c < 3; c++) {
+        const uint32_t fog_share = (tarn_water_channel_q8(w->water->fog_rgb, c) * (32768u - keep)) >> 15;
+        if (absorbs) {
+            e->lift[c] = (int32_t)fog_share - (int32_t)loss[c];
+            e->base[c] = ((surface[c] * alpha) >> 15) + highlight[c];
+        } else {
+            e->lift[c] = 0;
+            e->base[c] = ((surface[c] * alpha + fog_share * through) >> 15) + highlight[c];
+        }
     }
 }
 
@@ -127,57 +154,45 @@ void tarn_water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, co
     e->offset[0] = (int8_t)(below.x - i); /* within the apron, at most TARN_WATER_APRON_MAX */
     e->offset[1] = (int8_t)(below.y - j);
     const uint32_t diff = below.depth > surface_depth ? below.depth - surface_depth : 0u;
-    e->keep = uses(w, TARN_WATER_FOG) ? (uint16_t)tarn_water_fog(w, diff) : 0u;
-    if (uses(w, TARN_WATER_ABSORPTION)) tarn_water_absorb(w, diff, e->loss);
-    uint32_t surface[3];
+    const uint32_t keep = uses(w, TARN_WATER_FOG) ? tarn_water_fog(w, diff) : 32768u;
+    uint32_t surface[3], lit[3], highlight[3] = {0, 0, 0};
     if (uses(w, TARN_WATER_DEPTH_COLOUR))
         tarn_water_depth_colour(w, diff, surface);
     else
         for (int c = 0; c < 3; c++) surface[c] = tarn_water_channel_q8(w->water->albedo_rgb, c);
-    lit_surface(w, in, surface, e);
-    e->highlighted = (uint8_t)(uses(w, TARN_WATER_SPECULAR) && tarn_water_specular(w, &n, e->highlight));
+    lit_surface(in, surface, lit);
+    if (uses(w, TARN_WATER_SPECULAR)) (void)tarn_water_specular(w, &n, highlight);
+    gather(w, diff, keep, lit, surface_alpha(w, in), highlight, e);
     e->foam_band = uses(w, TARN_WATER_FOAM) ? tarn_water_foam_band(w, diff) : Q16_ONE;
     e->sharp = (uint8_t)sharp_features(w, in, e->foam_band, &n);
 }
 
-/* The background colour under the effects' offset, Q8.8 per channel. The offset
- * was kept inside the frame for the pixel that found it, and only that pixel
- * applies an offset: blocks share no refracted effects. */
-static void moved_background(const tarn_water_context *w, const tarn_water_effects *e, int32_t i, int32_t j,
-                             uint32_t colour[3])
+/* The background colour under the effects' offset, 0x00RRGGBB. The offset was
+ * kept inside the frame for the pixel that found it, and only that pixel applies
+ * an offset: blocks share no refracted effects. */
+static uint32_t moved_background(const tarn_water_context *w, const tarn_water_effects *e, int32_t i, int32_t j)
 {
     if (TARN_LINK_APRON) {
         i += e->offset[0];
         j += e->offset[1];
     }
-    const uint32_t rgb = w->background[background_offset(w, i, j)];
-    for (int c = 0; c < 3; c++) colour[c] = tarn_water_channel_q8(rgb, c);
-}
-
-/* Steps 4 and 5 on the background: the fog's keep toward its colour, then
- * absorption's loss. */
-static void through_water(const tarn_water_context *w, const tarn_water_effects *e, uint32_t colour[3])
-{
-    if (uses(w, TARN_WATER_FOG)) {
-        for (int c = 0; c < 3; c++) {
-            const int32_t fog = (int32_t)tarn_water_channel_q8(w->water->fog_rgb, c);
-            colour[c] = (uint32_t)(fog + (((int32_t)colour[c] - fog) * (int32_t)e->keep) / Q15_ONE);
-        }
-    }
-    if (uses(w, TARN_WATER_ABSORPTION))
-        for (int c = 0; c < 3; c++) colour[c] = colour[c] > e->loss[c] ? colour[c] - e->loss[c] : 0u;
+    return w->background[background_offset(w, i, j)];
 }
 
 uint32_t tarn_water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
                           int32_t j)
 {
+    const uint32_t rgb_below = moved_background(w, e, i, j);
     uint32_t colour[3];
-    moved_background(w, e, i, j, colour);
-    through_water(w, e, colour);
-    const uint32_t alpha = e->alpha;
-    for (int c = 0; c < 3; c++) colour[c] = (e->surface_lit[c] * alpha + colour[c] * (32768u - alpha)) >> 15;
-    if (e->highlighted)
-        for (int c = 0; c < 3; c++) colour[c] += e->highlight[c];
+    for (int c = 0; c < 3; c++) {
+        const uint32_t below = tarn_water_channel_q8(rgb_below, c);
+        if (uses(w, TARN_WATER_ABSORPTION)) {
+            const int32_t mid = (int32_t)((below * e->gain) >> 15) + e->lift[c];
+            colour[c] = e->base[c] + ((uint32_t)(mid > 0 ? mid : 0) * e->through >> 15);
+        } else {
+            colour[c] = e->base[c] + ((below * e->gain) >> 15);
+        }
+    }
     if (sharp & TARN_WATER_SHOWS_FOAM) tarn_water_foam_over(w, colour);
     if (sharp & TARN_WATER_SHOWS_SPARKLES)
         for (int c = 0; c < 3; c++) colour[c] += tarn_water_channel_q8(w->water->sparkle_rgb, c);

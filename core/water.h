@@ -85,18 +85,26 @@ uint32_t tarn_water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, u
 uint16_t tarn_water_pan_offset(tarn_q16 speed, uint32_t time_ms);
 
 /* What the water does to the background of one pixel: every step of tarn_water.h
- * but the background's colour. The quality's water_block 2 finds it once for a
- * 2x2 block of pixels and applies it to each pixel's own background; only the
- * sharp features (TARN_WATER_SHOWS_*) are found again at every pixel. */
+ * but the background's colour, gathered so that the pixel's colour is one product
+ * a channel of its background B: base + B * gain. The quality's water_block 2
+ * finds it once for a 2x2 block of pixels and applies it to each pixel's own
+ * background; only the sharp features (TARN_WATER_SHOWS_*) are found again at
+ * every pixel. Absorption takes its loss between the fog and the surface, and
+ * clamps there at 0, so with it the pixel is
+ *     base + max(0, B * gain + lift) * through
+ * instead (all products Q1.15 and shifted down by 15). */
 typedef struct {
     int8_t offset[2];        /* the background sample, from the pixel (refraction) */
-    uint8_t highlighted;     /* step 8 adds `highlight` */
     uint8_t sharp;           /* TARN_WATER_SHOWS_* at the pixel that found them */
-    uint16_t keep;           /* step 4: share of the background the fog keeps, Q1.15 */
-    uint16_t alpha;          /* step 7: the surface's opacity, Q1.15 */
-    uint16_t loss[3];        /* step 5: what absorption takes, Q8.8 per channel */
-    uint16_t surface_lit[3]; /* step 7: the lit surface colour, Q8.8 */
-    uint32_t highlight[3];   /* step 8: what the specular adds, Q8.8 */
+    uint16_t gain;           /* Q1.15: the share of B the pixel keeps (steps 4 and 7's
+                                fog keep times 1 - alpha); with absorption the fog
+                                keep alone */
+    uint16_t through;        /* Q1.15, with absorption: 1 - alpha */
+    uint32_t base[3];        /* Q8.8: the fog colour's and the lit surface's shares
+                                (steps 4, 6, 7) and the specular (step 8); with
+                                absorption the surface's and the specular only */
+    int32_t lift[3];         /* Q8.8, with absorption: the fog colour's share less
+                                what absorption takes (step 5) */
     uint32_t foam_band;      /* step 9: where in the shore's foam band, Q0.16 (0 at the
                                 shore); 65536 or more beyond it, where no foam shows */
 } tarn_water_effects;
