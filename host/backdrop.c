@@ -153,22 +153,24 @@ static void rows_around_water(const uint8_t *water, int32_t width, int32_t heigh
     }
 }
 
+/* Each row's span of kept depth, and where the frame's water draws (`*water`,
+ * width * height flags, or NULL under the underwater view, which keeps every
+ * pixel's depth). */
 static int find_depth_rows(const tarn_scene *scene, const tarn_frame_config *config, const opaque_frame *opaque,
-                           tarn_backdrop_image *b, tarn_error *err)
+                           tarn_backdrop_image *b, uint8_t **water, tarn_error *err)
 {
+    *water = NULL;
     b->rows = calloc(config->height, sizeof *b->rows);
     if (b->rows == NULL) return tarn_fail(err, "out of memory finding the backdrop's water");
     if (scene->underwater != NULL) { /* the underwater view displaces every pixel */
         for (uint32_t j = 0; j < config->height; j++) b->rows[j].x1 = config->width;
         return 0;
     }
-    uint8_t *water = malloc((size_t)config->width * config->height);
-    int failed = water == NULL ? tarn_fail(err, "out of memory finding the backdrop's water")
-                               : find_water(scene, config, opaque, water, err);
-    if (!failed)
-        rows_around_water(water, config->width, config->height, tarn_frame_apron_pixels(scene, config), b->rows);
-    free(water);
-    return failed;
+    *water = malloc((size_t)config->width * config->height);
+    if (*water == NULL) return tarn_fail(err, "out of memory finding the backdrop's water");
+    if (find_water(scene, config, opaque, *water, err) != 0) return -1;
+    rows_around_water(*water, config->width, config->height, tarn_frame_apron_pixels(scene, config), b->rows);
+    return 0;
 }
 
 /* The kept pixels' depth, each row's after the last. */
@@ -202,8 +204,9 @@ static void image_free(tarn_backdrop_image *b)
     memset(b, 0, sizeof *b);
 }
 
+/* The backdrop, and where the frame's water draws (find_depth_rows). */
 static int image_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_image *b,
-                      tarn_error *err)
+                      uint8_t **water, tarn_error *err)
 {
     const size_t pixels = (size_t)config->width * config->height;
     opaque_frame f = {malloc(pixels * sizeof *f.rgb), malloc(pixels * 4u), config->quality.depth_bits / 8u,
@@ -216,11 +219,16 @@ static int image_make(const tarn_scene *scene, const tarn_frame_config *config, 
     b->backdrop.depth_interpolation = q->depth_interpolation;
     int failed = f.rgb == NULL || f.depth == NULL ? tarn_fail(err, "out of memory drawing the backdrop")
                                                  : draw_opaque_frame(scene, config, &f, err);
-    failed = failed || index_colours(f.rgb, pixels, b, err) || find_depth_rows(scene, config, &f, b, err) ||
+    *water = NULL;
+    failed = failed || index_colours(f.rgb, pixels, b, err) || find_depth_rows(scene, config, &f, b, water, err) ||
              keep_depth(&f, b, config->height, err);
     free(f.rgb);
     free(f.depth);
-    if (failed) image_free(b);
+    if (failed) {
+        image_free(b);
+        free(*water);
+        *water = NULL;
+    }
     return failed ? -1 : 0;
 }
 
@@ -228,14 +236,17 @@ int tarn_backdrop_scene_make(const tarn_scene *scene, const tarn_frame_config *c
                              tarn_backdrop_scene *out, tarn_error *err)
 {
     memset(out, 0, sizeof *out);
-    if (image_make(scene, config, &out->image, err) != 0) return -1;
+    uint8_t *drawn = NULL;
+    if (image_make(scene, config, &out->image, &drawn, err) != 0) return -1;
     out->water_objects = malloc((scene->object_count > 0 ? scene->object_count : 1u) * sizeof *out->water_objects);
-    if (out->water_objects == NULL) {
-        tarn_backdrop_scene_free(out);
-        return tarn_fail(err, "out of memory making the backdrop's scene");
-    }
-    const tarn_scene water = scene_part(scene, 1, out->water_objects);
-    if (tarn_static_scene_make(&water, config, keep_positions, &out->water, err) != 0) {
+    int failed = out->water_objects == NULL ? tarn_fail(err, "out of memory making the backdrop's scene") : 0;
+    tarn_scene water;
+    if (!failed) water = scene_part(scene, 1, out->water_objects);
+    if (!failed && drawn != NULL)
+        failed = tarn_water_cull_make(&water, out->water_objects, config, drawn, &out->cull, err);
+    free(drawn);
+    failed = failed || tarn_static_scene_make(&water, config, keep_positions, &out->water, err);
+    if (failed) {
         tarn_backdrop_scene_free(out);
         return -1;
     }
@@ -246,6 +257,7 @@ int tarn_backdrop_scene_make(const tarn_scene *scene, const tarn_frame_config *c
 void tarn_backdrop_scene_free(tarn_backdrop_scene *s)
 {
     image_free(&s->image);
+    tarn_water_cull_free(&s->cull);
     free(s->water_objects);
     tarn_static_scene_free(&s->water);
     memset(s, 0, sizeof *s);

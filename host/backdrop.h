@@ -12,6 +12,7 @@
 
 #include "error.h"
 #include "static_view.h"
+#include "water_cull.h"
 #include "tarn_render.h"
 
 typedef struct {
@@ -23,9 +24,11 @@ typedef struct {
     void *depth;
 } tarn_backdrop_image;
 
-/* The scene's water objects over the backdrop of its other objects. */
+/* The scene's water objects over the backdrop of its other objects, without the
+ * triangles that draw no pixel of the frame (water_cull.h). */
 typedef struct {
     tarn_backdrop_image image;
+    tarn_water_cull cull;
     tarn_object *water_objects;
     tarn_static_scene water; /* water.scene is what a frame draws; its static view
                                 holds the backdrop */

@@ -1,6 +1,6 @@
 /* test_backdrop.c: a scene's water drawn over the backdrop of its opaque objects
- * (tarn_scene.h, host/backdrop.h) gives the frame the whole scene gives, byte for
- * byte: on every scene, at each preset and two times, and with the knobs that move
+ * (tarn_scene.h, host/backdrop.h), without its triangles that draw no pixel
+ * (host/water_cull.h), gives the frame the whole scene gives, byte for byte: on every scene, at each preset and two times, and with the knobs that move
  * what the water reads (aprons, blocks, tiles, depth, perspective). The backdrop
  * keeps the depth only around the water, in as few colours' bits as it can; a frame
  * it does not apply to, a malformed backdrop and a palette index past the palette
@@ -123,8 +123,9 @@ static void test_every_knob_draws_the_same_frame(void **state)
     }
 }
 
-/* Only water objects are left to draw; the pond's 5,719 colours take 13 bits; the
- * depth is kept in the rows the water covers, not beyond. */
+/* Only water objects are left to draw, and only their triangles that draw a pixel;
+ * the pond's 5,719 colours take 13 bits; the depth is kept in the rows the water
+ * covers, not beyond. */
 static void test_backdrop_keeps_what_the_water_reads(void **state)
 {
     (void)state;
@@ -143,6 +144,10 @@ static void test_backdrop_keeps_what_the_water_reads(void **state)
     assert_int_equal(backdrop->rows[0].x1 - backdrop->rows[0].x0, 0); /* the sky */
     assert_int_equal(backdrop->rows[239].x1 - backdrop->rows[239].x0, 0); /* the near shore */
     assert_true(backdrop->depth_count > 20000u && backdrop->depth_count < 240u * 240u / 2u);
+    /* the water plane's triangles under the rim and near the camera draw nothing */
+    assert_int_equal(b.cull.triangles_before, 288);
+    assert_int_equal(b.cull.triangles_after, 127);
+    assert_int_equal(b.water.scene.objects[0].mesh->triangle_count, 127);
     tarn_backdrop_scene_free(&b);
     tarn_scene_free(&loaded);
 }
