@@ -314,37 +314,26 @@ static water_choice water_choice_at(const tarn_tile_target *tile, int32_t i, int
     return c;
 }
 
-/* What a covered pixel needs to find its attributes, which a water pixel does only
- * when it needs inputs of its own. Skipping pixels is safe in every perspective
- * mode: a span is filled for whichever pixel first reaches it. */
-typedef struct {
-    row_attributes *row;
-    const triangle_setup *t;
-    const attribute_set *set;
-    uint32_t *values; /* the triangle's constant attributes already in place */
-    uint32_t inv_depth;
-} pixel_attributes;
-
-static tarn_water_input water_input_at(const tarn_tile_target *tile, const pixel_attributes *p, int32_t i,
-                                       int32_t j)
+/* Whether a water pixel needs inputs of its own: all but one that shares its
+ * block's effects where no sharp feature can show, which needs no attributes. */
+static int water_needs_inputs(const tarn_water_context *w, const water_choice *c)
 {
-    row_attributes_at(p->row, tile->quality, p->set, p->t, i, j, p->values);
-    return water_input(p->set, p->values, p->inv_depth);
+    return !c->shares || tarn_water_sharp_possible(w, &c->block->effects);
 }
 
-/* The colour of water pixel (i, j). A pixel that shares its block's effects where
- * no sharp feature can show needs no water inputs of its own, so no attributes. */
-static uint32_t water_colour(const tarn_tile_target *tile, const water_choice *c, const pixel_attributes *p,
-                             int32_t i, int32_t j)
+/* The colour of water pixel (i, j) from its attributes `values` (found only where
+ * water_needs_inputs). */
+static uint32_t water_colour(const tarn_tile_target *tile, const water_choice *c, const attribute_set *set,
+                             const uint32_t values[ATTRIBUTES_MAX], uint32_t inv_depth, int32_t i, int32_t j)
 {
     tarn_water_context *w = tile->water;
     if (c->shares) {
         const tarn_water_effects *shared = &c->block->effects;
         if (!tarn_water_sharp_possible(w, shared)) return tarn_water_apply(w, shared, 0u, i, j);
-        const tarn_water_input in = water_input_at(tile, p, i, j);
+        const tarn_water_input in = water_input(set, values, inv_depth);
         return tarn_water_apply(w, shared, tarn_water_sharp_features(w, &in, shared), i, j);
     }
-    const tarn_water_input in = water_input_at(tile, p, i, j);
+    const tarn_water_input in = water_input(set, values, inv_depth);
     if (c->block == NULL) return tarn_water_shade(w, i, j, &in);
     tarn_water_effects own;
     const tarn_water_effects *e = own_effects(tile, i, j, &in, c->depth_q30, &own);
@@ -360,14 +349,16 @@ static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const at
     const tarn_quality *quality = tile->quality;
     const uint32_t closer = closer_depth(tile->depth, quality->depth_bits, offset, inv_depth);
     if (closer == 0u) return;
-    if (TARN_LINK_WATER && tile->water != NULL) {
-        const water_choice choice = water_choice_at(tile, i, j);
-        const pixel_attributes attributes = {row, t, set, values, inv_depth};
-        write_water_pixel(tile, offset, water_colour(tile, &choice, &attributes, i, j));
-    } else {
-        row_attributes_at(row, quality, set, t, i, j, values);
+    const int water = TARN_LINK_WATER && tile->water != NULL;
+    water_choice choice = {NULL, 0u, 0};
+    if (water) choice = water_choice_at(tile, i, j);
+    /* skipping a pixel's attributes is safe in every perspective mode: a span is
+     * filled for whichever pixel first reaches it */
+    if (!water || water_needs_inputs(tile->water, &choice)) row_attributes_at(row, quality, set, t, i, j, values);
+    if (water)
+        write_water_pixel(tile, offset, water_colour(tile, &choice, set, values, inv_depth, i, j));
+    else
         tile->colour[offset] = shade_pixel(set, texture, values);
-    }
     store_depth(tile->depth, quality->depth_bits, offset, closer);
 }
 

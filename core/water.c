@@ -113,20 +113,22 @@ static void gather(const tarn_water_context *w, uint32_t diff, uint32_t keep, co
                    uint32_t alpha, const uint32_t highlight[3], tarn_water_effects *e)
 {
     const uint32_t through = 32768u - alpha;
-    uint16_t loss[3] = {0, 0, 0};
-    const int absorbs = uses(w, TARN_WATER_ABSORPTION);
-    if (absorbs) tarn_water_absorb(w, diff, loss);
-    e->gain = (uint16_t)(absorbs ? keep : (keep * through) >> 15);
     e->through = (uint16_t)through;
-    for (int c = 0; c < 3; c++) {
-        const uint32_t fog_share = (tarn_water_channel_q8(w->water->fog_rgb, c) * (32768u - keep)) >> 15;
-        if (absorbs) {
-            e->lift[c] = (int32_t)fog_share - (int32_t)loss[c];
+    if (uses(w, TARN_WATER_ABSORPTION)) {
+        uint16_t loss[3];
+        tarn_water_absorb(w, diff, loss);
+        e->gain = (uint16_t)keep;
+        for (int c = 0; c < 3; c++) {
+            e->lift[c] = (int32_t)((w->fog_q8[c] * (32768u - keep)) >> 15) - (int32_t)loss[c];
             e->base[c] = ((surface[c] * alpha) >> 15) + highlight[c];
-        } else {
-            e->lift[c] = 0;
-            e->base[c] = ((surface[c] * alpha + fog_share * through) >> 15) + highlight[c];
         }
+        return;
+    }
+    e->gain = (uint16_t)((keep * through) >> 15);
+    for (int c = 0; c < 3; c++) {
+        const uint32_t fog_share = (w->fog_q8[c] * (32768u - keep)) >> 15;
+        e->lift[c] = 0;
+        e->base[c] = ((surface[c] * alpha + fog_share * through) >> 15) + highlight[c];
     }
 }
 

@@ -25,6 +25,7 @@ typedef struct tarn_water_context {
     uint16_t foam_phase;        /* time * foam_line_speed, Q0.16 turns of the band */
     int32_t half_vector[3];     /* Q1.15, in the object's tangent frame (u, v, up) */
     uint32_t light_q8[3];       /* light colour, Q8.8 per channel */
+    uint32_t fog_q8[3];         /* the fog's colour, Q8.8 per channel; 0 without fog */
     uint32_t inv_depth_scale;   /* Q16.16 per world unit */
     uint32_t inv_foam_distance; /* Q16.16 per world unit */
     uint32_t refraction_px;     /* refraction * width: pixels per unit normal, Q16.16 */

@@ -67,7 +67,10 @@ void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
     }
     w->foam_phase = tarn_water_pan_offset(water->foam_line_speed, config->time_ms);
     half_vector(view, object, w->half_vector);
-    for (int c = 0; c < 3; c++) w->light_q8[c] = ((view->light_q16[c] * 255u + 32768u) >> 16) << 8;
+    for (int c = 0; c < 3; c++) {
+        w->light_q8[c] = ((view->light_q16[c] * 255u + 32768u) >> 16) << 8;
+        w->fog_q8[c] = (w->features & TARN_WATER_FOG) != 0 ? tarn_water_channel_q8(water->fog_rgb, c) : 0u;
+    }
     w->inv_depth_scale = reciprocal_q16(water->depth_scale);
     w->inv_foam_distance = reciprocal_q16(water->foam_distance);
     int64_t px = (int64_t)water->refraction * config->width;
