@@ -75,12 +75,20 @@ static int fill_colour_row(const tarn_backdrop *b, uint16_t frame_width, int32_t
 {
     const unsigned bits = b->index_bits;
     const uint32_t mask = (1u << bits) - 1u, count = b->palette_count;
-    const uint16_t *words = b->colour;
-    /* bits <= 16 and the shift < 16, so two words always hold the index */
-    uint32_t bit = ((uint32_t)j * frame_width + (uint32_t)x0) * bits;
-    for (int32_t i = x0; i < x1; i++, bit += bits) {
-        const uint16_t *at = words + (bit >> 4);
-        const uint32_t index = (((uint32_t)at[1] << 16 | at[0]) >> (bit & 15u)) & mask;
+    const uint32_t first = ((uint32_t)j * frame_width + (uint32_t)x0) * bits;
+    const uint16_t *next = b->colour + (first >> 4);
+    /* the row's bits, read a word at a time: `window` holds `held` of them, the
+     * next index lowest (bits <= 16, so one word always tops it up) */
+    uint32_t window = (uint32_t)*next++ >> (first & 15u);
+    unsigned held = 16u - (first & 15u);
+    for (int32_t i = x0; i < x1; i++) {
+        if (held < bits) {
+            window |= (uint32_t)*next++ << held;
+            held += 16u;
+        }
+        const uint32_t index = window & mask;
+        window >>= bits;
+        held -= bits;
         if (index >= count) return -1;
         *to++ = b->palette[index];
     }

@@ -148,9 +148,8 @@ typedef struct {
     const uint16_t *colour;    /* a palette index per pixel, rows top to bottom: pixel
                                   (i, j)'s index_bits bits start at bit
                                   (j * width + i) * index_bits, counted from bit 0 of
-                                  colour[0] up through each uint16_t; one uint16_t
-                                  more at the end, read but unused. An index past the
-                                  palette stops the frame (TARN_ERR_SCENE) */
+                                  colour[0] up through each uint16_t. An index past
+                                  the palette stops the frame (TARN_ERR_SCENE) */
     const tarn_backdrop_row *rows; /* one per pixel row */
     const void *depth;         /* near/d of the kept pixels, as the depth buffer holds
                                   it by depth_bits (a uint16_t tarn_depth16 code or a

@@ -98,7 +98,7 @@ static int index_colours(const uint32_t *rgb, size_t pixels, tarn_backdrop_image
         return tarn_fail(err, "backdrop: the opaque objects draw %zu colours, at most %u fit its 16-bit indices",
                          count, TARN_BACKDROP_COLOURS_MAX);
     const unsigned bits = index_bits_for(count);
-    b->colour_words = (pixels * bits + 15u) / 16u + 1u; /* and the word the last read takes */
+    b->colour_words = (pixels * bits + 15u) / 16u;
     b->colour = calloc(b->colour_words, sizeof *b->colour);
     if (b->colour == NULL) return tarn_fail(err, "out of memory indexing the backdrop");
     for (size_t k = 0; k < pixels; k++) {
