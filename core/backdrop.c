@@ -38,15 +38,25 @@ static int rows_valid(const tarn_backdrop *b, uint16_t width, uint16_t height)
     return 1;
 }
 
-/* Palette indices are checked as they are read (tarn_backdrop_fill): a scan of
- * every pixel here would cost each frame as much again. */
+/* Colours with nothing above 0xRRGGBB: the water pass marks the pixels it writes
+ * in the bits above. */
+static int palette_valid(const tarn_backdrop *b)
+{
+    for (uint32_t k = 0; k < b->palette_count; k++)
+        if (b->palette[k] > 0xFFFFFFu) return 0;
+    return 1;
+}
+
+/* A palette of 2^index_bits colours holds every index the bits can spell, so no
+ * pixel's index needs checking: checked, they would cost each frame as much again
+ * as reading them. */
 int tarn_backdrop_valid(const tarn_backdrop *b, const tarn_static_view *view)
 {
-    if (b->palette == NULL || b->colour == NULL || b->rows == NULL || b->palette_count < 1u ||
-        b->index_bits < 1u || b->index_bits > 16u || b->palette_count > (1u << b->index_bits) ||
+    if (b->palette == NULL || b->colour == NULL || b->rows == NULL || b->index_bits < 1u ||
+        b->index_bits > 16u || b->palette_count != (1u << b->index_bits) ||
         (b->depth_bits != 16 && b->depth_bits != 32) || (b->depth_count > 0u && b->depth == NULL))
         return 0;
-    return rows_valid(b, view->width, view->height);
+    return palette_valid(b) && rows_valid(b, view->width, view->height);
 }
 
 /* A depth every water pixel lies behind: all ones, in either form. */
@@ -69,12 +79,12 @@ static void fill_depth_row(const tarn_backdrop *b, int32_t j, int32_t x0, int32_
     memset(to + (size_t)(kept1 - x0) * bytes, IN_FRONT_OF_ALL, (size_t)(x1 - kept1) * bytes);
 }
 
-/* Row j's colours over [x0, x1) into `to`: 0, or -1 at an index past the palette. */
-static int fill_colour_row(const tarn_backdrop *b, uint16_t frame_width, int32_t j, int32_t x0, int32_t x1,
-                           uint32_t *to)
+/* Row j's colours over [x0, x1) into `to`. */
+static void fill_colour_row(const tarn_backdrop *b, uint16_t frame_width, int32_t j, int32_t x0, int32_t x1,
+                            uint32_t *to)
 {
     const unsigned bits = b->index_bits;
-    const uint32_t mask = (1u << bits) - 1u, count = b->palette_count;
+    const uint32_t mask = (1u << bits) - 1u;
     const uint32_t first = ((uint32_t)j * frame_width + (uint32_t)x0) * bits;
     const uint16_t *next = b->colour + (first >> 4);
     /* the row's bits, read a word at a time: `window` holds `held` of them, the
@@ -86,21 +96,17 @@ static int fill_colour_row(const tarn_backdrop *b, uint16_t frame_width, int32_t
             window |= (uint32_t)*next++ << held;
             held += 16u;
         }
-        const uint32_t index = window & mask;
+        *to++ = b->palette[window & mask];
         window >>= bits;
         held -= bits;
-        if (index >= count) return -1;
-        *to++ = b->palette[index];
     }
-    return 0;
 }
 
-int tarn_backdrop_fill(const tarn_backdrop *b, uint16_t frame_width, tarn_tile_target *t, size_t depth_bytes)
+void tarn_backdrop_fill(const tarn_backdrop *b, uint16_t frame_width, tarn_tile_target *t, size_t depth_bytes)
 {
     for (int32_t j = t->rect.y0; j < t->rect.y1; j++) {
         const int32_t first = (j - t->origin_y) * t->stride - t->origin_x + t->rect.x0;
-        if (fill_colour_row(b, frame_width, j, t->rect.x0, t->rect.x1, t->colour + first) != 0) return -1;
+        fill_colour_row(b, frame_width, j, t->rect.x0, t->rect.x1, t->colour + first);
         fill_depth_row(b, j, t->rect.x0, t->rect.x1, (uint8_t *)t->depth + (size_t)first * depth_bytes, depth_bytes);
     }
-    return 0;
 }

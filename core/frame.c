@@ -394,17 +394,16 @@ static tarn_pixel_rect opaque_rect(const frame_state *f, const tarn_pixel_rect *
     return rect_union(*tile_rect, intersect(reach, whole));
 }
 
-/* The opaque pass over the target's rect, drawn or read from the backdrop:
- * TARN_OK, or TARN_ERR_SCENE where the backdrop holds a colour past its palette. */
-static tarn_status draw_opaque(frame_state *f)
+/* The opaque pass over the target's rect, drawn or read from the backdrop. */
+static void draw_opaque(frame_state *f)
 {
     tarn_tile_target *o = &f->opaque;
-    if (TARN_LINK_BACKDROP && f->layout.backdrop != NULL)
-        return tarn_backdrop_fill(f->layout.backdrop, f->config->width, o, f->layout.depth_bytes) == 0
-            ? TARN_OK : TARN_ERR_SCENE;
+    if (TARN_LINK_BACKDROP && f->layout.backdrop != NULL) {
+        tarn_backdrop_fill(f->layout.backdrop, f->config->width, o, f->layout.depth_bytes);
+        return;
+    }
     clear_rect(o, f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
     tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, f->bins, &o->rect, raster_into_tile, o);
-    return TARN_OK;
 }
 
 /* The water pass in place over the tile, or, where a water pixel landed on another,
@@ -412,7 +411,7 @@ static tarn_status draw_opaque(frame_state *f)
 static void draw_water_over_opaque(frame_state *f, const tarn_pixel_rect *tile_rect)
 {
     if (draw_water_in_place(f, tile_rect)) return;
-    (void)draw_opaque(f); /* the same pixels as the first time, which were valid */
+    draw_opaque(f);
     draw_water_in_strips(f, tile_rect);
 }
 
@@ -426,7 +425,7 @@ static tarn_status draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sin
     o->origin_x = x - f->layout.apron;
     o->origin_y = y - f->layout.apron;
     o->rect = opaque_rect(f, &tile_rect, &frame, &has_water);
-    if (draw_opaque(f) != TARN_OK) return TARN_ERR_SCENE;
+    draw_opaque(f);
     const tarn_tile_target *out = o;
     if ((TARN_LINK_WATER || TARN_LINK_UNDERWATER) && has_water) {
         if (f->layout.in_place) {

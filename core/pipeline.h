@@ -158,8 +158,8 @@ const tarn_backdrop *tarn_backdrop_of(const tarn_scene *scene);
 int tarn_backdrop_applies(const tarn_scene *scene, const tarn_frame_config *config);
 int tarn_backdrop_valid(const tarn_backdrop *backdrop, const tarn_static_view *view);
 /* The target's rect from the backdrop of a frame `frame_width` pixels wide, as the
- * opaque pass would draw it: 0, or -1 at a palette index past the palette. */
-int tarn_backdrop_fill(const tarn_backdrop *backdrop, uint16_t frame_width, tarn_tile_target *target,
+ * opaque pass would draw it. */
+void tarn_backdrop_fill(const tarn_backdrop *backdrop, uint16_t frame_width, tarn_tile_target *target,
                         size_t depth_bytes);
 
 /* Validates the scene's arrays so the walk never reads past them. */

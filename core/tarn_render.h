@@ -49,9 +49,7 @@ typedef enum {
     TARN_ERR_MEMORY,  /* the memory given is smaller than tarn_frame_memory_bytes() */
     TARN_ERR_SCENE,   /* the scene is malformed (null arrays, index past the end...),
                          needs an effect this build left out (TARN_LINK_*, tarn_water.h),
-                         or has a backdrop that does not apply to the frame; a backdrop's
-                         palette index is checked as its tile is drawn, so tiles before
-                         a bad one have reached the sink */
+                         or has a backdrop that does not apply to the frame */
     TARN_ERR_SINK     /* the tile sink asked to stop */
 } tarn_status;
 

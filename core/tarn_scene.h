@@ -144,12 +144,12 @@ typedef struct {
     uint8_t depth_bits, depth_interpolation;
     uint8_t index_bits;        /* 1..16: bits of a palette index */
     const uint32_t *palette;   /* 0xRRGGBB colours */
-    uint32_t palette_count;    /* 1..TARN_BACKDROP_COLOURS_MAX, at most 2^index_bits */
+    uint32_t palette_count;    /* 2^index_bits (tarn bake pads the colours it needs
+                                  with black), so that every index names one */
     const uint16_t *colour;    /* a palette index per pixel, rows top to bottom: pixel
                                   (i, j)'s index_bits bits start at bit
                                   (j * width + i) * index_bits, counted from bit 0 of
-                                  colour[0] up through each uint16_t. An index past
-                                  the palette stops the frame (TARN_ERR_SCENE) */
+                                  colour[0] up through each uint16_t */
     const tarn_backdrop_row *rows; /* one per pixel row */
     const void *depth;         /* near/d of the kept pixels, as the depth buffer holds
                                   it by depth_bits (a uint16_t tarn_depth16 code or a

@@ -83,11 +83,13 @@ static void pack_index(uint16_t *words, size_t k, unsigned bits, uint32_t index)
     }
 }
 
-/* The frame's distinct colours, sorted, and each pixel's index among them, packed
- * (tarn_backdrop.colour). */
+/* The frame's distinct colours, sorted and padded with black to a power of two
+ * (every index the bits can spell names one), and each pixel's index among them,
+ * packed (tarn_backdrop.colour). */
 static int index_colours(const uint32_t *rgb, size_t pixels, tarn_backdrop_image *b, tarn_error *err)
 {
-    b->palette = malloc(pixels * sizeof *b->palette);
+    b->palette = calloc(pixels > TARN_BACKDROP_COLOURS_MAX ? pixels : TARN_BACKDROP_COLOURS_MAX,
+                        sizeof *b->palette);
     if (b->palette == NULL) return tarn_fail(err, "out of memory indexing the backdrop");
     memcpy(b->palette, rgb, pixels * sizeof *rgb);
     qsort(b->palette, pixels, sizeof *b->palette, compare_u32);
@@ -105,9 +107,11 @@ static int index_colours(const uint32_t *rgb, size_t pixels, tarn_backdrop_image
         const uint32_t *found = bsearch(&rgb[k], b->palette, count, sizeof *b->palette, compare_u32);
         pack_index(b->colour, k, bits, (uint32_t)(found - b->palette));
     }
+    for (size_t k = count; k < ((size_t)1 << bits); k++) b->palette[k] = 0u;
+    b->colours = (uint32_t)count;
     b->backdrop.index_bits = (uint8_t)bits;
     b->backdrop.palette = b->palette;
-    b->backdrop.palette_count = (uint32_t)count;
+    b->backdrop.palette_count = 1u << bits;
     b->backdrop.colour = b->colour;
     return 0;
 }

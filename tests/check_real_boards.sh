@@ -87,11 +87,11 @@ for view in on off; do
     fi
 done
 
-# the pond's backdrop at 320x320 (a palette index and the water's depth for 102,400
+# the pond's backdrop at 240x400 (a palette index and the water's depth for 96,000
 # pixels) overflows the same flash: the note says the backdrop can go
 rm -rf "$m0_dir"
 out=$(make --no-print-directory firmware BOARD=qemu-m0 FW_DIR=$m0_dir SCENE=scenes/pond.json \
-    BAKE_FLAGS="--quality fast --backdrop on --size 320x320" 2>&1)
+    BAKE_FLAGS="--quality fast --backdrop on --size 240x400" 2>&1)
 status=$?
 if [ $status -ne 0 ] && [ ! -e "$m0_dir/firmware.elf" ] &&
     printf '%s\n' "$out" | grep -qE "region .FLASH. overflowed by [0-9]+ bytes" &&

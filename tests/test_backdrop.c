@@ -3,8 +3,7 @@
  * (host/water_cull.h), gives the frame the whole scene gives, byte for byte: on every scene, at each preset and two times, and with the knobs that move
  * what the water reads (aprons, blocks, tiles, depth, perspective). The backdrop
  * keeps the depth only around the water, in as few colours' bits as it can; a frame
- * it does not apply to, a malformed backdrop and a palette index past the palette
- * are refused. */
+ * it does not apply to and a malformed backdrop are refused. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -138,8 +137,9 @@ static void test_backdrop_keeps_what_the_water_reads(void **state)
     assert_non_null(b.water.scene.objects[0].material->water);
     const tarn_backdrop *backdrop = b.water.scene.static_view->backdrop;
     assert_ptr_equal(backdrop, &b.image.backdrop);
-    assert_int_equal(backdrop->palette_count, 5719);
+    assert_int_equal(b.image.colours, 5719);
     assert_int_equal(backdrop->index_bits, 13);
+    assert_int_equal(backdrop->palette_count, 8192);
     assert_int_equal(b.image.colour_words, 240u * 240u * 13u / 16u);
     assert_int_equal(backdrop->rows[0].x1 - backdrop->rows[0].x0, 0); /* the sky */
     assert_int_equal(backdrop->rows[239].x1 - backdrop->rows[239].x0, 0); /* the near shore */
@@ -183,7 +183,8 @@ static void test_another_frame_is_refused(void **state)
     tarn_scene_free(&loaded);
 }
 
-/* Each malformed field is refused, and so is a palette index past the palette. */
+/* Each malformed field is refused before a tile is drawn: a palette shorter than
+ * its indices can spell too. */
 static void test_malformed_backdrop_is_refused(void **state)
 {
     (void)state;
@@ -194,7 +195,7 @@ static void test_malformed_backdrop_is_refused(void **state)
     backdrop_make(&loaded, &config, &b);
     tarn_backdrop *backdrop = &b.image.backdrop;
     const tarn_backdrop saved = *backdrop;
-    backdrop->index_bits = 12; /* 4,096 colours cannot index 5,719 */
+    backdrop->index_bits = 12; /* a 4,096-colour palette is not 8,192 */
     assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
     backdrop->index_bits = 17;
@@ -206,6 +207,9 @@ static void test_malformed_backdrop_is_refused(void **state)
     backdrop->palette = NULL;
     assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
+    b.image.palette[8191] = 0x01000000u; /* a bit the water pass marks pixels with */
+    assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
+    b.image.palette[8191] = 0u;
     backdrop->depth_count -= 1u; /* the last row's span now reads past it */
     assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
@@ -217,7 +221,7 @@ static void test_malformed_backdrop_is_refused(void **state)
     assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
     b.image.rows[120] = row;
     assert_int_equal(render_status(&b.water.scene, &config), TARN_OK);
-    backdrop->palette_count -= 1u; /* the last colour's pixels now index past it */
+    backdrop->palette_count -= 1u; /* index 8,191 would name no colour */
     assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
     assert_int_equal(render_status(&b.water.scene, &config), TARN_OK);

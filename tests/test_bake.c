@@ -331,7 +331,8 @@ static void test_backdrop_bakes_without_loss(void **state)
     assert_int_equal(occurrences(source, "ground.png"), 0);
     assert_int_equal(occurrences(source, "static const tarn_mesh "), 1);
     assert_non_null(strstr(source, "static const tarn_object pond_backdrop_objects[1] = {"));
-    assert_non_null(strstr(source, "static const uint32_t pond_backdrop_backdrop_palette[5719] = {"));
+    assert_non_null(strstr(source, "static const uint32_t pond_backdrop_backdrop_palette[8192] = {"));
+    assert_non_null(strstr(source, "the 5719 colours the opaque objects draw, padded with black to 8192"));
     assert_non_null(strstr(source, "    .backdrop = &pond_backdrop_backdrop\n"));
     assert_non_null(strstr(source, " *   backdrop "));
     free(source);

@@ -1,7 +1,7 @@
 /* fuzz_core.c: the core itself, on scenes, cameras and quality settings built from
  * the fuzzer's bytes: any numbers in every field, indices and clusters that may run
  * past their arrays, textures of any size, water with any features, and static
- * vertices and bins (tarn_scene.h) that need not agree with anything. The frame's
+ * vertices, bins and backdrops (tarn_scene.h) that need not agree with anything. The frame's
  * memory is exactly tarn_frame_memory_bytes() from the heap, so AddressSanitizer
  * sees any byte written outside it. A render either refuses (a config or scene
  * error, with nothing sent) or hands over every pixel of the frame exactly once,
@@ -37,6 +37,11 @@ typedef struct {
     tarn_underwater underwater;
     tarn_static_view static_view;
     tarn_cluster_bin bins[2 * OBJECTS_MAX];
+    tarn_backdrop backdrop;
+    uint32_t palette[16];
+    uint16_t colour[FRAME_MAX * FRAME_MAX]; /* at most 16 bits a pixel */
+    tarn_backdrop_row rows[FRAME_MAX];
+    uint32_t depth[FRAME_MAX * FRAME_MAX];  /* either form of depth */
     tarn_scene scene;
     uint8_t texels[2][16 * 16 * 3];
     tarn_texture textures[2];
@@ -255,6 +260,44 @@ static tarn_static_vertex static_vertex(fuzz_reader *r)
     return v;
 }
 
+/* A quality knob of the backdrop: mostly the frame's, so that it applies. */
+static uint8_t mostly(fuzz_reader *r, uint8_t frames)
+{
+    const uint8_t kind = fuzz_u8(r);
+    return kind < 224 ? frames : fuzz_u8(r);
+}
+
+/* A backdrop over 1 to 4 index bits, whose palette, spans and depth are mostly
+ * sized right and hold anything. */
+static void make_backdrop(fuzz_scene *s, const tarn_frame_config *config, fuzz_reader *r)
+{
+    tarn_backdrop *b = &s->backdrop;
+    const tarn_quality *q = &config->quality;
+    b->recip_newton_steps = mostly(r, q->recip_newton_steps);
+    b->perspective = mostly(r, q->perspective);
+    b->perspective_span = mostly(r, q->perspective_span);
+    b->depth_bits = mostly(r, q->depth_bits);
+    b->depth_interpolation = mostly(r, q->depth_interpolation);
+    b->index_bits = mostly(r, (uint8_t)(1u + fuzz_u8(r) % 4u));
+    b->palette_count = fuzz_u8(r) < 240 ? 1u << (b->index_bits & 31u) : fuzz_u32(r);
+    for (size_t k = 0; k < 16; k++) s->palette[k] = fuzz_u8(r) < 250 ? fuzz_u32(r) & 0xFFFFFFu : fuzz_u32(r);
+    /* a palette longer than this one goes as NULL, which the scene check refuses */
+    b->palette = fuzz_u8(r) < 250 && b->palette_count <= 16u ? s->palette : NULL;
+    for (size_t k = 0; k < FRAME_MAX * FRAME_MAX; k++) s->colour[k] = fuzz_u16(r);
+    b->colour = s->colour;
+    b->depth_count = fuzz_u16(r) % (FRAME_MAX * FRAME_MAX + 1u);
+    for (size_t j = 0; j < FRAME_MAX; j++) {
+        const uint8_t x0 = fuzz_u8(r), x1 = fuzz_u8(r);
+        s->rows[j].x0 = (uint16_t)(x0 % (FRAME_MAX + 2u));
+        s->rows[j].x1 = (uint16_t)(x1 % (FRAME_MAX + 2u));
+        s->rows[j].first = fuzz_u16(r) % (FRAME_MAX * FRAME_MAX + 2u);
+    }
+    b->rows = s->rows;
+    for (size_t k = 0; k < FRAME_MAX * FRAME_MAX; k++) s->depth[k] = fuzz_u32(r);
+    b->depth = s->depth;
+    s->static_view.backdrop = b;
+}
+
 /* Sometimes a static view: mostly the scene's camera and light and the frame's
  * size, with static vertices on some objects (whose positions may then be gone) and
  * any bins at all. Never for an input that ran out of bytes (they read as 0), so the
@@ -275,6 +318,8 @@ static void make_static_view(fuzz_scene *s, const tarn_frame_config *config, fuz
         s->bins[b] = bin;
     }
     v->bins = fuzz_u8(r) < 200 ? s->bins : NULL;
+    v->backdrop = NULL;
+    if (fuzz_u8(r) >= 192) make_backdrop(s, config, r);
     s->scene.static_view = v;
     for (unsigned k = 0; k < s->scene.object_count; k++) {
         const uint8_t use = fuzz_u8(r);
