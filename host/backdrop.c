@@ -41,23 +41,45 @@ static tarn_scene scene_part(const tarn_scene *scene, int water, tarn_object *ob
     return part;
 }
 
+static void frame_free(opaque_frame *f)
+{
+    free(f->rgb);
+    free(f->depth);
+    memset(f, 0, sizeof *f);
+}
+
+/* `scene`'s frame into `f`, whose buffers it allocates (frame_free releases them,
+ * whatever the outcome): 0, or -1 with `err` naming `what` it was for. */
+static int draw_frame(const tarn_scene *scene, const tarn_frame_config *config, opaque_frame *f, const char *what,
+                      tarn_error *err)
+{
+    const size_t pixels = (size_t)config->width * config->height, bytes = tarn_frame_memory_bytes(config, scene);
+    f->rgb = malloc(pixels * sizeof *f->rgb);
+    f->depth = malloc(pixels * 4u);
+    f->depth_bytes = config->quality.depth_bits / 8u;
+    f->width = config->width;
+    void *memory = malloc(bytes > 0 ? bytes : 1u);
+    tarn_status status = f->rgb != NULL && f->depth != NULL && memory != NULL
+        ? tarn_render_frame(scene, config, memory, bytes, keep_tile, f)
+        : TARN_ERR_MEMORY;
+    free(memory);
+    if (status == TARN_ERR_MEMORY) return tarn_fail(err, "backdrop: out of memory %s", what);
+    if (status != TARN_OK) return tarn_fail(err, "backdrop: %s failed: %s", what, tarn_status_text(status));
+    return 0;
+}
+
+/* The scene without its water and its underwater view, drawn. */
 static int draw_opaque_frame(const tarn_scene *scene, const tarn_frame_config *config, opaque_frame *f,
                              tarn_error *err)
 {
     tarn_object *objects = malloc((scene->object_count > 0 ? scene->object_count : 1u) * sizeof *objects);
-    if (objects == NULL) return tarn_fail(err, "out of memory drawing the backdrop");
+    if (objects == NULL) return tarn_fail(err, "backdrop: out of memory drawing the opaque objects");
     tarn_scene opaque = scene_part(scene, 0, objects);
     opaque.underwater = NULL;
     opaque.static_view = NULL;
-    const size_t bytes = tarn_frame_memory_bytes(config, &opaque);
-    void *memory = bytes > 0 ? malloc(bytes) : NULL;
-    tarn_status status = memory != NULL ? tarn_render_frame(&opaque, config, memory, bytes, keep_tile, f)
-                                        : TARN_ERR_MEMORY;
-    free(memory);
+    const int failed = draw_frame(&opaque, config, f, "drawing the opaque objects", err);
     free(objects);
-    if (bytes == 0) return tarn_fail(err, "backdrop: %s", tarn_status_text(TARN_ERR_CONFIG));
-    if (status != TARN_OK) return tarn_fail(err, "backdrop: drawing the opaque objects failed: %s", tarn_status_text(status));
-    return 0;
+    return failed;
 }
 
 static int compare_u32(const void *a, const void *b)
@@ -121,22 +143,13 @@ static int index_colours(const uint32_t *rgb, size_t pixels, tarn_backdrop_image
 static int find_water(const tarn_scene *scene, const tarn_frame_config *config, const opaque_frame *opaque,
                       uint8_t *water, tarn_error *err)
 {
-    const size_t pixels = (size_t)config->width * config->height;
-    opaque_frame whole = {malloc(pixels * sizeof *whole.rgb), malloc(pixels * opaque->depth_bytes),
-                          opaque->depth_bytes, config->width};
-    int failed = whole.rgb == NULL || whole.depth == NULL;
-    const size_t bytes = tarn_frame_memory_bytes(config, scene);
-    void *memory = failed ? NULL : malloc(bytes);
-    tarn_status status = memory != NULL ? tarn_render_frame(scene, config, memory, bytes, keep_tile, &whole)
-                                        : TARN_ERR_MEMORY;
-    for (size_t k = 0; status == TARN_OK && k < pixels; k++)
+    opaque_frame whole = {NULL, NULL, 0, 0};
+    const int failed = draw_frame(scene, config, &whole, "finding the water", err);
+    for (size_t k = 0; !failed && k < (size_t)config->width * config->height; k++)
         water[k] = memcmp(whole.depth + k * whole.depth_bytes, opaque->depth + k * opaque->depth_bytes,
                           whole.depth_bytes) != 0;
-    free(memory);
-    free(whole.rgb);
-    free(whole.depth);
-    if (status != TARN_OK) return tarn_fail(err, "backdrop: finding the water failed: %s", tarn_status_text(status));
-    return 0;
+    frame_free(&whole);
+    return failed;
 }
 
 /* Each row's pixels the water reads: from the first water pixel within `reach`
@@ -212,22 +225,18 @@ static void image_free(tarn_backdrop_image *b)
 static int image_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_image *b,
                       uint8_t **water, tarn_error *err)
 {
-    const size_t pixels = (size_t)config->width * config->height;
-    opaque_frame f = {malloc(pixels * sizeof *f.rgb), malloc(pixels * 4u), config->quality.depth_bits / 8u,
-                      config->width};
     const tarn_quality *q = &config->quality;
     b->backdrop.recip_newton_steps = q->recip_newton_steps;
     b->backdrop.perspective = q->perspective;
     b->backdrop.perspective_span = q->perspective_span;
     b->backdrop.depth_bits = q->depth_bits;
     b->backdrop.depth_interpolation = q->depth_interpolation;
-    int failed = f.rgb == NULL || f.depth == NULL ? tarn_fail(err, "out of memory drawing the backdrop")
-                                                 : draw_opaque_frame(scene, config, &f, err);
     *water = NULL;
-    failed = failed || index_colours(f.rgb, pixels, b, err) || find_depth_rows(scene, config, &f, b, water, err) ||
-             keep_depth(&f, b, config->height, err);
-    free(f.rgb);
-    free(f.depth);
+    opaque_frame f = {NULL, NULL, 0, 0};
+    const int failed = draw_opaque_frame(scene, config, &f, err) ||
+                       index_colours(f.rgb, (size_t)config->width * config->height, b, err) ||
+                       find_depth_rows(scene, config, &f, b, water, err) || keep_depth(&f, b, config->height, err);
+    frame_free(&f);
     if (failed) {
         image_free(b);
         free(*water);
