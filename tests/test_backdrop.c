@@ -3,7 +3,8 @@
  * (host/water_cull.h), gives the frame the whole scene gives, byte for byte: on every scene, at each preset and two times, and with the knobs that move
  * what the water reads (aprons, blocks, tiles, depth, perspective). The backdrop
  * keeps the depth only around the water, in as few colours' bits as it can; a frame
- * it does not apply to and a malformed backdrop are refused. */
+ * it does not apply to, a malformed backdrop and a picture of more colours than
+ * 16-bit indices name are refused. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -14,6 +15,7 @@
 
 #include "backdrop.h"
 #include "core_render.h"
+#include "scene_builder.h"
 #include "scene_load.h"
 
 static const char *const scenes[] = {
@@ -229,6 +231,30 @@ static void test_malformed_backdrop_is_refused(void **state)
     tarn_scene_free(&loaded);
 }
 
+/* More colours than 16-bit indices name: a 16x16 grid of quads whose vertices take
+ * scattered colours, shaded across 512x512 pixels, is refused with the count. */
+static void test_too_many_colours_are_refused(void **state)
+{
+    (void)state;
+    static scene_builder b;
+    builder_init(&b, 0, 0, 2, 0, 0, 0);
+    builder_begin_object(&b, 0xFFFFFFu, TARN_CULL_NONE);
+    builder_grid(&b, 0, 0, 0, 4, 4, 16, 16);
+    static uint32_t colours[BUILDER_VERTICES_MAX];
+    uint32_t seed = 1;
+    for (uint32_t k = 0; k < b.vertex_count; k++) {
+        seed = seed * 1664525u + 1013904223u;
+        colours[k] = seed >> 8;
+    }
+    b.meshes[0].colours = colours;
+    const tarn_frame_config config = {512, 512, tarn_quality_default(), 0};
+    tarn_backdrop_scene backdrop;
+    tarn_error err;
+    assert_int_equal(tarn_backdrop_scene_make(&b.scene, &config, 0, &backdrop, &err), -1);
+    if (strstr(err.message, "colours, at most 65536 fit its 16-bit indices") == NULL)
+        fail_msg("expected the colour count in the error, got: %s", err.message);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -237,6 +263,7 @@ int main(void)
         cmocka_unit_test(test_backdrop_keeps_what_the_water_reads),
         cmocka_unit_test(test_another_frame_is_refused),
         cmocka_unit_test(test_malformed_backdrop_is_refused),
+        cmocka_unit_test(test_too_many_colours_are_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
