@@ -14,17 +14,14 @@ static int same_opaque_quality(const tarn_backdrop *b, const tarn_quality *q)
            b->depth_interpolation == q->depth_interpolation;
 }
 
-const tarn_backdrop *tarn_backdrop_of(const tarn_scene *scene)
+const tarn_backdrop *tarn_backdrop_for(const tarn_scene *scene, const tarn_frame_config *config)
 {
-    return TARN_LINK_BACKDROP && TARN_LINK_STATIC_VERTICES && scene != NULL && scene->static_view != NULL
-        ? scene->static_view->backdrop
+    if (!TARN_LINK_BACKDROP || !TARN_LINK_STATIC_VERTICES || scene == NULL || scene->static_view == NULL)
+        return NULL;
+    const tarn_backdrop *b = scene->static_view->backdrop;
+    return b != NULL && tarn_static_screen_applies(scene, config) && same_opaque_quality(b, &config->quality)
+        ? b
         : NULL;
-}
-
-int tarn_backdrop_applies(const tarn_scene *scene, const tarn_frame_config *config)
-{
-    const tarn_backdrop *b = tarn_backdrop_of(scene);
-    return b != NULL && tarn_static_screen_applies(scene, config) && same_opaque_quality(b, &config->quality);
 }
 
 static int rows_valid(const tarn_backdrop *b, uint16_t width, uint16_t height)
@@ -74,8 +71,8 @@ static void fill_depth_row(const tarn_backdrop *b, int32_t j, int32_t x0, int32_
         return;
     }
     memset(to, IN_FRONT_OF_ALL, (size_t)(kept0 - x0) * bytes);
-    memcpy(to + (size_t)(kept0 - x0) * bytes, (const uint8_t *)b->depth + (r->first + (uint32_t)(kept0 - r->x0)) * bytes,
-           (size_t)(kept1 - kept0) * bytes);
+    const uint8_t *kept = (const uint8_t *)b->depth + (r->first + (uint32_t)(kept0 - r->x0)) * bytes;
+    memcpy(to + (size_t)(kept0 - x0) * bytes, kept, (size_t)(kept1 - kept0) * bytes);
     memset(to + (size_t)(kept1 - x0) * bytes, IN_FRONT_OF_ALL, (size_t)(x1 - kept1) * bytes);
 }
 

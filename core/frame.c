@@ -130,7 +130,7 @@ static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene 
     l.static_bins = binned && TARN_LINK_STATIC_VERTICES && tarn_static_screen_applies(scene, config)
         ? scene->static_view->bins : NULL;
     l.bins = binned && l.static_bins == NULL ? tarn_cluster_bin_count(scene) : 0u;
-    l.backdrop = scene != NULL && tarn_backdrop_applies(scene, config) ? tarn_backdrop_of(scene) : NULL;
+    l.backdrop = tarn_backdrop_for(scene, config);
     return l;
 }
 
@@ -415,7 +415,7 @@ static void draw_water_over_opaque(frame_state *f, const tarn_pixel_rect *tile_r
     draw_water_in_strips(f, tile_rect);
 }
 
-static tarn_status draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, void *user)
+static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, void *user)
 {
     const int32_t size = f->layout.tile;
     const tarn_pixel_rect frame = {0, 0, f->config->width, f->config->height};
@@ -446,7 +446,7 @@ static tarn_status draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sin
         tile.stride = (uint16_t)size;
         tile.depth = NULL; /* the displaced image has no single depth per pixel */
     }
-    return sink != NULL && sink(user, &tile) != 0 ? TARN_ERR_SINK : TARN_OK;
+    return sink != NULL ? sink(user, &tile) : 0;
 }
 
 tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *config,
@@ -469,10 +469,8 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
     if (f.found_bins != NULL) tarn_bin_clusters(scene, &view, f.found_bins);
     if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn_underwater_setup(&f.underwater, &view, config, scene->underwater);
     for (int32_t y = 0; y < config->height; y += f.layout.tile)
-        for (int32_t x = 0; x < config->width; x += f.layout.tile) {
-            status = draw_tile(&f, x, y, sink, user);
-            if (status != TARN_OK) return status;
-        }
+        for (int32_t x = 0; x < config->width; x += f.layout.tile)
+            if (draw_tile(&f, x, y, sink, user) != 0) return TARN_ERR_SINK;
     return TARN_OK;
 }
 

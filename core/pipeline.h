@@ -151,11 +151,10 @@ typedef struct {
 void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex vertex[3],
                           const tarn_object *object);
 
-/* The scene's backdrop (backdrop.c), or NULL; whether it applies to the frame
- * (the static view's screen, the quality it was drawn at); whether its arrays hold
+/* The scene's backdrop (backdrop.c) when it applies to the frame (the static
+ * view's screen, the quality it was drawn at), else NULL; whether its arrays hold
  * what it says for the view's frame. */
-const tarn_backdrop *tarn_backdrop_of(const tarn_scene *scene);
-int tarn_backdrop_applies(const tarn_scene *scene, const tarn_frame_config *config);
+const tarn_backdrop *tarn_backdrop_for(const tarn_scene *scene, const tarn_frame_config *config);
 int tarn_backdrop_valid(const tarn_backdrop *backdrop, const tarn_static_view *view);
 /* The target's rect from the backdrop of a frame `frame_width` pixels wide, as the
  * opaque pass would draw it. */

@@ -135,7 +135,7 @@ tarn_status tarn_scene_check(const tarn_scene *scene)
 tarn_status tarn_scene_check_reach(const tarn_scene *scene, const tarn_frame_config *config)
 {
     /* the objects a backdrop stands for are gone from the scene */
-    if (scene->static_view != NULL && scene->static_view->backdrop != NULL && !tarn_backdrop_applies(scene, config))
+    if (scene->static_view != NULL && scene->static_view->backdrop != NULL && tarn_backdrop_for(scene, config) == NULL)
         return TARN_ERR_SCENE;
     for (uint32_t i = 0; i < scene->object_count; i++)
         if (tarn_water_reach_pixels(scene->objects[i].material->water, config->width) >

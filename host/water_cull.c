@@ -46,8 +46,10 @@ static int may_draw(const frame_water *f, const view_point v[3])
         const double sy = f->height / 2.0 - corner[k].y * f->focal / corner[k].d;
         x0 = fmin(x0, sx), x1 = fmax(x1, sx), y0 = fmin(y0, sy), y1 = fmax(y1, sy);
     }
-    const int i0 = (int)fmax(0.0, floor(x0) - BOX_SPARE_PIXELS), i1 = (int)fmin(f->width - 1.0, ceil(x1) + BOX_SPARE_PIXELS);
-    const int j0 = (int)fmax(0.0, floor(y0) - BOX_SPARE_PIXELS), j1 = (int)fmin(f->height - 1.0, ceil(y1) + BOX_SPARE_PIXELS);
+    const int i0 = (int)fmax(0.0, floor(x0) - BOX_SPARE_PIXELS);
+    const int i1 = (int)fmin(f->width - 1.0, ceil(x1) + BOX_SPARE_PIXELS);
+    const int j0 = (int)fmax(0.0, floor(y0) - BOX_SPARE_PIXELS);
+    const int j1 = (int)fmin(f->height - 1.0, ceil(y1) + BOX_SPARE_PIXELS);
     for (int j = j0; j <= j1; j++)
         for (int i = i0; i <= i1; i++)
             if (f->water[(size_t)j * (size_t)f->width + (size_t)i]) return 1;

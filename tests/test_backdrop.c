@@ -1,7 +1,8 @@
 /* test_backdrop.c: a scene's water drawn over the backdrop of its opaque objects
  * (tarn_scene.h, host/backdrop.h), without its triangles that draw no pixel
- * (host/water_cull.h), gives the frame the whole scene gives, byte for byte: on every scene, at each preset and two times, and with the knobs that move
- * what the water reads (aprons, blocks, tiles, depth, perspective). The backdrop
+ * (host/water_cull.h), gives the frame the whole scene gives, byte for byte: on
+ * every scene, at each preset and two times, and with the knobs that move what the
+ * water reads (aprons, blocks, tiles, depth, perspective). The backdrop
  * keeps the depth only around the water, in as few colours' bits as it can; a frame
  * it does not apply to, a malformed backdrop and a picture of more colours than
  * 16-bit indices name are refused. */
@@ -14,17 +15,9 @@
 #include <cmocka.h>
 
 #include "backdrop.h"
-#include "core_render.h"
+#include "frame_render.h"
 #include "scene_builder.h"
 #include "scene_load.h"
-
-static const char *const scenes[] = {
-    "scenes/pond.json", "scenes/beach.json", "scenes/murky.json", "scenes/lake.json",
-    "scenes/underwater.json", "scenes/effects/refraction.json", "scenes/effects/foam.json",
-    "scenes/effects/sparkles.json", "scenes/extremes/dense.json", "scenes/extremes/far.json",
-    "scenes/extremes/grazing.json", "scenes/extremes/huge.json", "scenes/extremes/steep.json",
-    "scenes/extremes/tiny.json",
-};
 
 /* In place: the scene points into its own struct (its underwater view). */
 static void load(const char *path, tarn_loaded_scene *loaded)
@@ -39,25 +32,6 @@ static void backdrop_make(const tarn_loaded_scene *loaded, const tarn_frame_conf
     if (tarn_backdrop_scene_make(&loaded->scene, config, 0, b, &err) != 0) fail_msg("%s", err.message);
 }
 
-static uint8_t *render(const tarn_scene *scene, const tarn_frame_config *config, const char *what)
-{
-    uint8_t *rgb = malloc(3u * config->width * config->height);
-    assert_non_null(rgb);
-    tarn_error err;
-    if (tarn_core_render(scene, config, rgb, NULL, &err) != 0) fail_msg("%s: %s", what, err.message);
-    return rgb;
-}
-
-static tarn_status render_status(const tarn_scene *scene, const tarn_frame_config *config)
-{
-    const size_t bytes = tarn_frame_memory_bytes(config, scene);
-    void *memory = malloc(bytes > 0 ? bytes : 1u);
-    assert_non_null(memory);
-    const tarn_status status = tarn_render_frame(scene, config, memory, bytes, NULL, NULL);
-    free(memory);
-    return status;
-}
-
 /* The frame at `config` of the scene as loaded, and of its water over the backdrop
  * made for that frame, at each time: equal. */
 static void assert_same_frames(const char *path, tarn_frame_config config, const char *knobs)
@@ -69,8 +43,8 @@ static void assert_same_frames(const char *path, tarn_frame_config config, const
     static const uint32_t times[] = {0, 1750};
     for (size_t t = 0; t < 2; t++) {
         config.time_ms = times[t];
-        uint8_t *whole = render(&loaded.scene, &config, path);
-        uint8_t *over = render(&b.water.scene, &config, "over the backdrop");
+        uint8_t *whole = test_render_rgb(&loaded.scene, &config, path);
+        uint8_t *over = test_render_rgb(&b.water.scene, &config, "over the backdrop");
         if (memcmp(whole, over, 3u * config.width * config.height) != 0)
             fail_msg("%s (%s, %u ms): the backdrop changes the frame", path, knobs, (unsigned)config.time_ms);
         free(whole);
@@ -92,9 +66,11 @@ static tarn_frame_config scene_config(const char *path, tarn_preset preset)
 static void test_every_scene_draws_the_same_frame(void **state)
 {
     (void)state;
-    for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++)
-        for (int preset = 0; preset < TARN_PRESET_COUNT; preset++)
-            assert_same_frames(scenes[k], scene_config(scenes[k], (tarn_preset)preset), tarn_preset_name(preset));
+    for (size_t k = 0; k < TEST_FRAME_SCENE_COUNT; k++)
+        for (int preset = 0; preset < TARN_PRESET_COUNT; preset++) {
+            const char *path = test_frame_scenes[k];
+            assert_same_frames(path, scene_config(path, (tarn_preset)preset), tarn_preset_name(preset));
+        }
 }
 
 /* The knobs that change where the water reads the opaque pass, or how. */
@@ -124,65 +100,81 @@ static void test_every_knob_draws_the_same_frame(void **state)
     }
 }
 
+/* The pond at the fast preset, and its water over the backdrop made for that
+ * frame; made in place, since both point into themselves. */
+typedef struct {
+    tarn_frame_config config;
+    tarn_loaded_scene loaded;
+    tarn_backdrop_scene b;
+} pond_backdrop;
+
+static void pond_backdrop_make(pond_backdrop *p)
+{
+    p->config = scene_config("scenes/pond.json", TARN_PRESET_FAST);
+    load("scenes/pond.json", &p->loaded);
+    backdrop_make(&p->loaded, &p->config, &p->b);
+}
+
+static void pond_backdrop_free(pond_backdrop *p)
+{
+    tarn_backdrop_scene_free(&p->b);
+    tarn_scene_free(&p->loaded);
+}
+
 /* Only water objects are left to draw, and only their triangles that draw a pixel;
  * the pond's 5,719 colours take 13 bits; the depth is kept in the rows the water
  * covers, not beyond. */
 static void test_backdrop_keeps_what_the_water_reads(void **state)
 {
     (void)state;
-    const tarn_frame_config config = scene_config("scenes/pond.json", TARN_PRESET_FAST);
-    tarn_loaded_scene loaded;
-    load("scenes/pond.json", &loaded);
-    tarn_backdrop_scene b;
-    backdrop_make(&loaded, &config, &b);
-    assert_int_equal(b.water.scene.object_count, 1);
-    assert_non_null(b.water.scene.objects[0].material->water);
-    const tarn_backdrop *backdrop = b.water.scene.static_view->backdrop;
-    assert_ptr_equal(backdrop, &b.image.backdrop);
-    assert_int_equal(b.image.colours, 5719);
+    static pond_backdrop pond;
+    pond_backdrop_make(&pond);
+    tarn_backdrop_scene *b = &pond.b;
+    assert_int_equal(b->water.scene.object_count, 1);
+    assert_non_null(b->water.scene.objects[0].material->water);
+    const tarn_backdrop *backdrop = b->water.scene.static_view->backdrop;
+    assert_ptr_equal(backdrop, &b->image.backdrop);
+    assert_int_equal(b->image.colours, 5719);
     assert_int_equal(backdrop->index_bits, 13);
     assert_int_equal(backdrop->palette_count, 8192);
-    assert_int_equal(b.image.colour_words, 240u * 240u * 13u / 16u);
+    assert_int_equal(b->image.colour_words, 240u * 240u * 13u / 16u);
     assert_int_equal(backdrop->rows[0].x1 - backdrop->rows[0].x0, 0); /* the sky */
     assert_int_equal(backdrop->rows[239].x1 - backdrop->rows[239].x0, 0); /* the near shore */
     assert_true(backdrop->depth_count > 20000u && backdrop->depth_count < 240u * 240u / 2u);
     /* the water plane's triangles under the rim and near the camera draw nothing */
-    assert_int_equal(b.cull.triangles_before, 288);
-    assert_int_equal(b.cull.triangles_after, 127);
-    assert_int_equal(b.water.scene.objects[0].mesh->triangle_count, 127);
-    tarn_backdrop_scene_free(&b);
-    tarn_scene_free(&loaded);
+    assert_int_equal(b->cull.triangles_before, 288);
+    assert_int_equal(b->cull.triangles_after, 127);
+    assert_int_equal(b->water.scene.objects[0].mesh->triangle_count, 127);
+    pond_backdrop_free(&pond);
 }
 
 /* A frame the backdrop was not drawn for has no opaque objects to draw: refused. */
 static void test_another_frame_is_refused(void **state)
 {
     (void)state;
-    const tarn_frame_config config = scene_config("scenes/pond.json", TARN_PRESET_FAST);
-    tarn_loaded_scene loaded;
-    load("scenes/pond.json", &loaded);
-    tarn_backdrop_scene b;
-    backdrop_make(&loaded, &config, &b);
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_OK);
+    static pond_backdrop pond;
+    pond_backdrop_make(&pond);
+    const tarn_frame_config config = pond.config;
+    tarn_backdrop_scene *b = &pond.b;
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_OK);
     tarn_frame_config other = config;
     other.width = 200;
-    assert_int_equal(render_status(&b.water.scene, &other), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&b->water.scene, &other), TARN_ERR_SCENE);
     other = config;
     other.quality.depth_bits = 32;
-    assert_int_equal(render_status(&b.water.scene, &other), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&b->water.scene, &other), TARN_ERR_SCENE);
     other = config;
     other.quality.perspective = TARN_PERSPECTIVE_PIXEL;
-    assert_int_equal(render_status(&b.water.scene, &other), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&b->water.scene, &other), TARN_ERR_SCENE);
     other = config; /* knobs that leave the opaque pixels alone */
     other.quality.tile_size = 16;
     other.quality.water_block = 1;
     other.quality.exp2.entries = 64;
-    assert_int_equal(render_status(&b.water.scene, &other), TARN_OK);
-    tarn_scene moved = b.water.scene;
+    assert_int_equal(test_render_status(&b->water.scene, &other), TARN_OK);
+    tarn_scene moved = b->water.scene;
     moved.camera.position.y += 65536;
-    assert_int_equal(render_status(&moved, &config), TARN_ERR_SCENE);
-    tarn_backdrop_scene_free(&b);
-    tarn_scene_free(&loaded);
+    assert_int_equal(test_render_status(&moved, &config), TARN_ERR_SCENE);
+    pond_backdrop_free(&pond);
 }
 
 /* Each malformed field is refused before a tile is drawn: a palette shorter than
@@ -190,45 +182,43 @@ static void test_another_frame_is_refused(void **state)
 static void test_malformed_backdrop_is_refused(void **state)
 {
     (void)state;
-    const tarn_frame_config config = scene_config("scenes/pond.json", TARN_PRESET_FAST);
-    tarn_loaded_scene loaded;
-    load("scenes/pond.json", &loaded);
-    tarn_backdrop_scene b;
-    backdrop_make(&loaded, &config, &b);
-    tarn_backdrop *backdrop = &b.image.backdrop;
+    static pond_backdrop pond;
+    pond_backdrop_make(&pond);
+    const tarn_frame_config config = pond.config;
+    tarn_backdrop_scene *b = &pond.b;
+    tarn_backdrop *backdrop = &b->image.backdrop;
     const tarn_backdrop saved = *backdrop;
     backdrop->index_bits = 12; /* a 4,096-colour palette is not 8,192 */
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
     backdrop->index_bits = 17;
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
     backdrop->palette_count = 0;
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
     backdrop->palette = NULL;
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
-    b.image.palette[8191] = 0x01000000u; /* a bit the water pass marks pixels with */
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
-    b.image.palette[8191] = 0u;
+    b->image.palette[8191] = 0x01000000u; /* a bit the water pass marks pixels with */
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
+    b->image.palette[8191] = 0u;
     backdrop->depth_count -= 1u; /* the last row's span now reads past it */
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
-    const tarn_backdrop_row row = b.image.rows[120];
-    b.image.rows[120].x1 = 241;
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
-    b.image.rows[120] = row;
-    b.image.rows[120].x0 = (uint16_t)(row.x1 + 1u);
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
-    b.image.rows[120] = row;
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_OK);
+    const tarn_backdrop_row row = b->image.rows[120];
+    b->image.rows[120].x1 = 241;
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
+    b->image.rows[120] = row;
+    b->image.rows[120].x0 = (uint16_t)(row.x1 + 1u);
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
+    b->image.rows[120] = row;
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_OK);
     backdrop->palette_count -= 1u; /* index 8,191 would name no colour */
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
-    assert_int_equal(render_status(&b.water.scene, &config), TARN_OK);
-    tarn_backdrop_scene_free(&b);
-    tarn_scene_free(&loaded);
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_OK);
+    pond_backdrop_free(&pond);
 }
 
 /* More colours than 16-bit indices name: a 16x16 grid of quads whose vertices take

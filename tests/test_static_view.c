@@ -12,17 +12,9 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "core_render.h"
+#include "frame_render.h"
 #include "scene_load.h"
 #include "static_view.h"
-
-static const char *const scenes[] = {
-    "scenes/pond.json", "scenes/beach.json", "scenes/murky.json", "scenes/lake.json",
-    "scenes/underwater.json", "scenes/effects/refraction.json", "scenes/effects/fresnel.json",
-    "scenes/effects/sparkles.json", "scenes/extremes/dense.json", "scenes/extremes/far.json",
-    "scenes/extremes/grazing.json", "scenes/extremes/huge.json", "scenes/extremes/steep.json",
-    "scenes/extremes/tiny.json",
-};
 
 /* The loaded scene with its static view made for `made_for`. */
 typedef struct {
@@ -49,15 +41,6 @@ static void static_scene_free(static_scene *s)
     tarn_scene_free(&s->loaded);
 }
 
-static uint8_t *render(const tarn_scene *scene, const tarn_frame_config *config, const char *path)
-{
-    uint8_t *rgb = malloc(3u * config->width * config->height);
-    assert_non_null(rgb);
-    tarn_error err;
-    if (tarn_core_render(scene, config, rgb, NULL, &err) != 0) fail_msg("%s: %s", path, err.message);
-    return rgb;
-}
-
 /* The frame of `config` from the scene as loaded and with static vertices made for
  * `made_for`: equal, byte for byte. */
 static void assert_same_frame(const char *path, const tarn_frame_config *config, const tarn_frame_config *made_for,
@@ -65,8 +48,8 @@ static void assert_same_frame(const char *path, const tarn_frame_config *config,
 {
     static_scene s;
     static_scene_make(&s, path, made_for, without_positions);
-    uint8_t *plain = render(&s.loaded.scene, config, path);
-    uint8_t *with_static = render(&s.scene, config, path);
+    uint8_t *plain = test_render_rgb(&s.loaded.scene, config, path);
+    uint8_t *with_static = test_render_rgb(&s.scene, config, path);
     const size_t bytes = 3u * config->width * config->height;
     if (memcmp(plain, with_static, bytes) != 0)
         fail_msg("%s (subpixel bits %u, %u ms): static vertices change the frame", path,
@@ -90,15 +73,15 @@ static void test_every_scene_draws_the_same_frame(void **state)
 {
     (void)state;
     static const uint32_t times[] = {0, 1500};
-    for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++)
+    for (size_t k = 0; k < TEST_FRAME_SCENE_COUNT; k++)
         for (int preset = 0; preset < TARN_PRESET_COUNT; preset++)
             for (size_t t = 0; t < 2; t++) {
-                const tarn_frame_config config = scene_config(scenes[k], (tarn_preset)preset, times[t]);
-                assert_same_frame(scenes[k], &config, &config, (int)t);
+                const tarn_frame_config config = scene_config(test_frame_scenes[k], (tarn_preset)preset, times[t]);
+                assert_same_frame(test_frame_scenes[k], &config, &config, (int)t);
                 /* made at the coarsest precision: this one projects and bins again */
                 tarn_frame_config coarse = config;
                 coarse.quality.subpixel_bits = TARN_SUBPIXEL_BITS_MIN;
-                assert_same_frame(scenes[k], &config, &coarse, (int)t);
+                assert_same_frame(test_frame_scenes[k], &config, &coarse, (int)t);
             }
 }
 
@@ -133,12 +116,12 @@ static void test_static_bins_stand_in_for_found_ones(void **state)
     tarn_frame_config smaller = fast;
     smaller.width = 200;
     assert_int_equal(tarn_frame_memory_bytes(&smaller, &s.scene), tarn_frame_memory_bytes(&smaller, &s.loaded.scene));
-    uint8_t *drawn = render(&s.scene, &fast, "pond");
+    uint8_t *drawn = test_render_rgb(&s.scene, &fast, "pond");
     for (uint32_t i = 0; i < s.vertices->bin_count; i++) {
         const tarn_cluster_bin empty = {255, 255, 0, 0};
         s.vertices->bins[i] = empty;
     }
-    uint8_t *binned_out = render(&s.scene, &fast, "pond, empty bins");
+    uint8_t *binned_out = test_render_rgb(&s.scene, &fast, "pond, empty bins");
     const uint8_t background[3] = {0x87, 0xce, 0xeb};
     for (size_t p = 0; p < (size_t)fast.width * fast.height; p++)
         assert_memory_equal(&binned_out[3 * p], background, 3);
@@ -146,16 +129,6 @@ static void test_static_bins_stand_in_for_found_ones(void **state)
     free(drawn);
     free(binned_out);
     static_scene_free(&s);
-}
-
-static tarn_status render_status(const tarn_scene *scene, const tarn_frame_config *config)
-{
-    const size_t bytes = tarn_frame_memory_bytes(config, scene);
-    void *memory = malloc(bytes > 0 ? bytes : 1u);
-    assert_non_null(memory);
-    const tarn_status status = tarn_render_frame(scene, config, memory, bytes, NULL, NULL);
-    free(memory);
-    return status;
 }
 
 /* A camera moved after the bake: with positions the frame computes every vertex
@@ -170,13 +143,13 @@ static void test_moved_camera_drops_static_vertices(void **state)
     kept.scene.camera.position.x += 65536;
     bare.scene.camera.position.x += 65536;
     kept.loaded.scene.camera.position.x += 65536;
-    uint8_t *moved = render(&kept.loaded.scene, &config, "moved");
-    uint8_t *with_static = render(&kept.scene, &config, "moved, static");
+    uint8_t *moved = test_render_rgb(&kept.loaded.scene, &config, "moved");
+    uint8_t *with_static = test_render_rgb(&kept.scene, &config, "moved, static");
     assert_memory_equal(moved, with_static, 3u * config.width * config.height);
-    assert_int_equal(render_status(&bare.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&bare.scene, &config), TARN_ERR_SCENE);
     bare.scene.light.colour_rgb ^= 1u;
     bare.scene.camera = bare.vertices->view.camera;
-    assert_int_equal(render_status(&bare.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&bare.scene, &config), TARN_ERR_SCENE);
     free(moved);
     free(with_static);
     static_scene_free(&kept);
@@ -190,31 +163,31 @@ static void test_out_of_range_static_vertices_are_refused(void **state)
     const tarn_frame_config config = scene_config("scenes/pond.json", TARN_PRESET_FAST, 0);
     static_scene s;
     static_scene_make(&s, "scenes/pond.json", &config, 1);
-    assert_int_equal(render_status(&s.scene, &config), TARN_OK);
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_OK);
     tarn_static_vertex *v = &s.vertices->vertices[0][0];
     const tarn_static_vertex saved = *v;
     v->lit[1] = 65281;
-    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_ERR_SCENE);
     *v = saved;
     v->fresnel = 32769;
-    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_ERR_SCENE);
     *v = saved;
     v->inv_depth = (1u << 30) + 1u;
-    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_ERR_SCENE);
     *v = saved;
     v->inv_depth = 1u;
     v->screen_x = INT16_MAX;
-    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_ERR_SCENE);
     v->screen_x = 0;
     v->screen_y = INT16_MIN;
-    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_ERR_SCENE);
     *v = saved;
-    assert_int_equal(render_status(&s.scene, &config), TARN_OK);
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_OK);
     s.vertices->view.subpixel_bits = 0;
-    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_ERR_SCENE);
     s.vertices->view.subpixel_bits = config.quality.subpixel_bits;
     s.vertices->view.width = 0;
-    assert_int_equal(render_status(&s.scene, &config), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_ERR_SCENE);
     static_scene_free(&s);
 }
 

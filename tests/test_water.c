@@ -12,7 +12,7 @@
 #include <cmocka.h>
 #include <math.h>
 
-#include "core_render.h"
+#include "frame_render.h"
 #include "scene_builder.h"
 #include "water.h"
 
@@ -71,10 +71,7 @@ static water_scene *new_scene(int with_water)
 
 static uint8_t *render(const water_scene *s, tarn_frame_config config)
 {
-    uint8_t *rgb = malloc(3u * config.width * config.height);
-    tarn_error err;
-    if (tarn_core_render(&s->b.scene, &config, rgb, NULL, &err) != 0) fail_msg("%s", err.message);
-    return rgb;
+    return test_render_rgb(&s->b.scene, &config, "water scene");
 }
 
 static tarn_frame_config config_of(void)

@@ -13,7 +13,7 @@
 #include <cmocka.h>
 
 #include "compare.h"
-#include "core_render.h"
+#include "frame_render.h"
 #include "reference.h"
 #include "scene_load.h"
 #include "water.h" /* tarn_water_block */
@@ -27,11 +27,8 @@ static void load(const char *path, tarn_loaded_scene *s)
 
 static uint8_t *render(const tarn_loaded_scene *s, const char *path, tarn_quality quality, uint32_t time_ms)
 {
-    tarn_frame_config config = {s->width, s->height, quality, time_ms};
-    uint8_t *rgb = malloc(3u * s->width * s->height);
-    tarn_error err;
-    if (tarn_core_render(&s->scene, &config, rgb, NULL, &err) != 0) fail_msg("%s: %s", path, err.message);
-    return rgb;
+    const tarn_frame_config config = {s->width, s->height, quality, time_ms};
+    return test_render_rgb(&s->scene, &config, path);
 }
 
 static tarn_quality with_block(tarn_preset preset, uint8_t block)
