@@ -103,15 +103,6 @@ static int tile_fits(const tarn_panel *panel, const tarn_tile *tile)
 /* Dither thresholds, the 4x4 Bayer matrix indexed by (y & 3) * 4 + (x & 3). */
 static const uint8_t bayer4[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
 
-/* floor((value * levels + threshold) / 255) for value <= 255, levels <= 63 and
- * threshold < 256: the numerator stays below 16575, where multiplying by 0x8081 and
- * shifting by 23 divides by 255 exactly (the error stays under 1/255 of a step), so
- * the Cortex-M0 needs no division. */
-static uint32_t quantise(uint32_t value, uint32_t levels, uint32_t threshold)
-{
-    return ((value * levels + threshold) * 0x8081u) >> 23;
-}
-
 /* Rounding to nearest is the threshold 127 (255 is odd, so there are no ties). The
  * dither replaces it with 16 * bayer + 8, from 8 to 248: the same as adding between
  * -0.47 and +0.47 of an output step before rounding, evenly spread over each 4x4 block.
@@ -123,12 +114,46 @@ static uint32_t dither_threshold(uint32_t x, uint32_t y, int dither)
     return dither ? 16u * bayer4[(y & 3u) * 4u + (x & 3u)] + 8u : 127u;
 }
 
-static uint16_t rgb565_at_threshold(uint32_t rgb, uint32_t threshold)
+/* What a threshold adds before the division by 255: to red and blue side by side
+ * in the halves of a word, and to green, each with the 1 of halves_over_255. */
+typedef struct {
+    uint32_t rb, g;
+} rgb565_threshold;
+
+static rgb565_threshold threshold_of(uint32_t threshold)
 {
-    uint32_t r = quantise((rgb >> 16) & 0xFFu, 31u, threshold);
-    uint32_t g = quantise((rgb >> 8) & 0xFFu, 63u, threshold);
-    uint32_t b = quantise(rgb & 0xFFu, 31u, threshold);
-    return (uint16_t)((r << 11) | (g << 5) | b);
+    const rgb565_threshold t = {(threshold + 1u) * 0x00010001u, threshold + 1u};
+    return t;
+}
+
+/* Each channel floor((value * levels + threshold) / 255), with floor(n / 255) as
+ * floor((n + 1 + floor(n / 256)) / 256), exact for n below 65535: no division,
+ * which the Cortex-M0 lacks. Red and blue (31 levels) share the halves of one word,
+ * as 31 * 255 + 255 stays below 2^16; green (63 levels) goes alone. */
+static inline uint16_t rgb565_with(uint32_t rgb, rgb565_threshold t)
+{
+    uint32_t rb = rgb & 0x00FF00FFu;
+    rb = (rb << 5) - rb + t.rb;
+    rb = (rb + ((rb >> 8) & 0x00FF00FFu)) >> 8; /* red in bits 16..20, blue in 0..4 */
+    uint32_t g = (rgb >> 8) & 0xFFu;
+    g = (g << 6) - g + t.g;
+    g = (g + (g >> 8)) >> 8;
+    return (uint16_t)(((rb >> 5) & 0xF800u) | (g << 5) | (rb & 0x1Fu));
+}
+
+uint16_t tarn_rgb565(uint32_t rgb, uint16_t x, uint16_t y, int dither)
+{
+    return rgb565_with(rgb, threshold_of(dither_threshold(x, y, dither)));
+}
+
+/* A row of pixels at `rgb` to RGB565 at `out`, high byte first, pixel i at the
+ * dither phase i % 4. Four at a time: the phases' thresholds stay put. */
+static void convert_row(uint8_t *out, const uint32_t *rgb, uint32_t width, const rgb565_threshold t[4])
+{
+    uint32_t i = 0;
+    for (; i + 4u <= width; i += 4u)
+        for (uint32_t k = 0; k < 4u; k++) put_u16_be(out + 2u * (i + k), rgb565_with(rgb[i + k], t[k]));
+    for (; i < width; i++) put_u16_be(out + 2u * i, rgb565_with(rgb[i], t[i & 3u]));
 }
 
 /* Rows [first, first + count) of the tile as RGB565, high byte first, dithered at
@@ -137,12 +162,10 @@ static uint16_t rgb565_at_threshold(uint32_t rgb, uint32_t threshold)
 static void convert_rows(uint8_t *out, size_t out_stride, const tarn_tile *tile, uint16_t first,
                          uint16_t count, int dither)
 {
-    for (uint16_t row = first; row < first + count; row++, out += out_stride) {
-        const uint32_t *rgb = tile->rgb + (size_t)row * tile->stride;
-        uint32_t thresholds[4];
-        for (uint32_t k = 0; k < 4u; k++) thresholds[k] = dither_threshold(tile->x + k, tile->y + row, dither);
-        for (uint16_t i = 0; i < tile->width; i++)
-            put_u16_be(out + 2u * i, rgb565_at_threshold(rgb[i], thresholds[i & 3u]));
+    for (uint32_t row = first; row < (uint32_t)first + count; row++, out += out_stride) {
+        rgb565_threshold t[4];
+        for (uint32_t k = 0; k < 4u; k++) t[k] = threshold_of(dither_threshold(tile->x + k, tile->y + row, dither));
+        convert_row(out, tile->rgb + (size_t)row * tile->stride, tile->width, t);
     }
 }
 
@@ -251,7 +274,3 @@ tarn_status tarn_panel_band_add_tile(tarn_panel_band *band, const tarn_tile *til
     return send_band(band) == 0 ? TARN_OK : TARN_ERR_SINK;
 }
 
-uint16_t tarn_rgb565(uint32_t rgb, uint16_t x, uint16_t y, int dither)
-{
-    return rgb565_at_threshold(rgb, dither_threshold(x, y, dither));
-}
