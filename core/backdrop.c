@@ -2,6 +2,7 @@
  * instead of drawn: palette colours at every pixel, and depth where the backdrop
  * keeps it, which is wherever water draws or samples. */
 #include "pipeline.h"
+#include "underwater.h"
 
 #include <string.h>
 
@@ -14,46 +15,100 @@ static int same_opaque_quality(const tarn_backdrop *b, const tarn_quality *q)
            b->depth_interpolation == q->depth_interpolation;
 }
 
+/* And those that shape the water's still terms, with nothing that moves a sample:
+ * no apron for refraction to use, no underwater view. */
+static int still_water_applies(const tarn_backdrop *b, const tarn_scene *scene, const tarn_frame_config *config)
+{
+    const tarn_quality *q = &config->quality;
+    return TARN_LINK_STILL_WATER && b->water_block == q->water_block && b->fog_argument_bits == q->fog_argument_bits &&
+           b->exp2_entries == q->exp2.entries && b->exp2_interpolate == q->exp2.interpolate &&
+           tarn_frame_apron_pixels(scene, config) == 0 && !tarn_underwater_active(scene);
+}
+
 const tarn_backdrop *tarn_backdrop_for(const tarn_scene *scene, const tarn_frame_config *config)
 {
     if (!TARN_LINK_BACKDROP || !TARN_LINK_STATIC_VERTICES || scene == NULL || scene->static_view == NULL)
         return NULL;
     const tarn_backdrop *b = scene->static_view->backdrop;
-    return b != NULL && tarn_static_screen_applies(scene, config) && same_opaque_quality(b, &config->quality)
+    return b != NULL && tarn_static_screen_applies(scene, config) && same_opaque_quality(b, &config->quality) &&
+                   (!b->still_water || still_water_applies(b, scene, config))
         ? b
         : NULL;
 }
 
-static int rows_valid(const tarn_backdrop *b, uint16_t width, uint16_t height)
+/* Each row's spans inside the frame, left to right and apart, their depth inside
+ * the kept depth. */
+static int spans_valid(const tarn_backdrop *b, uint16_t width, uint16_t height)
 {
+    if (b->row_spans[0] != 0u || b->row_spans[height] != b->span_count) return 0;
     for (uint32_t j = 0; j < height; j++) {
-        const tarn_backdrop_row *r = &b->rows[j];
-        if (r->x0 > r->x1 || r->x1 > width || r->first > b->depth_count ||
-            (uint32_t)(r->x1 - r->x0) > b->depth_count - r->first)
-            return 0;
+        if (b->row_spans[j] > b->row_spans[j + 1]) return 0;
+        uint32_t end = 0;
+        for (uint32_t k = b->row_spans[j]; k < b->row_spans[j + 1]; k++) {
+            const tarn_backdrop_span *s = &b->spans[k];
+            if (s->x0 < end || s->x0 >= s->x1 || s->x1 > width || s->first > b->depth_count ||
+                (uint32_t)(s->x1 - s->x0) > b->depth_count - s->first)
+                return 0;
+            end = s->x1;
+        }
     }
     return 1;
 }
 
-/* Colours with nothing above 0xRRGGBB: the water pass marks the pixels it writes
- * in the bits above. */
-static int palette_valid(const tarn_backdrop *b)
+/* The still-water marks that name a water object of the scene, and 0 (none), as a
+ * bit each: mark m is bit m % 32 of word m / 32. */
+static void water_marks(const tarn_scene *scene, uint32_t words[2])
 {
-    for (uint32_t k = 0; k < b->palette_count; k++)
-        if (b->palette[k] > 0xFFFFFFu) return 0;
+    words[0] = 1u;
+    words[1] = 0u;
+    for (uint32_t k = 0; k < scene->object_count && k < TARN_BACKDROP_STILL_OBJECTS_MAX; k++) {
+        const tarn_material *m = scene->objects[k].material;
+        if (m != NULL && m->water != NULL) words[(k + 1u) >> 5] |= 1u << ((k + 1u) & 31u);
+    }
+}
+
+/* Colours with nothing above 0xRRGGBB but a still-water backdrop's marks, each
+ * object mark of a water object: the water pass marks the pixels it writes in the
+ * bits above, and the frame walks the water objects' marks only. */
+static int palette_valid(const tarn_backdrop *b, const tarn_scene *scene)
+{
+    if (!b->still_water) {
+        for (uint32_t k = 0; k < b->palette_count; k++)
+            if (b->palette[k] > 0xFFFFFFu) return 0;
+        return 1;
+    }
+    uint32_t marks[2];
+    water_marks(scene, marks);
+    for (uint32_t k = 0; k < b->palette_count; k++) {
+        const uint32_t colour = b->palette[k], mark = (colour & TARN_BACKDROP_STILL_OBJECT) >> TARN_BACKDROP_STILL_SHIFT;
+        if ((colour & TARN_WATER_MARK) != 0u || (marks[mark >> 5] >> (mark & 31u) & 1u) == 0u) return 0;
+    }
+    return 1;
+}
+
+/* Each water object's plane, its shift within a word. */
+static int planes_valid(const tarn_backdrop *b, const tarn_scene *scene)
+{
+    if (!b->still_water) return 1;
+    if (b->planes == NULL) return 0;
+    for (uint32_t k = 0; k < scene->object_count; k++)
+        if (b->planes[k].uv_shift > 31u) return 0;
     return 1;
 }
 
 /* A palette of 2^index_bits colours holds every index the bits can spell, so no
  * pixel's index needs checking: checked, they would cost each frame as much again
  * as reading them. */
-int tarn_backdrop_valid(const tarn_backdrop *b, const tarn_static_view *view)
+int tarn_backdrop_valid(const tarn_backdrop *b, const tarn_scene *scene)
 {
-    if (b->palette == NULL || b->colour == NULL || b->rows == NULL || b->index_bits < 1u ||
+    if (b->palette == NULL || b->colour == NULL || b->row_spans == NULL || (b->span_count > 0u && b->spans == NULL) ||
+        b->index_bits < 1u ||
         b->index_bits > 16u || b->palette_count != (1u << b->index_bits) ||
-        (b->depth_bits != 16 && b->depth_bits != 32) || (b->depth_count > 0u && b->depth == NULL))
+        (b->depth_bits != 16 && b->depth_bits != 32) || (b->depth_count > 0u && b->depth == NULL) ||
+        b->still_water > 1u)
         return 0;
-    return palette_valid(b) && rows_valid(b, view->width, view->height);
+    const tarn_static_view *view = scene->static_view;
+    return palette_valid(b, scene) && planes_valid(b, scene) && spans_valid(b, view->width, view->height);
 }
 
 /* A depth every water pixel lies behind: all ones, in either form. */
@@ -63,17 +118,18 @@ int tarn_backdrop_valid(const tarn_backdrop *b, const tarn_static_view *view)
  * front of all water, which drew nowhere there. */
 static void fill_depth_row(const tarn_backdrop *b, int32_t j, int32_t x0, int32_t x1, uint8_t *to, size_t bytes)
 {
-    const tarn_backdrop_row *r = &b->rows[j];
-    const int32_t kept0 = r->x0 > x0 ? r->x0 : x0;
-    const int32_t kept1 = r->x1 < x1 ? r->x1 : x1;
-    if (kept0 >= kept1) {
-        memset(to, IN_FRONT_OF_ALL, (size_t)(x1 - x0) * bytes);
-        return;
+    int32_t filled = x0; /* the pixels before it are */
+    for (uint32_t k = b->row_spans[j]; k < b->row_spans[j + 1] && b->spans[k].x0 < x1; k++) {
+        const tarn_backdrop_span *s = &b->spans[k];
+        const int32_t kept0 = s->x0 > filled ? s->x0 : filled;
+        const int32_t kept1 = s->x1 < x1 ? s->x1 : x1;
+        if (kept0 >= kept1) continue;
+        memset(to + (size_t)(filled - x0) * bytes, IN_FRONT_OF_ALL, (size_t)(kept0 - filled) * bytes);
+        memcpy(to + (size_t)(kept0 - x0) * bytes, (const uint8_t *)b->depth + (s->first + (uint32_t)(kept0 - s->x0)) * bytes,
+               (size_t)(kept1 - kept0) * bytes);
+        filled = kept1;
     }
-    memset(to, IN_FRONT_OF_ALL, (size_t)(kept0 - x0) * bytes);
-    const uint8_t *kept = (const uint8_t *)b->depth + (r->first + (uint32_t)(kept0 - r->x0)) * bytes;
-    memcpy(to + (size_t)(kept0 - x0) * bytes, kept, (size_t)(kept1 - kept0) * bytes);
-    memset(to + (size_t)(kept1 - x0) * bytes, IN_FRONT_OF_ALL, (size_t)(x1 - kept1) * bytes);
+    memset(to + (size_t)(filled - x0) * bytes, IN_FRONT_OF_ALL, (size_t)(x1 - filled) * bytes);
 }
 
 /* Row j's colours over [x0, x1) into `to`. */
@@ -104,6 +160,14 @@ void tarn_backdrop_fill(const tarn_backdrop *b, uint16_t frame_width, tarn_tile_
     for (int32_t j = t->rect.y0; j < t->rect.y1; j++) {
         const int32_t first = (j - t->origin_y) * t->stride - t->origin_x + t->rect.x0;
         fill_colour_row(b, frame_width, j, t->rect.x0, t->rect.x1, t->colour + first);
-        fill_depth_row(b, j, t->rect.x0, t->rect.x1, (uint8_t *)t->depth + (size_t)first * depth_bytes, depth_bytes);
+        if (depth_bytes != 0u)
+            fill_depth_row(b, j, t->rect.x0, t->rect.x1, (uint8_t *)t->depth + (size_t)first * depth_bytes, depth_bytes);
     }
+}
+
+uint32_t tarn_backdrop_foam_band(const tarn_backdrop *b, int32_t i, int32_t j)
+{
+    for (uint32_t k = b->row_spans[j]; k < b->row_spans[j + 1] && i >= b->spans[k].x0; k++)
+        if (i < b->spans[k].x1) return ((const uint16_t *)b->depth)[b->spans[k].first + (uint32_t)(i - b->spans[k].x0)];
+    return 65536u;
 }

@@ -98,10 +98,13 @@ typedef struct {
     int underwater;
     int in_place;         /* the water pass draws over the opaque buffers */
     size_t depth_bytes;
-    uint32_t blocks;      /* water block slots (tarn_water_block), 0 without */
+    uint32_t blocks;      /* water block slots, 0 without: tarn_water_block, or over
+                             still water tarn_still_block */
+    size_t block_bytes;   /* one slot's */
     uint32_t bins;        /* cluster bins found in the frame's memory, 0 without */
     const tarn_cluster_bin *static_bins; /* the static view's instead, or NULL */
     const tarn_backdrop *backdrop; /* the opaque pass's pixels, or NULL: drawn */
+    int still;            /* the backdrop holds the water's still terms (tarn_scene.h) */
 } frame_layout;
 
 static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene *scene)
@@ -121,23 +124,27 @@ static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene 
     l.in_place = l.water && !l.underwater && l.apron == 0;
     l.region = l.tile + 2 * l.apron;
     l.water_region = l.tile + 2 * l.under_apron;
-    l.depth_bytes = config->quality.depth_bits / 8u;
+    l.backdrop = tarn_backdrop_for(scene, config);
+    /* over still water, no water triangle is drawn: no water pass, no copy, and no
+     * depth but the backdrop's own */
+    l.still = TARN_LINK_STILL_WATER && l.backdrop != NULL && l.backdrop->still_water;
+    l.depth_bytes = l.still ? 0u : config->quality.depth_bits / 8u;
     /* the underwater pass reads displaced water pixels over an apron that need not
      * hold whole blocks */
     l.blocks = TARN_LINK_WATER_BLOCKS && l.water && !l.underwater && config->quality.water_block == 2
         ? (uint32_t)l.tile / 2u : 0u;
+    l.block_bytes = l.still ? sizeof(tarn_still_block) : sizeof(tarn_water_block);
     const int binned = scene != NULL && config->quality.cluster_bins;
     l.static_bins = binned && TARN_LINK_STATIC_VERTICES && tarn_static_screen_applies(scene, config)
         ? scene->static_view->bins : NULL;
     l.bins = binned && l.static_bins == NULL ? tarn_cluster_bin_count(scene) : 0u;
-    l.backdrop = tarn_backdrop_for(scene, config);
     return l;
 }
 
 /* Pixels of the water pass's own colour and depth buffers. */
 static size_t water_pixels(const frame_layout *l)
 {
-    if (!l->water) return 0u;
+    if (!l->water || l->still) return 0u;
     if (l->in_place) return (size_t)l->tile * WATER_STRIP_ROWS;
     return (size_t)l->water_region * (size_t)l->water_region;
 }
@@ -147,7 +154,7 @@ static size_t layout_bytes(const frame_layout *l)
     const size_t region = (size_t)l->region * (size_t)l->region;
     const size_t tile = (size_t)l->tile * (size_t)l->tile;
     return (region + water_pixels(l)) * (4u + l->depth_bytes) + (l->underwater ? tile * 4u : 0u) +
-           (size_t)l->blocks * sizeof(tarn_water_block) + (size_t)l->bins * sizeof(tarn_cluster_bin);
+           (size_t)l->blocks * l->block_bytes + (size_t)l->bins * sizeof(tarn_cluster_bin);
 }
 
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
@@ -214,8 +221,10 @@ static void carve_buffers(frame_state *f, void *memory)
     next += water * 4u;
     f->final = (uint32_t *)(void *)next;
     next += l->underwater ? (size_t)l->tile * (size_t)l->tile * 4u : 0u;
-    f->water_context.blocks = l->blocks != 0u ? (tarn_water_block *)(void *)next : NULL;
-    next += (size_t)l->blocks * sizeof(tarn_water_block);
+    f->water_context.blocks = l->blocks != 0u && !l->still ? (tarn_water_block *)(void *)next : NULL;
+    f->water_context.still_blocks = l->blocks != 0u && l->still ? (tarn_still_block *)(void *)next : NULL;
+    if (l->blocks != 0u) memset(next, 0, (size_t)l->blocks * l->block_bytes);
+    next += (size_t)l->blocks * l->block_bytes;
     f->opaque.depth = next;
     next += region * l->depth_bytes;
     f->water_depth = next;
@@ -229,8 +238,8 @@ static void carve_buffers(frame_state *f, void *memory)
     f->opaque.water_mark = f->opaque.water_overlap = 0u;
     f->water.water = &f->water_context;
     f->water_context.object = NULL; /* set up for the frame's first water object, kept across tiles */
+    f->water_context.still_walks = 0u;
     f->water_context.triangle_serial = 0u;
-    if (l->blocks != 0u) memset(f->water_context.blocks, 0, (size_t)l->blocks * sizeof(tarn_water_block));
     f->water.view = f->opaque.view = f->view;
     f->water.config = f->opaque.config = f->config;
 }
@@ -415,26 +424,54 @@ static void draw_water_over_opaque(frame_state *f, const tarn_pixel_rect *tile_r
     draw_water_in_strips(f, tile_rect);
 }
 
+/* The still water's moving terms over the tile's pixels, each water object's in
+ * turn: no triangle is drawn, and every mark the backdrop set is consumed, since
+ * the scene check lets object marks name water objects only. */
+static void draw_still_water(frame_state *f)
+{
+    const tarn_backdrop *b = f->layout.backdrop;
+    tarn_water_context *c = &f->water_context;
+    begin_water(f);
+    for (uint32_t k = 0; k < f->scene->object_count && k < TARN_BACKDROP_STILL_OBJECTS_MAX; k++) {
+        const tarn_object *object = &f->scene->objects[k];
+        if (object->material->water == NULL) continue;
+        if (c->object != object) tarn_water_context_setup(c, f->view, f->config, object);
+        tarn_water_still_tile(c, b, k, &f->opaque);
+    }
+}
+
+/* The pixels of the tile at (x, y) into the opaque target's buffers, or, with
+ * water drawn from a copy, the water target's: the target the sink reads. */
+static const tarn_tile_target *draw_tile_pixels(frame_state *f, int32_t x, int32_t y, const tarn_pixel_rect *tile_rect)
+{
+    const tarn_pixel_rect frame = {0, 0, f->config->width, f->config->height};
+    tarn_tile_target *o = &f->opaque;
+    o->origin_x = x - f->layout.apron;
+    o->origin_y = y - f->layout.apron;
+    if (TARN_LINK_STILL_WATER && f->layout.still) {
+        o->rect = *tile_rect;
+        draw_opaque(f);
+        draw_still_water(f);
+        return o;
+    }
+    int has_water;
+    o->rect = opaque_rect(f, tile_rect, &frame, &has_water);
+    draw_opaque(f);
+    if (!(TARN_LINK_WATER || TARN_LINK_UNDERWATER) || !has_water) return o;
+    if (f->layout.in_place) {
+        draw_water_over_opaque(f, tile_rect);
+        return o;
+    }
+    draw_water(f, x, y, &frame);
+    return &f->water;
+}
+
 static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, void *user)
 {
     const int32_t size = f->layout.tile;
     const tarn_pixel_rect frame = {0, 0, f->config->width, f->config->height};
     const tarn_pixel_rect tile_rect = around(x, y, size, 0, &frame);
-    tarn_tile_target *o = &f->opaque;
-    int has_water;
-    o->origin_x = x - f->layout.apron;
-    o->origin_y = y - f->layout.apron;
-    o->rect = opaque_rect(f, &tile_rect, &frame, &has_water);
-    draw_opaque(f);
-    const tarn_tile_target *out = o;
-    if ((TARN_LINK_WATER || TARN_LINK_UNDERWATER) && has_water) {
-        if (f->layout.in_place) {
-            draw_water_over_opaque(f, &tile_rect);
-        } else {
-            draw_water(f, x, y, &frame);
-            out = &f->water;
-        }
-    }
+    const tarn_tile_target *out = draw_tile_pixels(f, x, y, &tile_rect);
     const int32_t first = (y - out->origin_y) * out->stride + (x - out->origin_x);
     tarn_tile tile = {(uint16_t)x, (uint16_t)y, (uint16_t)(tile_rect.x1 - x), (uint16_t)(tile_rect.y1 - y),
                       out->colour + first, (const uint8_t *)out->depth + (size_t)first * f->layout.depth_bytes,

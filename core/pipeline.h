@@ -153,13 +153,16 @@ void tarn_raster_triangle(tarn_tile_target *tile, const tarn_screen_vertex verte
 
 /* The scene's backdrop (backdrop.c) when it applies to the frame (the static
  * view's screen, the quality it was drawn at), else NULL; whether its arrays hold
- * what it says for the view's frame. */
+ * what it says for the static view's frame and the scene's objects. */
 const tarn_backdrop *tarn_backdrop_for(const tarn_scene *scene, const tarn_frame_config *config);
-int tarn_backdrop_valid(const tarn_backdrop *backdrop, const tarn_static_view *view);
+int tarn_backdrop_valid(const tarn_backdrop *backdrop, const tarn_scene *scene);
 /* The target's rect from the backdrop of a frame `frame_width` pixels wide, as the
- * opaque pass would draw it. */
+ * opaque pass would draw it; the colours alone with depth_bytes 0. */
 void tarn_backdrop_fill(const tarn_backdrop *backdrop, uint16_t frame_width, tarn_tile_target *target,
                         size_t depth_bytes);
+/* A still-water backdrop's place in the foam band of frame pixel (i, j), Q0.16;
+ * 65536, beyond the band, where it keeps none. */
+uint32_t tarn_backdrop_foam_band(const tarn_backdrop *backdrop, int32_t i, int32_t j);
 
 /* Validates the scene's arrays so the walk never reads past them. */
 tarn_status tarn_scene_check(const tarn_scene *scene);

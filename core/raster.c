@@ -349,7 +349,8 @@ static void draw_pixel(tarn_tile_target *tile, const triangle_setup *t, const at
     const tarn_quality *quality = tile->quality;
     const uint32_t closer = closer_depth(tile->depth, quality->depth_bits, offset, inv_depth);
     if (closer == 0u) return;
-    const int water = TARN_LINK_WATER && tile->water != NULL;
+    /* a frame over still water draws no water triangle (water_still.c) */
+    const int water = TARN_LINK_WATER && TARN_LINK_WATER_SHADING && tile->water != NULL;
     water_choice choice = {NULL, 0u, 0};
     if (water) choice = water_choice_at(tile, i, j);
     /* skipping a pixel's attributes is safe in every perspective mode: a span is

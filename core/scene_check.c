@@ -63,12 +63,13 @@ static int mesh_valid(const tarn_mesh *m, int needs_positions)
 
 /* The frame static screen positions were made for: a size and precision a frame
  * may have (tarn_config_check's own limits). */
-static int static_view_valid(const tarn_static_view *v)
+static int static_view_valid(const tarn_scene *scene)
 {
+    const tarn_static_view *v = scene->static_view;
     return v->width >= 1u && v->width <= TARN_FRAME_SIZE_MAX && v->height >= 1u &&
            v->height <= TARN_FRAME_SIZE_MAX && v->subpixel_bits >= TARN_SUBPIXEL_BITS_MIN &&
            v->subpixel_bits <= TARN_SUBPIXEL_BITS_MAX &&
-           (v->backdrop == NULL || (TARN_LINK_BACKDROP && tarn_backdrop_valid(v->backdrop, v)));
+           (v->backdrop == NULL || (TARN_LINK_BACKDROP && tarn_backdrop_valid(v->backdrop, scene)));
 }
 
 /* A screen coordinate inside the guard band of its frame, as tarn_project_position
@@ -119,7 +120,7 @@ tarn_status tarn_scene_check(const tarn_scene *scene)
     if (scene == NULL || (scene->object_count > 0 && scene->objects == NULL)) return TARN_ERR_SCENE;
     if (scene->camera.near <= 0 || scene->camera.far <= scene->camera.near) return TARN_ERR_SCENE;
     if (scene->underwater != NULL && !underwater_valid(scene->underwater)) return TARN_ERR_SCENE;
-    if (TARN_LINK_STATIC_VERTICES && scene->static_view != NULL && !static_view_valid(scene->static_view))
+    if (TARN_LINK_STATIC_VERTICES && scene->static_view != NULL && !static_view_valid(scene))
         return TARN_ERR_SCENE;
     const int static_view_applies = tarn_static_view_applies(scene);
     for (uint32_t i = 0; i < scene->object_count; i++) {
@@ -135,12 +136,16 @@ tarn_status tarn_scene_check(const tarn_scene *scene)
 tarn_status tarn_scene_check_reach(const tarn_scene *scene, const tarn_frame_config *config)
 {
     /* the objects a backdrop stands for are gone from the scene */
-    if (scene->static_view != NULL && scene->static_view->backdrop != NULL && tarn_backdrop_for(scene, config) == NULL)
+    const tarn_backdrop *backdrop = tarn_backdrop_for(scene, config);
+    if (scene->static_view != NULL && scene->static_view->backdrop != NULL && backdrop == NULL)
         return TARN_ERR_SCENE;
-    for (uint32_t i = 0; i < scene->object_count; i++)
-        if (tarn_water_reach_pixels(scene->objects[i].material->water, config->width) >
-            (int32_t)TARN_WATER_APRON_MAX)
-            return TARN_ERR_SCENE;
+    /* without the water shading linked, water draws only over still water */
+    const int still = backdrop != NULL && backdrop->still_water;
+    for (uint32_t i = 0; i < scene->object_count; i++) {
+        const tarn_water *water = scene->objects[i].material->water;
+        if (tarn_water_reach_pixels(water, config->width) > (int32_t)TARN_WATER_APRON_MAX) return TARN_ERR_SCENE;
+        if (!TARN_LINK_WATER_SHADING && water != NULL && !still) return TARN_ERR_SCENE;
+    }
     return TARN_OK;
 }
 

@@ -193,6 +193,21 @@ tarn_quality tarn_quality_default(void);
 #define TARN_LINK_BACKDROP 1
 #endif
 
+/* Whether a frame can draw water over a still-water backdrop (tarn_scene.h). tarn
+ * bake sets it to 1 only when it bakes one; without that file it is linked. */
+#ifndef TARN_LINK_STILL_WATER
+#define TARN_LINK_STILL_WATER 1
+#endif
+
+/* Whether a frame can shade water pixels itself, every step of tarn_water.h. tarn
+ * bake sets it to 0 when it bakes a still-water backdrop, which holds the still
+ * steps: the code of the others drops out, and a scene whose water needs them
+ * (one without a still-water backdrop for the frame) is then refused
+ * (TARN_ERR_SCENE). Without that file it is linked. */
+#ifndef TARN_LINK_WATER_SHADING
+#define TARN_LINK_WATER_SHADING 1
+#endif
+
 typedef struct {
     uint16_t width, height; /* pixels, 1..TARN_FRAME_SIZE_MAX */
     tarn_quality quality;

@@ -121,14 +121,45 @@ typedef struct tarn_cluster_bin {
     uint8_t x0, y0, x1, y1;
 } tarn_cluster_bin;
 
-/* The pixels of one row of a backdrop whose depth it keeps: [x0, x1), stored at
+/* A run of one row's pixels whose depth a backdrop keeps: [x0, x1), stored at
  * depth[first .. first + x1 - x0). */
 typedef struct {
     uint16_t x0, x1;
     uint32_t first;
-} tarn_backdrop_row;
+} tarn_backdrop_span;
 
 #define TARN_BACKDROP_COLOURS_MAX 65536u
+
+/* Still water. Under a fixed camera, all the water does but its moving terms
+ * (TARN_WATER_MOVING in tarn_water.h: the normal maps' highlights, the foam lines,
+ * the sparkles) is the same in every frame: the fog, absorption, depth colour and
+ * fresnel of steps 3 to 7, over an opaque background that does not move either. A
+ * still-water backdrop holds those pixels drawn (tarn bake --backdrop still), each
+ * channel rounded to 0..255, with the water object drawn there (1 + its index in
+ * the scene's objects, in the bits of TARN_BACKDROP_STILL_OBJECT) and, where foam
+ * can show, TARN_BACKDROP_STILL_FOAM; it keeps their place in the foam band. Its
+ * water objects are flat, and it holds each one's surface as the frame sees it
+ * (tarn_still_plane). A frame draws no water triangle: it walks each tile's marked
+ * pixels and finds only the moving terms there, from texture coordinates the plane
+ * gives (a 2x2 block's highlight once, with the quality's water_block 2). Its images differ from the scene drawn whole by
+ * the rounding of the still terms, by the texture coordinates (exact on the plane,
+ * where triangles interpolate them) and, with water blocks, by the highlights the
+ * blocks share; docs/bake.md gives the error. It applies to a frame without
+ * refraction's moves (no apron, or no refraction) and without the underwater view. */
+#define TARN_BACKDROP_STILL_OBJECT 0x7E000000u
+#define TARN_BACKDROP_STILL_SHIFT 25u
+#define TARN_BACKDROP_STILL_OBJECTS_MAX 63u
+#define TARN_BACKDROP_STILL_FOAM 0x80000000u
+
+/* A flat water object's surface as the frame of a still-water backdrop sees it:
+ * three affine functions of the pixel (i, j), f = f[0] + f[1] * i + f[2] * j taken
+ * modulo 2^32, which hold at the pixel's centre. */
+typedef struct {
+    int32_t depth[3];  /* near/d, Q1.30 (2^30 on the near plane), as the depth buffer */
+    int32_t u[3], v[3]; /* u * near/d and v * near/d: the texture coordinates (Q16.16,
+                           modulo 2^16 repeats) are u = u_plane * 2^uv_shift / depth */
+    uint8_t uv_shift;   /* 0..31 */
+} tarn_still_plane;
 
 /* The scene's opaque objects as the static view's frame draws them, drawn once by
  * tarn bake (docs/bake.md, "Backdrop"): every pixel's colour, and its depth in each
@@ -142,18 +173,32 @@ typedef struct {
 typedef struct {
     uint8_t recip_newton_steps, perspective, perspective_span; /* tarn_quality's */
     uint8_t depth_bits, depth_interpolation;
+    uint8_t still_water;       /* 0: the opaque objects alone. 1: the water's still
+                                  terms too (below, "Still water") */
+    /* with still_water, the rest of tarn_quality that shapes the still terms */
+    uint8_t water_block, fog_argument_bits, exp2_interpolate;
+    uint16_t exp2_entries;
+    const tarn_still_plane *planes; /* with still_water: one per object of the scene,
+                                       read for its water objects */
     uint8_t index_bits;        /* 1..16: bits of a palette index */
-    const uint32_t *palette;   /* 0xRRGGBB colours */
+    const uint32_t *palette;   /* 0xRRGGBB colours; with still_water, a water pixel's
+                                  also holds its marks (TARN_BACKDROP_STILL_*) */
     uint32_t palette_count;    /* 2^index_bits (tarn bake pads the colours it needs
                                   with black), so that every index names one */
     const uint16_t *colour;    /* a palette index per pixel, rows top to bottom: pixel
                                   (i, j)'s index_bits bits start at bit
                                   (j * width + i) * index_bits, counted from bit 0 of
                                   colour[0] up through each uint16_t */
-    const tarn_backdrop_row *rows; /* one per pixel row */
+    const uint16_t *row_spans; /* height + 1 entries: row j's spans, left to right and
+                                  apart, are spans[row_spans[j] .. row_spans[j + 1]) */
+    const tarn_backdrop_span *spans;
+    uint32_t span_count;       /* entries of spans, row_spans[height] */
     const void *depth;         /* near/d of the kept pixels, as the depth buffer holds
                                   it by depth_bits (a uint16_t tarn_depth16 code or a
-                                  uint32_t Q1.30), 0 where no triangle drew */
+                                  uint32_t Q1.30), 0 where no triangle drew, all ones
+                                  where the backdrop keeps none (between close spans);
+                                  with still_water, whatever depth_bits, the place in
+                                  the foam band (step 9's f, Q0.16) as a uint16_t */
     uint32_t depth_count;      /* entries of depth */
 } tarn_backdrop;
 

@@ -60,6 +60,10 @@ enum {
     TARN_WATER_SPARKLES = 1u << 8
 };
 
+/* The features whose terms move with the clock (from the panning maps and the foam
+ * lines' phase); a still-water backdrop (tarn_scene.h) holds the others drawn. */
+#define TARN_WATER_MOVING (TARN_WATER_NORMALS | TARN_WATER_SPECULAR | TARN_WATER_FOAM | TARN_WATER_SPARKLES)
+
 /* What of the water code is linked. Firmware compiles core/ with  -include NAME_link.h
  * (from tarn bake), which sets these to what the baked scene uses, and the code of
  * every other effect drops out of the image; tarn_render_frame then refuses a scene

@@ -44,7 +44,21 @@ typedef struct tarn_water_context {
        at its top-left pixel, a slot per block column; NULL with water_block 1 */
     struct tarn_water_block *blocks;
     uint32_t triangle_serial; /* water triangles drawn this frame, 0 before the first */
+    /* over a still-water backdrop with the quality's water_block 2: each 2x2
+       block's highlight, a slot per block column (tarn_still_block); NULL otherwise */
+    struct tarn_still_block *still_blocks;
+    uint32_t still_walks; /* tile walks over still water this frame, 0 before the first */
 } tarn_water_context;
+
+/* A block's highlight over still water, and who found it: the walk of one water
+ * object over one tile (its still_walks), at the block's top-left pixel. The
+ * block's other pixels of that object take it; no depth need match, since the
+ * highlight does not depend on it. */
+typedef struct tarn_still_block {
+    uint32_t highlight[3]; /* Q8.8 a channel */
+    uint32_t walk;         /* 0: nobody */
+    int32_t row;           /* the block's top pixel row */
+} tarn_still_block;
 
 /* Per-frame and per-object constants; buffers are set by the caller. */
 void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
@@ -157,6 +171,14 @@ uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j, con
 
 /* ---- what the steps share (water.c) ---- */
 
+/* Whether the material has an effect and the build links it: with
+ * TARN_LINK_WATER_FEATURES a constant, the calls of effects left out are removed at
+ * compile time. */
+static inline int tarn_water_uses(const tarn_water_context *w, uint32_t feature)
+{
+    return (TARN_LINK_WATER_FEATURES & feature) != 0 && (w->features & feature) != 0;
+}
+
 /* A 0xRRGGBB colour's channel c (0 red, 1 green, 2 blue) in Q8.8. */
 static inline uint32_t tarn_water_channel_q8(uint32_t rgb, int c)
 {
@@ -203,6 +225,22 @@ static inline tarn_water_normal tarn_water_flat_normal(void)
 
 /* N from its direction, in place; nothing when it is N already. */
 void tarn_water_normalise(tarn_water_normal *n);
+
+/* The sharp features (TARN_WATER_SHOWS_*) at a pixel at `foam_band` (as
+ * tarn_water_effects') with normal `n`, of those the material has and the build
+ * links; and a colour (Q8.8 a channel) with them over it, rounded to 0x00RRGGBB. */
+unsigned tarn_water_sharp_at(const tarn_water_context *w, const tarn_water_input *in, uint32_t foam_band,
+                             const tarn_water_normal *n);
+uint32_t tarn_water_finish(const tarn_water_context *w, unsigned sharp, uint32_t colour[3]);
+
+/* ---- over a still-water backdrop (water_still.c) ---- */
+
+/* The moving terms (TARN_WATER_MOVING) of the context's water object, the scene's
+ * object `object`, over the tile's pixels in its rect that the backdrop marks
+ * with it: each keeps its still colour with a highlight and the sharp features
+ * over it, and loses the marks. */
+void tarn_water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop, uint32_t object,
+                           tarn_tile_target *tile);
 
 /* ---- the effects, a file each: with TARN_LINK_WATER_FEATURES, the ones a scene
  * does not use are never called and so never linked ---- */

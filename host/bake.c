@@ -63,6 +63,7 @@ static const bake_type T_U16 = SCALAR("uint16_t", V_U16, uint16_t);
 static const bake_type T_I16 = SCALAR("int16_t", V_I16, int16_t);
 static const bake_type T_U32 = SCALAR("uint32_t", V_U32, uint32_t);
 static const bake_type T_Q16 = SCALAR("tarn_q16", V_Q16, tarn_q16);
+static const bake_type T_I32 = SCALAR("int32_t", V_Q16, int32_t); /* written as a tarn_q16 is */
 static const bake_type T_RGB = SCALAR("uint32_t", V_RGB, uint32_t);
 static const bake_type T_BYTE = SCALAR("uint8_t", V_BYTE, uint8_t);
 static const bake_type T_FEATURES = SCALAR("uint32_t", V_FEATURES, uint32_t);
@@ -135,6 +136,10 @@ static const bake_field u16_triple_fields[] = {
     {"0", 0, &T_U16}, {"1", sizeof(uint16_t), &T_U16}, {"2", 2 * sizeof(uint16_t), &T_U16}};
 static const bake_type T_U16_TRIPLE = {"uint16_t[3]", V_STRUCT, sizeof(uint16_t[3]), u16_triple_fields, 3, 1};
 
+static const bake_field i32_triple_fields[] = {
+    {"0", 0, &T_I32}, {"1", sizeof(int32_t), &T_I32}, {"2", 2 * sizeof(int32_t), &T_I32}};
+static const bake_type T_I32_TRIPLE = {"int32_t[3]", V_STRUCT, sizeof(int32_t[3]), i32_triple_fields, 3, 1};
+
 static const bake_field static_vertex_fields[] = {
     FIELD(tarn_static_vertex, x, T_Q16),        FIELD(tarn_static_vertex, y, T_Q16),
     FIELD(tarn_static_vertex, d, T_Q16),        FIELD(tarn_static_vertex, inv_depth, T_U32),
@@ -164,18 +169,28 @@ static const bake_field bin_fields[] = {
     FIELD(tarn_cluster_bin, x1, T_U8), FIELD(tarn_cluster_bin, y1, T_U8)};
 static const bake_type T_BIN = STRUCT(tarn_cluster_bin, bin_fields, 1);
 
-static const bake_field backdrop_row_fields[] = {
-    FIELD(tarn_backdrop_row, x0, T_U16), FIELD(tarn_backdrop_row, x1, T_U16),
-    FIELD(tarn_backdrop_row, first, T_U32)};
-static const bake_type T_BACKDROP_ROW = STRUCT(tarn_backdrop_row, backdrop_row_fields, 1);
+static const bake_field still_plane_fields[] = {
+    FIELD(tarn_still_plane, depth, T_I32_TRIPLE), FIELD(tarn_still_plane, u, T_I32_TRIPLE),
+    FIELD(tarn_still_plane, v, T_I32_TRIPLE), FIELD(tarn_still_plane, uv_shift, T_U8)};
+static const bake_type T_STILL_PLANE = STRUCT(tarn_still_plane, still_plane_fields, 1);
+
+static const bake_field backdrop_span_fields[] = {
+    FIELD(tarn_backdrop_span, x0, T_U16), FIELD(tarn_backdrop_span, x1, T_U16),
+    FIELD(tarn_backdrop_span, first, T_U32)};
+static const bake_type T_BACKDROP_SPAN = STRUCT(tarn_backdrop_span, backdrop_span_fields, 1);
 
 static const bake_field backdrop_fields[] = {
     FIELD(tarn_backdrop, recip_newton_steps, T_U8), FIELD(tarn_backdrop, perspective, T_U8),
     FIELD(tarn_backdrop, perspective_span, T_U8),   FIELD(tarn_backdrop, depth_bits, T_U8),
-    FIELD(tarn_backdrop, depth_interpolation, T_U8), FIELD(tarn_backdrop, index_bits, T_U8),
+    FIELD(tarn_backdrop, depth_interpolation, T_U8), FIELD(tarn_backdrop, still_water, T_U8),
+    FIELD(tarn_backdrop, water_block, T_U8),         FIELD(tarn_backdrop, fog_argument_bits, T_U8),
+    FIELD(tarn_backdrop, exp2_interpolate, T_U8),    FIELD(tarn_backdrop, exp2_entries, T_U16),
+    FIELD(tarn_backdrop, planes, T_REF),
+    FIELD(tarn_backdrop, index_bits, T_U8),
     FIELD(tarn_backdrop, palette, T_REF),
     FIELD(tarn_backdrop, palette_count, T_U32),     FIELD(tarn_backdrop, colour, T_REF),
-    FIELD(tarn_backdrop, rows, T_REF),              FIELD(tarn_backdrop, depth, T_REF),
+    FIELD(tarn_backdrop, row_spans, T_REF),         FIELD(tarn_backdrop, spans, T_REF),
+    FIELD(tarn_backdrop, span_count, T_U32),        FIELD(tarn_backdrop, depth, T_REF),
     FIELD(tarn_backdrop, depth_count, T_U32)};
 static const bake_type T_BACKDROP = STRUCT(tarn_backdrop, backdrop_fields, 0);
 
@@ -216,7 +231,7 @@ static const bake_type *const all_structs[] = {
     &T_VEC3,  &T_UV,       &T_CLUSTER,  &T_TEXTURE, &T_MESH,  &T_PANNING,
     &T_WATER, &T_UNDERWATER, &T_MATERIAL, &T_OBJECT, &T_CAMERA, &T_LIGHT,
     &T_SCENE, &T_EXP2,     &T_QUALITY,  &T_CONFIG, &T_U16_TRIPLE, &T_STATIC_VERTEX, &T_BIN,
-    &T_BACKDROP_ROW, &T_BACKDROP, &T_STATIC_VIEW};
+    &T_I32_TRIPLE, &T_STILL_PLANE, &T_BACKDROP_SPAN, &T_BACKDROP, &T_STATIC_VIEW};
 
 /* Bytes on a 32-bit target (Cortex-M, rv32): what the header comment reports. */
 #define TARGET_POINTER_BYTES 4u
@@ -567,21 +582,39 @@ static void plan_backdrop(bake_plan *p, const tarn_static_view *view)
     bake_item *item = add_item(p, BYTES_BACKDROP, &T_RGB, b->palette, b->palette_count, "%s_backdrop_palette",
                                p->name);
     if (item)
-        snprintf(item->note, sizeof item->note, "backdrop: the %lu colours the opaque objects draw, padded with "
+        snprintf(item->note, sizeof item->note, "backdrop: the %lu colours the opaque objects%s draw, padded with "
                  "black to %lu so that every %u-bit index names one", (unsigned long)p->backdrop_colours,
+                 b->still_water ? " and the still water (its object's number in bits 25 to 31)" : "",
                  (unsigned long)b->palette_count, b->index_bits);
     item = add_item(p, BYTES_BACKDROP, &T_U16, b->colour, p->backdrop_colour_words, "%s_backdrop_colour", p->name);
     if (item)
         snprintf(item->note, sizeof item->note, "backdrop: a %u-bit palette index per pixel, rows top to bottom, "
                  "packed low bits first", b->index_bits);
-    add_item(p, BYTES_BACKDROP, &T_BACKDROP_ROW, b->rows, view->height, "%s_backdrop_rows", p->name);
+    if (!b->still_water) {
+        add_alias(p, b->planes, NO_ITEM);
+    } else {
+        item = add_item(p, BYTES_BACKDROP, &T_STILL_PLANE, b->planes, p->scene->scene.object_count,
+                        "%s_backdrop_planes", p->name);
+        if (item)
+            snprintf(item->note, sizeof item->note, "backdrop: each water object's surface as the frame sees it, "
+                     "at pixel (0, 0), per pixel right, per pixel down");
+    }
+    item = add_item(p, BYTES_BACKDROP, &T_U16, b->row_spans, view->height + 1u, "%s_backdrop_row_spans", p->name);
+    if (item)
+        snprintf(item->note, sizeof item->note, "backdrop: row j's spans of kept depth are spans[row_spans[j] .. "
+                 "row_spans[j + 1])");
+    if (b->span_count == 0) add_alias(p, b->spans, NO_ITEM);
+    else add_item(p, BYTES_BACKDROP, &T_BACKDROP_SPAN, b->spans, b->span_count, "%s_backdrop_spans", p->name);
     if (b->depth_count == 0) {
         add_alias(p, b->depth, NO_ITEM);
     } else {
-        item = add_item(p, BYTES_BACKDROP, b->depth_bits == 16 ? &T_U16 : &T_U32, b->depth, b->depth_count,
-                        "%s_backdrop_depth", p->name);
-        if (item)
-            snprintf(item->note, sizeof item->note, "backdrop: near/d (%s) of each row's pixels [x0, x1), "
+        item = add_item(p, BYTES_BACKDROP, b->depth_bits == 16 || b->still_water ? &T_U16 : &T_U32, b->depth,
+                        b->depth_count, "%s_backdrop_depth", p->name);
+        if (item && b->still_water)
+            snprintf(item->note, sizeof item->note, "backdrop: each span's pixels' place in the foam band (Q0.16), "
+                     "where foam can show");
+        else if (item)
+            snprintf(item->note, sizeof item->note, "backdrop: near/d (%s) of each span's pixels [x0, x1), "
                      "where water may draw or sample", b->depth_bits == 16 ? "tarn_depth16 codes" : "Q1.30");
     }
     add_item(p, BYTES_BACKDROP, &T_BACKDROP, b, 0, "%s_backdrop", p->name);
@@ -1036,8 +1069,11 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     fprintf(out, "#define TARN_LINK_EXACT_DEPTH %d\n", exact_depth);
     fprintf(out, "#define TARN_LINK_COMPUTED_VERTICES %d\n", p->scene->scene.static_view == NULL);
     fprintf(out, "#define TARN_LINK_STATIC_VERTICES %d\n", p->scene->scene.static_view != NULL);
-    fprintf(out, "#define TARN_LINK_BACKDROP %d\n",
-            p->scene->scene.static_view != NULL && p->scene->scene.static_view->backdrop != NULL);
+    const tarn_backdrop *backdrop = p->scene->scene.static_view != NULL ? p->scene->scene.static_view->backdrop : NULL;
+    const int still = backdrop != NULL && backdrop->still_water;
+    fprintf(out, "#define TARN_LINK_BACKDROP %d\n", backdrop != NULL);
+    fprintf(out, "#define TARN_LINK_STILL_WATER %d\n", still);
+    fprintf(out, "#define TARN_LINK_WATER_SHADING %d\n", !still);
 }
 
 /* The three files to temporaries, then renamed into place; a failure removes all. */
@@ -1154,7 +1190,9 @@ static int static_scene_make(const tarn_loaded_scene *scene, const tarn_frame_co
                              static_scene *out, tarn_error *err)
 {
     out->backdrop = backdrop;
-    if (backdrop && tarn_backdrop_scene_make(&scene->scene, config, 0, &out->over_backdrop, err) != 0) return -1;
+    if (backdrop &&
+        tarn_backdrop_scene_make(&scene->scene, config, (tarn_backdrop_kind)backdrop, 0, &out->over_backdrop, err) != 0)
+        return -1;
     if (!backdrop && tarn_static_scene_make(&scene->scene, config, 0, &out->with_view, err) != 0) return -1;
     out->loaded = *scene;
     out->loaded.scene = backdrop ? out->over_backdrop.water.scene : out->with_view.scene;

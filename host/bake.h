@@ -41,9 +41,10 @@ typedef struct {
     int static_view;         /* 1: every object gets static vertices for the scene's camera
                                 and the config's frame, and the meshes lose the positions,
                                 normals and colours they replace (static_view.h) */
-    int backdrop;            /* 1 (with static_view): the opaque objects are drawn once for
-                                the config into the static view's backdrop (backdrop.h),
-                                and only the water objects are baked */
+    int backdrop;            /* a tarn_backdrop_kind; with static_view, what is drawn once
+                                for the config into the static view's backdrop
+                                (backdrop.h): the opaque objects, or the still water
+                                too; only the water objects are then baked */
     tarn_frame_config config; /* frame size and quality; its time_ms is baked as 0 */
     int argc;                /* the command line, shown in the header comment */
     char *const *argv;

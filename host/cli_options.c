@@ -1,4 +1,5 @@
 #include "cli_options.h"
+#include "backdrop.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -7,14 +8,17 @@
 
 const char tarn_cli_usage[] =
     "usage: tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]\n"
-    "                   [--reference [--snapped]] [--backdrop on|off] [QUALITY]\n"
+    "                   [--reference [--snapped]] [--backdrop on|off|still] [QUALITY]\n"
     "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]\n"
     "       tarn accuracy --math\n"
     "       tarn memory SCENE [--size WxH] [QUALITY]\n"
     "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]\n"
-    "                 [--static-view on|off] [--backdrop on|off] [QUALITY]\n"
+    "                 [--static-view on|off] [--backdrop on|off|still] [QUALITY]\n"
     "       (--backdrop on: the opaque objects drawn once, for the frame and quality, into\n"
-    "        a palette image the water draws over; the image is the same)\n"
+    "        a palette image the water draws over; the image is the same. still: the\n"
+    "        water's still terms drawn into it too, and only its moving ones each frame;\n"
+    "        each channel within 1 of the scene drawn whole, but for the highlights that\n"
+    "        water blocks share)\n"
     "       tarn show SCENE --display DISPLAY --panel MODEL [...]   (tarn show --help)\n"
     "       tarn sweep [SCENE...] [--out DIR] [...]                 (tarn sweep --help)\n"
     "QUALITY: --quality fast|balanced|exact (a preset, balanced by default; the knobs below\n"
@@ -230,12 +234,13 @@ static int parse_static_view(const char *value, tarn_cli_options *o, tarn_error 
     return 0;
 }
 
-/* render, bake --backdrop on|off. */
+/* render, bake --backdrop on|off|still. */
 static int parse_backdrop(const char *value, tarn_cli_options *o, tarn_error *err)
 {
-    if (value && strcmp(value, "on") == 0) o->backdrop = 1;
-    else if (value && strcmp(value, "off") == 0) o->backdrop = 0;
-    else return tarn_fail(err, "--backdrop: expected on or off, got '%s'", value ? value : "");
+    if (value && strcmp(value, "on") == 0) o->backdrop = TARN_BACKDROP_OPAQUE;
+    else if (value && strcmp(value, "still") == 0) o->backdrop = TARN_BACKDROP_STILL;
+    else if (value && strcmp(value, "off") == 0) o->backdrop = TARN_BACKDROP_NONE;
+    else return tarn_fail(err, "--backdrop: expected on, off or still, got '%s'", value ? value : "");
     return 0;
 }
 
@@ -318,7 +323,7 @@ static int check_combination(tarn_cli_options *o, tarn_error *err)
     if (o->backdrop && o->command != TARN_CMD_RENDER && o->command != TARN_CMD_BAKE)
         return tarn_fail(err, "--backdrop applies to render and bake");
     if (o->backdrop && (o->reference || o->points_path || o->no_static_view))
-        return tarn_fail(err, "--backdrop on: draws one quality of the core with static vertices; "
+        return tarn_fail(err, "--backdrop: draws one quality of the core with static vertices; "
                          "it excludes %s", o->reference ? "--reference" : o->points_path ? "--points" : "--static-view off");
     if (o->snapped && o->command == TARN_CMD_RENDER && !o->reference)
         return tarn_fail(err, "--snapped applies to the reference: add --reference");

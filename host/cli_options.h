@@ -1,12 +1,12 @@
 /* cli_options.h: the command line of the `tarn` tool, parsed and range-checked.
  *
  *   tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]
- *               [--reference [--snapped]] [--backdrop on|off] [QUALITY]
+ *               [--reference [--snapped]] [--backdrop on|off|still] [QUALITY]
  *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]
  *   tarn accuracy --math
  *   tarn memory SCENE [--size WxH] [QUALITY]   (the working memory a frame needs)
  *   tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]
- *             [--static-view on|off] [--backdrop on|off] [QUALITY]
+ *             [--static-view on|off] [--backdrop on|off|still] [QUALITY]
  *                                              (the scene as const C data: host/bake.h)
  * QUALITY knobs (defaults from tarn_quality_default()):
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
@@ -39,8 +39,8 @@ typedef struct {
     const char *points_path; /* bake: --points, or NULL (host/bake_points.h) */
     int no_static_view;      /* bake --static-view off: vertices computed each frame */
     int static_view_given;   /* --static-view appeared */
-    int backdrop;            /* render, bake --backdrop on: the opaque objects drawn once
-                                (host/backdrop.h) */
+    int backdrop;            /* render, bake --backdrop: a tarn_backdrop_kind, what is
+                                drawn once (host/backdrop.h) */
     uint16_t width, height;  /* 0: the scene's own frame size */
     uint32_t time_ms;
     uint16_t frames;         /* render --frames: 0 for one frame written to -o itself */

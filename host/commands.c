@@ -151,15 +151,16 @@ static int render_images(const tarn_cli_options *o, const tarn_loaded_scene *sce
     return failed ? -1 : 0;
 }
 
-/* --backdrop on: the scene's water over its opaque objects drawn once, as firmware
- * baked with the option draws it. The opaque image does not change with time, so
- * one backdrop serves every frame of a sequence. */
+/* --backdrop on|still: the scene's water over its opaque objects (and still water)
+ * drawn once, as firmware baked with the option draws it. The backdrop does not
+ * change with time, so one serves every frame of a sequence. */
 static int render_to_png(const tarn_cli_options *o, const tarn_loaded_scene *scene,
                          const tarn_frame_config *config, tarn_error *err)
 {
-    if (!o->backdrop) return render_images(o, scene, config, err);
+    if (o->backdrop == TARN_BACKDROP_NONE) return render_images(o, scene, config, err);
     tarn_backdrop_scene backdrop;
-    if (tarn_backdrop_scene_make(&scene->scene, config, 0, &backdrop, err) != 0) return -1;
+    if (tarn_backdrop_scene_make(&scene->scene, config, (tarn_backdrop_kind)o->backdrop, 0, &backdrop, err) != 0)
+        return -1;
     tarn_loaded_scene over = *scene;
     over.scene = backdrop.water.scene;
     const int failed = render_images(o, &over, config, err);

@@ -17,9 +17,10 @@ char *firmware_read_file(const char *path, size_t *size);
 void firmware_conf_value(char *out, size_t size, const char *text, const char *key);
 
 /* The frame config `tarn bake SCENE BAKE_FLAGS` bakes: the scene's own size unless
- * the flags give one, the flags parsed as tarn parses them, at `time_ms`. Fails the
+ * the flags give one, the flags parsed as tarn parses them, at `time_ms`; and the
+ * backdrop it bakes (a tarn_backdrop_kind) in `*backdrop`, unless NULL. Fails the
  * test on flags tarn refuses. */
 tarn_frame_config firmware_bake_config(const char *scene_path, const char *bake_flags,
-                                       const tarn_loaded_scene *scene, uint32_t time_ms);
+                                       const tarn_loaded_scene *scene, uint32_t time_ms, int *backdrop);
 
 #endif

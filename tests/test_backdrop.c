@@ -29,7 +29,7 @@ static void load(const char *path, tarn_loaded_scene *loaded)
 static void backdrop_make(const tarn_loaded_scene *loaded, const tarn_frame_config *config, tarn_backdrop_scene *b)
 {
     tarn_error err;
-    if (tarn_backdrop_scene_make(&loaded->scene, config, 0, b, &err) != 0) fail_msg("%s", err.message);
+    if (tarn_backdrop_scene_make(&loaded->scene, config, TARN_BACKDROP_OPAQUE, 0, b, &err) != 0) fail_msg("%s", err.message);
 }
 
 /* The frame at `config` of the scene as loaded, and of its water over the backdrop
@@ -138,8 +138,10 @@ static void test_backdrop_keeps_what_the_water_reads(void **state)
     assert_int_equal(backdrop->index_bits, 13);
     assert_int_equal(backdrop->palette_count, 8192);
     assert_int_equal(b->image.colour_words, 240u * 240u * 13u / 16u);
-    assert_int_equal(backdrop->rows[0].x1 - backdrop->rows[0].x0, 0); /* the sky */
-    assert_int_equal(backdrop->rows[239].x1 - backdrop->rows[239].x0, 0); /* the near shore */
+    assert_int_equal(backdrop->row_spans[1] - backdrop->row_spans[0], 0); /* the sky */
+    assert_int_equal(backdrop->row_spans[240] - backdrop->row_spans[239], 0); /* the near shore */
+    /* one span a row around the water */
+    for (uint32_t j = 0; j < 240; j++) assert_true(backdrop->row_spans[j + 1] <= backdrop->row_spans[j] + 1u);
     assert_true(backdrop->depth_count > 20000u && backdrop->depth_count < 240u * 240u / 2u);
     /* the water plane's triangles under the rim and near the camera draw nothing */
     assert_int_equal(b->cull.triangles_before, 288);
@@ -203,16 +205,27 @@ static void test_malformed_backdrop_is_refused(void **state)
     b->image.palette[8191] = 0x01000000u; /* a bit the water pass marks pixels with */
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     b->image.palette[8191] = 0u;
-    backdrop->depth_count -= 1u; /* the last row's span now reads past it */
+    backdrop->depth_count -= 1u; /* the last span now reads past it */
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
-    const tarn_backdrop_row row = b->image.rows[120];
-    b->image.rows[120].x1 = 241;
+    backdrop->span_count -= 1u; /* the last row's spans end past it */
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
-    b->image.rows[120] = row;
-    b->image.rows[120].x0 = (uint16_t)(row.x1 + 1u);
+    *backdrop = saved;
+    tarn_backdrop_span *span = &b->image.spans[b->image.row_spans[120]];
+    const tarn_backdrop_span kept = *span;
+    span->x1 = 241; /* past the frame */
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
-    b->image.rows[120] = row;
+    *span = kept;
+    span->x0 = span->x1; /* empty */
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
+    *span = kept;
+    b->image.row_spans[121]++; /* row 121's span counted in row 120, after one it overlaps */
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
+    b->image.row_spans[121]--;
+    const uint16_t first = b->image.row_spans[120];
+    b->image.row_spans[120] = (uint16_t)(first + 2u); /* past the next row's first */
+    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
+    b->image.row_spans[120] = first;
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_OK);
     backdrop->palette_count -= 1u; /* index 8,191 would name no colour */
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
@@ -240,7 +253,7 @@ static void test_too_many_colours_are_refused(void **state)
     const tarn_frame_config config = {512, 512, tarn_quality_default(), 0};
     tarn_backdrop_scene backdrop;
     tarn_error err;
-    assert_int_equal(tarn_backdrop_scene_make(&b.scene, &config, 0, &backdrop, &err), -1);
+    assert_int_equal(tarn_backdrop_scene_make(&b.scene, &config, TARN_BACKDROP_OPAQUE, 0, &backdrop, &err), -1);
     if (strstr(err.message, "colours, at most 65536 fit its 16-bit indices") == NULL)
         fail_msg("expected the colour count in the error, got: %s", err.message);
 }

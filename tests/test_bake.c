@@ -22,6 +22,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "backdrop.h"
 #include "core_render.h"
 #include "scene_load.h"
 #include "static_view.h"
@@ -232,10 +233,11 @@ static void render_loaded(const tarn_loaded_scene *scene, const tarn_frame_confi
 }
 
 /* Bakes `scene` (with `extra` options), builds the baked program and compares its
- * frames with the loaded scene's at 0 ms and at `later_ms`. `config` starts as the
+ * frames at 0 ms and at `later_ms` with the loaded scene's, or with `still`, its
+ * water's over a still-water backdrop made on the host. `config` starts as the
  * scene's own frame at default quality; `adjust`, if given, applies `extra` to it. */
-static void round_trip(const char *scene_path, const char *name, const char *extra,
-                       void (*adjust)(tarn_frame_config *config), uint32_t later_ms)
+static void round_trip_against(const char *scene_path, const char *name, const char *extra,
+                               void (*adjust)(tarn_frame_config *config), uint32_t later_ms, int still)
 {
     baked b;
     bake(scene_path, name, extra, &b);
@@ -244,8 +246,14 @@ static void round_trip(const char *scene_path, const char *name, const char *ext
     if (tarn_scene_load(scene_path, &scene, &err) != 0) fail_msg("%s", err.message);
     tarn_frame_config config = {scene.width, scene.height, tarn_quality_default(), 0};
     if (adjust) adjust(&config);
+    tarn_backdrop_scene over;
+    if (still && tarn_backdrop_scene_make(&scene.scene, &config, TARN_BACKDROP_STILL, 0, &over, &err) != 0)
+        fail_msg("%s", err.message);
+    tarn_loaded_scene reference = scene;
+    if (still) reference.scene = over.water.scene;
     /* the bake's static view gives the frame its bins from flash */
-    assert_int_equal(b.memory_bytes, tarn_static_memory_bytes(&config, &scene.scene, &config));
+    assert_int_equal(b.memory_bytes, still ? tarn_frame_memory_bytes(&config, &reference.scene)
+                                           : tarn_static_memory_bytes(&config, &scene.scene, &config));
 
     char main_path[PATH_SIZE], program[PATH_SIZE];
     snprintf(main_path, sizeof main_path, "%s/bake_main_%s.c", work_dir, name);
@@ -261,14 +269,21 @@ static void round_trip(const char *scene_path, const char *name, const char *ext
     const uint32_t times[2] = {0, later_ms};
     for (int k = 0; k < 2; k++) {
         config.time_ms = times[k];
-        render_loaded(&scene, &config, loaded_rgb);
+        render_loaded(&reference, &config, loaded_rgb);
         uint8_t *baked_rgb = render_baked(program, name, times[k], &got);
         assert_int_equal(got, bytes);
         assert_same_frame(baked_rgb, loaded_rgb, &config, name, times[k]);
         free(baked_rgb);
     }
     free(loaded_rgb);
+    if (still) tarn_backdrop_scene_free(&over);
     tarn_scene_free(&scene);
+}
+
+static void round_trip(const char *scene_path, const char *name, const char *extra,
+                       void (*adjust)(tarn_frame_config *config), uint32_t later_ms)
+{
+    round_trip_against(scene_path, name, extra, adjust, later_ms, 0);
 }
 
 static void test_pond_bakes_without_loss(void **state)
@@ -339,6 +354,28 @@ static void test_backdrop_bakes_without_loss(void **state)
     snprintf(path, sizeof path, "%s/pond_backdrop_link.h", work_dir);
     char *link = read_all(path, NULL);
     assert_non_null(strstr(link, "#define TARN_LINK_BACKDROP 1\n"));
+    free(link);
+}
+
+/* --backdrop still: the water's moving terms over the picture of the rest and the
+ * still water render as the host draws them; only the shading the backdrop holds
+ * is left out of the build. */
+static void test_still_water_bakes_without_loss(void **state)
+{
+    (void)state;
+    round_trip_against("scenes/pond.json", "pond_still", "--name pond_still --quality fast --backdrop still",
+                       fast_quality, 2750, 1);
+    char path[PATH_SIZE];
+    snprintf(path, sizeof path, "%s/pond_still.c", work_dir);
+    char *source = read_all(path, NULL);
+    assert_non_null(strstr(source, "the opaque objects and the still water (its object's number in bits 25 to 31) "
+                                   "draw, padded with black to 16384"));
+    assert_non_null(strstr(source, "where foam can show"));
+    free(source);
+    snprintf(path, sizeof path, "%s/pond_still_link.h", work_dir);
+    char *link = read_all(path, NULL);
+    assert_non_null(strstr(link, "#define TARN_LINK_STILL_WATER 1\n"));
+    assert_non_null(strstr(link, "#define TARN_LINK_WATER_SHADING 0\n"));
     free(link);
 }
 
@@ -599,6 +636,7 @@ int main(void)
         cmocka_unit_test(test_size_quality_and_name_are_baked),
         cmocka_unit_test(test_underwater_bakes_without_loss),
         cmocka_unit_test(test_backdrop_bakes_without_loss),
+        cmocka_unit_test(test_still_water_bakes_without_loss),
         cmocka_unit_test(test_only_what_is_used_is_baked),
         cmocka_unit_test(test_header_declares_memory_and_objects),
         cmocka_unit_test(test_points_are_baked),

@@ -12,6 +12,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 
+#include "backdrop.h"
 #include "cli_options.h"
 
 #define ARGS_MAX 32
@@ -171,21 +172,24 @@ static void test_static_view_option(void **state)
     assert_rejected("render s.json -o x.png --static-view off", "--static-view applies to bake");
 }
 
-/* render, bake --backdrop: off by default, on when asked; one core quality with
- * static vertices, so not with the reference, points or --static-view off. */
+/* render, bake --backdrop: off by default, on or still when asked; one core quality
+ * with static vertices, so not with the reference, points or --static-view off. */
 static void test_backdrop_option(void **state)
 {
     (void)state;
     tarn_cli_options o;
     tarn_error err;
     assert_int_equal(parse("bake s.json -o x.c", &o, &err), 0);
-    assert_int_equal(o.backdrop, 0);
+    assert_int_equal(o.backdrop, TARN_BACKDROP_NONE);
     assert_int_equal(parse("bake s.json -o x.c --backdrop on", &o, &err), 0);
-    assert_int_equal(o.backdrop, 1);
+    assert_int_equal(o.backdrop, TARN_BACKDROP_OPAQUE);
     assert_int_equal(parse("render s.json -o x.png --backdrop on --backdrop off", &o, &err), 0);
     assert_int_equal(o.backdrop, 0);
-    assert_rejected("bake s.json -o x.c --backdrop yes", "--backdrop: expected on or off, got 'yes'");
-    assert_rejected("render s.json -o x.png --backdrop", "--backdrop: expected on or off, got ''");
+    assert_int_equal(parse("bake s.json -o x.c --backdrop still", &o, &err), 0);
+    assert_int_equal(o.backdrop, TARN_BACKDROP_STILL);
+    assert_rejected("bake s.json -o x.c --backdrop yes", "--backdrop: expected on, off or still, got 'yes'");
+    assert_rejected("render s.json -o x.png --backdrop", "--backdrop: expected on, off or still, got ''");
+    assert_rejected("render s.json -o x.png --reference --backdrop still", "it excludes --reference");
     assert_rejected("compare s.json --backdrop on", "--backdrop applies to render and bake");
     assert_rejected("render s.json -o x.png --reference --backdrop on", "it excludes --reference");
     assert_rejected("bake s.json -o x.c --backdrop on --points p.txt", "it excludes --points");

@@ -7,8 +7,10 @@
  * wrote (ST7789 commands and data, tarn_panel.h) and report.txt its report line.
  * The stream is replayed into the host panel emulator; the picture after the first
  * frame's pixels and the one at the end are compared with the host's render of the
- * same scene, quality and time, converted with tarn_rgb565. The emulator must also
- * have ignored nothing: no early command, no unknown command, no stray data. */
+ * same scene, quality and time (through the same backdrop for a bake with still
+ * water, whose frames the host draws the same way), converted with tarn_rgb565.
+ * The emulator must also have ignored nothing: no early command, no unknown
+ * command, no stray data. */
 #include <dirent.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -21,6 +23,7 @@
 #include <cmocka.h>
 
 #include "cli_options.h"
+#include "backdrop.h"
 #include "core_render.h"
 #include "firmware_conf.h"
 #include "panel_emulator.h"
@@ -159,7 +162,16 @@ static void test_board_matches_host(void **state)
     tarn_loaded_scene scene;
     tarn_error err;
     if (tarn_scene_load(conf.scene, &scene, &err) != 0) fail_msg("%s", err.message);
-    tarn_frame_config config = firmware_bake_config(conf.scene, conf.bake_flags, &scene, 0);
+    int backdrop;
+    tarn_frame_config config = firmware_bake_config(conf.scene, conf.bake_flags, &scene, 0, &backdrop);
+    /* over still water, the host draws through the same backdrop; every other
+     * bake draws the scene's frame itself */
+    tarn_backdrop_scene still;
+    if (backdrop == TARN_BACKDROP_STILL &&
+        tarn_backdrop_scene_make(&scene.scene, &config, TARN_BACKDROP_STILL, 0, &still, &err) != 0)
+        fail_msg("%s: %s", conf.scene, err.message);
+    tarn_loaded_scene drawn = scene;
+    if (backdrop == TARN_BACKDROP_STILL) drawn.scene = still.water.scene;
 
     recording_panel *panel = calloc(1, sizeof *panel);
     assert_non_null(panel);
@@ -186,8 +198,8 @@ static void test_board_matches_host(void **state)
     uint16_t *last = malloc(panel->picture_words * sizeof *last);
     assert_non_null(last);
     tarn_panel_emulator_image(&panel->emulator, last);
-    size_t differ0 = compare_frame(&conf, &scene, config, conf.times[0], panel->first, width);
-    size_t differ1 = compare_frame(&conf, &scene, config, conf.times[1], last, width);
+    size_t differ0 = compare_frame(&conf, &drawn, config, conf.times[0], panel->first, width);
+    size_t differ1 = compare_frame(&conf, &drawn, config, conf.times[1], last, width);
     print_message("%s: %s %ux%u at %u ms and %u ms: %zu and %zu pixels differ from the host\n", board,
                   conf.scene, config.width, config.height, conf.times[0], conf.times[1], differ0, differ1);
     size_t changed = 0;
@@ -196,6 +208,7 @@ static void test_board_matches_host(void **state)
     free(last);
     free(panel->first);
     free(panel);
+    if (backdrop == TARN_BACKDROP_STILL) tarn_backdrop_scene_free(&still);
     tarn_scene_free(&scene);
     assert_int_equal(differ0, 0);
     assert_int_equal(differ1, 0);

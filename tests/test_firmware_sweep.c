@@ -85,7 +85,7 @@ static void test_sweep_matches_host(void **state)
     tarn_loaded_scene scene;
     tarn_error err;
     if (tarn_scene_load(scene_path, &scene, &err) != 0) fail_msg("%s", err.message);
-    tarn_frame_config config = firmware_bake_config(scene_path, bake_flags, &scene, SWEEP_TIME_MS);
+    tarn_frame_config config = firmware_bake_config(scene_path, bake_flags, &scene, SWEEP_TIME_MS, NULL);
     tarn_bake_points points;
     if (tarn_bake_points_load(points_path, &config.quality, &points, &err) != 0) fail_msg("%s", err.message);
 

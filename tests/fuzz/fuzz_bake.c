@@ -31,7 +31,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     char output[4096];
     strncpy(output, fuzz_path(outputs[0]), sizeof output - 1);
     output[sizeof output - 1] = '\0';
-    const int backdrop = (int)(size & 1u); /* both ways of baking, by the input's length */
+    const int backdrop = (int)(size % 3u); /* each kind of backdrop, by the input's length */
     tarn_bake_options options = {"scene.json", output, NULL, NULL, 1, backdrop,
                                  {scene.width, scene.height, tarn_quality_default(), 0}, 0, NULL};
     tarn_bake_result result;

@@ -40,7 +40,8 @@ typedef struct {
     tarn_backdrop backdrop;
     uint32_t palette[16];
     uint16_t colour[FRAME_MAX * FRAME_MAX]; /* at most 16 bits a pixel */
-    tarn_backdrop_row rows[FRAME_MAX];
+    uint16_t row_spans[FRAME_MAX + 1];
+    tarn_backdrop_span spans[2 * FRAME_MAX]; /* at most two a row */
     uint32_t depth[FRAME_MAX * FRAME_MAX];  /* either form of depth */
     tarn_scene scene;
     uint8_t texels[2][16 * 16 * 3];
@@ -278,21 +279,44 @@ static void make_backdrop(fuzz_scene *s, const tarn_frame_config *config, fuzz_r
     b->perspective_span = mostly(r, q->perspective_span);
     b->depth_bits = mostly(r, q->depth_bits);
     b->depth_interpolation = mostly(r, q->depth_interpolation);
+    b->still_water = mostly(r, fuzz_u8(r) & 1u);
+    b->water_block = mostly(r, q->water_block);
+    b->fog_argument_bits = mostly(r, q->fog_argument_bits);
+    b->exp2_interpolate = mostly(r, q->exp2.interpolate);
+    b->exp2_entries = fuzz_u8(r) < 224 ? q->exp2.entries : fuzz_u16(r);
     b->index_bits = mostly(r, (uint8_t)(1u + fuzz_u8(r) % 4u));
     b->palette_count = fuzz_u8(r) < 240 ? 1u << (b->index_bits & 31u) : fuzz_u32(r);
-    for (size_t k = 0; k < 16; k++) s->palette[k] = fuzz_u8(r) < 250 ? fuzz_u32(r) & 0xFFFFFFu : fuzz_u32(r);
+    /* over still water, a colour may carry a water object's number, 0 to 2 */
+    for (size_t k = 0; k < 16; k++) {
+        const uint32_t object = b->still_water == 1u ? (uint32_t)(fuzz_u8(r) % 3u) << TARN_BACKDROP_STILL_SHIFT : 0u;
+        s->palette[k] = fuzz_u8(r) < 250 ? (fuzz_u32(r) & 0xFFFFFFu) | object : fuzz_u32(r);
+    }
     /* a palette longer than this one goes as NULL, which the scene check refuses */
     b->palette = fuzz_u8(r) < 250 && b->palette_count <= 16u ? s->palette : NULL;
     for (size_t k = 0; k < FRAME_MAX * FRAME_MAX; k++) s->colour[k] = fuzz_u16(r);
     b->colour = s->colour;
-    b->depth_count = fuzz_u16(r) % (FRAME_MAX * FRAME_MAX + 1u);
-    for (size_t j = 0; j < FRAME_MAX; j++) {
-        const uint8_t x0 = fuzz_u8(r), x1 = fuzz_u8(r);
-        s->rows[j].x0 = (uint16_t)(x0 % (FRAME_MAX + 2u));
-        s->rows[j].x1 = (uint16_t)(x1 % (FRAME_MAX + 2u));
-        s->rows[j].first = fuzz_u16(r) % (FRAME_MAX * FRAME_MAX + 2u);
+    /* mostly in order, apart and packed; sometimes anywhere */
+    uint16_t spans = 0;
+    uint32_t kept = 0;
+    for (size_t j = 0; j < config->height; j++) {
+        s->row_spans[j] = spans;
+        uint32_t end = 0;
+        for (unsigned n = fuzz_u8(r) % 3u; n > 0; n--, spans++) {
+            tarn_backdrop_span *span = &s->spans[spans];
+            const int ordered = fuzz_u8(r) < 240;
+            span->x0 = (uint16_t)(ordered ? end + fuzz_u8(r) % 8u : fuzz_u8(r) % (FRAME_MAX + 2u));
+            span->x1 = (uint16_t)(ordered ? span->x0 + 1u + fuzz_u8(r) % 16u : fuzz_u8(r) % (FRAME_MAX + 2u));
+            span->first = ordered ? kept : fuzz_u16(r) % (FRAME_MAX * FRAME_MAX + 2u);
+            kept += span->x1 > span->x0 ? (uint32_t)(span->x1 - span->x0) : 0u;
+            end = span->x1;
+        }
     }
-    b->rows = s->rows;
+    s->row_spans[config->height] = spans;
+    b->depth_count = fuzz_u8(r) < 240 && kept <= FRAME_MAX * FRAME_MAX ? kept : fuzz_u16(r) % (FRAME_MAX * FRAME_MAX + 1u);
+    if (fuzz_u8(r) >= 248) s->row_spans[fuzz_u8(r) % (config->height + 1u)] = fuzz_u16(r);
+    b->row_spans = s->row_spans;
+    b->spans = s->spans;
+    b->span_count = fuzz_u8(r) < 248 ? spans : fuzz_u32(r);
     for (size_t k = 0; k < FRAME_MAX * FRAME_MAX; k++) s->depth[k] = fuzz_u32(r);
     b->depth = s->depth;
     s->static_view.backdrop = b;

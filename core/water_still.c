@@ -1,0 +1,146 @@
+/* water_still.c: the water over a still-water backdrop (tarn_scene.h, "Still
+ * water"), which holds steps 3 to 7 of tarn_water.h drawn. No triangle is drawn:
+ * the pixels of a tile marked with a water object are walked, and only the terms
+ * that move with the clock are found there, from texture coordinates its plane
+ * gives: step 1's normal, step 8's highlight, step 9's foam lines and step 10's
+ * sparkles. */
+#include "water.h"
+
+#define Q16_ONE 65536u
+
+/* An affine function of the plane at pixel (i, j), modulo 2^32. */
+static uint32_t plane_at(const int32_t f[3], int32_t i, int32_t j)
+{
+    return (uint32_t)f[0] + (uint32_t)f[1] * (uint32_t)i + (uint32_t)f[2] * (uint32_t)j;
+}
+
+/* numerator * 2^shift / depth in Q16.16, modulo 2^32, from depth's reciprocal
+ * recip = 2^62 / (depth << lz): numerator * recip / 2^32 * 2^(shift + lz - 30),
+ * rounded to nearest as the rasterizer rounds its coordinates: the panned maps
+ * multiply them by their scale, which would multiply a truncation's bias too. */
+static uint32_t texture_coordinate(uint32_t numerator, uint32_t recip, unsigned lz, unsigned shift)
+{
+    const int32_t high = tarn_mul_hi_s32_u32((int32_t)numerator, recip);
+    const int up = (int)(shift + lz) - 30; /* -29..32: lz 1..31, shift 0..31 */
+    if (up >= 32) return 0u;
+    if (up >= 0) return (uint32_t)high << up;
+    const unsigned down = (unsigned)-up;
+    return (uint32_t)tarn_floor_shift((int32_t)((uint32_t)high + (1u << (down - 1u))), down);
+}
+
+/* What a water pixel's moving terms read, from the plane at pixel (i, j): the
+ * surface's near/d, within the depth buffer's [1, 2^30], and the texture
+ * coordinates through one reciprocal of it. */
+static tarn_water_input plane_input(const tarn_still_plane *p, unsigned recip_steps, int32_t i, int32_t j)
+{
+    tarn_water_input in;
+    in.lit[0] = in.lit[1] = in.lit[2] = 0u; /* drawn into the still colour */
+    in.fresnel = 0u;
+    in.inv_depth = (uint32_t)tarn_clamp_i32((int32_t)plane_at(p->depth, i, j), 1, 1 << 30);
+    const unsigned lz = tarn_clz32(in.inv_depth);
+    const uint32_t recip = tarn_recip_q30(in.inv_depth << lz, recip_steps);
+    in.u = texture_coordinate(plane_at(p->u, i, j), recip, lz, p->uv_shift);
+    in.v = texture_coordinate(plane_at(p->v, i, j), recip, lz, p->uv_shift);
+    return in;
+}
+
+/* Step 8's highlight at a pixel (Q8.8 a channel) from its own normal, which `n`
+ * returns for the sparkles. */
+static void own_highlight(const tarn_water_context *w, const tarn_water_input *in, tarn_water_normal *n,
+                          uint32_t highlight[3])
+{
+    *n = tarn_water_uses(w, TARN_WATER_NORMALS) ? tarn_water_surface_normal(w, in) : tarn_water_flat_normal();
+    for (int c = 0; c < 3; c++) highlight[c] = 0u;
+    if (tarn_water_uses(w, TARN_WATER_SPECULAR)) (void)tarn_water_specular(w, n, highlight);
+}
+
+static int sparkles_possible(const tarn_water_context *w)
+{
+    return tarn_water_uses(w, TARN_WATER_SPARKLES) && tarn_water_uses(w, TARN_WATER_NORMALS);
+}
+
+/* Whether a sharp feature could show at a water pixel: sparkles, or foam where the
+ * backdrop marks that it can. */
+static int sharp_possible(const tarn_water_context *w, uint32_t still)
+{
+    return sparkles_possible(w) || (tarn_water_uses(w, TARN_WATER_FOAM) && (still & TARN_BACKDROP_STILL_FOAM) != 0u);
+}
+
+/* Step 9's place in the foam band at pixel (i, j), which the backdrop keeps where
+ * foam can show; beyond the band (Q16_ONE) elsewhere. */
+static uint32_t foam_band(const tarn_water_context *w, const tarn_backdrop *b, uint32_t still, int32_t i, int32_t j)
+{
+    if (!tarn_water_uses(w, TARN_WATER_FOAM) || (still & TARN_BACKDROP_STILL_FOAM) == 0u) return Q16_ONE;
+    return tarn_backdrop_foam_band(b, i, j);
+}
+
+/* The sharp features at water pixel (i, j) with its inputs, `n` its normal when it
+ * found one, else NULL. */
+static unsigned sharp_at(const tarn_water_context *w, const tarn_backdrop *b, const tarn_water_input *in,
+                         const tarn_water_normal *n, uint32_t still, int32_t i, int32_t j)
+{
+    const tarn_water_normal maps = n == NULL && sparkles_possible(w) ? tarn_water_map_x(w, in) : tarn_water_flat_normal();
+    return tarn_water_sharp_at(w, in, foam_band(w, b, still, i, j), n != NULL ? n : &maps);
+}
+
+/* The still colour (0xRRGGBB below the marks of `still`) with a highlight and the
+ * sharp features over it, 0x00RRGGBB. */
+static uint32_t over_still(const tarn_water_context *w, uint32_t still, const uint32_t highlight[3], unsigned sharp)
+{
+    if ((highlight[0] | highlight[1] | highlight[2] | sharp) == 0u) return still & 0xFFFFFFu;
+    uint32_t colour[3];
+    for (int c = 0; c < 3; c++) colour[c] = tarn_water_channel_q8(still, c) + highlight[c];
+    return tarn_water_finish(w, sharp, colour);
+}
+
+/* The slot of pixel (i, j)'s block, in a tile whose rect starts at column x0;
+ * NULL without water blocks. */
+static tarn_still_block *block_at(const tarn_water_context *w, int32_t i, int32_t x0)
+{
+    return w->still_blocks != NULL ? &w->still_blocks[(i - x0) >> 1] : NULL;
+}
+
+/* What one walk reads: the backdrop, the object's plane, and the walk's number. */
+typedef struct {
+    const tarn_backdrop *backdrop;
+    const tarn_still_plane *plane;
+    uint32_t number;
+    int32_t x0; /* the tile's first column */
+} still_walk;
+
+/* Water pixel (i, j) of a walk: its block's highlight when this walk found it at
+ * the block's top-left pixel, else its own, kept for the block when it is that
+ * pixel. */
+static uint32_t water_pixel(tarn_water_context *w, const still_walk *walk, uint32_t still, int32_t i, int32_t j)
+{
+    tarn_still_block *block = block_at(w, i, walk->x0);
+    const int shared = block != NULL && block->walk == walk->number && block->row == (j & ~1);
+    const int sharp = sharp_possible(w, still);
+    if (shared && !sharp) return over_still(w, still, block->highlight, 0u);
+    const tarn_water_input in = plane_input(walk->plane, w->recip_steps, i, j);
+    if (shared) return over_still(w, still, block->highlight, sharp_at(w, walk->backdrop, &in, NULL, still, i, j));
+    tarn_water_normal n;
+    uint32_t highlight[3];
+    own_highlight(w, &in, &n, highlight);
+    if (block != NULL && ((i | j) & 1) == 0) {
+        for (int c = 0; c < 3; c++) block->highlight[c] = highlight[c];
+        block->walk = walk->number;
+        block->row = j;
+    }
+    return over_still(w, still, highlight, sharp ? sharp_at(w, walk->backdrop, &in, &n, still, i, j) : 0u);
+}
+
+void tarn_water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop, uint32_t object,
+                           tarn_tile_target *tile)
+{
+    const tarn_pixel_rect *r = &tile->rect;
+    const still_walk walk = {backdrop, &backdrop->planes[object], ++w->still_walks, r->x0};
+    const uint32_t mark = (object + 1u) << TARN_BACKDROP_STILL_SHIFT;
+    for (int32_t j = r->y0; j < r->y1; j++) {
+        const int32_t row = (j - tile->origin_y) * tile->stride - tile->origin_x;
+        for (int32_t i = r->x0; i < r->x1; i++) {
+            uint32_t *pixel = &tile->colour[row + i];
+            if ((*pixel & TARN_BACKDROP_STILL_OBJECT) == mark) *pixel = water_pixel(w, &walk, *pixel, i, j);
+        }
+    }
+}
