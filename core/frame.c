@@ -36,7 +36,8 @@ static int quality_in_range(const tarn_quality *q)
            (TARN_LINK_APRON || q->refraction_apron == 0) &&
            q->cluster_bins <= 1 &&
            q->fog_argument_bits >= TARN_FOG_ARGUMENT_BITS_MIN && q->fog_argument_bits <= TARN_FOG_ARGUMENT_BITS_MAX &&
-           (q->water_block == 1 || (TARN_LINK_WATER_BLOCKS && q->water_block == 2 && q->tile_size % 2 == 0));
+           (q->water_block == 1 ||
+            (TARN_LINK_WATER_BLOCKS && (q->water_block == 2 || q->water_block == 4) && q->tile_size % q->water_block == 0));
 }
 
 tarn_status tarn_config_check(const tarn_frame_config *config)
@@ -131,8 +132,8 @@ static frame_layout layout_of(const tarn_frame_config *config, const tarn_scene 
     l.depth_bytes = l.still ? 0u : config->quality.depth_bits / 8u;
     /* the underwater pass reads displaced water pixels over an apron that need not
      * hold whole blocks */
-    l.blocks = TARN_LINK_WATER_BLOCKS && l.water && !l.underwater && config->quality.water_block == 2
-        ? (uint32_t)l.tile / 2u : 0u;
+    l.blocks = TARN_LINK_WATER_BLOCKS && l.water && !l.underwater && config->quality.water_block > 1
+        ? (uint32_t)l.tile / config->quality.water_block : 0u;
     l.block_bytes = l.still ? sizeof(tarn_still_block) : sizeof(tarn_water_block);
     const int binned = scene != NULL && config->quality.cluster_bins;
     l.static_bins = binned && TARN_LINK_STATIC_VERTICES && tarn_static_screen_applies(scene, config)

@@ -150,10 +150,14 @@ uint16_t tarn_rgb565(uint32_t rgb, uint16_t x, uint16_t y, int dither)
  * dither phase i % 4. Four at a time: the phases' thresholds stay put. */
 static void convert_row(uint8_t *out, const uint32_t *rgb, uint32_t width, const rgb565_threshold t[4])
 {
-    uint32_t i = 0;
-    for (; i + 4u <= width; i += 4u)
-        for (uint32_t k = 0; k < 4u; k++) put_u16_be(out + 2u * (i + k), rgb565_with(rgb[i + k], t[k]));
-    for (; i < width; i++) put_u16_be(out + 2u * i, rgb565_with(rgb[i], t[i & 3u]));
+    const uint32_t *const end = rgb + width, *const whole_groups_end = rgb + (width & ~3u);
+    for (; rgb != whole_groups_end; rgb += 4, out += 8) {
+        put_u16_be(out, rgb565_with(rgb[0], t[0]));
+        put_u16_be(out + 2, rgb565_with(rgb[1], t[1]));
+        put_u16_be(out + 4, rgb565_with(rgb[2], t[2]));
+        put_u16_be(out + 6, rgb565_with(rgb[3], t[3]));
+    }
+    for (uint32_t k = 0; rgb != end; rgb++, out += 2, k++) put_u16_be(out, rgb565_with(*rgb, t[k]));
 }
 
 /* Rows [first, first + count) of the tile as RGB565, high byte first, dithered at

@@ -231,7 +231,7 @@ static int as_deep_as(uint32_t depth_q30, const tarn_water_block *block)
 /* The slot of the block of water pixel (i, j), in a frame with water blocks. */
 static tarn_water_block *block_slot(const tarn_tile_target *tile, int32_t i)
 {
-    return &tile->water->blocks[(i - tile->rect.x0) >> 1];
+    return &tile->water->blocks[(i - tile->rect.x0) >> tile->water->block_shift];
 }
 
 /* Whether pixel (i, j), its background at depth_q30, takes its block's effects:
@@ -240,7 +240,8 @@ static tarn_water_block *block_slot(const tarn_tile_target *tile, int32_t i)
  * alone: even tiles hold whole blocks. */
 static int shares_block(const tarn_water_context *w, const tarn_water_block *block, int32_t j, uint32_t depth_q30)
 {
-    return block->serial == w->triangle_serial && block->row == (j & ~1) && as_deep_as(depth_q30, block);
+    return block->serial == w->triangle_serial && block->row == (j >> w->block_shift << w->block_shift) &&
+           as_deep_as(depth_q30, block);
 }
 
 /* The effects of a pixel that does not share its block's: its own, kept in the
@@ -253,7 +254,7 @@ static const tarn_water_effects *own_effects(const tarn_tile_target *tile, int32
 {
     tarn_water_context *w = tile->water;
     tarn_water_block *block = block_slot(tile, i);
-    const int top_left = ((i | j) & 1) == 0;
+    const int top_left = ((i | j) & ((1 << w->block_shift) - 1)) == 0;
     tarn_water_effects *e = top_left ? &block->effects : own;
     tarn_water_effects_at(w, i, j, in, e);
     if (top_left) {

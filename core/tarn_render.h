@@ -109,12 +109,14 @@ typedef struct {
                                    32-bit product does. */
     uint8_t water_block;        /* 1: every water pixel finds its own effects (normal,
                                    fog, absorption, surface, highlights, foam, sparkles,
-                                   refraction's offset); 2: each 2x2 block of pixels
-                                   finds them once, at its top-left pixel, and applies
-                                   them to each pixel's own background, where one
-                                   triangle draws the block over a background of about
-                                   one depth (within 1/64); the tile size must then be
-                                   even. Ignored under the underwater view. */
+                                   refraction's offset); 2 or 4: each 2x2 or 4x4 block
+                                   of pixels finds them once, at its top-left pixel, and
+                                   applies them to each pixel's own background, where
+                                   one triangle draws the block over a background of
+                                   about one depth (within 1/64); over still water
+                                   (tarn_scene.h), the block shares its highlight. The
+                                   tile size must then be a multiple of it. Ignored
+                                   under the underwater view. */
 } tarn_quality;
 
 #define TARN_FOG_ARGUMENT_BITS_MIN 4u
@@ -154,7 +156,7 @@ tarn_quality tarn_quality_default(void);
 #define TARN_LINK_APRON 1
 #endif
 
-/* Whether water effects can be shared by 2x2 blocks (the quality's water_block 2).
+/* Whether water effects can be shared by blocks (the quality's water_block 2 or 4).
  * tarn bake sets it to 0 when no baked quality shares them: the code that keeps the
  * blocks drops out, and a config asking for them is then refused (TARN_ERR_CONFIG).
  * Without that file it is linked. */
@@ -230,8 +232,8 @@ int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config
  * (tarn_frame_apron_pixels 0: refraction_apron 0, or no material refracts) and
  * without the underwater view, the water pass draws over the opaque buffers
  * instead, and needs two rows of the tile more: (tile_size^2 + 2 * tile_size) *
- * (4 + depth_bits/8). With water and water_block 2, the blocks add
- * tile_size/2 * 48 bytes. Cluster bins add 4 bytes for each cluster of the scene's
+ * (4 + depth_bits/8). With water and water_block 2 or 4, the blocks add
+ * tile_size/water_block * 48 bytes (24 over still water). Cluster bins add 4 bytes for each cluster of the scene's
  * meshes (one for a mesh without clusters), unless the scene's static view holds
  * them for this frame (tarn_scene.h).
  * `scene` may be NULL for an opaque-only budget without bins. */

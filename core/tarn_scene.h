@@ -182,9 +182,10 @@ typedef struct {
                                        read for its water objects */
     uint8_t index_bits;        /* 1..16: bits of a palette index */
     const uint32_t *palette;   /* 0xRRGGBB colours; with still_water, a water pixel's
-                                  also holds its marks (TARN_BACKDROP_STILL_*) */
+                                  also holds its marks (TARN_BACKDROP_STILL_*), and
+                                  they are in ascending order */
     uint32_t palette_count;    /* 2^index_bits (tarn bake pads the colours it needs
-                                  with black), so that every index names one */
+                                  with the last), so that every index names one */
     const uint16_t *colour;    /* a palette index per pixel, rows top to bottom: pixel
                                   (i, j)'s index_bits bits start at bit
                                   (j * width + i) * index_bits, counted from bit 0 of

@@ -40,11 +40,12 @@ typedef struct tarn_water_context {
     int32_t offset_limit;            /* pixels a refracted sample may move, each axis:
                                         the frame's refraction apron */
     tarn_pixel_rect sample_rect;     /* where refracted samples may land: the frame */
-    /* the quality's water_block 2: the effects of each 2x2 block of the tile, found
-       at its top-left pixel, a slot per block column; NULL with water_block 1 */
+    /* the quality's water_block 2 or 4: the effects of each block of the tile,
+       found at its top-left pixel, a slot per block column; NULL with water_block 1 */
     struct tarn_water_block *blocks;
+    uint8_t block_shift;   /* log2 of the quality's water_block */
     uint32_t triangle_serial; /* water triangles drawn this frame, 0 before the first */
-    /* over a still-water backdrop with the quality's water_block 2: each 2x2
+    /* over a still-water backdrop with the quality's water_block 2 or 4: each
        block's highlight, a slot per block column (tarn_still_block); NULL otherwise */
     struct tarn_still_block *still_blocks;
     uint32_t still_walks; /* tile walks over still water this frame, 0 before the first */
@@ -56,6 +57,7 @@ typedef struct tarn_water_context {
  * highlight does not depend on it. */
 typedef struct tarn_still_block {
     uint32_t highlight[3]; /* Q8.8 a channel */
+    uint32_t lit;          /* 0 when the highlight adds nothing */
     uint32_t walk;         /* 0: nobody */
     int32_t row;           /* the block's top pixel row */
 } tarn_still_block;

@@ -59,11 +59,13 @@ static int sparkles_possible(const tarn_water_context *w)
     return tarn_water_uses(w, TARN_WATER_SPARKLES) && tarn_water_uses(w, TARN_WATER_NORMALS);
 }
 
-/* Whether a sharp feature could show at a water pixel: sparkles, or foam where the
- * backdrop marks that it can. */
-static int sharp_possible(const tarn_water_context *w, uint32_t still)
+/* The bits of a still colour (marks included) that say a sharp feature could show
+ * at its pixel: any, since sparkles can show anywhere; TARN_BACKDROP_STILL_FOAM,
+ * where the backdrop marks that foam can; none without either. */
+static uint32_t sharp_bits(const tarn_water_context *w)
 {
-    return sparkles_possible(w) || (tarn_water_uses(w, TARN_WATER_FOAM) && (still & TARN_BACKDROP_STILL_FOAM) != 0u);
+    if (sparkles_possible(w)) return UINT32_MAX;
+    return tarn_water_uses(w, TARN_WATER_FOAM) ? TARN_BACKDROP_STILL_FOAM : 0u;
 }
 
 /* Step 9's place in the foam band at pixel (i, j), which the backdrop keeps where
@@ -97,15 +99,18 @@ static uint32_t over_still(const tarn_water_context *w, uint32_t still, const ui
  * NULL without water blocks. */
 static tarn_still_block *block_at(const tarn_water_context *w, int32_t i, int32_t x0)
 {
-    return w->still_blocks != NULL ? &w->still_blocks[(i - x0) >> 1] : NULL;
+    return w->still_blocks != NULL ? &w->still_blocks[(i - x0) >> w->block_shift] : NULL;
 }
 
-/* What one walk reads: the backdrop, the object's plane, and the walk's number. */
+/* What one walk reads: the backdrop, the object's plane, the walk's number, and
+ * where it is. */
 typedef struct {
     const tarn_backdrop *backdrop;
     const tarn_still_plane *plane;
     uint32_t number;
-    int32_t x0; /* the tile's first column */
+    uint32_t sharp_bits; /* sharp_bits() */
+    int32_t x0;          /* the tile's first column */
+    int32_t block_row;   /* the top row of the blocks of the row walked */
 } still_walk;
 
 /* Water pixel (i, j) of a walk: its block's highlight when this walk found it at
@@ -114,33 +119,42 @@ typedef struct {
 static uint32_t water_pixel(tarn_water_context *w, const still_walk *walk, uint32_t still, int32_t i, int32_t j)
 {
     tarn_still_block *block = block_at(w, i, walk->x0);
-    const int shared = block != NULL && block->walk == walk->number && block->row == (j & ~1);
-    const int sharp = sharp_possible(w, still);
-    if (shared && !sharp) return over_still(w, still, block->highlight, 0u);
+    const int shared = block != NULL && block->walk == walk->number && block->row == walk->block_row;
+    const int sharp = (still & walk->sharp_bits) != 0u;
+    if (shared && !sharp) return block->lit ? over_still(w, still, block->highlight, 0u) : still & 0xFFFFFFu;
     const tarn_water_input in = plane_input(walk->plane, w->recip_steps, i, j);
     if (shared) return over_still(w, still, block->highlight, sharp_at(w, walk->backdrop, &in, NULL, still, i, j));
     tarn_water_normal n;
     uint32_t highlight[3];
     own_highlight(w, &in, &n, highlight);
-    if (block != NULL && ((i | j) & 1) == 0) {
+    if (block != NULL && ((i | j) & ((1 << w->block_shift) - 1)) == 0) {
         for (int c = 0; c < 3; c++) block->highlight[c] = highlight[c];
+        block->lit = highlight[0] | highlight[1] | highlight[2];
         block->walk = walk->number;
         block->row = j;
     }
     return over_still(w, still, highlight, sharp ? sharp_at(w, walk->backdrop, &in, &n, still, i, j) : 0u);
 }
 
+/* The first pixel of [from, end) that carries `mark`, or `end`: the walk's own
+ * loop, kept apart from the water pixel's work. */
+static uint32_t *next_marked(uint32_t *from, const uint32_t *end, uint32_t mark)
+{
+    while (from != end && (*from & TARN_BACKDROP_STILL_OBJECT) != mark) from++;
+    return from;
+}
+
 void tarn_water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop, uint32_t object,
                            tarn_tile_target *tile)
 {
-    const tarn_pixel_rect *r = &tile->rect;
-    const still_walk walk = {backdrop, &backdrop->planes[object], ++w->still_walks, r->x0};
+    const tarn_pixel_rect r = tile->rect;
+    still_walk walk = {backdrop, &backdrop->planes[object], ++w->still_walks, sharp_bits(w), r.x0, 0};
     const uint32_t mark = (object + 1u) << TARN_BACKDROP_STILL_SHIFT;
-    for (int32_t j = r->y0; j < r->y1; j++) {
-        const int32_t row = (j - tile->origin_y) * tile->stride - tile->origin_x;
-        for (int32_t i = r->x0; i < r->x1; i++) {
-            uint32_t *pixel = &tile->colour[row + i];
-            if ((*pixel & TARN_BACKDROP_STILL_OBJECT) == mark) *pixel = water_pixel(w, &walk, *pixel, i, j);
-        }
+    for (int32_t j = r.y0; j < r.y1; j++) {
+        walk.block_row = j >> w->block_shift << w->block_shift;
+        uint32_t *first = &tile->colour[(j - tile->origin_y) * tile->stride + (r.x0 - tile->origin_x)];
+        const uint32_t *end = first + (r.x1 - r.x0);
+        for (uint32_t *pixel = first; (pixel = next_marked(pixel, end, mark)) != end; pixel++)
+            *pixel = water_pixel(w, &walk, *pixel, r.x0 + (int32_t)(pixel - first), j);
     }
 }

@@ -166,7 +166,7 @@ static void pack_index(uint16_t *words, size_t k, unsigned bits, uint32_t index)
     }
 }
 
-/* The frame's distinct colours, sorted and padded with black to a power of two
+/* The frame's distinct colours, sorted and padded with the last to a power of two
  * (every index the bits can spell names one), and each pixel's index among them,
  * packed (tarn_backdrop.colour). */
 static int index_colours(const uint32_t *rgb, size_t pixels, tarn_backdrop_image *b, tarn_error *err)
@@ -190,7 +190,7 @@ static int index_colours(const uint32_t *rgb, size_t pixels, tarn_backdrop_image
         const uint32_t *found = bsearch(&rgb[k], b->palette, count, sizeof *b->palette, compare_u32);
         pack_index(b->colour, k, bits, (uint32_t)(found - b->palette));
     }
-    for (size_t k = count; k < ((size_t)1 << bits); k++) b->palette[k] = 0u;
+    for (size_t k = count; k < ((size_t)1 << bits); k++) b->palette[k] = b->palette[count - 1u];
     b->colours = (uint32_t)count;
     b->backdrop.index_bits = (uint8_t)bits;
     b->backdrop.palette = b->palette;

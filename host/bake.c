@@ -582,9 +582,9 @@ static void plan_backdrop(bake_plan *p, const tarn_static_view *view)
     bake_item *item = add_item(p, BYTES_BACKDROP, &T_RGB, b->palette, b->palette_count, "%s_backdrop_palette",
                                p->name);
     if (item)
-        snprintf(item->note, sizeof item->note, "backdrop: the %lu colours the opaque objects%s draw, padded with "
-                 "black to %lu so that every %u-bit index names one", (unsigned long)p->backdrop_colours,
-                 b->still_water ? " and the still water (its object's number in bits 25 to 31)" : "",
+        snprintf(item->note, sizeof item->note, "backdrop: the %lu colours the opaque objects%s draw, ascending, "
+                 "padded with the last to %lu: every %u-bit index names one", (unsigned long)p->backdrop_colours,
+                 b->still_water ? " and the still water (with its marks)" : "",
                  (unsigned long)b->palette_count, b->index_bits);
     item = add_item(p, BYTES_BACKDROP, &T_U16, b->colour, p->backdrop_colour_words, "%s_backdrop_colour", p->name);
     if (item)
@@ -1055,12 +1055,12 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     fprintf(out, "#define TARN_LINK_UNDERWATER %d\n", p->scene->scene.underwater != NULL);
     int span = p->config.quality.perspective == TARN_PERSPECTIVE_SPAN;
     int apron = p->config.quality.refraction_apron != 0;
-    int blocks = p->config.quality.water_block == 2;
+    int blocks = p->config.quality.water_block > 1;
     int exact_depth = p->config.quality.depth_interpolation == TARN_DEPTH_EXACT;
     for (size_t i = 0; i < p->points->count; i++) {
         span |= p->points->qualities[i].perspective == TARN_PERSPECTIVE_SPAN;
         apron |= p->points->qualities[i].refraction_apron != 0;
-        blocks |= p->points->qualities[i].water_block == 2;
+        blocks |= p->points->qualities[i].water_block > 1;
         exact_depth |= p->points->qualities[i].depth_interpolation == TARN_DEPTH_EXACT;
     }
     fprintf(out, "#define TARN_LINK_PERSPECTIVE_SPAN %d\n", span);

@@ -31,8 +31,8 @@ const char tarn_cli_usage[] =
     "         --apron on|off|N (how far refraction may move a sample, so how much opaque scene\n"
     "         each tile renders around its water: as far as it reaches, not at all, or N pixels 0..32)\n"
     "         --bins on|off (find each cluster's screen box once a frame, 4 bytes a cluster)\n"
-    "         --water-block 1|2 (water effects found at every pixel, or once per 2x2 block:\n"
-    "         even tiles only)\n";
+    "         --water-block 1|2|4 (water effects found at every pixel, or once per 2x2 or 4x4 block:\n"
+    "         tiles a multiple of the block only)\n";
 
 /* Whole decimal number in [min, max], nothing else in the text. */
 static int parse_whole(const char *text, unsigned long min, unsigned long max, unsigned long *out)
@@ -105,6 +105,16 @@ static int parse_exp2(const char *text, tarn_quality *q, tarn_error *err)
                      text ? text : "");
 }
 
+/* --water-block 1|2|4. */
+static int parse_water_block(const char *value, tarn_quality *q, tarn_error *err)
+{
+    if (value && (strcmp(value, "1") == 0 || strcmp(value, "2") == 0 || strcmp(value, "4") == 0)) {
+        q->water_block = (uint8_t)(value[0] - '0');
+        return 0;
+    }
+    return tarn_fail(err, "--water-block: expected 1, 2 or 4, got '%s'", value ? value : "");
+}
+
 /* A knob taking a whole number in a range, stored in a uint8_t field. */
 static int parse_knob(const char *name, const char *text, unsigned long min, unsigned long max,
                       uint8_t *field, tarn_error *err)
@@ -173,7 +183,7 @@ static int parse_quality_option(const char *name, const char *value, tarn_qualit
                           &q->fog_argument_bits, err);
     if (strcmp(name, "--tile") == 0)
         return parse_knob(name, value, TARN_TILE_SIZE_MIN, TARN_TILE_SIZE_MAX, &q->tile_size, err);
-    if (strcmp(name, "--water-block") == 0) return parse_knob(name, value, 1, 2, &q->water_block, err);
+    if (strcmp(name, "--water-block") == 0) return parse_water_block(value, q, err);
     if (strcmp(name, "--subpixel") == 0)
         return parse_knob(name, value, TARN_SUBPIXEL_BITS_MIN, TARN_SUBPIXEL_BITS_MAX, &q->subpixel_bits, err);
     if (strcmp(name, "--recip-steps") == 0)
@@ -302,9 +312,9 @@ static int check_sequence(tarn_cli_options *o, tarn_error *err)
 
 int tarn_cli_check_quality(const tarn_quality *q, tarn_error *err)
 {
-    if (q->water_block == 2 && q->tile_size % 2 != 0)
-        return tarn_fail(err, "--water-block 2: expected an even --tile (a tile must hold whole 2x2 blocks), "
-                         "got %u", (unsigned)q->tile_size);
+    if (q->water_block > 1 && q->tile_size % q->water_block != 0)
+        return tarn_fail(err, "--water-block %u: expected a --tile that is a multiple of %u (a tile must hold whole "
+                         "blocks), got %u", (unsigned)q->water_block, (unsigned)q->water_block, (unsigned)q->tile_size);
     return 0;
 }
 

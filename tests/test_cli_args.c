@@ -138,7 +138,8 @@ static void test_depth_interpolation_option(void **state)
     assert_rejected("compare s.json --depth-interpolation", "--depth-interpolation: expected exact");
 }
 
-/* --water-block 1|2, and 2 only with an even tile, wherever the tile comes from. */
+/* --water-block 1|2|4, a block only with a tile it divides, wherever the tile comes
+ * from. */
 static void test_water_block_option(void **state)
 {
     (void)state;
@@ -149,10 +150,13 @@ static void test_water_block_option(void **state)
     assert_int_equal(parse("bake s.json -o x.c --quality exact --water-block 2 --tile 32", &o, &err), 0);
     assert_int_equal(o.quality.water_block, 2);
     assert_int_equal(o.quality.tile_size, 32);
-    assert_rejected("render s.json -o x.png --water-block 3", "--water-block: expected a whole number 1..2, got '3'");
+    assert_int_equal(parse("bake s.json -o x.c --water-block 4 --tile 36", &o, &err), 0);
+    assert_int_equal(o.quality.water_block, 4);
+    assert_rejected("render s.json -o x.png --water-block 3", "--water-block: expected 1, 2 or 4, got '3'");
     assert_rejected("render s.json -o x.png --water-block 2 --tile 43",
-                    "--water-block 2: expected an even --tile (a tile must hold whole 2x2 blocks), got 43");
-    assert_rejected("compare s.json --tile 9 --water-block 2", "--water-block 2: expected an even --tile");
+                    "--water-block 2: expected a --tile that is a multiple of 2 (a tile must hold whole blocks), got 43");
+    assert_rejected("compare s.json --tile 9 --water-block 2", "--water-block 2: expected a --tile that is a multiple of 2");
+    assert_rejected("bake s.json -o x.c --water-block 4 --tile 42", "--water-block 4: expected a --tile that is a multiple of 4");
 }
 
 /* bake --static-view: on by default, off when asked, and nothing else. */

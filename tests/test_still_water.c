@@ -169,7 +169,7 @@ static void test_pond_is_as_close_to_the_reference(void **state)
     (void)state;
     tarn_loaded_scene loaded;
     load("scenes/pond.json", &loaded);
-    for (uint8_t block = 1; block <= 2; block++) {
+    for (uint8_t block = 1; block <= 4; block *= 2) {
         tarn_frame_config config = fast_config(&loaded, block);
         config.time_ms = 1750;
         tarn_backdrop_scene b;
