@@ -1240,7 +1240,8 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
                          plan.config.height, tarn_status_text(TARN_ERR_CONFIG));
     static_scene with_static;
     if (o->static_view) {
-        if (static_scene_make(scene, &plan.config, o->backdrop, &with_static, err) != 0) return -1;
+        if (static_scene_make(scene, &plan.config, o->backdrop, &with_static, err) != 0)
+            return tarn_fail_in(err, o->scene_path);
         plan.scene = &with_static.loaded;
         plan.static_bin_count = static_bin_count(&with_static);
         plan.backdrop_colour_words = o->backdrop ? with_static.over_backdrop.image.colour_words : 0u;

@@ -160,7 +160,7 @@ static int render_to_png(const tarn_cli_options *o, const tarn_loaded_scene *sce
     if (o->backdrop == TARN_BACKDROP_NONE) return render_images(o, scene, config, err);
     tarn_backdrop_scene backdrop;
     if (tarn_backdrop_scene_make(&scene->scene, config, (tarn_backdrop_kind)o->backdrop, 0, &backdrop, err) != 0)
-        return -1;
+        return tarn_fail_in(err, o->scene_path);
     tarn_loaded_scene over = *scene;
     over.scene = backdrop.water.scene;
     const int failed = render_images(o, &over, config, err);

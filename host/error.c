@@ -16,3 +16,10 @@ int tarn_fail(tarn_error *err, const char *format, ...)
         if ((unsigned char)*c < 0x20 || *c == 0x7f) *c = '?';
     return -1;
 }
+
+int tarn_fail_in(tarn_error *err, const char *path)
+{
+    if (err == NULL) return -1;
+    tarn_error inner = *err;
+    return tarn_fail(err, "%s: %s", path, inner.message);
+}

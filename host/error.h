@@ -20,4 +20,8 @@ typedef struct {
 int tarn_fail(tarn_error *err, const char *format, ...)
     __attribute__((format(printf, 2, 3)));
 
+/* "path: " before the message err holds, for a step that does not know the file
+ * it works on; always returns -1. */
+int tarn_fail_in(tarn_error *err, const char *path);
+
 #endif
