@@ -109,6 +109,7 @@ typedef struct {
     const tarn_still_plane *plane;
     uint32_t number;
     uint32_t sharp_bits; /* sharp_bits() */
+    int specular;        /* the object has a highlight: without, only sharp features move */
     int32_t x0;          /* the tile's first column */
     int32_t block_row;   /* the top row of the blocks of the row walked */
 } still_walk;
@@ -122,8 +123,12 @@ static uint32_t water_pixel(tarn_water_context *w, const still_walk *walk, uint3
     const int shared = block != NULL && block->walk == walk->number && block->row == walk->block_row;
     const int sharp = (still & walk->sharp_bits) != 0u;
     if (shared && !sharp) return block->lit ? over_still(w, still, block->highlight, 0u) : still & 0xFFFFFFu;
+    if (!walk->specular && !sharp) return still & 0xFFFFFFu; /* nothing moves here */
     const tarn_water_input in = plane_input(walk->plane, w->recip_steps, i, j);
-    if (shared) return over_still(w, still, block->highlight, sharp_at(w, walk->backdrop, &in, NULL, still, i, j));
+    if (shared || !walk->specular) {
+        static const uint32_t dark[3] = {0u, 0u, 0u};
+        return over_still(w, still, shared ? block->highlight : dark, sharp_at(w, walk->backdrop, &in, NULL, still, i, j));
+    }
     tarn_water_normal n;
     uint32_t highlight[3];
     own_highlight(w, &in, &n, highlight);
@@ -148,7 +153,8 @@ void tarn_water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop,
                            tarn_tile_target *tile)
 {
     const tarn_pixel_rect r = tile->rect;
-    still_walk walk = {backdrop, &backdrop->planes[object], ++w->still_walks, sharp_bits(w), r.x0, 0};
+    still_walk walk = {backdrop, &backdrop->planes[object], ++w->still_walks, sharp_bits(w),
+                       tarn_water_uses(w, TARN_WATER_SPECULAR), r.x0, 0};
     const uint32_t mark = (object + 1u) << TARN_BACKDROP_STILL_SHIFT;
     for (int32_t j = r.y0; j < r.y1; j++) {
         walk.block_row = j >> w->block_shift << w->block_shift;
