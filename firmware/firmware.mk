@@ -199,15 +199,15 @@ $(FW_MAIN_OBJ): $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
 $(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"'
 $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-distribute-patterns -fno-strict-aliasing
 # Code that runs once a frame, or once a water object a tile (the scene check and the
-# backdrop's, the view, object and water setup, the presets, the report), or for few
-# triangles (clipping), is compiled for size (on top of the scene_link.h switches):
-# it is far below 0.1% of the instructions, and -Os takes about 1,100 bytes off the
-# M0's 32 KB (the pond: 1 instruction a pixel more). On a
-# board with a code budget (BOARD_CODE_BYTES_MAX) so is the tile loop (core/frame.c),
-# once a tile: -Os takes about 820 bytes more off for 3 instructions a pixel of the
-# M0's pond.
-FW_SIZE_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,core/scene_check core/backdrop_check core/view core/vertex core/clip core/water_setup core/quality \
-	firmware/report $(if $(BOARD_CODE_BYTES_MAX),core/frame))
+# backdrop's, the view and water setup, the presets, the report), is compiled for
+# size (on top of the scene_link.h switches): it is far below 0.1% of the
+# instructions, and -Os takes about 700 bytes off the M0's 32 KB. On a board with a
+# code budget (BOARD_CODE_BYTES_MAX) so are the tile loop (core/frame.c), once a
+# tile, and the vertices' transform and clipping (core/vertex.c, core/clip.c),
+# which a static view mostly spares: -Os takes about 1,240 bytes more off for 4
+# instructions a pixel of the M0's pond.
+FW_SIZE_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,core/scene_check core/backdrop_check core/view core/water_setup core/quality \
+	firmware/report $(if $(BOARD_CODE_BYTES_MAX),core/frame core/vertex core/clip))
 $(FW_SIZE_OBJ): FW_DEFINES += -Os
 
 $(FW_DIR)/obj/%.o: %.c | fw-toolchain
