@@ -6,7 +6,7 @@
 # the water blocks' code (tarn_water_sharp_features) when no baked quality has water_block 2,
 # nor exact depth (tarn_exact_depth_at) when every baked quality steps depth on a plane,
 # nor the backdrop's reader (tarn_backdrop_fill) unless the scene is baked with one,
-# nor the water over still water (tarn_water_over_still) unless that backdrop is baked
+# nor the water over still water (tarn_water_still_tile) unless that backdrop is baked
 # with still water, and then none of the shading it holds (tarn_water_shade, fog).
 #
 # Builds the qemu-m0 firmware for several scenes (each in its own directory under
@@ -21,7 +21,7 @@ board=qemu-m0
 flags="--apron off --tile 16 --depth 16"
 effects="tarn_water_shade tarn_water_sharp_features tarn_water_surface_normal tarn_water_refract tarn_water_fog tarn_water_absorb
 tarn_water_depth_colour tarn_water_fresnel_alpha tarn_water_specular tarn_water_foam tarn_water_sparkles
-tarn_underwater_tile span_end tarn_vertex_shade tarn_exact_depth_at tarn_backdrop_fill tarn_water_over_still"
+tarn_underwater_tile span_end tarn_vertex_shade tarn_exact_depth_at tarn_backdrop_fill tarn_water_still_tile"
 passed=0
 failed=0
 
@@ -78,7 +78,7 @@ check scenes/effects/fog.json tarn_water_shade tarn_water_fog tarn_vertex_shade 
 extra_name=-backdrop extra_flags=" --backdrop on"
 check scenes/effects/fog.json tarn_water_shade tarn_water_fog tarn_exact_depth_at tarn_backdrop_fill
 extra_name=-still extra_flags=" --backdrop still"
-check scenes/effects/fog.json tarn_exact_depth_at tarn_backdrop_fill tarn_water_over_still
-check scenes/effects/foam.json tarn_water_foam tarn_exact_depth_at tarn_backdrop_fill tarn_water_over_still
+check scenes/effects/fog.json tarn_exact_depth_at tarn_backdrop_fill tarn_water_still_tile
+check scenes/effects/foam.json tarn_water_foam tarn_exact_depth_at tarn_backdrop_fill tarn_water_still_tile
 echo "firmware-link: $passed passed, $failed failed"
 [ $failed -eq 0 ]
