@@ -15,12 +15,15 @@
  *    Newton step are on the M0's front, and
  *    the smallest exp2 table and fog argument cost nothing visible once refraction
  *    is gone. Without refraction, water blocks cost the pond 0.14 dB for 20% of
- *    the M0's instructions (1333 against 1670); with it they save next to nothing
+ *    the M0's instructions (1319 against 1648); with it they save next to nothing
  *    (refracted effects are never shared) and cost 2.6 dB, so only fast takes
- *    them. Fast also steps depth on a plane (TARN_DEPTH_PLANE): three exact
- *    divisions less a triangle and a plain add a pixel, 6% of the M0's
- *    instructions (1333 against 1419), the pond the same to 0.01 dB; its images
- *    differ from exact depth's in a few pixels where surfaces meet. */
+ *    them. 4x4 blocks cost the M0 more from the meshes (1378), since fewer pixels
+ *    share a block with one triangle over one depth; over still water, where a
+ *    block shares only its highlight, they are the board's choice (docs/bake.md).
+ *    Fast also steps depth on a plane (TARN_DEPTH_PLANE): three exact divisions
+ *    less a triangle and a plain add a pixel, 6% of the M0's instructions (1319
+ *    against 1399), the pond the same to 0.01 dB; its images differ from exact
+ *    depth's in a few pixels where surfaces meet. */
 #include "tarn_render.h"
 
 static tarn_quality preset_exact(void)

@@ -241,7 +241,7 @@ $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
 		if grep -q "region .FLASH. overflowed" $(FW_DIR)/link.err; then \
 			echo "tarn: $(BOARD)'s flash cannot hold $(FW_SCENE): use smaller textures or fewer mesh segments" \
 				"$(if $(findstring --static-view off,$(FW_BAKE_FLAGS)),,(or bake with --static-view off: its meshes take less flash than static vertices and bins))" \
-				"$(if $(findstring --backdrop on,$(FW_BAKE_FLAGS)),(or bake without --backdrop on: its picture of the opaque objects takes a palette index a pixel))" \
+				"$(if $(findstring --backdrop on,$(FW_BAKE_FLAGS))$(findstring --backdrop still,$(FW_BAKE_FLAGS)),(or bake without --backdrop: its picture takes a palette index a pixel))" \
 				"(the header of $(FW_DIR)/scene.c counts the bytes)" >&2; fi; \
 		rm -f $@; exit 1; fi
 	@cat $(FW_DIR)/link.err >&2; rm -f $(FW_DIR)/link.err

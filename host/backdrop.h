@@ -8,10 +8,11 @@
  * same, byte for byte, as the whole scene drawn (tests/test_backdrop.c). `tarn bake
  * --backdrop on` writes it; `tarn render --backdrop on` draws through it.
  *
- * A still-water backdrop (`--backdrop still`) holds the water's still terms drawn
- * too, each water pixel marked with its object, and the depth only where foam
- * shows (found by drawing the foam white, then black, over the whole band); a
- * frame then finds only the water's moving terms (TARN_WATER_MOVING). */
+ * A still-water backdrop (`--backdrop still`, still_backdrop.c) holds the water's
+ * still terms drawn too, each water pixel marked with its object and where foam
+ * can show, the place in the foam band there, and each water object's plane
+ * (still_planes.h); a frame then finds only the water's moving terms
+ * (TARN_WATER_MOVING). */
 #ifndef TARN_HOST_BACKDROP_H
 #define TARN_HOST_BACKDROP_H
 

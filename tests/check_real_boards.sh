@@ -95,7 +95,7 @@ out=$(make --no-print-directory firmware BOARD=qemu-m0 FW_DIR=$m0_dir SCENE=scen
 status=$?
 if [ $status -ne 0 ] && [ ! -e "$m0_dir/firmware.elf" ] &&
     printf '%s\n' "$out" | grep -qE "region .FLASH. overflowed by [0-9]+ bytes" &&
-    printf '%s\n' "$out" | grep "^tarn: qemu-m0's flash cannot hold scenes/pond.json" | grep -q -- "or bake without --backdrop on"; then
+    printf '%s\n' "$out" | grep "^tarn: qemu-m0's flash cannot hold scenes/pond.json" | grep -q -- "or bake without --backdrop:"; then
     pass
 else
     fail "qemu-m0 with a backdrop too large for its flash should fail to link, saying the backdrop can go (status $status):"

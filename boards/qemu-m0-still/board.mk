@@ -1,12 +1,12 @@
 # qemu-m0-still: the qemu-m0 board (the same chip, startup, memory and stack) with
 # the pond baked --backdrop still: tarn bake draws the opaque objects and the
 # water's still terms (fog, depth colour, fresnel, the lit surface) once, for this
-# frame and quality, into a palette picture in flash (14-bit indices into 14,276
+# frame and quality, into a palette picture in flash (14-bit indices into 14,590
 # colours padded to 16,384, each water pixel marked with its object and where foam
-# can show, and the place in the foam band there), and each frame finds only the
-# water's moving terms over it: the highlights, once a 4x4 block (--water-block 4),
-# and the foam lines (docs/bake.md, "Still water"). The panel stream equals the
-# host's render through the same backdrop (tarn render --backdrop still), byte for
-# byte.
+# can show, and the place in the foam band there: 172,142 bytes; the image takes
+# 248,660 of the 262,144), and each frame finds only the water's moving terms over
+# it: the highlights, once a 4x4 block (--water-block 4), and the foam lines
+# (docs/bake.md, "Still water"). The panel stream equals the host's render through
+# the same backdrop (tarn render --backdrop still), byte for byte.
 include boards/qemu-m0/board.mk
 BOARD_BAKE_FLAGS := --quality fast --backdrop still --water-block 4
