@@ -141,11 +141,12 @@ typedef struct {
  * water objects are flat, and it holds each one's surface as the frame sees it
  * (tarn_still_plane). A frame draws no water triangle: it walks each tile's marked
  * pixels and finds only the moving terms there, from texture coordinates the plane
- * gives (a 2x2 block's highlight once, with the quality's water_block 2). Its images differ from the scene drawn whole by
- * the rounding of the still terms, by the texture coordinates (exact on the plane,
- * where triangles interpolate them) and, with water blocks, by the highlights the
- * blocks share; docs/bake.md gives the error. It applies to a frame without
- * refraction's moves (no apron, or no refraction) and without the underwater view. */
+ * gives (a block's highlight once, with the quality's water_block 2 or 4). Its
+ * images differ from the scene drawn whole by the rounding of the still terms, by
+ * the texture coordinates (exact on the plane, where triangles interpolate them)
+ * and, with water blocks, by the highlights the blocks share; docs/bake.md gives
+ * the error. It applies to a frame without refraction's moves (no apron, or no
+ * refraction) and without the underwater view. */
 #define TARN_BACKDROP_STILL_OBJECT 0x7E000000u
 #define TARN_BACKDROP_STILL_SHIFT 25u
 #define TARN_BACKDROP_STILL_OBJECTS_MAX 63u
@@ -174,7 +175,7 @@ typedef struct {
     uint8_t recip_newton_steps, perspective, perspective_span; /* tarn_quality's */
     uint8_t depth_bits, depth_interpolation;
     uint8_t still_water;       /* 0: the opaque objects alone. 1: the water's still
-                                  terms too (below, "Still water") */
+                                  terms too (above, "Still water") */
     /* with still_water, the rest of tarn_quality that shapes the still terms */
     uint8_t water_block, fog_argument_bits, exp2_interpolate;
     uint16_t exp2_entries;
