@@ -53,16 +53,12 @@ static int spans_valid(const tarn_backdrop *b, uint16_t width, uint16_t height)
     return 1;
 }
 
-/* The still-water marks that name a water object of the scene, and 0 (none), as a
- * bit each: mark m is bit m % 32 of word m / 32. */
-static void water_marks(const tarn_scene *scene, uint32_t words[2])
+/* Whether a still-water mark names a water object of the scene, or none (0). */
+static int names_water(const tarn_scene *scene, uint32_t mark)
 {
-    words[0] = 1u;
-    words[1] = 0u;
-    for (uint32_t k = 0; k < scene->object_count && k < TARN_BACKDROP_STILL_OBJECTS_MAX; k++) {
-        const tarn_material *m = scene->objects[k].material;
-        if (m != NULL && m->water != NULL) words[(k + 1u) >> 5] |= 1u << ((k + 1u) & 31u);
-    }
+    if (mark == 0u) return 1;
+    const tarn_material *m = mark <= scene->object_count ? scene->objects[mark - 1u].material : NULL;
+    return m != NULL && m->water != NULL;
 }
 
 /* Colours with nothing above 0xRRGGBB but a still-water backdrop's marks, each
@@ -77,15 +73,13 @@ static int palette_valid(const tarn_backdrop *b, const tarn_scene *scene)
             if (b->palette[k] > 0xFFFFFFu) return 0;
         return 1;
     }
-    uint32_t marks[2];
-    water_marks(scene, marks);
     uint32_t previous = 0u; /* mark 0 always names none */
     for (uint32_t k = 0; k < b->palette_count; k++) {
         const uint32_t colour = b->palette[k];
         if (colour < previous || (colour & TARN_WATER_MARK) != 0u) return 0;
         if ((colour ^ previous) & TARN_BACKDROP_STILL_OBJECT) {
             const uint32_t mark = (colour & TARN_BACKDROP_STILL_OBJECT) >> TARN_BACKDROP_STILL_SHIFT;
-            if ((marks[mark >> 5] >> (mark & 31u) & 1u) == 0u) return 0;
+            if (!names_water(scene, mark)) return 0;
         }
         previous = colour;
     }

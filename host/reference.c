@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ref_geometry.h"
 #include "reference_water.h"
 #include "tarn_render.h"
 
@@ -25,10 +26,6 @@
 /* Below 2^26 every edge-function product fits the 53-bit mantissa: plain double
  * arithmetic is exact and the slower accurate form is not needed. */
 #define EXACT_PRODUCT_LIMIT 67108864.0 /* 2^26 */
-
-typedef struct {
-    double x, y, z;
-} dvec3;
 
 /* A vertex as the rasterizer sees it: everything interpolated across a triangle. */
 typedef struct {
@@ -58,43 +55,6 @@ typedef struct {
     double near, far;  /* the camera's, world units */
     const tarn_ref_water_view *water; /* the opaque buffers, during the water pass */
 } ref_target;
-
-typedef struct {
-    dvec3 position, right, up, forward;
-    double near, far, focal;
-} ref_camera;
-
-/* ---- small vector helpers ------------------------------------------------------ */
-
-static dvec3 vec_from_q16(tarn_vec3 v)
-{
-    dvec3 r = { v.x / Q16_SCALE, v.y / Q16_SCALE, v.z / Q16_SCALE };
-    return r;
-}
-
-static dvec3 vec_sub(dvec3 a, dvec3 b)
-{
-    dvec3 r = { a.x - b.x, a.y - b.y, a.z - b.z };
-    return r;
-}
-
-static double vec_dot(dvec3 a, dvec3 b)
-{
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-static dvec3 vec_cross(dvec3 a, dvec3 b)
-{
-    dvec3 r = { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x };
-    return r;
-}
-
-static dvec3 vec_normalize(dvec3 v)
-{
-    double len = sqrt(vec_dot(v, v));
-    dvec3 r = { v.x / len, v.y / len, v.z / len };
-    return r;
-}
 
 double tarn_ref_channel(uint32_t rgb, int c)
 {
@@ -370,27 +330,10 @@ static void rasterize_triangle(ref_target *t, const ref_screen_vertex in[3],
 
 /* ---- default mode: the whole pipeline in doubles ---------------------------------- */
 
-static ref_camera make_camera(const tarn_camera *cam, int height)
-{
-    ref_camera c;
-    c.position = vec_from_q16(cam->position);
-    c.forward = vec_normalize(vec_sub(vec_from_q16(cam->target), c.position));
-    /* f is (anti)parallel to +y exactly when the Q16.16 offset has no x or z */
-    int looks_vertically = cam->target.x == cam->position.x && cam->target.z == cam->position.z;
-    dvec3 world_up = { 0, looks_vertically ? 0 : 1, looks_vertically ? -1 : 0 };
-    c.right = vec_normalize(vec_cross(c.forward, world_up));
-    c.up = vec_cross(c.right, c.forward);
-    c.near = cam->near / Q16_SCALE;
-    c.far = cam->far / Q16_SCALE;
-    double fov = cam->fov_y_degrees / Q16_SCALE * (acos(-1.0) / 180.0);
-    c.focal = (height / 2.0) / tan(fov / 2.0);
-    return c;
-}
-
 /* Per-channel light of a world normal: min(1, ambient + light * max(0, N.L)). */
-static void light_vertex(const tarn_light *light, dvec3 normal, double shade[3])
+static void light_vertex(const tarn_light *light, tarn_dvec3 normal, double shade[3])
 {
-    double n_dot_l = fmax(0.0, vec_dot(normal, vec_from_q16(light->direction)));
+    double n_dot_l = fmax(0.0, tarn_dvec_dot(normal, tarn_dvec_from_q16(light->direction)));
     for (int c = 0; c < 3; c++) {
         double lit = tarn_ref_channel(light->ambient_rgb, c) / 255.0
                      + tarn_ref_channel(light->colour_rgb, c) / 255.0 * n_dot_l;
@@ -398,49 +341,34 @@ static void light_vertex(const tarn_light *light, dvec3 normal, double shade[3])
     }
 }
 
-static dvec3 rotate(const tarn_q16 rot[3][3], dvec3 p)
-{
-    dvec3 r;
-    double *out[3] = { &r.x, &r.y, &r.z };
-    for (int row = 0; row < 3; row++) {
-        dvec3 axis = { rot[row][0] / Q16_SCALE, rot[row][1] / Q16_SCALE, rot[row][2] / Q16_SCALE };
-        *out[row] = vec_dot(axis, p);
-    }
-    return r;
-}
-
 /* (1 - saturate(n.v))^2: n the unit world normal, v the unit vector from the vertex
  * toward the camera (none when they coincide: 0). */
-static double vertex_fresnel(const ref_camera *cam, dvec3 normal, dvec3 world)
+static double vertex_fresnel(const tarn_ref_camera *cam, tarn_dvec3 normal, tarn_dvec3 world)
 {
-    dvec3 to_camera = vec_sub(cam->position, world);
-    if (vec_dot(to_camera, to_camera) == 0) return 0.0;
-    double n_dot_v = vec_dot(vec_normalize(normal), vec_normalize(to_camera));
+    tarn_dvec3 to_camera = tarn_dvec_sub(cam->position, world);
+    if (tarn_dvec_dot(to_camera, to_camera) == 0) return 0.0;
+    double n_dot_v = tarn_dvec_dot(tarn_dvec_normalize(normal), tarn_dvec_normalize(to_camera));
     double one_minus = 1.0 - fmin(1.0, fmax(0.0, n_dot_v));
     return one_minus * one_minus;
 }
 
-static ref_view_vertex transform_vertex(const tarn_scene *scene, const ref_camera *cam,
+static ref_view_vertex transform_vertex(const tarn_scene *scene, const tarn_ref_camera *cam,
                                         const tarn_object *obj, unsigned index)
 {
     const tarn_mesh *mesh = obj->mesh;
     const tarn_material *mat = obj->material;
     ref_view_vertex out;
-    dvec3 rotated = rotate(obj->rotation, vec_from_q16(mesh->positions[index]));
-    double scale = obj->scale / Q16_SCALE;
-    dvec3 pos = vec_from_q16(obj->position);
-    dvec3 world = { pos.x + scale * rotated.x, pos.y + scale * rotated.y,
-                    pos.z + scale * rotated.z };
-    dvec3 rel = vec_sub(world, cam->position);
-    out.view[0] = vec_dot(rel, cam->right);
-    out.view[1] = vec_dot(rel, cam->up);
-    out.view[2] = vec_dot(rel, cam->forward);
+    tarn_dvec3 world = tarn_ref_world_position(obj, mesh->positions[index]);
+    tarn_dvec3 rel = tarn_dvec_sub(world, cam->position);
+    out.view[0] = tarn_dvec_dot(rel, cam->right);
+    out.view[1] = tarn_dvec_dot(rel, cam->up);
+    out.view[2] = tarn_dvec_dot(rel, cam->forward);
 
     /* Normals are read only where needed: unlit meshes may have none (or too few). */
     double shade[3] = { 1, 1, 1 };
     int fresnel = mat->water != NULL && (mat->water->features & TARN_WATER_FRESNEL);
-    dvec3 normal = { 0, 0, 0 };
-    if (!mat->unlit || fresnel) normal = rotate(obj->rotation, vec_from_q16(mesh->normals[index]));
+    tarn_dvec3 normal = { 0, 0, 0 };
+    if (!mat->unlit || fresnel) normal = tarn_dvec_rotate(obj->rotation, tarn_dvec_from_q16(mesh->normals[index]));
     if (!mat->unlit) light_vertex(&scene->light, normal, shade);
     out.fresnel = fresnel ? vertex_fresnel(cam, normal, world) : 0.0;
     for (int c = 0; c < 3; c++) {
@@ -490,7 +418,7 @@ static double snap_to_subpixels(double pixels, double unit)
     return fmax(-SUBPIXEL_COORD_LIMIT, fmin(SUBPIXEL_COORD_LIMIT, s));
 }
 
-static ref_screen_vertex project(const ref_view_vertex *v, const ref_camera *cam,
+static ref_screen_vertex project(const ref_view_vertex *v, const tarn_ref_camera *cam,
                                  const ref_target *t)
 {
     ref_screen_vertex s;
@@ -504,7 +432,7 @@ static ref_screen_vertex project(const ref_view_vertex *v, const ref_camera *cam
     return s;
 }
 
-static void draw_view_triangle(ref_target *t, const ref_camera *cam, const ref_view_vertex tri[3],
+static void draw_view_triangle(ref_target *t, const tarn_ref_camera *cam, const ref_view_vertex tri[3],
                                const tarn_object *obj)
 {
     ref_view_vertex near_clipped[CLIP_MAX_VERTICES], clipped[CLIP_MAX_VERTICES];
@@ -526,7 +454,7 @@ static int in_pass(const tarn_object *obj, int water_pass)
 
 static void render_unsnapped(const tarn_scene *scene, ref_target *t, int water_pass)
 {
-    ref_camera cam = make_camera(&scene->camera, t->height);
+    tarn_ref_camera cam = tarn_ref_camera_make(&scene->camera, t->height);
     for (unsigned o = 0; o < scene->object_count; o++) {
         const tarn_object *obj = &scene->objects[o];
         const tarn_mesh *mesh = obj->mesh;
@@ -637,7 +565,7 @@ static int render_water(const tarn_scene *scene, ref_target *t, const tarn_refer
     frame_snapshot opaque;
     int status = take_snapshot(t, &opaque);
     if (status == TARN_OK) {
-        ref_camera cam = make_camera(&scene->camera, t->height);
+        tarn_ref_camera cam = tarn_ref_camera_make(&scene->camera, t->height);
         tarn_ref_water_view view = {
             .width = t->width, .height = t->height, .rgb = opaque.rgb, .depth = opaque.depth,
             .time_ms = opt->time_ms, .light = &scene->light,

@@ -3,36 +3,19 @@
 
 #include <math.h>
 
+#include "ref_geometry.h"
+
 #define Q16 65536.0
 #define Q30 1073741824.0
 /* How far a vertex may lie off the plane, or a texture coordinate off the affine
  * map, for its extent: Q16.16 positions and coordinates round by 2^-17. */
 #define FLAT_TOLERANCE 1e-4
 
-typedef struct {
-    double x, y, z;
-} vec;
-
-static vec vec_of(tarn_vec3 v)
-{
-    const vec r = {v.x / Q16, v.y / Q16, v.z / Q16};
-    return r;
-}
+typedef tarn_dvec3 vec;
 
 static vec add(vec a, vec b, double scale) /* a + b * scale */
 {
     const vec r = {a.x + b.x * scale, a.y + b.y * scale, a.z + b.z * scale};
-    return r;
-}
-
-static double dot(vec a, vec b)
-{
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-static vec cross(vec a, vec b)
-{
-    const vec r = {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
     return r;
 }
 
@@ -42,25 +25,10 @@ static vec times(vec v, double scale)
     return r;
 }
 
-static vec normalised(vec v)
-{
-    const double length = sqrt(dot(v, v));
-    return length > 0 ? times(v, 1.0 / length) : v;
-}
-
 /* Vertex k of the object in world space, as the reference draws it. */
 static vec world_vertex(const tarn_object *o, uint32_t k)
 {
-    const vec p = vec_of(o->mesh->positions[k]);
-    vec world = vec_of(o->position);
-    const double scale = o->scale / Q16;
-    const vec rows[3] = {{o->rotation[0][0] / Q16, o->rotation[0][1] / Q16, o->rotation[0][2] / Q16},
-                         {o->rotation[1][0] / Q16, o->rotation[1][1] / Q16, o->rotation[1][2] / Q16},
-                         {o->rotation[2][0] / Q16, o->rotation[2][1] / Q16, o->rotation[2][2] / Q16}};
-    world.x += scale * dot(rows[0], p);
-    world.y += scale * dot(rows[1], p);
-    world.z += scale * dot(rows[2], p);
-    return world;
+    return tarn_ref_world_position(o, o->mesh->positions[k]);
 }
 
 static double coordinate(const tarn_object *o, uint32_t k, int axis)
@@ -86,13 +54,13 @@ static int spanning_vertices(const tarn_object *o, uint32_t *a, uint32_t *b)
     *a = *b = 0;
     for (uint32_t k = 1; k < o->mesh->vertex_count; k++) {
         const vec d = add(world_vertex(o, k), origin, -1);
-        if (dot(d, d) > best) best = dot(d, d), *a = k;
+        if (tarn_dvec_dot(d, d) > best) best = tarn_dvec_dot(d, d), *a = k;
     }
     const vec along = add(world_vertex(o, *a), origin, -1);
     double area = 0;
     for (uint32_t k = 1; k < o->mesh->vertex_count; k++) {
-        const vec c = cross(along, add(world_vertex(o, k), origin, -1));
-        if (dot(c, c) > area) area = dot(c, c), *b = k;
+        const vec c = tarn_dvec_cross(along, add(world_vertex(o, k), origin, -1));
+        if (tarn_dvec_dot(c, c) > area) area = tarn_dvec_dot(c, c), *b = k;
     }
     return area > 1e-12 * best * best;
 }
@@ -101,7 +69,7 @@ static int spanning_vertices(const tarn_object *o, uint32_t *a, uint32_t *b)
  * over the plane they span. */
 static vec gradient(vec e1, vec e2, double da, double db)
 {
-    const double a = dot(e1, e1), b = dot(e1, e2), c = dot(e2, e2), det = a * c - b * b;
+    const double a = tarn_dvec_dot(e1, e1), b = tarn_dvec_dot(e1, e2), c = tarn_dvec_dot(e2, e2), det = a * c - b * b;
     return add(times(add(times(e1, c), e2, -b), da / det), add(times(e2, a), e1, -b), db / det);
 }
 
@@ -109,14 +77,14 @@ static vec gradient(vec e1, vec e2, double da, double db)
 static int object_fits_plane(const tarn_object *o, const object_plane *p, double extent, const char **what)
 {
     for (uint32_t k = 0; k < o->mesh->vertex_count; k++)
-        if (fabs(dot(add(world_vertex(o, k), p->origin, -1), p->normal)) > FLAT_TOLERANCE * extent) {
+        if (fabs(tarn_dvec_dot(add(world_vertex(o, k), p->origin, -1), p->normal)) > FLAT_TOLERANCE * extent) {
             *what = "is not flat";
             return 0;
         }
     for (uint32_t k = 0; k < o->mesh->vertex_count; k++) {
         const vec d = add(world_vertex(o, k), p->origin, -1);
         for (int axis = 0; axis < 2; axis++)
-            if (fabs(p->uv0[axis] + dot(p->gradient[axis], d) - coordinate(o, k, axis)) > FLAT_TOLERANCE * (1 + extent)) {
+            if (fabs(p->uv0[axis] + tarn_dvec_dot(p->gradient[axis], d) - coordinate(o, k, axis)) > FLAT_TOLERANCE * (1 + extent)) {
                 *what = "has texture coordinates that are not an affine map of its plane";
                 return 0;
             }
@@ -133,33 +101,12 @@ static int object_plane_of(const tarn_object *o, object_plane *p, const char **w
     }
     p->origin = world_vertex(o, 0);
     const vec e1 = add(world_vertex(o, a), p->origin, -1), e2 = add(world_vertex(o, b), p->origin, -1);
-    p->normal = normalised(cross(e1, e2));
+    p->normal = tarn_dvec_normalize(tarn_dvec_cross(e1, e2));
     for (int axis = 0; axis < 2; axis++) {
         p->uv0[axis] = coordinate(o, 0, axis);
         p->gradient[axis] = gradient(e1, e2, coordinate(o, a, axis) - p->uv0[axis], coordinate(o, b, axis) - p->uv0[axis]);
     }
-    return object_fits_plane(o, p, sqrt(dot(e1, e1)), what);
-}
-
-/* The camera as the reference sets it up: forward, right, up, and the focal length
- * in pixels. */
-typedef struct {
-    vec eye, forward, right, up;
-    double focal, near;
-} camera;
-
-static camera camera_of(const tarn_camera *c, uint16_t height)
-{
-    camera cam;
-    cam.eye = vec_of(c->position);
-    cam.forward = normalised(add(vec_of(c->target), cam.eye, -1));
-    const int vertical = c->target.x == c->position.x && c->target.z == c->position.z;
-    const vec world_up = {0, vertical ? 0 : 1, vertical ? -1 : 0};
-    cam.right = normalised(cross(cam.forward, world_up));
-    cam.up = cross(cam.right, cam.forward);
-    cam.focal = (height / 2.0) / tan(c->fov_y_degrees / Q16 * acos(-1.0) / 360.0);
-    cam.near = c->near / Q16;
-    return cam;
+    return object_fits_plane(o, p, sqrt(tarn_dvec_dot(e1, e1)), what);
 }
 
 /* An affine function of the pixel centre (x, y): at + per_x * x + per_y * y. */
@@ -175,11 +122,11 @@ static double affine_at(const affine *f, double x, double y)
 /* w . dir for the ray through pixel centre (x, y), dir = forward + (x - W/2) / f *
  * right + (H/2 - y) / f * up, whose forward part is 1: its points lie at view
  * depth t at eye + t * dir. */
-static affine along_ray(const camera *cam, const tarn_frame_config *config, vec w)
+static affine along_ray(const tarn_ref_camera *cam, const tarn_frame_config *config, vec w)
 {
-    const affine f = {dot(w, cam->forward) - config->width / 2.0 / cam->focal * dot(w, cam->right) +
-                          config->height / 2.0 / cam->focal * dot(w, cam->up),
-                      dot(w, cam->right) / cam->focal, -dot(w, cam->up) / cam->focal};
+    const affine f = {tarn_dvec_dot(w, cam->forward) - config->width / 2.0 / cam->focal * tarn_dvec_dot(w, cam->right) +
+                          config->height / 2.0 / cam->focal * tarn_dvec_dot(w, cam->up),
+                      tarn_dvec_dot(w, cam->right) / cam->focal, -tarn_dvec_dot(w, cam->up) / cam->focal};
     return f;
 }
 
@@ -220,16 +167,16 @@ static void store(const affine *f, int32_t out[3])
  * times it, passes 2^31 in the frame. near/d = near * (n . dir) / (n . (origin - eye)); along the ray a point is
  * eye + t * dir with t = near / (near/d), so coordinate * near/d = (uv0 + g .
  * (eye - origin)) * near/d + near * (g . dir). */
-static int frame_plane(const object_plane *p, const camera *cam, const tarn_frame_config *config,
+static int frame_plane(const object_plane *p, const tarn_ref_camera *cam, const tarn_frame_config *config,
                        tarn_still_plane *out)
 {
-    const vec to_plane = add(p->origin, cam->eye, -1);
-    const affine depth = scaled(along_ray(cam, config, p->normal), Q30 * cam->near / dot(p->normal, to_plane));
+    const vec to_plane = add(p->origin, cam->position, -1);
+    const affine depth = scaled(along_ray(cam, config, p->normal), Q30 * cam->near / tarn_dvec_dot(p->normal, to_plane));
     if (!(largest(&depth, config) < Q30 * 2 - 4096.0)) return 0; /* also when not a number */
     affine uv[2];
     double most = 0;
     for (int axis = 0; axis < 2; axis++) {
-        const double at_eye = p->uv0[axis] - dot(p->gradient[axis], to_plane);
+        const double at_eye = p->uv0[axis] - tarn_dvec_dot(p->gradient[axis], to_plane);
         uv[axis] = scaled(sum(scaled(depth, at_eye), scaled(along_ray(cam, config, p->gradient[axis]), Q30 * cam->near)),
                           Q16);
         const double v = largest(&uv[axis], config);
@@ -249,7 +196,7 @@ static int frame_plane(const object_plane *p, const camera *cam, const tarn_fram
 int tarn_still_planes_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_still_plane *planes,
                            tarn_error *err)
 {
-    const camera cam = camera_of(&scene->camera, config->height);
+    const tarn_ref_camera cam = tarn_ref_camera_make(&scene->camera, config->height);
     uint32_t count = 0;
     for (uint32_t k = 0; k < scene->object_count; k++) {
         const tarn_object *o = &scene->objects[k];
