@@ -4,7 +4,7 @@
 # frame and quality, into a palette picture in flash (14-bit indices into 14,590
 # colours padded to 16,384, each water pixel marked with its object and where foam
 # can show, and the place in the foam band there: 172,142 bytes; the image takes
-# 248,660 of the 262,144), and each frame finds only the water's moving terms over
+# 248,588 of the 262,144), and each frame finds only the water's moving terms over
 # it: the highlights, once a 4x4 block (--water-block 4), and the foam lines
 # (docs/bake.md, "Still water"). The panel stream equals the host's render through
 # the same backdrop (tarn render --backdrop still), byte for byte.
