@@ -38,7 +38,7 @@ TEST_SUPPORT_OBJ := $(TEST_SUPPORT_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TARN := $(BUILD)/tarn
 
-.PHONY: all demo test check deps deps-test core-purity bench-panels sweep-docs clean
+.PHONY: all demo test check deps deps-test core-purity bench-panels sweep-docs golden clean
 .DELETE_ON_ERROR:
 .SECONDARY:
 
@@ -79,6 +79,12 @@ test: deps-test
 
 check: $(TARN) $(TEST_BIN)
 	@TARN_BIN=$(TARN) SUMMARY_FILE=$(BUILD)/summary tests/run_suites.sh $(TEST_BIN)
+
+# Re-records tests/golden/frames.txt, the checksums of the frames tests/test_golden.c
+# draws: only for a change meant to move pixels, which its commit says.
+golden: $(BUILD)/tests/test_golden
+	@mkdir -p tests/golden
+	@TARN_GOLDEN_RECORD=1 $(BUILD)/tests/test_golden
 
 core-purity:
 	@BUILD=build/m0 tests/check_core_purity.sh
