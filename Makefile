@@ -11,7 +11,7 @@ ifeq ($(SAN),1)
 OPT := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
 endif
 
-CORE_CFLAGS := -std=c99 -pedantic $(WARN) $(OPT) -Icore
+CORE_CFLAGS := -std=c99 -pedantic $(WARN) $(OPT) -Icore -Icore/include
 # Display backends, each optional and found by pkg-config: libgpiod 1.x (Debian 12)
 # or 2.x for GPIO lines, hidapi for the MCP2210 bridge; without one, a stub says so.
 GPIOD_VERSION := $(shell pkg-config --modversion libgpiod 2>/dev/null)
@@ -19,12 +19,12 @@ GPIO_LINES_SRC := $(if $(GPIOD_VERSION),$(if $(filter 1.%,$(GPIOD_VERSION)),host
 HIDAPI_PKG := $(shell pkg-config --exists hidapi-hidraw 2>/dev/null && echo hidapi-hidraw)
 MCP2210_USB_SRC := $(if $(HIDAPI_PKG),host/mcp2210_hidapi.c,host/mcp2210_hidapi_none.c)
 HOST_PKGS := libpng jansson $(if $(GPIOD_VERSION),libgpiod) $(HIDAPI_PKG)
-HOST_CFLAGS := -std=c99 $(WARN) $(OPT) -D_POSIX_C_SOURCE=200809L -Icore -Ihost \
+HOST_CFLAGS := -std=c99 $(WARN) $(OPT) -D_POSIX_C_SOURCE=200809L -Icore -Icore/include -Icore/include/tarn -Ihost \
 	$(shell pkg-config --cflags $(HOST_PKGS) 2>/dev/null)
 HOST_LIBS := $(shell pkg-config --libs $(HOST_PKGS) 2>/dev/null) -lm -pthread
 TEST_LIBS := $(shell pkg-config --libs cmocka zlib 2>/dev/null)
 
-CORE_SRC := $(wildcard core/*.c)
+CORE_SRC := $(wildcard core/*/*.c)
 HOST_SRC := $(filter-out host/main.c host/gpio_lines_gpiod%.c host/gpio_lines_none.c host/mcp2210_hidapi%.c,\
 	$(wildcard host/*.c)) $(GPIO_LINES_SRC) $(MCP2210_USB_SRC)
 # test_gpio_lines_gpiod1.c emulates libgpiod 1.x at its calls: only with that backend

@@ -14,7 +14,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include "tarn_panel.h"
+#include "tarn/tarn_panel.h"
 
 /* Clocks, the counter and the panel's link (emulated boards: the output channel;
  * real boards: pins, SPI and DMA). Returns 0, or non-zero when the output channel

@@ -16,8 +16,8 @@
 #include "board.h"
 #include "panel_sink.h"
 #include "scene.h"
-#include "tarn_panel.h"
-#include "tarn_render.h"
+#include "tarn/tarn_panel.h"
+#include "tarn/tarn_render.h"
 
 #ifndef FW_DITHER
 #define FW_DITHER 1

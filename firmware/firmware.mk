@@ -102,7 +102,7 @@ FW_QEMU_PKG := $(if $(filter qemu-system-arm,$(BOARD_QEMU)),qemu-system-arm,qemu
 FW_CC := $(FW_CROSS)gcc
 FW_CFLAGS := -std=c99 -Wall -Wextra -Werror -O2 -g -ffreestanding -fno-common \
 	-ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su $(BOARD_CPU) \
-	-Icore -Ifirmware -I$(FW_DIR) $(BOARD_INCLUDE) $(FW_LIBC_INCLUDE)
+	-Icore -Icore/include -Ifirmware -I$(FW_DIR) $(BOARD_INCLUDE) $(FW_LIBC_INCLUDE)
 # The program: an emulated board runs the measured run and sends the panel stream
 # through its writes; a real board shows the scene forever through SPI and DMA.
 ifneq ($(value BOARD_RUN),)
@@ -112,7 +112,7 @@ else
 FW_PROGRAM_SRC := firmware/display_main.c firmware/dma_transport.c
 endif
 FW_SRC := $(FW_PROGRAM_SRC) firmware/panel_sink.c $(FW_LIBC_SRC) $(BOARD_SRC) \
-	$(wildcard core/*.c) $(FW_DIR)/scene.c
+	$(wildcard core/*/*.c) $(FW_DIR)/scene.c
 FW_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,$(basename $(patsubst $(FW_DIR)/%,%,$(FW_SRC))))
 
 # A board that boots through a second stage (RP2040: BOARD_BOOT2, its 252 bytes of
@@ -206,8 +206,9 @@ $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-d
 # tile, and the vertices' transform and clipping (core/vertex.c, core/clip.c),
 # which a static view mostly spares: -Os takes about 1,240 bytes more off for 4
 # instructions a pixel of the M0's pond.
-FW_SIZE_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,core/scene_check core/backdrop_check core/view core/water_setup core/quality \
-	firmware/report $(if $(BOARD_CODE_BYTES_MAX),core/frame core/vertex core/clip))
+FW_SIZE_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,$(basename $(wildcard core/scene/*.c)) core/geometry/view \
+	core/water/water_setup core/frame/layout core/frame/status firmware/report \
+	$(if $(BOARD_CODE_BYTES_MAX),core/frame/frame core/geometry/vertex core/geometry/clip))
 $(FW_SIZE_OBJ): FW_DEFINES += -Os
 
 $(FW_DIR)/obj/%.o: %.c | fw-toolchain

@@ -23,8 +23,8 @@
 #include "report.h"
 #include "scene.h"
 #include "stream_transport.h"
-#include "tarn_panel.h"
-#include "tarn_render.h"
+#include "tarn/tarn_panel.h"
+#include "tarn/tarn_render.h"
 
 #ifndef FW_SCENE_LABEL
 #define FW_SCENE_LABEL "scene"

@@ -13,7 +13,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include "tarn_panel.h"
+#include "tarn/tarn_panel.h"
 
 typedef struct {
     tarn_panel panel;

@@ -2,7 +2,7 @@
 #include "report.h"
 
 #include "board.h"
-#include "tarn_math.h"
+#include "tarn/tarn_math.h"
 
 void report_text(report *r, const char *s)
 {

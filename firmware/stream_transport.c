@@ -2,7 +2,7 @@
  * the emulated boards (stream_transport.h). */
 #include "stream_transport.h"
 #include "board.h"
-#include "tarn_panel.h"
+#include "tarn/tarn_panel.h"
 
 static int stream_command(void *user, uint8_t command)
 {

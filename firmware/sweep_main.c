@@ -25,9 +25,9 @@
 #include "board.h"
 #include "report.h"
 #include "scene.h"
-#include "tarn_checksum.h"
-#include "tarn_panel.h"
-#include "tarn_render.h"
+#include "tarn/tarn_checksum.h"
+#include "tarn/tarn_panel.h"
+#include "tarn/tarn_render.h"
 
 #ifndef FW_SCENE_LABEL
 #define FW_SCENE_LABEL "scene"

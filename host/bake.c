@@ -988,7 +988,7 @@ static void print_source_comment(FILE *out, const bake_plan *p, const tarn_bake_
             p->config.width, p->config.height, p->points->count ? " or any of the points" : "",
             totals->memory_bytes, macro);
     comment_text(out, base_name(totals->header_path));
-    fputs(". */\n#include \"tarn_render.h\"\n\n", out);
+    fputs(". */\n#include \"tarn/tarn_render.h\"\n\n", out);
 }
 
 static void print_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,
@@ -1003,7 +1003,7 @@ static void print_header(FILE *out, const bake_plan *p, const tarn_bake_options 
     fputs(", the scene ", out);
     comment_text(out, o->scene_path);
     fputs(" baked by tarn.\n * Generated; do not edit. */\n", out);
-    fprintf(out, "#ifndef %s_BAKED_H\n#define %s_BAKED_H\n\n#include \"tarn_render.h\"\n\n", macro, macro);
+    fprintf(out, "#ifndef %s_BAKED_H\n#define %s_BAKED_H\n\n#include \"tarn/tarn_render.h\"\n\n", macro, macro);
     if (p->points->count)
         fprintf(out, "/* The largest tarn_frame_memory_bytes(&config, &%s_scene) of %s_config and of %s_config\n"
                 " * with the quality of each of %s_points: a frame's working memory at any of them. */\n",
@@ -1035,6 +1035,23 @@ static int used_water(const tarn_scene *scene, uint32_t *features)
     return water;
 }
 
+/* 1 if some object's material is opaque: a backdrop holds none of them. */
+static int has_opaque_objects(const tarn_scene *scene)
+{
+    for (uint32_t i = 0; i < scene->object_count; i++)
+        if (scene->objects[i].material == NULL || scene->objects[i].material->water == NULL) return 1;
+    return 0;
+}
+
+/* 1 if a frame of the bake at quality `q` finds its own cluster bins: the bins
+ * are on, and the static view holds none for its subpixel grid. */
+static int finds_bins(const tarn_scene *scene, const tarn_quality *q)
+{
+    const tarn_static_view *view = scene->static_view;
+    return q->cluster_bins &&
+           (view == NULL || view->bins == NULL || view->subpixel_bits != q->subpixel_bits);
+}
+
 static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,
                               const bake_totals *totals)
 {
@@ -1054,19 +1071,29 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     fprintf(out, "#define TARN_LINK_WATER_FEATURES (%s)\n", names.text);
     fprintf(out, "#define TARN_LINK_UNDERWATER %d\n", p->scene->scene.underwater != NULL);
     int span = p->config.quality.perspective == TARN_PERSPECTIVE_SPAN;
+    int pixel = p->config.quality.perspective == TARN_PERSPECTIVE_PIXEL;
+    int affine = !pixel;
     int apron = p->config.quality.refraction_apron != 0;
     int blocks = p->config.quality.water_block > 1;
     int exact_depth = p->config.quality.depth_interpolation == TARN_DEPTH_EXACT;
+    int found_bins = finds_bins(&p->scene->scene, &p->config.quality);
     for (size_t i = 0; i < p->points->count; i++) {
         span |= p->points->qualities[i].perspective == TARN_PERSPECTIVE_SPAN;
+        pixel |= p->points->qualities[i].perspective == TARN_PERSPECTIVE_PIXEL;
+        affine |= p->points->qualities[i].perspective != TARN_PERSPECTIVE_PIXEL;
         apron |= p->points->qualities[i].refraction_apron != 0;
         blocks |= p->points->qualities[i].water_block > 1;
         exact_depth |= p->points->qualities[i].depth_interpolation == TARN_DEPTH_EXACT;
+        found_bins |= finds_bins(&p->scene->scene, &p->points->qualities[i]);
     }
+    fprintf(out, "#define TARN_LINK_PERSPECTIVE_AFFINE %d\n", affine);
     fprintf(out, "#define TARN_LINK_PERSPECTIVE_SPAN %d\n", span);
+    fprintf(out, "#define TARN_LINK_PERSPECTIVE_PIXEL %d\n", pixel);
     fprintf(out, "#define TARN_LINK_APRON %d\n", apron);
     fprintf(out, "#define TARN_LINK_WATER_BLOCKS %d\n", blocks);
     fprintf(out, "#define TARN_LINK_EXACT_DEPTH %d\n", exact_depth);
+    fprintf(out, "#define TARN_LINK_FOUND_BINS %d\n", found_bins);
+    fprintf(out, "#define TARN_LINK_OPAQUE_OBJECTS %d\n", has_opaque_objects(&p->scene->scene));
     fprintf(out, "#define TARN_LINK_COMPUTED_VERTICES %d\n", p->scene->scene.static_view == NULL);
     fprintf(out, "#define TARN_LINK_STATIC_VERTICES %d\n", p->scene->scene.static_view != NULL);
     const tarn_backdrop *backdrop = p->scene->scene.static_view != NULL ? p->scene->scene.static_view->backdrop : NULL;

@@ -4,8 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cluster_bins.h"
-#include "pipeline.h"
+#include "tarn_internal.h"
 
 /* Vertex `index` as a frame computes it: tarn_vertex_cache's position, outcode,
  * projection (inside every clip plane only) and shading. */

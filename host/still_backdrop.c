@@ -3,7 +3,7 @@
  * marked with its object and where foam can show, the foam band's places, and
  * each water object's plane (still_planes.h). */
 #include "backdrop_frames.h"
-#include "water.h"
+#include "tarn_internal.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "pipeline.h"
+#include "tarn_internal.h"
 
 #define BOX_SPARE_PIXELS 2
 

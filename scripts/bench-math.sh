@@ -35,9 +35,8 @@ int main(int argc, char **argv)
     return 0;
 }
 EOF
-$CC -std=c99 -O2 -D_POSIX_C_SOURCE=200809L -Icore -Ihost -o "$work/bench" "$work/bench.c" \
-    host/accuracy_math.c core/exp2.c core/recip.c core/trig.c core/sqrt.c core/math_tables.c core/fixed.c \
-    core/divide.c -lm
+$CC -std=c99 -O2 -D_POSIX_C_SOURCE=200809L -Icore -Icore/include -Icore/include/tarn -Ihost -o "$work/bench" \
+    "$work/bench.c" host/accuracy_math.c core/math/*.c -lm
 
 printf '%-18s %-15s %12s\n' function config Ir_per_call
 index=0

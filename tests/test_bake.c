@@ -94,8 +94,8 @@ static int suite_setup(void **state)
 {
     (void)state;
     if (!getcwd(root, sizeof root) || !mkdtemp(work_dir)) return -1;
-    return shell("mkdir %s/core && cd %s/core && cc -std=c99 -O1 -I'%s/core' -c '%s'/core/*.c", work_dir,
-                 work_dir, root, root) == 0 ? 0 : -1;
+    return shell("mkdir %s/core && cd %s/core && cc -std=c99 -O1 -I'%s/core' -I'%s/core/include' -c '%s'/core/*/*.c", work_dir,
+                 work_dir, root, root, root) == 0 ? 0 : -1;
 }
 
 static int suite_teardown(void **state)
@@ -259,7 +259,7 @@ static void round_trip_against(const char *scene_path, const char *name, const c
     snprintf(main_path, sizeof main_path, "%s/bake_main_%s.c", work_dir, name);
     snprintf(program, sizeof program, "%s/bake_main_%s", work_dir, name);
     write_main(main_path, name);
-    if (shell("cc " STRICT_C99 " -O1 -Icore -I%s -o %s %s %s %s/core/*.o", work_dir, program, main_path,
+    if (shell("cc " STRICT_C99 " -O1 -Icore/include -I%s -o %s %s %s %s/core/*.o", work_dir, program, main_path,
               b.source, work_dir) != 0)
         fail_msg("%s does not build with the host compiler", b.source);
 
@@ -395,7 +395,7 @@ static void test_only_what_is_used_is_baked(void **state)
     assert_int_equal(occurrences(source, "static const tarn_material "), 1);
     assert_int_equal(occurrences(source, "static const tarn_mesh "), 1);
     assert_int_equal(occurrences(source, ".mesh = &bake_unused_mesh_0,"), 2);
-    assert_non_null(strstr(source, "#include \"tarn_render.h\"\n"));
+    assert_non_null(strstr(source, "#include \"tarn/tarn_render.h\"\n"));
     assert_non_null(strstr(source, " *   tarn bake tests/bake_unused.json -o "));
     free(source);
 }
@@ -485,7 +485,7 @@ static void test_points_are_baked(void **state)
     assert_non_null(strstr(link_text, "#define TARN_LINK_APRON 1\n")); /* the bake's own quality has one */
     free(link_text);
     if (shell("command -v arm-none-eabi-gcc > /dev/null") == 0 &&
-        shell("arm-none-eabi-gcc " M0_FLAGS " -Icore -c %s -o %s/swept-m0.o", b.source, work_dir) != 0)
+        shell("arm-none-eabi-gcc " M0_FLAGS " -Icore/include -c %s -o %s/swept-m0.o", b.source, work_dir) != 0)
         fail_msg("%s does not compile for Cortex-M0", b.source);
 }
 
@@ -501,7 +501,7 @@ static void assert_builds_for_m0(const char *scene_path, const char *name)
     char object[PATH_SIZE], sizes[PATH_SIZE];
     snprintf(object, sizeof object, "%s/%s-m0.o", work_dir, name);
     snprintf(sizes, sizeof sizes, "%s/%s-m0.size", work_dir, name);
-    if (shell("arm-none-eabi-gcc " M0_FLAGS " -Icore -c %s -o %s", b.source, object) != 0)
+    if (shell("arm-none-eabi-gcc " M0_FLAGS " -Icore/include -c %s -o %s", b.source, object) != 0)
         fail_msg("%s does not compile for Cortex-M0", b.source);
     if (shell("command -v arm-none-eabi-size > /dev/null") != 0) return;
     assert_int_equal(shell("arm-none-eabi-size -A %s | awk '$1 == \".rodata\" {print $2}' > %s", object, sizes), 0);

@@ -13,7 +13,7 @@
 #include "tarn_math.h"
 #include "tarn_panel.h"
 #include "tarn_render.h"
-#include "water.h"
+#include "tarn_internal.h"
 
 static void saturation_and_clamping(void **state)
 {

@@ -15,7 +15,7 @@
 #include <cmocka.h>
 
 #include "accuracy_math.h"
-#include "math_tables.h"
+#include "tarn_internal.h"
 #include "tarn_math.h"
 #include "tarn_render.h"
 

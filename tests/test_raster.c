@@ -10,7 +10,7 @@
 
 #include "compare.h"
 #include "core_render.h"
-#include "pipeline.h"
+#include "tarn_internal.h"
 #include "reference.h"
 #include "scene_builder.h"
 #include "scene_load.h"

@@ -14,7 +14,7 @@
 
 #include "frame_render.h"
 #include "scene_builder.h"
-#include "water.h"
+#include "tarn_internal.h"
 
 #define W 96
 #define H 64

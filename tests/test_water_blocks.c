@@ -17,7 +17,7 @@
 #include "frame_render.h"
 #include "reference.h"
 #include "scene_load.h"
-#include "water.h" /* tarn_water_block */
+#include "tarn_internal.h"
 
 /* In place: a loaded scene points into itself. */
 static void load(const char *path, tarn_loaded_scene *s)

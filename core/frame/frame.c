@@ -1,0 +1,363 @@
+/* frame.c: tarn_render_frame, the tile loop that runs every other stage, and
+ * tarn_visit_screen_triangles. */
+#include "frame/frame_internal.h"
+
+#include <string.h>
+
+/* Whether water triangles can be drawn at all: over a still-water backdrop they
+ * are not, and a build that links only that leaves the water pixel out. */
+#define WATER_TRIANGLES (TARN_LINK_WATER && TARN_LINK_WATER_SHADING)
+
+/* The target's pixels in its rect to the background colour and "no triangle". */
+static void clear_rect(tarn_tile_target *t, uint32_t background, size_t depth_bytes)
+{
+    const size_t count = (size_t)(t->rect.x1 - t->rect.x0);
+    for (int32_t j = t->rect.y0; j < t->rect.y1; j++) {
+        const int32_t first = (j - t->origin_y) * t->stride + (t->rect.x0 - t->origin_x);
+        for (size_t i = 0; i < count; i++) t->colour[(size_t)first + i] = background;
+        memset((uint8_t *)t->depth + (size_t)first * depth_bytes, 0, count * depth_bytes);
+    }
+}
+
+/* Copies the pixels of `to`'s rect between two targets' buffers: out of the opaque
+ * buffers the water pass starts from and depth-tests against, and back. */
+static void copy_pixels(const tarn_tile_target *from, const tarn_tile_target *to, size_t depth_bytes)
+{
+    for (int32_t j = to->rect.y0; j < to->rect.y1; j++) {
+        const int32_t source = (j - from->origin_y) * from->stride + (to->rect.x0 - from->origin_x);
+        const int32_t dest = (j - to->origin_y) * to->stride + (to->rect.x0 - to->origin_x);
+        const size_t count = (size_t)(to->rect.x1 - to->rect.x0);
+        memcpy(to->colour + dest, from->colour + source, count * 4u);
+        memcpy((uint8_t *)to->depth + (size_t)dest * depth_bytes,
+               (const uint8_t *)from->depth + (size_t)source * depth_bytes, count * depth_bytes);
+    }
+}
+
+typedef struct {
+    const tarn_scene *scene;
+    const tarn_frame_config *config;
+    const tarn_view *view;
+    tarn_frame_layout layout;
+    tarn_tile_target opaque;
+    tarn_water_pass water;
+    uint32_t *water_colour;       /* the water pass's own buffers */
+    void *water_depth;
+    uint32_t *final;              /* the underwater pass's tile */
+    tarn_cluster_bin *found_bins; /* bins this frame finds, or NULL */
+    const tarn_cluster_bin *bins; /* those, or the static view's, or NULL */
+    tarn_water_context water_context;
+    tarn_underwater_context underwater;
+} frame_state;
+
+/* The frame's passes over the buffers carved from its memory: nothing in them
+ * depends on the tile yet. */
+static void frame_begin(frame_state *f, void *memory)
+{
+    const tarn_frame_buffers b = tarn_frame_carve(&f->layout, memory);
+    f->water_colour = b.water_colour;
+    f->water_depth = b.water_depth;
+    f->final = b.final;
+    f->found_bins = b.found_bins;
+    f->bins = b.found_bins != NULL ? b.found_bins : f->layout.static_bins;
+    f->opaque.colour = b.opaque_colour;
+    f->opaque.depth = b.opaque_depth;
+    f->opaque.stride = f->layout.region;
+    f->opaque.quality = &f->config->quality;
+    f->opaque.log2_span = (uint8_t)(31u - tarn_clz32(f->config->quality.perspective_span));
+    f->water.target = f->opaque;
+    f->water.water = &f->water_context;
+    f->water.view = f->view;
+    f->water.config = f->config;
+    f->water_context.blocks = b.blocks;
+    f->water_context.still_blocks = b.still_blocks;
+    f->water_context.object = NULL; /* set up for the frame's first water object, kept across tiles */
+    f->water_context.still_walks = 0u;
+    f->water_context.triangle_serial = 0u;
+}
+
+static tarn_pixel_rect intersect(tarn_pixel_rect a, tarn_pixel_rect b)
+{
+    tarn_pixel_rect r = {a.x0 > b.x0 ? a.x0 : b.x0, a.y0 > b.y0 ? a.y0 : b.y0,
+                         a.x1 < b.x1 ? a.x1 : b.x1, a.y1 < b.y1 ? a.y1 : b.y1};
+    return r;
+}
+
+static tarn_pixel_rect around(int32_t x, int32_t y, int32_t size, int32_t apron, const tarn_pixel_rect *frame)
+{
+    tarn_pixel_rect r = {x - apron, y - apron, x + size + apron, y + size + apron};
+    return intersect(r, *frame);
+}
+
+/* The water context reads the opaque pass's buffers as the background. */
+static void begin_water(frame_state *f)
+{
+    tarn_water_context *c = &f->water_context;
+    c->background = f->opaque.colour;
+    c->background_depth = f->opaque.depth;
+    c->depth_bits = f->config->quality.depth_bits;
+    c->background_rect.x0 = f->opaque.origin_x;
+    c->background_rect.y0 = f->opaque.origin_y;
+    c->background_stride = f->opaque.stride;
+    c->offset_limit = f->layout.refraction_apron;
+    c->sample_rect = f->opaque.rect; /* binds at the frame's edges only (opaque_rect) */
+}
+
+/* The water pass over `rect` into its own buffers, whose index 0 is frame pixel
+ * (origin_x, origin_y), `stride` wide: it starts from a copy of the opaque pixels. */
+static void draw_water_copy(frame_state *f, const tarn_pixel_rect *rect, int32_t origin_x, int32_t origin_y,
+                            int32_t stride)
+{
+    tarn_tile_target *w = &f->water.target;
+    w->rect = *rect;
+    w->origin_x = origin_x;
+    w->origin_y = origin_y;
+    w->stride = stride;
+    w->colour = f->water_colour;
+    w->depth = f->water_depth;
+    f->water.mark = 0u;
+    copy_pixels(&f->opaque, w, f->layout.depth_bytes);
+    if (WATER_TRIANGLES)
+        tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, rect, tarn_water_draw_triangle, &f->water);
+}
+
+/* The water pass over the tile and the underwater apron, from a copy. */
+static void draw_water(frame_state *f, int32_t x, int32_t y, const tarn_pixel_rect *frame)
+{
+    const int32_t apron = f->layout.under_apron;
+    const tarn_pixel_rect rect = around(x, y, f->layout.tile, apron, frame);
+    begin_water(f);
+    draw_water_copy(f, &rect, x - apron, y - apron, f->layout.water_region);
+}
+
+/* The water pass straight over the opaque buffers, as the copy would draw it as long
+ * as no water pixel lands on another: each then reads the opaque pixel beneath it,
+ * not yet written. Returns 0, with the tile's opaque pixels spoilt, when one did. */
+static int draw_water_in_place(frame_state *f, const tarn_pixel_rect *tile_rect)
+{
+    tarn_water_pass *w = &f->water;
+    w->target = f->opaque;
+    w->target.rect = *tile_rect;
+    w->mark = TARN_WATER_MARK;
+    w->overlap = 0u;
+    begin_water(f);
+    if (WATER_TRIANGLES)
+        tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, tile_rect, tarn_water_draw_triangle, w);
+    tarn_water_clear_marks(&w->target);
+    return w->overlap == 0u;
+}
+
+/* The water pass a strip of rows at a time, each from a copy of the opaque pixels
+ * in the strip's buffers and back: the tile's image as the copy draws it, in the
+ * memory of the in-place layout. */
+static void draw_water_in_strips(frame_state *f, const tarn_pixel_rect *tile_rect)
+{
+    begin_water(f);
+    for (int32_t y = tile_rect->y0; y < tile_rect->y1; y += TARN_WATER_STRIP_ROWS) {
+        const tarn_pixel_rect strip = {tile_rect->x0, y, tile_rect->x1,
+                                       y + TARN_WATER_STRIP_ROWS < tile_rect->y1 ? y + TARN_WATER_STRIP_ROWS : tile_rect->y1};
+        draw_water_copy(f, &strip, tile_rect->x0, y, f->layout.tile);
+        tarn_tile_target back = f->opaque;
+        back.rect = strip;
+        copy_pixels(&f->water.target, &back, f->layout.depth_bytes);
+    }
+}
+
+static void draw_underwater(frame_state *f, const tarn_pixel_rect *tile_rect)
+{
+    tarn_underwater_context *u = &f->underwater;
+    const tarn_tile_target *w = &f->water.target;
+    u->colour = w->colour;
+    u->depth = w->depth;
+    u->depth_bits = f->config->quality.depth_bits;
+    u->origin_x = w->origin_x;
+    u->origin_y = w->origin_y;
+    u->stride = w->stride;
+    u->offset_limit = f->layout.under_apron;
+    u->sample_rect = w->rect;
+    tarn_underwater_tile(u, tile_rect, f->final, f->layout.tile);
+}
+
+static int rect_empty(const tarn_pixel_rect *r)
+{
+    return r->x0 >= r->x1 || r->y0 >= r->y1;
+}
+
+static tarn_pixel_rect rect_union(tarn_pixel_rect a, tarn_pixel_rect b)
+{
+    if (rect_empty(&a)) return b;
+    if (rect_empty(&b)) return a;
+    tarn_pixel_rect r = {a.x0 < b.x0 ? a.x0 : b.x0, a.y0 < b.y0 ? a.y0 : b.y0,
+                         a.x1 > b.x1 ? a.x1 : b.x1, a.y1 > b.y1 ? a.y1 : b.y1};
+    return r;
+}
+
+typedef struct {
+    tarn_pixel_rect within; /* the tile */
+    tarn_pixel_rect extent; /* pixels of it water triangles may cover; empty at first */
+    unsigned subpixel_bits;
+} water_extent;
+
+static void add_water_extent(void *ctx, const tarn_screen_vertex vertex[3], const tarn_object *object)
+{
+    water_extent *e = ctx;
+    tarn_triangle_setup t;
+    if (!tarn_orient_triangle(vertex, object->material->cull, e->subpixel_bits, &t)) return;
+    const tarn_pixel_box box = tarn_triangle_pixels(&t);
+    const tarn_pixel_rect r = {box.x0, box.y0, box.x1 + 1, box.y1 + 1};
+    e->extent = rect_union(e->extent, intersect(r, e->within));
+}
+
+/* The pixels the opaque pass must draw for a tile: the tile, and the apron only as
+ * far as the tile's water can sample it. Refracted samples move at most the
+ * refraction apron from their water pixel, so beyond that from every water pixel
+ * nothing is read; a tile without water needs no apron at all. The image is the
+ * same as with the whole apron drawn; only the cost differs. The underwater view
+ * displaces every pixel, so it keeps the whole apron. */
+static tarn_pixel_rect opaque_rect(const frame_state *f, const tarn_pixel_rect *tile_rect,
+                                   const tarn_pixel_rect *frame, int *has_water)
+{
+    const tarn_pixel_rect whole = around(tile_rect->x0, tile_rect->y0, f->layout.tile, f->layout.apron, frame);
+    *has_water = f->layout.water;
+    if (!f->layout.water || f->layout.underwater) return whole;
+    water_extent e = {*tile_rect, {0, 0, 0, 0}, f->config->quality.subpixel_bits};
+    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, tile_rect, add_water_extent, &e);
+    *has_water = !rect_empty(&e.extent);
+    if (!*has_water) return *tile_rect;
+    const int32_t a = f->layout.refraction_apron;
+    const tarn_pixel_rect reach = {e.extent.x0 - a, e.extent.y0 - a, e.extent.x1 + a, e.extent.y1 + a};
+    return rect_union(*tile_rect, intersect(reach, whole));
+}
+
+/* The opaque pass over the target's rect, drawn or read from the backdrop. */
+static void draw_opaque(frame_state *f)
+{
+    tarn_tile_target *o = &f->opaque;
+    if (TARN_LINK_BACKDROP && f->layout.backdrop != NULL) {
+        tarn_backdrop_fill(f->layout.backdrop, f->config->width, o, f->layout.depth_bytes);
+        return;
+    }
+    clear_rect(o, f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
+    if (TARN_LINK_OPAQUE_OBJECTS)
+        tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, f->bins, &o->rect, tarn_raster_triangle, o);
+}
+
+/* The water pass in place over the tile, or, where a water pixel landed on another,
+ * the tile drawn again with the water in strips. */
+static void draw_water_over_opaque(frame_state *f, const tarn_pixel_rect *tile_rect)
+{
+    if (draw_water_in_place(f, tile_rect)) return;
+    draw_opaque(f);
+    draw_water_in_strips(f, tile_rect);
+}
+
+/* The still water's moving terms over the tile's pixels, each water object's in
+ * turn: no triangle is drawn, and every mark the backdrop set is consumed, since
+ * the scene check lets object marks name water objects only. */
+static void draw_still_water(frame_state *f)
+{
+    const tarn_backdrop *b = f->layout.backdrop;
+    tarn_water_context *c = &f->water_context;
+    begin_water(f);
+    for (uint32_t k = 0; k < f->scene->object_count && k < TARN_BACKDROP_STILL_OBJECTS_MAX; k++) {
+        const tarn_object *object = &f->scene->objects[k];
+        if (object->material->water == NULL) continue;
+        if (c->object != object) tarn_water_context_setup(c, f->view, f->config, object);
+        tarn_water_still_tile(c, b, k, &f->opaque);
+    }
+}
+
+/* The pixels of the tile at (x, y) into the opaque target's buffers, or, with
+ * water drawn from a copy, the water target's: the target the sink reads. */
+static const tarn_tile_target *draw_tile_pixels(frame_state *f, int32_t x, int32_t y, const tarn_pixel_rect *tile_rect)
+{
+    const tarn_pixel_rect frame = {0, 0, f->config->width, f->config->height};
+    tarn_tile_target *o = &f->opaque;
+    o->origin_x = x - f->layout.apron;
+    o->origin_y = y - f->layout.apron;
+    if (TARN_LINK_STILL_WATER && f->layout.still) {
+        o->rect = *tile_rect;
+        draw_opaque(f);
+        draw_still_water(f);
+        return o;
+    }
+    int has_water;
+    o->rect = opaque_rect(f, tile_rect, &frame, &has_water);
+    draw_opaque(f);
+    if (!(TARN_LINK_WATER || TARN_LINK_UNDERWATER) || !has_water) return o;
+    if (f->layout.in_place) {
+        draw_water_over_opaque(f, tile_rect);
+        return o;
+    }
+    draw_water(f, x, y, &frame);
+    return &f->water.target;
+}
+
+static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, void *user)
+{
+    const int32_t size = f->layout.tile;
+    const tarn_pixel_rect frame = {0, 0, f->config->width, f->config->height};
+    const tarn_pixel_rect tile_rect = around(x, y, size, 0, &frame);
+    const tarn_tile_target *out = draw_tile_pixels(f, x, y, &tile_rect);
+    const int32_t first = (y - out->origin_y) * out->stride + (x - out->origin_x);
+    tarn_tile tile = {(uint16_t)x, (uint16_t)y, (uint16_t)(tile_rect.x1 - x), (uint16_t)(tile_rect.y1 - y),
+                      out->colour + first, (const uint8_t *)out->depth + (size_t)first * f->layout.depth_bytes,
+                      (uint16_t)out->stride, f->config->quality.depth_bits};
+    if (TARN_LINK_BACKDROP && f->layout.backdrop != NULL) tile.depth = NULL; /* kept under water only */
+    if (TARN_LINK_UNDERWATER && f->layout.underwater) {
+        draw_underwater(f, &tile_rect);
+        tile.rgb = f->final;
+        tile.stride = (uint16_t)size;
+        tile.depth = NULL; /* the displaced image has no single depth per pixel */
+    }
+    return sink != NULL ? sink(user, &tile) : 0;
+}
+
+tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *config,
+                              void *memory, size_t memory_bytes, tarn_tile_sink sink, void *user)
+{
+    if (tarn_config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
+    tarn_status status = tarn_scene_check(scene);
+    if (status == TARN_OK) status = tarn_scene_check_reach(scene, config);
+    if (status != TARN_OK) return status;
+    if (memory == NULL || memory_bytes < tarn_frame_memory_bytes(config, scene)) return TARN_ERR_MEMORY;
+
+    tarn_view view;
+    tarn_view_setup(scene, config, &view);
+    frame_state f;
+    f.scene = scene;
+    f.config = config;
+    f.view = &view;
+    f.layout = tarn_frame_layout_of(config, scene);
+    frame_begin(&f, memory);
+    if (TARN_LINK_FOUND_BINS && f.found_bins != NULL) tarn_bin_clusters(scene, &view, f.found_bins);
+    if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn_underwater_setup(&f.underwater, &view, config, scene->underwater);
+    for (int32_t y = 0; y < config->height; y += f.layout.tile)
+        for (int32_t x = 0; x < config->width; x += f.layout.tile)
+            if (draw_tile(&f, x, y, sink, user) != 0) return TARN_ERR_SINK;
+    return TARN_OK;
+}
+
+typedef struct {
+    tarn_triangle_visitor visit;
+    void *user;
+} visit_context;
+
+static void forward_to_visitor(void *ctx, const tarn_screen_vertex vertex[3], const tarn_object *object)
+{
+    const visit_context *v = ctx;
+    v->visit(v->user, vertex, object);
+}
+
+tarn_status tarn_visit_screen_triangles(const tarn_scene *scene, const tarn_frame_config *config,
+                                        tarn_triangle_visitor visit, void *user)
+{
+    if (tarn_config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
+    tarn_status status = tarn_scene_check(scene);
+    if (status != TARN_OK) return status;
+    tarn_view view;
+    tarn_view_setup(scene, config, &view);
+    visit_context ctx = {visit, user};
+    tarn_walk_triangles(scene, &view, TARN_WALK_OPAQUE, NULL, NULL, forward_to_visitor, &ctx);
+    tarn_walk_triangles(scene, &view, TARN_WALK_WATER, NULL, NULL, forward_to_visitor, &ctx);
+    return TARN_OK;
+}

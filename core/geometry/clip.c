@@ -1,0 +1,133 @@
+/* clip.c: Sutherland-Hodgman clipping in view space against the near and far
+ * planes and the guard band, so projected coordinates stay small enough for
+ * 32-bit edge functions. Runs per clipped triangle, never per pixel. */
+#include "geometry/geometry_internal.h"
+
+enum { PLANE_NEAR, PLANE_FAR, PLANE_LEFT, PLANE_RIGHT, PLANE_TOP, PLANE_BOTTOM, PLANE_COUNT };
+
+/* Signed distances to every plane, positive inside; a plane's units are its own.
+ * The four guard-band planes share four products, each taken once. */
+static void plane_distances(const tarn_view *view, const tarn_view_vertex *v, int64_t distance[PLANE_COUNT])
+{
+    const int64_t x_focal = tarn_mul_i32_wide(v->x, view->focal_q12); /* Q28: below 2^59 */
+    const int64_t y_focal = tarn_mul_i32_wide(v->y, view->focal_q12);
+    const int64_t x_extent = tarn_mul_i32_wide(view->half_extent_q12[0], v->d);
+    const int64_t y_extent = tarn_mul_i32_wide(view->half_extent_q12[1], v->d);
+    distance[PLANE_NEAR] = (int64_t)v->d - view->near;
+    distance[PLANE_FAR] = (int64_t)view->far - v->d;
+    distance[PLANE_LEFT] = x_focal + x_extent;
+    distance[PLANE_RIGHT] = x_extent - x_focal;
+    distance[PLANE_TOP] = y_extent - y_focal;
+    distance[PLANE_BOTTOM] = y_focal + y_extent;
+}
+
+/* 1 when |offset| <= (d >> 8) * slope_q8, for d > 0: then |offset| * focal <=
+ * d * half_extent, and the vertex is inside both guard planes of the axis. 32-bit:
+ * (d >> 8) is below 2^23 and the slope below 2^9. */
+static int within_guard_slope(int32_t offset, tarn_q16 d, uint16_t slope_q8)
+{
+    const uint32_t magnitude = offset < 0 ? (uint32_t)0 - (uint32_t)offset : (uint32_t)offset;
+    return magnitude <= ((uint32_t)d >> 8) * slope_q8;
+}
+
+unsigned tarn_clip_outcode(const tarn_view *view, const tarn_view_vertex *v)
+{
+    /* most vertices lie well inside every plane: four wide products spared */
+    if (v->d >= view->near && v->d <= view->far && within_guard_slope(v->x, v->d, view->guard_slope_q8[0]) &&
+        within_guard_slope(v->y, v->d, view->guard_slope_q8[1]))
+        return 0;
+    int64_t distance[PLANE_COUNT];
+    plane_distances(view, v, distance);
+    unsigned code = 0;
+    for (int plane = 0; plane < PLANE_COUNT; plane++)
+        if (distance[plane] < 0) code |= 1u << plane;
+    return code;
+}
+
+/* num / den in Q1.30 for 0 <= num <= den, den > 0. */
+static int64_t ratio_q30(int64_t num, int64_t den)
+{
+    while (den >= ((int64_t)1 << 32)) {
+        num >>= 1;
+        den >>= 1;
+    }
+    const tarn_divisor divisor = tarn_divisor_of((uint32_t)den);
+    return (int64_t)tarn_divide_u64((uint64_t)num << 30, &divisor, NULL);
+}
+
+static int32_t lerp_q30(int32_t from, int32_t to, int64_t t_q30)
+{
+    return (int32_t)(from + tarn_round_shift_i64(((int64_t)to - from) * t_q30, 30));
+}
+
+/* The crossing point, always measured from the inside vertex so that the two
+ * triangles sharing a clipped edge get bit-identical new vertices. */
+static tarn_view_vertex crossing(const tarn_view_vertex *inside, int64_t dist_inside,
+                                 const tarn_view_vertex *outside, int64_t dist_outside)
+{
+    int64_t t = ratio_q30(dist_inside, dist_inside - dist_outside);
+    tarn_view_vertex v;
+    v.x = lerp_q30(inside->x, outside->x, t);
+    v.y = lerp_q30(inside->y, outside->y, t);
+    v.d = lerp_q30(inside->d, outside->d, t);
+    v.uv.u = lerp_q30(inside->uv.u, outside->uv.u, t);
+    v.uv.v = lerp_q30(inside->uv.v, outside->uv.v, t);
+    for (int c = 0; c < 3; c++) v.lit[c] = lerp_q30(inside->lit[c], outside->lit[c], t);
+    v.fresnel = lerp_q30(inside->fresnel, outside->fresnel, t);
+    return v;
+}
+
+static int clip_against(const tarn_view *view, int plane,
+                        tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX], int count)
+{
+    tarn_view_vertex input[TARN_CLIP_POLYGON_MAX];
+    int64_t dist[TARN_CLIP_POLYGON_MAX];
+    for (int i = 0; i < count; i++) {
+        int64_t distance[PLANE_COUNT];
+        input[i] = polygon[i];
+        plane_distances(view, &input[i], distance);
+        dist[i] = distance[plane];
+    }
+    int out = 0;
+    for (int i = 0; i < count; i++) {
+        int j = i + 1 == count ? 0 : i + 1;
+        int in_i = dist[i] >= 0, in_j = dist[j] >= 0;
+        if (in_i) polygon[out++] = input[i];
+        if (in_i && !in_j) polygon[out++] = crossing(&input[i], dist[i], &input[j], dist[j]);
+        if (!in_i && in_j) polygon[out++] = crossing(&input[j], dist[j], &input[i], dist[i]);
+    }
+    /* Rounding must not leave a new vertex a hair outside the depth range. */
+    for (int i = 0; i < out; i++) {
+        if (plane == PLANE_NEAR && polygon[i].d < view->near) polygon[i].d = view->near;
+        if (plane == PLANE_FAR && polygon[i].d > view->far) polygon[i].d = view->far;
+    }
+    return out;
+}
+
+int tarn_clip_polygon(const tarn_view *view, unsigned planes,
+                      tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX], int count)
+{
+    for (int plane = 0; plane < PLANE_COUNT && count > 0; plane++)
+        if (planes & (1u << plane)) count = clip_against(view, plane, polygon, count);
+    return count;
+}
+
+/* A function of its own, not inlined into the walk: the polygon stays off the
+ * stack of the common, unclipped path. */
+void tarn_clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_vertex v[3],
+                        const tarn_object *object, tarn_triangle_sink sink, void *ctx)
+{
+    tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX]; /* the corners past count unread: not zeroed */
+    for (int i = 0; i < 3; i++) polygon[i] = v[i];
+    const int count = tarn_clip_polygon(view, planes, polygon, 3);
+    if (count < 3) return;
+    /* a fan around the first corner: each corner projected once, in one place */
+    tarn_screen_vertex fan[3];
+    for (int i = 0; i < count; i++) {
+        if (i >= 2) fan[1] = fan[2];
+        tarn_screen_vertex *corner = &fan[i == 0 ? 0 : 2];
+        tarn_project_position(view, &polygon[i], corner);
+        tarn_project_attributes(&polygon[i], corner);
+        if (i >= 2) sink(ctx, fan, object);
+    }
+}

@@ -1,0 +1,117 @@
+/* project.c: view space to the snapped screen grid.
+ *
+ * No division: each vertex takes one reciprocal of its depth (table seed and two
+ * Newton steps, tarn_recip_q30) and every quotient is a product of mantissas with
+ * its power of two kept aside, like a small float. On a Cortex-M0, which has no
+ * divider, a 64-bit division costs several hundred instructions and a vertex needed
+ * three; this costs about a tenth. The relative error is below 2^-27, so a screen
+ * coordinate (below 2^15 subpixels inside the guard band) is off by less than
+ * 2^-12 subpixel before it is rounded. */
+#include "geometry/geometry_internal.h"
+
+/* A positive number as mantissa * 2^-shift, the mantissa's top bit set. */
+typedef struct {
+    uint32_t mantissa;
+    unsigned shift;
+} normalised;
+
+static normalised normalise(uint32_t v) /* v > 0 */
+{
+    normalised n;
+    n.shift = tarn_clz32(v);
+    n.mantissa = v << n.shift;
+    return n;
+}
+
+/* round(m * 2^exponent) for the projection's ranges, saturated to INT32_MAX. */
+static int32_t scale_rounded(uint32_t m, int exponent)
+{
+    if (exponent >= 0) return m == 0u ? 0 : INT32_MAX;
+    if (exponent < -32) return 0;
+    const unsigned k = (unsigned)-exponent;
+    const uint32_t half_bit = (m >> (k - 1u)) & 1u;
+    const uint32_t whole = k == 32u ? 0u : m >> k;
+    return whole > (uint32_t)INT32_MAX - 1u ? INT32_MAX : (int32_t)(whole + half_bit);
+}
+
+/* offset * focal / depth in subpixels, rounded: `offset` view units (Q16.16), the
+ * depth given by its normalised reciprocal `recip` (2^62 / mantissa). */
+static int32_t subpixels_from_centre(const tarn_view *view, int32_t offset, normalised depth,
+                                     uint32_t recip)
+{
+    if (offset == 0) return 0;
+    const uint32_t magnitude = offset < 0 ? (uint32_t)0 - (uint32_t)offset : (uint32_t)offset;
+    const normalised x = normalise(magnitude);
+    /* |offset| / depth = mul_hi(x, recip) * 2^(depth.shift - x.shift - 30) */
+    const uint32_t ratio = tarn_mul_hi_u32(x.mantissa, recip);
+    /* times focal (Q20.12) and 2^subpixel_bits, back from Q12 */
+    const uint32_t product = tarn_mul_hi_u32(ratio << 1, view->focal_mantissa);
+    const int exponent = 1 + (int)depth.shift - (int)x.shift - (int)view->focal_shift +
+                         (int)view->subpixel_bits - 12;
+    const int32_t along = scale_rounded(product, exponent);
+    return offset < 0 ? -along : along;
+}
+
+/* centre + along, clamped to the guard band (in subpixels). The band's ends are
+ * within 2^15 subpixels of each other (tarn_config_check), so the clamp is taken
+ * on `along` against the ends less the centre, all in 32 bits. */
+static int32_t screen_coordinate(const tarn_view *view, int32_t along, int32_t frame_extent)
+{
+    const unsigned s = view->subpixel_bits;
+    const int32_t centre = frame_extent << (s - 1u);
+    const int32_t low = -((view->guard_pixels + 1) << s) - centre;
+    const int32_t high = ((frame_extent + view->guard_pixels + 1) << s) - centre;
+    return centre + (along < low ? low : (along > high ? high : along));
+}
+
+/* near / depth in Q1.30 (1 << 30 on the near plane), at least 1. */
+static uint32_t inverse_depth_q30(const tarn_view *view, tarn_q16 depth_q16, normalised depth,
+                                  uint32_t recip)
+{
+    if (depth_q16 <= view->near) return (uint32_t)1 << 30;
+    /* near / depth = mul_hi(near, recip) * 2^(depth.shift - near_shift - 30) */
+    const uint32_t ratio_q30 = tarn_mul_hi_u32(view->near_mantissa, recip);
+    const unsigned down = view->near_shift - depth.shift; /* depth > near */
+    const uint32_t inverse = down >= 32u ? 0u : ratio_q30 >> down;
+    return inverse < 1u ? 1u : (inverse > ((uint32_t)1 << 30) ? (uint32_t)1 << 30 : inverse);
+}
+
+void tarn_project_position(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out)
+{
+    const tarn_q16 depth_q16 = in->d >= view->near ? in->d : view->near;
+    const normalised depth = normalise((uint32_t)depth_q16);
+    const uint32_t recip = tarn_recip_q30(depth.mantissa, TARN_RECIP_STEPS_MAX);
+    out->x = screen_coordinate(view, subpixels_from_centre(view, in->x, depth, recip), view->width);
+    /* screen y runs down; |along| <= INT32_MAX, so negating it is safe */
+    out->y = screen_coordinate(view, -subpixels_from_centre(view, in->y, depth, recip), view->height);
+    out->inv_depth = inverse_depth_q30(view, depth_q16, depth, recip);
+}
+
+void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out)
+{
+    out->uv = in->uv;
+    for (int c = 0; c < 3; c++)
+        out->lit[c] = (uint16_t)tarn_clamp_i32(in->lit[c], 0, 65280);
+    out->fresnel = (uint16_t)tarn_clamp_i32(in->fresnel, 0, 32768);
+}
+
+tarn_pixel_box tarn_bounds_pixels(const tarn_subpixel_bounds *b, unsigned s)
+{
+    const int32_t half = (int32_t)1 << (s - 1);
+    tarn_pixel_box box;
+    box.x0 = -tarn_floor_shift(half - b->x0, s); /* ceil((min - half) / 2^s) */
+    box.y0 = -tarn_floor_shift(half - b->y0, s);
+    box.x1 = tarn_floor_shift(b->x1 - half, s);
+    box.y1 = tarn_floor_shift(b->y1 - half, s);
+    return box;
+}
+
+int64_t tarn_drawn_area2(const tarn_screen_vertex in[3], uint8_t cull)
+{
+    /* coordinates inside the guard box differ by less than 2^15 */
+    int64_t area2 = tarn_mul_i16_i32_wide(in[1].x - in[0].x, in[2].y - in[0].y) -
+                    tarn_mul_i16_i32_wide(in[1].y - in[0].y, in[2].x - in[0].x);
+    int front = area2 < 0; /* counter-clockwise in the y-up world */
+    if ((cull == TARN_CULL_BACK && !front) || (cull == TARN_CULL_FRONT && front)) return 0;
+    return area2;
+}

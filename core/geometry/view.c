@@ -1,0 +1,123 @@
+/* view.c: per-frame camera and light constants. Divisions here run once a frame. */
+#include "geometry/geometry_internal.h"
+
+static int64_t largest_magnitude(const int64_t c[3])
+{
+    int64_t largest = 0;
+    for (int i = 0; i < 3; i++) {
+        const int64_t magnitude = c[i] < 0 ? -c[i] : c[i];
+        if (magnitude > largest) largest = magnitude;
+    }
+    return largest;
+}
+
+/* Normalises a vector given as 64-bit integers of any common scale (each below
+ * 2^62) into Q1.30. Returns 0 for the zero vector (out left unchanged). */
+static int normalise_q30(const int64_t v[3], int32_t out[3])
+{
+    int64_t c[3] = {v[0], v[1], v[2]};
+    int64_t largest = largest_magnitude(c);
+    if (largest == 0) return 0;
+    /* A power of two brings the largest component into [2^16, 2^31): below 2^31 the
+     * squares and their sum fit 64 bits, and from 2^16 the integer square root is
+     * good to 2^-16. (The root of (1, 0, 1)'s 2 is 1, which made a vector of length
+     * 1.41: found by fuzz_core, through a camera a hair from its target.) */
+    for (; largest >= ((int64_t)1 << 31); largest /= 2)
+        for (int i = 0; i < 3; i++) c[i] /= 2;
+    for (; largest < ((int64_t)1 << 16); largest *= 2)
+        for (int i = 0; i < 3; i++) c[i] *= 2;
+    uint64_t sum = 0;
+    for (int i = 0; i < 3; i++) sum += (uint64_t)(c[i] * c[i]);
+    int64_t length = (int64_t)tarn_isqrt_u64(sum); /* from 2^16 to below 2^32 */
+    const tarn_divisor divisor = tarn_divisor_of((uint32_t)length);
+    for (int i = 0; i < 3; i++)
+        out[i] = (int32_t)tarn_divide_trunc_i64(c[i] * ((int64_t)1 << 30), &divisor);
+    return 1;
+}
+
+static int32_t mul_q30(int32_t a, int32_t b)
+{
+    return (int32_t)tarn_round_shift_i64((int64_t)a * b, 30);
+}
+
+static void cross_q30(const int32_t a[3], const int32_t b[3], int32_t out[3])
+{
+    out[0] = mul_q30(a[1], b[2]) - mul_q30(a[2], b[1]);
+    out[1] = mul_q30(a[2], b[0]) - mul_q30(a[0], b[2]);
+    out[2] = mul_q30(a[0], b[1]) - mul_q30(a[1], b[0]);
+}
+
+/* Forward, right and up as the public header defines them. */
+static void camera_basis(const tarn_camera *camera, int32_t basis[3][3])
+{
+    const int64_t forward[3] = {
+        (int64_t)camera->target.x - camera->position.x,
+        (int64_t)camera->target.y - camera->position.y,
+        (int64_t)camera->target.z - camera->position.z};
+    if (!normalise_q30(forward, basis[2])) {
+        /* target == position: look down -z rather than fail mid-frame */
+        basis[2][0] = 0; basis[2][1] = 0; basis[2][2] = -(1 << 30);
+    }
+    /* right = forward x Y; with Y = (0,1,0) that is (-fz, 0, fx) */
+    int64_t right[3] = {-forward[2], 0, forward[0]};
+    if (forward[0] == 0 && forward[2] == 0) {
+        /* looking straight up or down: Y = (0,0,-1), right = (-fy, fx, 0) */
+        right[0] = -forward[1]; right[1] = forward[0]; right[2] = 0;
+        if (forward[1] == 0) right[0] = 1 << 30;
+    }
+    normalise_q30(right, basis[0]);
+    cross_q30(basis[0], basis[2], basis[1]);
+}
+
+/* Focal length in pixels (Q20.12): (height / 2) / tan(fov / 2). */
+static int32_t focal_length_q12(const tarn_camera *camera, uint16_t height)
+{
+    const int64_t pi_q32 = 13493037705; /* pi * 2^32, rounded */
+    tarn_q16 fov = tarn_clamp_i32(camera->fov_y_degrees, TARN_Q16_ONE, 179 * TARN_Q16_ONE);
+    /* half the fov in radians, Q2.30: fov_q16 * pi / 360 */
+    int32_t half_angle = (int32_t)tarn_divide_once_i64((int64_t)fov * pi_q32 + (180 << 17), 360u << 18);
+    int32_t sine, cosine;
+    tarn_sin_cos_q30(half_angle, &sine, &cosine);
+    return tarn_sat_i64_to_i32(tarn_divide_once_i64((int64_t)height * 2048 * cosine + sine / 2, (uint32_t)sine));
+}
+
+static uint32_t channel_q16(uint32_t rgb, int channel)
+{
+    uint32_t value = (rgb >> (16 - 8 * channel)) & 0xFFu;
+    return (value * 65536u + 127u) / 255u;
+}
+
+
+
+void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, tarn_view *view)
+{
+    const tarn_camera *camera = &scene->camera;
+    camera_basis(camera, view->basis);
+    view->eye = camera->position;
+    view->width = config->width;
+    view->height = config->height;
+    view->subpixel_bits = config->quality.subpixel_bits;
+    view->focal_q12 = focal_length_q12(camera, config->height);
+    view->near = camera->near > 0 ? camera->near : 1;
+    view->far = camera->far > view->near ? camera->far : view->near;
+    /* focal_q12 is at least 17 (one row, a 179-degree fov), so it normalises */
+    view->focal_shift = tarn_clz32((uint32_t)view->focal_q12);
+    view->focal_mantissa = (uint32_t)view->focal_q12 << view->focal_shift;
+    view->near_shift = tarn_clz32((uint32_t)view->near);
+    view->near_mantissa = (uint32_t)view->near << view->near_shift;
+    view->guard_pixels = (int16_t)tarn_guard_band_pixels(config);
+    view->half_extent_q12[0] = config->width * 2048 + view->guard_pixels * 4096;
+    view->half_extent_q12[1] = config->height * 2048 + view->guard_pixels * 4096;
+    /* f / 256 < (f >> 8) + 1, so the quotient is at most h * 256 / f, as it must be */
+    for (int axis = 0; axis < 2; axis++) {
+        const uint32_t slope = (uint32_t)view->half_extent_q12[axis] / (((uint32_t)view->focal_q12 >> 8) + 1u);
+        view->guard_slope_q8[axis] = (uint16_t)(slope > 511u ? 511u : slope);
+    }
+    for (int c = 0; c < 3; c++) {
+        view->light_q16[c] = channel_q16(scene->light.colour_rgb, c);
+        view->ambient_q16[c] = channel_q16(scene->light.ambient_rgb, c);
+    }
+    view->light_dir = tarn_unit_vector_bounded(&scene->light.direction);
+    view->static_vertices = (uint8_t)tarn_static_view_applies(scene);
+    view->static_screen = (uint8_t)tarn_static_screen_applies(scene, config);
+}

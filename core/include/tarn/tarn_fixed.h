@@ -1,0 +1,177 @@
+/* tarn_fixed.h: the fixed-point number formats of tarn and their helpers.
+ *
+ * Formats (Qm.n: m integer bits including sign where signed, n fraction bits):
+ *   tarn_q16   Q16.16 signed   world coordinates, matrices, scene scalars (1.0 = 65536)
+ *   Q1.15      signed          sin/cos results, unit-vector components per pixel
+ *   Q0.16      unsigned        exp2 results and blend factors (1.0 = 65536, held in 32 bits)
+ *   Q1.30      unsigned        inverse depth near/depth (1.0 = 1 << 30, at the near plane)
+ *   Q8.8       unsigned        8-bit colour channels with 8 fraction bits (255.0 = 65280)
+ *
+ * Rounding is to nearest, ties away from zero, unless a name says otherwise.
+ * Saturation clamps to the representable range instead of wrapping. */
+#ifndef TARN_FIXED_H
+#define TARN_FIXED_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef int32_t tarn_q16; /* Q16.16 */
+
+#define TARN_Q16_ONE ((tarn_q16)65536)
+#define TARN_Q16_MAX ((tarn_q16)INT32_MAX)
+#define TARN_Q16_MIN ((tarn_q16)INT32_MIN)
+
+static inline int32_t tarn_sat_i64_to_i32(int64_t v)
+{
+    if (v > INT32_MAX) return INT32_MAX;
+    if (v < INT32_MIN) return INT32_MIN;
+    return (int32_t)v;
+}
+
+static inline int32_t tarn_clamp_i32(int32_t v, int32_t lo, int32_t hi)
+{
+    return v < lo ? lo : (v > hi ? hi : v);
+}
+
+static inline int32_t tarn_min3_i32(int32_t a, int32_t b, int32_t c)
+{
+    const int32_t ab = a < b ? a : b;
+    return ab < c ? ab : c;
+}
+
+static inline int32_t tarn_max3_i32(int32_t a, int32_t b, int32_t c)
+{
+    const int32_t ab = a > b ? a : b;
+    return ab > c ? ab : c;
+}
+
+/* Arithmetic shift right of a signed 64-bit value, rounding to nearest (ties up),
+ * for shift < 64, over the whole int64_t range. Written with division-free
+ * operations so the result does not depend on how a compiler treats >> of negative
+ * values. A function of its own (core/fixed.c) rather than inline: it runs per
+ * vertex, not per pixel, and inlined into every caller it cost the Cortex-M0 image
+ * half a kilobyte. */
+int64_t tarn_round_shift_i64(int64_t v, unsigned shift);
+
+/* Q16.16 product, rounded and saturated. Uses a 64-bit multiply: per vertex or
+ * per frame only, never per pixel (Cortex-M0 has no 32x32->64 multiplier). */
+static inline tarn_q16 tarn_q16_mul(tarn_q16 a, tarn_q16 b)
+{
+    return tarn_sat_i64_to_i32(tarn_round_shift_i64((int64_t)a * b, 16));
+}
+
+/* Saturating Q16.16 sum. */
+static inline tarn_q16 tarn_q16_add(tarn_q16 a, tarn_q16 b)
+{
+    return tarn_sat_i64_to_i32((int64_t)a + b);
+}
+
+/* Q16.16 from a whole number, saturated. */
+static inline tarn_q16 tarn_q16_from_int(int32_t v)
+{
+    return tarn_sat_i64_to_i32((int64_t)v * 65536);
+}
+
+/* floor(v / 2^s) without relying on >> of a negative number (implementation-defined
+ * in C99): the same on every compiler. s < 32. */
+static inline int32_t tarn_floor_shift(int32_t v, unsigned s)
+{
+    if (s == 0u) return v; /* below, INT32_MIN's magnitude would not fit an int32_t */
+    return v >= 0 ? (v >> s) : -(int32_t)((((uint32_t)0 - (uint32_t)v) + ((1u << s) - 1u)) >> s);
+}
+
+static inline int tarn_is_power_of_two(uint32_t v)
+{
+    return v != 0u && (v & (v - 1u)) == 0u;
+}
+
+/* Leading zero bits of each byte value, 8 for 0 (core/math_tables.c). */
+extern const uint8_t tarn_clz8[256];
+
+/* Number of leading zero bits of a 32-bit value (32 for 0). Portable: the
+ * Cortex-M0 has no CLZ instruction, and the result must match on every target.
+ * Two tests find the highest non-zero byte and a table counts its zeros: it runs
+ * about a dozen times a pixel (reciprocals, depth encoding, normalisation), where
+ * a five-step binary search cost the M0 twice the instructions. */
+static inline unsigned tarn_clz32(uint32_t v)
+{
+    if (v >> 16) return v >> 24 ? tarn_clz8[v >> 24] : 8u + tarn_clz8[v >> 16];
+    return v >> 8 ? 16u + tarn_clz8[v >> 8] : 24u + tarn_clz8[v];
+}
+
+/* High 32 bits of an unsigned 32x32 product, from 16x16 partial products only, so
+ * per-pixel code needs no 64-bit multiply. Exact (equals (a*b) >> 32). */
+static inline uint32_t tarn_mul_hi_u32(uint32_t a, uint32_t b)
+{
+    const uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    const uint32_t cross = ah * bl;
+    /* al*bh plus the low product's high half stays below 2^32; adding the other
+     * cross product may carry, which is worth 2^16 in the result */
+    const uint32_t middle = al * bh + ((al * bl) >> 16) + cross;
+    return ah * bh + ((uint32_t)(middle < cross) << 16) + (middle >> 16);
+}
+
+/* The whole 64-bit product of two unsigned 32-bit values. The Cortex-M0 has no
+ * 32x32->64 multiply, and the compiler's general 64x64 routine costs about twice
+ * these four 16x16 products, summed in 32-bit words with their carries; elsewhere
+ * the native product is the same number. */
+static inline uint64_t tarn_mul_u32_wide(uint32_t a, uint32_t b)
+{
+#if defined(__ARM_ARCH_6M__)
+    const uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+    const uint32_t low = al * bl, cross = al * bh, middle = cross + ah * bl; /* may carry out */
+    const uint32_t result_low = low + (middle << 16);
+    const uint32_t high = ah * bh + ((uint32_t)(middle < cross) << 16) + (middle >> 16) + (result_low < low);
+    return ((uint64_t)high << 32) | result_low;
+#else
+    return (uint64_t)a * b;
+#endif
+}
+
+/* The whole 64-bit product of two signed 32-bit values, for the per-vertex and
+ * per-triangle code whose operands fit 32 bits: on the Cortex-M0 a function of its
+ * own (core/fixed.c) from tarn_mul_u32_wide, about half of libgcc's 64x64 multiply
+ * and small enough to call from everywhere; elsewhere the native product. */
+#if defined(__ARM_ARCH_6M__)
+int64_t tarn_mul_i32_wide(int32_t a, int32_t b);
+#else
+static inline int64_t tarn_mul_i32_wide(int32_t a, int32_t b)
+{
+    return (int64_t)a * b;
+}
+#endif
+
+/* The 64-bit product of a and b for |a| <= 2^15, such as a coordinate difference
+ * inside the guard box. On the Cortex-M0 two 32-bit products of a with b's 16-bit
+ * halves, each of which fits 32 bits, where tarn_mul_i32_wide needs four and a
+ * call; elsewhere the native product. */
+static inline int64_t tarn_mul_i16_i32_wide(int32_t a, int32_t b)
+{
+#if defined(__ARM_ARCH_6M__)
+    const int32_t low = (int32_t)((uint32_t)b & 0xFFFFu);
+    const int32_t high = (b - low) / 65536; /* exact: b - low is a multiple of 2^16 */
+    return (int64_t)(a * high) * 65536 + a * low;
+#else
+    return (int64_t)a * b;
+#endif
+}
+
+/* Signed x unsigned high product: floor((a * b) / 2^32) for a signed a. */
+static inline int32_t tarn_mul_hi_s32_u32(int32_t a, uint32_t b)
+{
+    if (a >= 0) return (int32_t)tarn_mul_hi_u32((uint32_t)a, b);
+    /* -(|a|*b) >> 32 with floor semantics: -ceil(|a|*b / 2^32) */
+    uint32_t mag = (uint32_t)0 - (uint32_t)a;
+    uint32_t hi = tarn_mul_hi_u32(mag, b);
+    uint32_t lo = mag * b;
+    return (int32_t)-(int64_t)(hi + (lo != 0u)); /* fits: |result| <= 2^31 */
+}
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,241 @@
+/* tarn_scene.h: a scene as plain const C data.
+ *
+ * The host builds these structs from a scene file; firmware holds them as const
+ * data baked into flash. Nothing here owns memory: every pointer refers to arrays
+ * the caller keeps alive for as long as the scene is rendered.
+ *
+ * Conventions: right-handed world, +y up. The camera looks from `position` toward
+ * `target`. Front faces wind counter-clockwise seen from the front. Texture
+ * coordinate (0,0) is the top-left corner of the texture's first row, 1.0 is one
+ * texture width or height, and coordinates wrap. Colours are 0xRRGGBB. */
+#ifndef TARN_SCENE_H
+#define TARN_SCENE_H
+
+#include <stdint.h>
+#include "tarn_fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct {
+    tarn_q16 x, y, z; /* Q16.16 */
+} tarn_vec3;
+
+typedef struct {
+    tarn_q16 u, v; /* Q16.16, 1.0 = one texture width (height) */
+} tarn_uv;
+
+#define TARN_TEXTURE_SIZE_MAX 1024u
+
+typedef struct {
+    uint16_t width, height; /* texels; each a power of two, 1..TARN_TEXTURE_SIZE_MAX */
+    const uint8_t *rgb;     /* width*height*3 bytes, rows top to bottom, R then G then B */
+} tarn_texture;
+
+typedef enum {
+    TARN_CULL_BACK = 0, /* draw front faces only (the default) */
+    TARN_CULL_NONE = 1, /* draw both sides */
+    TARN_CULL_FRONT = 2 /* draw back faces only */
+} tarn_cull;
+
+typedef struct tarn_water tarn_water;           /* tarn_water.h */
+typedef struct tarn_underwater tarn_underwater; /* tarn_water.h */
+
+typedef struct {
+    uint32_t colour_rgb;          /* tint multiplying the texture or vertex colours */
+    const tarn_texture *texture;  /* NULL: untextured */
+    uint8_t cull;                 /* tarn_cull */
+    uint8_t unlit;                /* 1: ignore the light, colour is used as is */
+    const tarn_water *water;      /* NULL: opaque; else drawn after the opaque scene */
+} tarn_material;
+
+#define TARN_MESH_VERTICES_MAX 65535u
+#define TARN_MESH_TRIANGLES_MAX 65535u
+
+/* A run of a mesh's triangles that lie close together, and a sphere holding all
+ * their vertices. For each tile the renderer tests the sphere against the tile's
+ * slice of the view and skips the whole run when it cannot touch it: the walk stays
+ * free of RAM, and most of a large mesh is never transformed for a given tile. */
+typedef struct {
+    tarn_vec3 centre;        /* object space, Q16.16 */
+    tarn_q16 radius;         /* object space, Q16.16; every vertex of the run within it */
+    uint16_t first_triangle; /* the run is triangles [first, first + count) */
+    uint16_t triangle_count;
+} tarn_cluster;
+
+typedef struct {
+    const tarn_vec3 *positions; /* object space, Q16.16; with normals, NULL only when every
+                                   object drawing the mesh has static vertices that apply */
+    const tarn_vec3 *normals;   /* unit length, Q16.16, object space */
+    const tarn_uv *uvs;         /* NULL if the mesh has no texture coordinates */
+    const uint32_t *colours;    /* 0xRRGGBB per vertex, NULL for white */
+    const uint16_t *indices;    /* 3 per triangle */
+    uint16_t vertex_count;
+    uint16_t triangle_count;
+    const tarn_cluster *clusters; /* runs covering every triangle once, in order; NULL:
+                                     one run of all triangles that is never skipped */
+    uint16_t cluster_count;
+} tarn_mesh;
+
+/* A vertex as the scene's fixed camera sees it: exactly what a frame would compute
+ * from the object's mesh, transform and material, the camera and the light (tarn
+ * bake writes them, docs/bake.md "Static view"). A frame then neither transforms,
+ * lights nor (for the frame they were made for) projects the object's vertices. */
+typedef struct {
+    tarn_q16 x, y, d;           /* view space, Q16.16: right, up, depth */
+    uint32_t inv_depth;         /* near/d, Q1.30 (1..2^30), for a vertex inside every clip
+                                   plane of the static view's frame; 0: not projected */
+    int16_t screen_x, screen_y; /* subpixels of that frame, inside its guard band */
+    uint16_t lit[3];            /* lit colour, Q8.8 per channel, at most 65280 */
+    uint16_t fresnel;           /* (1 - n.v)^2, Q1.15, at most 32768; 0 but on water */
+} tarn_static_vertex;
+
+/* World = position + scale * rotation * object. The rotation is orthonormal, so
+ * normals transform by the rotation alone. */
+typedef struct {
+    const tarn_mesh *mesh;
+    const tarn_material *material;
+    tarn_vec3 position;     /* Q16.16 world units */
+    tarn_q16 rotation[3][3]; /* Q16.16 rows of an orthonormal matrix */
+    tarn_q16 scale;         /* Q16.16, > 0 */
+    const tarn_static_vertex *static_vertices; /* NULL, or one per mesh vertex, for the
+                                                  scene's static_view; the object must
+                                                  then not move */
+} tarn_object;
+
+typedef struct {
+    tarn_vec3 position;     /* Q16.16 world */
+    tarn_vec3 target;       /* Q16.16 world, distinct from position */
+    tarn_q16 fov_y_degrees; /* Q16.16, vertical field of view, 1..179 */
+    tarn_q16 near;          /* Q16.16 world units, > 0 */
+    tarn_q16 far;           /* Q16.16 world units, > near; farther geometry is not drawn */
+} tarn_camera;
+
+typedef struct {
+    tarn_vec3 direction;   /* Q16.16 unit vector pointing from the scene toward the light */
+    uint32_t colour_rgb;   /* directional light colour */
+    uint32_t ambient_rgb;  /* ambient light colour */
+} tarn_light;
+
+/* Where on screen a cluster draws: cells [x0, x1] x [y0, y1] of 4x4 pixels,
+ * inclusive; x0 > x1 when it draws nothing, and 0, 0, 255, 255 when it is cut by the
+ * near plane (its bounding sphere decides). */
+typedef struct tarn_cluster_bin {
+    uint8_t x0, y0, x1, y1;
+} tarn_cluster_bin;
+
+/* A run of one row's pixels whose depth a backdrop keeps: [x0, x1), stored at
+ * depth[first .. first + x1 - x0). */
+typedef struct {
+    uint16_t x0, x1;
+    uint32_t first;
+} tarn_backdrop_span;
+
+#define TARN_BACKDROP_COLOURS_MAX 65536u
+
+/* Still water. Under a fixed camera, all the water does but its moving terms
+ * (TARN_WATER_MOVING in tarn_water.h: the normal maps' highlights, the foam lines,
+ * the sparkles) is the same in every frame: the fog, absorption, depth colour and
+ * fresnel of steps 3 to 7, over an opaque background that does not move either. A
+ * still-water backdrop holds those pixels drawn (tarn bake --backdrop still), each
+ * channel rounded to 0..255, with the water object drawn there (1 + its index in
+ * the scene's objects, in the bits of TARN_BACKDROP_STILL_OBJECT) and, where foam
+ * can show, TARN_BACKDROP_STILL_FOAM; it keeps their place in the foam band. Its
+ * water objects are flat, and it holds each one's surface as the frame sees it
+ * (tarn_still_plane). A frame draws no water triangle: it walks each tile's marked
+ * pixels and finds only the moving terms there, from texture coordinates the plane
+ * gives (a block's highlight once, with the quality's water_block 2 or 4). Its
+ * images differ from the scene drawn whole by the rounding of the still terms, by
+ * the texture coordinates (exact on the plane, where triangles interpolate them)
+ * and, with water blocks, by the highlights the blocks share; docs/bake.md gives
+ * the error. It applies to a frame without refraction's moves (no apron, or no
+ * refraction) and without the underwater view. */
+#define TARN_BACKDROP_STILL_OBJECT 0x7E000000u
+#define TARN_BACKDROP_STILL_SHIFT 25u
+#define TARN_BACKDROP_STILL_OBJECTS_MAX 63u
+#define TARN_BACKDROP_STILL_FOAM 0x80000000u
+
+/* A flat water object's surface as the frame of a still-water backdrop sees it:
+ * three affine functions of the pixel (i, j), f = f[0] + f[1] * i + f[2] * j taken
+ * modulo 2^32, which hold at the pixel's centre. */
+typedef struct {
+    int32_t depth[3];  /* near/d, Q1.30 (2^30 on the near plane), as the depth buffer */
+    int32_t u[3], v[3]; /* u * near/d and v * near/d: the texture coordinates (Q16.16,
+                           modulo 2^16 repeats) are u = u_plane * 2^uv_shift / depth */
+    uint8_t uv_shift;   /* 0..31 */
+} tarn_still_plane;
+
+/* The scene's opaque objects as the static view's frame draws them, drawn once by
+ * tarn bake (docs/bake.md, "Backdrop"): every pixel's colour, and its depth in each
+ * row's span of pixels where water draws or samples. A frame starts each tile from
+ * it instead of drawing the opaque pass (the scene's opaque objects, if it still
+ * lists them, are not drawn); outside the spans the depth reads as in front of
+ * every water pixel, since none draws there. It stands for a quality's opaque
+ * image, so it applies only to frames the static view's screen applies to with
+ * these quality settings (tarn_quality); a frame it does not apply to is refused
+ * (TARN_ERR_SCENE), the objects it replaced being gone. */
+typedef struct {
+    uint8_t recip_newton_steps, perspective, perspective_span; /* tarn_quality's */
+    uint8_t depth_bits, depth_interpolation;
+    uint8_t still_water;       /* 0: the opaque objects alone. 1: the water's still
+                                  terms too (above, "Still water") */
+    /* with still_water, the rest of tarn_quality that shapes the still terms */
+    uint8_t water_block, fog_argument_bits, exp2_interpolate;
+    uint16_t exp2_entries;
+    const tarn_still_plane *planes; /* with still_water: one per object of the scene,
+                                       read for its water objects */
+    uint8_t index_bits;        /* 1..16: bits of a palette index */
+    const uint32_t *palette;   /* 0xRRGGBB colours; with still_water, a water pixel's
+                                  also holds its marks (TARN_BACKDROP_STILL_*), and
+                                  they are in ascending order */
+    uint32_t palette_count;    /* 2^index_bits (tarn bake pads the colours it needs
+                                  with the last), so that every index names one */
+    const uint16_t *colour;    /* a palette index per pixel, rows top to bottom: pixel
+                                  (i, j)'s index_bits bits start at bit
+                                  (j * width + i) * index_bits, counted from bit 0 of
+                                  colour[0] up through each uint16_t */
+    const uint16_t *row_spans; /* height + 1 entries: row j's spans, left to right and
+                                  apart, are spans[row_spans[j] .. row_spans[j + 1]) */
+    const tarn_backdrop_span *spans;
+    uint32_t span_count;       /* entries of spans, row_spans[height] */
+    const void *depth;         /* near/d of the kept pixels, as the depth buffer holds
+                                  it by depth_bits (a uint16_t tarn_depth16 code or a
+                                  uint32_t Q1.30), 0 where no triangle drew, all ones
+                                  where the backdrop keeps none (between close spans);
+                                  with still_water, whatever depth_bits, the place in
+                                  the foam band (step 9's f, Q0.16) as a uint16_t */
+    uint32_t depth_count;      /* entries of depth */
+} tarn_backdrop;
+
+/* What a scene's static vertices were computed for. They apply while the scene's
+ * camera and light are these, and their screen positions and bins while the frame
+ * also has this size and subpixel precision; otherwise each frame computes what they
+ * hold (and an object whose mesh has no positions cannot be drawn: TARN_ERR_SCENE). */
+typedef struct {
+    tarn_camera camera;
+    tarn_light light;
+    uint16_t width, height; /* pixels, 1..TARN_FRAME_SIZE_MAX */
+    uint8_t subpixel_bits;  /* TARN_SUBPIXEL_BITS_MIN..MAX */
+    const tarn_cluster_bin *bins; /* NULL, or every cluster's bin in this frame, the
+                                     objects' in scene order (one for a mesh without
+                                     clusters): a frame with cluster bins reads these
+                                     instead of finding them, and needs no memory for them */
+    const tarn_backdrop *backdrop; /* NULL, or the scene's opaque objects already drawn */
+} tarn_static_view;
+
+typedef struct {
+    const tarn_object *objects;
+    uint16_t object_count;
+    tarn_camera camera;
+    tarn_light light;
+    uint32_t background_rgb; /* colour of pixels no triangle covers */
+    const tarn_underwater *underwater; /* NULL: no underwater view */
+    const tarn_static_view *static_view; /* NULL when no object has static vertices */
+} tarn_scene;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,71 @@
+/* sqrt.c: integer square root and reciprocal square root, without a divider. */
+#include "tarn/tarn_math.h"
+#include "math/math_tables_internal.h"
+
+uint32_t tarn_isqrt_u32(uint32_t x)
+{
+    /* Digit by digit in base 4, as in long division: `bit` walks down the even powers
+     * of two from the highest one not above x; `root` holds the root's bits found so
+     * far, scaled so that root + bit is what the next digit would subtract from x. */
+    uint32_t root = 0u;
+    uint32_t bit = (uint32_t)1 << 30;
+    while (bit > x) bit >>= 2;
+    while (bit != 0u) {
+        if (x >= root + bit) {
+            x -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return root;
+}
+
+uint64_t tarn_isqrt_u64(uint64_t x)
+{
+    /* With e the least whole number for which q = floor(x / 4^e) fits 32 bits (0 for
+     * an x below 2^32) and r = isqrt(q): r^2 <= q <= x / 4^e and (r + 1)^2 >= q + 1 >
+     * x / 4^e, so the root R of x lies in [r 2^e, (r + 1) 2^e), below 2^32 (r < 2^16,
+     * e <= 16). Its last e bits are then found from the top down, each kept when the
+     * square of the root with it is not above x: a 32-bit root, 64-bit squares only
+     * for the last bits. */
+    const uint32_t top = (uint32_t)(x >> 32);
+    const unsigned e = top == 0u ? 0u : (33u - tarn_clz32(top)) >> 1; /* 2e: top's bit length or one more */
+    uint32_t root = tarn_isqrt_u32((uint32_t)(x >> (2u * e))) << e;
+    for (unsigned b = e; b-- > 0u;) {
+        const uint32_t candidate = root | ((uint32_t)1 << b);
+        if (tarn_mul_u32_wide(candidate, candidate) <= x) root = candidate;
+    }
+    return root;
+}
+
+#define ONE_Q28 (1u << 28)
+/* The seed's relative error of 2^-8 shrinks to 2^-15, then to the arithmetic's 2^-28. */
+#define RSQRT_NEWTON_STEPS 2
+
+/* One Newton step for 1/sqrt(m): y' = y + y (1 - m y^2) / 2. m in Q0.32, y in Q2.30
+ * (1/sqrt(m) is in (1, 2]). */
+static uint32_t rsqrt_newton_step(uint32_t m, uint32_t y)
+{
+    uint32_t m_y = tarn_mul_hi_u32(m, y);       /* Q2.30, about sqrt(m) */
+    uint32_t m_y_y = tarn_mul_hi_u32(m_y, y);   /* Q4.28, close to 1 */
+    /* y (1 - m y^2) / 2 in Q2.30 is y * |1 - m y^2| / 2^29 = mul_hi(y, |...| << 3);
+     * from the seed on |1 - m y^2| < 2^-6, so the shift cannot overflow. */
+    if (m_y_y <= ONE_Q28) return y + tarn_mul_hi_u32(y, (ONE_Q28 - m_y_y) << 3);
+    return y - tarn_mul_hi_u32(y, (m_y_y - ONE_Q28) << 3);
+}
+
+uint32_t tarn_rsqrt_q16(uint32_t x_q16)
+{
+    if (x_q16 == 0u) return 0u;
+    /* x = m * 2^(32 - lz) with lz even, so sqrt halves the exponent exactly:
+     * 1/sqrt(x / 2^16) in Q16.16 is (1/sqrt(m)) * 2^(8 + lz/2). */
+    unsigned even_lz = tarn_clz32(x_q16) & ~1u; /* 0..30 */
+    uint32_t m = x_q16 << even_lz;              /* Q0.32 in [1/4, 1) */
+    uint32_t y = (uint32_t)tarn_rsqrt_seed_q15[(m >> 24) - TARN_RSQRT_SEED_FIRST] << 15;
+    for (int step = 0; step < RSQRT_NEWTON_STEPS; step++) y = rsqrt_newton_step(m, y);
+
+    unsigned shift = 22u - (even_lz >> 1); /* 7..22: from Q2.30 to the result */
+    return (y + (1u << (shift - 1u))) >> shift;
+}

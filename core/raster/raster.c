@@ -1,0 +1,406 @@
+/* raster.c: one screen triangle into one tile.
+ *
+ * Coverage: three edge functions in 32-bit integers, exact on the snapped grid,
+ * with the top-left rule as a -1 bias on edges that are neither top nor left.
+ * Attributes: planes value(i, j) = anchor + step_x*(i - ia) + step_y*(j - ja), all
+ * modulo 2^32, anchored at the triangle's own first pixel. Because integer
+ * addition is exact, a pixel gets the same value whichever tile it falls in, and
+ * wrap-around between covered pixels cancels out at the covered ones.
+ * Perspective: attributes are scaled to about 2^30 ("T"), premultiplied by the
+ * normalised inverse depth q, and divided back per pixel (or per span) with the
+ * table-and-Newton reciprocal, using 16x16-bit partial products only. */
+#include "raster/raster_internal.h"
+
+/* T = premultiplied * 2^30 / q, given 1/q as a Q2.30 mantissa and q's leading zeros:
+ * 1/q = recip * 2^(lz - 62), so T = mul_hi(p << 1, recip) << (lz - 1). Clamped to the
+ * triangle's own range, which rounding can overshoot by a few units. */
+static uint32_t divide_by_q(uint32_t premultiplied, uint32_t recip, unsigned lz,
+                            uint32_t t_min, uint32_t t_max)
+{
+    if ((int32_t)premultiplied < 0) premultiplied = 0;
+    if (premultiplied > TARN_T_ONE) premultiplied = TARN_T_ONE;
+    uint32_t t = tarn_mul_hi_u32(premultiplied << 1, recip);
+    if (t > (t_max >> (lz - 1u))) return t_max;
+    t <<= lz - 1u;
+    return t < t_min ? t_min : t;
+}
+
+/* 1/q as a Q2.30 mantissa, and the leading zeros of q (1..31) that scale it. */
+static uint32_t reciprocal_of_q(uint32_t q, unsigned steps, unsigned *lz)
+{
+    if ((int32_t)q < 1) q = 1;
+    if (q > TARN_T_ONE) q = TARN_T_ONE;
+    *lz = tarn_clz32(q);
+    return tarn_recip_q30(q << *lz, steps);
+}
+
+/* An affine triangle's attributes along row j: value(i) = origin[k] + step_x * i,
+ * modulo 2^32 as plane_at, so each pixel takes one product instead of two. */
+static void affine_row_origin(const tarn_attribute_set *set, const tarn_triangle_setup *t, int32_t j,
+                              uint32_t origin[TARN_ATTRIBUTES_MAX])
+{
+    for (int k = set->first_varying; k < set->count; k++) {
+        const tarn_plane *p = &set->premultiplied[k];
+        origin[k] = p->anchor + p->step_y * (uint32_t)(j - t->box.y0) - p->step_x * (uint32_t)t->box.x0;
+    }
+}
+
+static TARN_ALWAYS_INLINE void affine_t(const tarn_attribute_set *set, const uint32_t origin[TARN_ATTRIBUTES_MAX], int32_t i,
+                     uint32_t out[TARN_ATTRIBUTES_MAX])
+{
+    for (int k = set->first_varying; k < set->count; k++) {
+        uint32_t v = origin[k] + set->premultiplied[k].step_x * (uint32_t)i;
+        if ((int32_t)v < (int32_t)set->t_min[k]) v = set->t_min[k];
+        out[k] = v > set->t_max[k] ? set->t_max[k] : v;
+    }
+}
+
+/* Exact T values of every attribute at pixel (i, j), perspective-correct. */
+static TARN_ALWAYS_INLINE void exact_t(const tarn_attribute_set *set, const tarn_triangle_setup *t, int32_t i, int32_t j,
+                    unsigned steps, uint32_t out[TARN_ATTRIBUTES_MAX])
+{
+    uint32_t q = tarn_plane_at(&set->q, t, i, j);
+    if ((int32_t)q < (int32_t)set->q_min) q = set->q_min;
+    if (q > set->q_max) q = set->q_max;
+    unsigned lz;
+    uint32_t recip = reciprocal_of_q(q, steps, &lz);
+    for (int k = set->first_varying; k < set->count; k++)
+        out[k] = divide_by_q(tarn_plane_at(&set->premultiplied[k], t, i, j), recip, lz,
+                             set->t_min[k], set->t_max[k]);
+}
+
+/* Linear interpolation between exact values every `span` pixels. Spans sit on a
+ * grid fixed to the frame, cut to the triangle's own pixel box, so neither depends
+ * on the tile. A span's ends may lie outside the triangle: there the exact values
+ * are extrapolated, signed and unclamped (clamping them would bend the slope
+ * between the ends); only the interpolated pixels are clamped to the triangle. */
+
+#define SPAN_END_MIN (-(1 << 28))
+#define SPAN_END_MAX ((1 << 30) + (1 << 28)) /* ends this far apart still fit a step */
+
+/* T = p * 2^30 / q for a signed, extrapolated p, saturated to the span end range. */
+static int32_t span_end_t(int32_t premultiplied, uint32_t recip, unsigned lz)
+{
+    int32_t p = tarn_clamp_i32(premultiplied, -(1 << 30) + 1, (1 << 30) - 1);
+    const int32_t t = tarn_mul_hi_s32_u32(p * 2, recip); /* |t| <= 2^30 */
+    /* t * 2^(lz - 1), saturated: compared before the shift, so it stays in 32 bits */
+    const unsigned up = lz - 1u; /* 0..30 */
+    if (t >= 0) return (uint32_t)t > ((uint32_t)SPAN_END_MAX >> up) ? SPAN_END_MAX : t * (1 << up);
+    return (uint32_t)-t > ((uint32_t)-SPAN_END_MIN >> up) ? SPAN_END_MIN : -(-t * (1 << up));
+}
+
+static void span_end(const tarn_attribute_set *set, const tarn_triangle_setup *t, int32_t i, int32_t j,
+                     unsigned steps, int32_t out[TARN_ATTRIBUTES_MAX])
+{
+    int32_t q = (int32_t)tarn_plane_at(&set->q, t, i, j);
+    int32_t q_floor = (int32_t)(set->q_min / 2u) > 1 ? (int32_t)(set->q_min / 2u) : 1;
+    unsigned lz;
+    uint32_t recip = reciprocal_of_q((uint32_t)tarn_clamp_i32(q, q_floor, (int32_t)TARN_T_ONE), steps, &lz);
+    for (int k = set->first_varying; k < set->count; k++)
+        out[k] = span_end_t((int32_t)tarn_plane_at(&set->premultiplied[k], t, i, j), recip, lz);
+}
+
+/* The span of pixel i: its exact ends, and the step between them. The far end of
+ * one span is the near end of the next, so its values are kept, not taken again.
+ * Once a span, so kept out of line: the loops that inline span_t stay small. */
+static TARN_NOINLINE void span_fill(const tarn_attribute_set *set, const tarn_triangle_setup *t, unsigned steps, int32_t i,
+                      int32_t j, tarn_span_cache *cache)
+{
+    const int32_t span = (int32_t)1 << cache->log2_span;
+    const int32_t grid = (int32_t)((uint32_t)tarn_floor_shift(i, cache->log2_span) << cache->log2_span);
+    const int32_t start = grid > t->box.x0 ? grid : t->box.x0;
+    const int32_t end = grid + span < t->box.x1 ? grid + span : t->box.x1;
+    if (cache->limit != INT32_MIN && start == cache->end) {
+        for (int k = set->first_varying; k < set->count; k++) cache->t0[k] = cache->t_end[k];
+    } else {
+        span_end(set, t, start, j, steps, cache->t0);
+    }
+    span_end(set, t, end, j, steps, cache->t_end);
+    /* per span, not per pixel: 1/length from the reciprocal, not a division, and
+     * taken again only when the length changes (inside a row it rarely does) */
+    if (end - start != cache->length) {
+        cache->length = end - start;
+        cache->inverse_length = cache->length > 0 ? tarn_recip_u32((uint32_t)cache->length, 2) : 0u;
+    }
+    for (int k = set->first_varying; k < set->count; k++)
+        cache->dt[k] = tarn_mul_hi_s32_u32(cache->t_end[k] - cache->t0[k], cache->inverse_length);
+    cache->start = start;
+    cache->end = end;
+    cache->limit = grid + span;
+}
+
+static TARN_ALWAYS_INLINE void span_t(const tarn_attribute_set *set, const tarn_triangle_setup *t, unsigned steps, int32_t i, int32_t j,
+                   tarn_span_cache *cache, uint32_t out[TARN_ATTRIBUTES_MAX])
+{
+    if (i >= cache->limit) span_fill(set, t, steps, i, j, cache);
+    for (int k = set->first_varying; k < set->count; k++) {
+        int32_t value = cache->t0[k] + cache->dt[k] * (i - cache->start);
+        out[k] = (uint32_t)tarn_clamp_i32(value, (int32_t)set->t_min[k], (int32_t)set->t_max[k]);
+    }
+}
+
+static uint32_t shade_pixel(const tarn_attribute_set *set, const tarn_texture *texture,
+                            const uint32_t t[TARN_ATTRIBUTES_MAX])
+{
+    uint32_t rgb = 0;
+    if (texture == NULL) {
+        for (int c = 0; c < 3; c++) rgb = (rgb << 8) | (((t[c] >> set->t_shift[c]) + 128u) >> 8);
+        return rgb;
+    }
+    const uint32_t tx = (t[TARN_ATTRIBUTE_U] >> set->texel_shift[0]) & set->texel_mask[0];
+    const uint32_t ty = (t[TARN_ATTRIBUTE_V] >> set->texel_shift[1]) & set->texel_mask[1];
+    const uint8_t *texel = &texture->rgb[3u * ((ty << set->log2_width) + tx)];
+    if (set->lit_full) /* the product below is then the texel itself */
+        return ((uint32_t)texel[0] << 16) | ((uint32_t)texel[1] << 8) | texel[2];
+    for (int c = 0; c < 3; c++) {
+        const uint32_t product = texel[c] * (t[c] >> set->t_shift[c]); /* lit Q8.8; / (255 * 256), to nearest */
+        rgb = (rgb << 8) | ((product + (product >> 8) + 32768u) >> 16);
+    }
+    return rgb;
+}
+
+
+static void row_attributes_start(tarn_row_attributes *row, const tarn_tile_target *tile, const tarn_attribute_set *set,
+                                 const tarn_triangle_setup *t, int32_t j)
+{
+    if (TARN_LINK_PERSPECTIVE_AFFINE && set->perspective == TARN_PERSPECTIVE_AFFINE) {
+        affine_row_origin(set, t, j, row->affine_origin);
+    } else if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN) {
+        row->span.limit = INT32_MIN;
+        row->span.length = -1;
+        row->span.log2_span = tile->log2_span;
+    }
+}
+
+/* The T values of every attribute at pixel i of the span in perspective mode
+ * `mode`, the triangle's: a constant in each loop below, which is written once
+ * and compiled for each mode, so no pixel asks which mode it is in. */
+static TARN_ALWAYS_INLINE void attributes_at(tarn_span *s, int32_t i, int mode)
+{
+    const tarn_attribute_set *set = s->set;
+    const unsigned steps = s->target->quality->recip_newton_steps;
+    if (mode == TARN_PERSPECTIVE_AFFINE)
+        affine_t(set, s->row.affine_origin, i, s->values);
+    else if (mode == TARN_PERSPECTIVE_SPAN)
+        span_t(set, s->triangle, steps, i, s->j, &s->row.span, s->values);
+    else
+        exact_t(set, s->triangle, i, s->j, steps, s->values);
+}
+
+void tarn_span_attributes(tarn_span *s, int32_t i)
+{
+    const int mode = s->set->perspective;
+    if (TARN_LINK_PERSPECTIVE_AFFINE && mode == TARN_PERSPECTIVE_AFFINE)
+        attributes_at(s, i, TARN_PERSPECTIVE_AFFINE);
+    else if (TARN_LINK_PERSPECTIVE_SPAN && mode == TARN_PERSPECTIVE_SPAN)
+        attributes_at(s, i, TARN_PERSPECTIVE_SPAN);
+    else if (TARN_LINK_PERSPECTIVE_PIXEL)
+        attributes_at(s, i, TARN_PERSPECTIVE_PIXEL);
+}
+
+/* The covered pixels of a span of an opaque material whose colour is the same at
+ * every pixel: untextured, lit alike at its three vertices. */
+static void draw_constant_span(tarn_span *s, uint32_t rgb)
+{
+    uint32_t *const colour = s->target->colour;
+    void *const depth_buffer = s->target->depth;
+    const int depth_bits = s->target->quality->depth_bits;
+    const tarn_exact_step_value step = s->set->depth.step_x;
+    const int exact_depth = s->set->depth.exact;
+    tarn_exact_value depth = s->depth;
+    for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
+        const uint32_t closer = tarn_closer_depth(depth_buffer, depth_bits, index, depth.quotient);
+        if (closer != 0u) {
+            colour[index] = rgb;
+            tarn_store_depth(depth_buffer, depth_bits, index, closer);
+        }
+        tarn_step_depth(&depth, &step, exact_depth);
+    }
+}
+
+/* The covered pixels of a span of any other opaque material, in perspective mode
+ * `mode`: its colour interpolated and, with a texture, times the texel. */
+static TARN_ALWAYS_INLINE void draw_interpolated(tarn_span *s, const tarn_texture *texture, int mode)
+{
+    uint32_t *const colour = s->target->colour;
+    void *const depth_buffer = s->target->depth;
+    const int depth_bits = s->target->quality->depth_bits;
+    const tarn_exact_step_value step = s->set->depth.step_x;
+    const int exact_depth = s->set->depth.exact;
+    tarn_exact_value depth = s->depth;
+    for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
+        const uint32_t closer = tarn_closer_depth(depth_buffer, depth_bits, index, depth.quotient);
+        if (closer != 0u) {
+            attributes_at(s, i, mode);
+            colour[index] = shade_pixel(s->set, texture, s->values);
+            tarn_store_depth(depth_buffer, depth_bits, index, closer);
+        }
+        tarn_step_depth(&depth, &step, exact_depth);
+    }
+}
+
+static void draw_affine_span(tarn_span *s, const tarn_texture *texture)
+{
+    draw_interpolated(s, texture, TARN_PERSPECTIVE_AFFINE);
+}
+
+static void draw_spanned_span(tarn_span *s, const tarn_texture *texture)
+{
+    draw_interpolated(s, texture, TARN_PERSPECTIVE_SPAN);
+}
+
+static void draw_perspective_span(tarn_span *s, const tarn_texture *texture)
+{
+    draw_interpolated(s, texture, TARN_PERSPECTIVE_PIXEL);
+}
+
+static void row_edges_at(const tarn_triangle_setup *t, int32_t i, int32_t j, tarn_row_edges *r)
+{
+    const unsigned s = t->subpixel_bits;
+    for (int k = 0; k < 3; k++) {
+        r->at[k] = tarn_edge_at(&t->edges[k], tarn_pixel_centre(i, s), tarn_pixel_centre(j, s));
+        r->step_x[k] = (int32_t)((uint32_t)t->edges[k].a << s);
+        r->step_y[k] = (int32_t)((uint32_t)t->edges[k].b << s);
+    }
+}
+
+/* The edges one row down, stepped modulo 2^32: after the last row they may leave
+ * the range that rows inside the triangle's box keep to. */
+static void row_edges_down(tarn_row_edges *r)
+{
+    for (int k = 0; k < 3; k++) r->at[k] = (int32_t)((uint32_t)r->at[k] + (uint32_t)r->step_y[k]);
+}
+
+/* The covered pixels of row j between the box's columns into the span; 0 when
+ * there are none. */
+static int covered_run(tarn_triangle_rows *r, int32_t j)
+{
+    tarn_span *s = &r->span;
+    int32_t e0 = r->edges.at[0], e1 = r->edges.at[1], e2 = r->edges.at[2];
+    const int32_t step0 = r->edges.step_x[0], step1 = r->edges.step_x[1], step2 = r->edges.step_x[2];
+    const int exact_depth = r->set.depth.exact;
+    tarn_exact_value depth = r->row_depth;
+    const int32_t i1 = r->draw.x1;
+    int32_t i = r->draw.x0;
+    /* up to the covered run: only the edges and the depth move */
+    for (; i <= i1 && (e0 | e1 | e2) < 0; i++) {
+        e0 += step0;
+        e1 += step1;
+        e2 += step2;
+        tarn_step_depth(&depth, &r->set.depth.step_x, exact_depth);
+    }
+    if (i > i1) return 0;
+    s->i0 = i;
+    s->depth = depth;
+    /* each edge is linear along the row, so the covered pixels are one run: after
+     * it, nothing more is covered */
+    for (; i <= i1 && (e0 | e1 | e2) >= 0; i++) {
+        e0 += step0;
+        e1 += step1;
+        e2 += step2;
+    }
+    s->i1 = i - 1;
+    s->j = j;
+    s->offset = (j - s->target->origin_y) * s->target->stride - s->target->origin_x;
+    row_attributes_start(&s->row, s->target, &r->set, &r->setup, j);
+    return 1;
+}
+
+tarn_span *tarn_triangle_next_span(tarn_triangle_rows *r)
+{
+    while (r->next_row <= r->draw.y1) {
+        const int covered = covered_run(r, r->next_row);
+        r->next_row++;
+        tarn_step_depth(&r->row_depth, &r->set.depth.step_y, r->set.depth.exact);
+        row_edges_down(&r->edges);
+        if (covered) return &r->span;
+    }
+    return NULL;
+}
+
+/* Span mode interpolates between exact ends a span apart; on a triangle narrower
+ * than a span those ends would be extrapolated outside it, and over so few pixels
+ * affine interpolation is both cheaper and closer. The choice depends on the
+ * triangle alone, so the image still does not depend on the tile size. */
+static uint8_t perspective_mode(const tarn_quality *quality, const tarn_pixel_box *box)
+{
+    if (quality->perspective == TARN_PERSPECTIVE_SPAN && box->x1 - box->x0 < quality->perspective_span)
+        return TARN_PERSPECTIVE_AFFINE;
+    return quality->perspective;
+}
+
+void tarn_triangle_rows_begin(tarn_triangle_rows *r, const tarn_attribute_request *request)
+{
+    const tarn_triangle_setup *t = &r->setup;
+    const tarn_quality *quality = r->target->quality;
+    tarn_setup_attributes(t, request, perspective_mode(quality, &t->box), quality->depth_interpolation, &r->set);
+    for (int k = 0; k < r->set.first_varying; k++) r->values[k] = r->set.t_min[k]; /* = t_max: constant */
+    r->span.target = r->target;
+    r->span.triangle = t;
+    r->span.set = &r->set;
+    r->span.values = r->values;
+    r->row_depth = tarn_depth_at(t, &r->set.depth, r->draw.x0, r->draw.y0);
+    row_edges_at(t, r->draw.x0, r->draw.y0, &r->edges);
+    r->next_row = r->draw.y0;
+}
+
+/* 1 when some edge is negative at every pixel centre of the box, so no pixel of it
+ * is covered: an edge is linear, so its largest value over the box is at the
+ * corner its coefficients point to. Three edge values instead of the whole
+ * attribute setup for the triangles whose bounds reach into a tile that their
+ * area does not. */
+static int box_outside_an_edge(const tarn_triangle_setup *t, const tarn_pixel_box *box)
+{
+    const unsigned s = t->subpixel_bits;
+    for (int k = 0; k < 3; k++) {
+        const tarn_edge *e = &t->edges[k];
+        const int32_t px = tarn_pixel_centre(e->a > 0 ? box->x1 : box->x0, s);
+        const int32_t py = tarn_pixel_centre(e->b > 0 ? box->y1 : box->y0, s);
+        if (tarn_edge_at(e, px, py) < 0) return 1;
+    }
+    return 0;
+}
+
+int tarn_triangle_enters_tile(tarn_triangle_rows *r, tarn_tile_target *tile, const tarn_screen_vertex vertex[3],
+                              uint8_t cull)
+{
+    tarn_triangle_setup *t = &r->setup;
+    if (!tarn_orient_triangle(vertex, cull, tile->quality->subpixel_bits, t)) return 0;
+    r->target = tile;
+    t->box = tarn_triangle_pixels(t);
+    tarn_pixel_box *draw = &r->draw;
+    *draw = t->box;
+    if (draw->x0 < tile->rect.x0) draw->x0 = tile->rect.x0;
+    if (draw->y0 < tile->rect.y0) draw->y0 = tile->rect.y0;
+    if (draw->x1 > tile->rect.x1 - 1) draw->x1 = tile->rect.x1 - 1;
+    if (draw->y1 > tile->rect.y1 - 1) draw->y1 = tile->rect.y1 - 1;
+    return draw->x0 <= draw->x1 && draw->y0 <= draw->y1 && !box_outside_an_edge(t, draw);
+}
+
+void tarn_raster_triangle(void *target, const tarn_screen_vertex vertex[3], const tarn_object *object)
+{
+    const tarn_material *material = object->material;
+    tarn_triangle_rows rows;
+    if (!tarn_triangle_enters_tile(&rows, target, vertex, material->cull)) return;
+    tarn_attribute_request request = {NULL, 0, 0};
+    if (material->texture != NULL && object->mesh->uvs != NULL) {
+        request.texture = material->texture;
+        request.uv = 1;
+    }
+    tarn_triangle_rows_begin(&rows, &request);
+    /* a colour the three vertices share needs no attribute at any pixel: decided
+     * once a triangle */
+    const int constant = request.texture == NULL && rows.set.first_varying == rows.set.count;
+    const uint32_t rgb = constant ? shade_pixel(&rows.set, NULL, rows.values) : 0u;
+    const int mode = rows.set.perspective;
+    for (tarn_span *s; (s = tarn_triangle_next_span(&rows)) != NULL;) {
+        if (constant)
+            draw_constant_span(s, rgb);
+        else if (TARN_LINK_PERSPECTIVE_AFFINE && mode == TARN_PERSPECTIVE_AFFINE)
+            draw_affine_span(s, request.texture);
+        else if (TARN_LINK_PERSPECTIVE_SPAN && mode == TARN_PERSPECTIVE_SPAN)
+            draw_spanned_span(s, request.texture);
+        else if (TARN_LINK_PERSPECTIVE_PIXEL)
+            draw_perspective_span(s, request.texture);
+    }
+}

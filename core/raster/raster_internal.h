@@ -1,0 +1,276 @@
+/* raster_internal.h: the fourth stage of a frame (core/raster/), internal to
+ * core/: one screen triangle into one tile's buffers.
+ *
+ *   triangle_setup.c  once per triangle per tile: culling, edge functions, the pixel
+ *                     box, the attribute and depth planes (64-bit products and exact
+ *                     divisions are allowed here)
+ *   raster.c          per row: the covered run of pixels, found with the edge
+ *                     functions and handed to the triangle's span shader; per pixel
+ *                     of an opaque material: depth test, attributes, texel, colour
+ *
+ * It takes the screen triangles of core/tile/'s walk and draws them into a
+ * tarn_tile_target. A triangle is set up once (tarn_triangle_in_tile), then drawn
+ * by the span shader chosen for it once: the rasterizer's own for an opaque
+ * material (a constant colour, or interpolated colour and texels), or one a later
+ * stage gives (core/water/). The split is the numeric contract made visible: setup
+ * may divide; nothing a span runs may, and tests/check_core_purity.sh proves it on
+ * the Cortex-M0 build. */
+#ifndef TARN_RASTER_INTERNAL_H
+#define TARN_RASTER_INTERNAL_H
+
+#include "tile/tile_internal.h"
+
+/* Where inlining decides the per-pixel cost: a function the compiler must inline
+ * (a pixel's step, written once and compiled into each loop that takes it), and
+ * one it must not (what runs once a span, called from those loops). */
+#if defined(__GNUC__)
+#define TARN_ALWAYS_INLINE __attribute__((always_inline)) inline
+#define TARN_NOINLINE __attribute__((noinline))
+#else
+#define TARN_ALWAYS_INLINE inline
+#define TARN_NOINLINE
+#endif
+
+#define TARN_T_ONE ((uint32_t)1 << 30)
+#define TARN_ATTRIBUTES_MAX 6 /* lit r, g, b; texture u, v; fresnel */
+#define TARN_ATTRIBUTE_U 3
+#define TARN_ATTRIBUTE_V 4
+#define TARN_ATTRIBUTE_FRESNEL 5
+
+typedef struct {
+    uint32_t anchor, step_x, step_y; /* modulo 2^32 */
+} tarn_plane;
+
+typedef struct {
+    int32_t a, b, x, y, bias; /* E(p) = a*(px - x) + b*(py - y) + bias, covered when >= 0 */
+} tarn_edge;
+
+typedef struct {
+    const tarn_screen_vertex *v[3]; /* oriented so that area2 > 0 */
+    int64_t area2;
+    unsigned subpixel_bits;
+    tarn_pixel_box box; /* pixels whose centres may be covered; planes are anchored at (x0, y0) */
+    tarn_edge edges[3];
+} tarn_triangle_setup;
+
+/* near/d in Q1.30 at a pixel, as quotient and remainder of N(p) / area2: N is the
+ * barycentric numerator (plus area2/2 to round), linear in the pixel, so it steps
+ * exactly. Exact depth makes the depth test's outcome a property of the triangle,
+ * not of how its interpolation rounded: where two surfaces meet, the float reference
+ * (which rounds the exact value the same way) agrees pixel for pixel. Plane depth
+ * (TARN_DEPTH_PLANE) keeps the remainder at 0 and steps the quotient alone. */
+typedef struct {
+    uint32_t quotient;  /* modulo 2^32; in range at covered pixels */
+    uint32_t remainder; /* in [0, den) */
+} tarn_exact_value;
+
+/* A step of an exact value: its quotient and remainder, and den - remainder, the
+ * remainder at which the step carries into the quotient (taken once, not per pixel). */
+typedef struct {
+    uint32_t quotient, remainder, carry_at;
+} tarn_exact_step_value;
+
+typedef struct {
+    tarn_divisor den; /* area2 */
+    tarn_exact_step_value step_x, step_y;
+    uint32_t anchor;  /* plane depth: near/d at the triangle's first pixel (box.x0, box.y0) */
+    uint8_t exact;    /* 1: TARN_DEPTH_EXACT; 0: a plane, whose steps have no remainder */
+} tarn_depth_plane;
+
+typedef struct {
+    int count;
+    int first_varying; /* attributes below it are constant over the triangle (0, or 3 when
+                          its lit colour is): t_min = t_max is their value and they
+                          have no plane, so the pixels neither step nor divide them */
+    uint8_t lit_full;  /* the lit colour is constant and 255.0 in every channel (a white
+                          material in full light): a textured pixel is its texel */
+    int perspective; /* tarn_perspective */
+    tarn_depth_plane depth; /* near/d, Q1.30 */
+    tarn_plane q;         /* normalised near/d, perspective modes */
+    uint32_t q_min, q_max;
+    tarn_plane premultiplied[TARN_ATTRIBUTES_MAX]; /* T * q / 2^30, or T when affine */
+    uint32_t t_min[TARN_ATTRIBUTES_MAX], t_max[TARN_ATTRIBUTES_MAX];
+    unsigned t_shift[TARN_ATTRIBUTES_MAX];    /* attribute = T >> t_shift */
+    uint32_t u_base, v_base;             /* whole texture repeats removed from u, v (Q16.16) */
+    /* when textured: texel column (T_u >> texel_shift[0]) & texel_mask[0], row
+     * likewise from T_v, at index (row << log2_width) + column */
+    uint8_t texel_shift[2];
+    uint32_t texel_mask[2];
+    unsigned log2_width;
+} tarn_attribute_set;
+
+/* ---- per-pixel helpers shared with setup (32-bit arithmetic only) ------------ */
+
+static inline int32_t tarn_edge_at(const tarn_edge *e, int32_t px, int32_t py)
+{
+    return e->a * (px - e->x) + e->b * (py - e->y) + e->bias;
+}
+
+static inline uint32_t tarn_plane_at(const tarn_plane *p, const tarn_triangle_setup *t, int32_t i, int32_t j)
+{
+    return p->anchor + p->step_x * (uint32_t)(i - t->box.x0) + p->step_y * (uint32_t)(j - t->box.y0);
+}
+
+static inline void tarn_exact_step(tarn_exact_value *v, const tarn_exact_step_value *step)
+{
+    v->quotient += step->quotient;
+    if (v->remainder >= step->carry_at) {
+        v->remainder -= step->carry_at;
+        v->quotient++;
+    } else {
+        v->remainder += step->remainder;
+    }
+}
+
+/* ---- setup, once per triangle per tile ------------------------------------------ */
+
+/* Culls by the material and orients the triangle; returns 0 when nothing draws. */
+int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned subpixel_bits,
+                         tarn_triangle_setup *t);
+/* Pixels whose centres may be covered, before the tile clips them. */
+tarn_pixel_box tarn_triangle_pixels(const tarn_triangle_setup *t);
+
+/* What a triangle interpolates besides its lit colour. */
+typedef struct {
+    const tarn_texture *texture; /* textured opaque: its sizes for sampling */
+    int uv;                      /* texture coordinates (textured, or water) */
+    int fresnel;                 /* the fresnel term (water; needs uv) */
+} tarn_attribute_request;
+
+void tarn_setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_request *request,
+                           uint8_t perspective, uint8_t depth_interpolation, tarn_attribute_set *set);
+/* The depth one step on: exactly, or along the plane, whose steps have no
+ * remainder. `exact` is the triangle's depth.exact, taken into a local by the
+ * caller: read through the set at each pixel, it would be read again after every
+ * store to the tile. */
+static inline void tarn_step_depth(tarn_exact_value *v, const tarn_exact_step_value *step, int exact)
+{
+    if (TARN_LINK_EXACT_DEPTH && exact)
+        tarn_exact_step(v, step);
+    else
+        v->quotient += step->quotient;
+}
+
+/* Exact depth (TARN_DEPTH_EXACT) at pixel (i, j). */
+tarn_exact_value tarn_exact_depth_at(const tarn_triangle_setup *t, const tarn_depth_plane *depth, int32_t i, int32_t j);
+
+/* Depth at pixel (i, j), to be stepped from there with step_depth. */
+static inline tarn_exact_value tarn_depth_at(const tarn_triangle_setup *t, const tarn_depth_plane *depth, int32_t i, int32_t j)
+{
+    if (TARN_LINK_EXACT_DEPTH && depth->exact) return tarn_exact_depth_at(t, depth, i, j);
+    const tarn_plane p = {depth->anchor, depth->step_x.quotient, depth->step_y.quotient};
+    const tarn_exact_value v = {tarn_plane_at(&p, t, i, j), 0u};
+    return v;
+}
+
+/* ---- spans: the covered pixels of one row, handed to the triangle's shader ---- */
+
+/* The span perspective mode's interpolation (raster.c): exact values every
+ * `span` pixels on a grid fixed to the frame, linear between. */
+typedef struct {
+    unsigned log2_span;
+    int32_t limit;     /* the pixel after the cached span's grid cell; INT32_MIN before the first */
+    int32_t start;     /* the cached span's first pixel */
+    int32_t end;       /* and its far end, where the next span starts */
+    int32_t t0[TARN_ATTRIBUTES_MAX], dt[TARN_ATTRIBUTES_MAX];
+    int32_t t_end[TARN_ATTRIBUTES_MAX]; /* the exact values at `end` */
+    int32_t length;                /* end - start of the last span filled, -1 before */
+    uint32_t inverse_length;       /* 2^32 / length, tarn_recip_u32's */
+} tarn_span_cache;
+
+/* What one row keeps for its pixels' attributes, by the triangle's perspective
+ * mode: the affine origin, or the span cache. */
+typedef union {
+    uint32_t affine_origin[TARN_ATTRIBUTES_MAX];
+    tarn_span_cache span;
+} tarn_row_attributes;
+
+/* Pixels i0..i1 (inclusive, i0 <= i1) of row j, each covered by the triangle. */
+typedef struct {
+    tarn_tile_target *target;
+    const tarn_triangle_setup *triangle;
+    const tarn_attribute_set *set;
+    int32_t j, i0, i1;
+    tarn_exact_value depth;  /* near/d (Q1.30) at i0, stepped along the row with tarn_step_depth */
+    int32_t offset;          /* index of pixel (0, j) in the target's buffers */
+    uint32_t *values;        /* T values of the attributes: the constant ones set, the
+                                varying ones by tarn_span_attributes */
+    tarn_row_attributes row; /* the row's interpolation state */
+} tarn_span;
+
+/* The T values of the varying attributes at pixel i of the span, into its values,
+ * for a shader that needs them at some pixels only. Pixels must come in order;
+ * one may be skipped in any perspective mode. */
+void tarn_span_attributes(tarn_span *span, int32_t i);
+
+/* The depth at buffer index `index` as the buffer holds it (a tarn_depth16 code or
+ * Q1.30, by `depth_bits`), or 0 when inv_depth is not closer than the stored one.
+ * Both forms are at least 1. The loops take the buffer and its bits into locals:
+ * read through the span, they would be read again after every store to the tile. */
+static inline uint32_t tarn_closer_depth(const void *depth, int depth_bits, int32_t index, uint32_t inv_depth)
+{
+    if ((int32_t)inv_depth < 1) inv_depth = 1;
+    if (inv_depth > TARN_T_ONE) inv_depth = TARN_T_ONE;
+    if (depth_bits == 16) {
+        const uint16_t value = tarn_depth16_encode(inv_depth);
+        return value > ((const uint16_t *)depth)[index] ? value : 0u;
+    }
+    return inv_depth > ((const uint32_t *)depth)[index] ? inv_depth : 0u;
+}
+
+/* Stored after the pixel is shaded: a water pass drawing in place reads the depth
+ * beneath it first. */
+static inline void tarn_store_depth(void *depth, int depth_bits, int32_t index, uint32_t value)
+{
+    if (depth_bits == 16)
+        ((uint16_t *)depth)[index] = (uint16_t)value;
+    else
+        ((uint32_t *)depth)[index] = value;
+}
+
+/* ---- a triangle into a tile, row by row ---------------------------------------
+ *
+ * The material's stage drives the rows, so the rasterizer calls no shader: for an
+ * opaque material raster.c itself (tarn_raster_triangle), for water core/water/.
+ *
+ *     tarn_triangle_rows rows;
+ *     if (!tarn_triangle_enters_tile(&rows, target, vertex, cull)) return;
+ *     tarn_triangle_rows_begin(&rows, &request);
+ *     for (tarn_span *s; (s = tarn_triangle_next_span(&rows)) != NULL;)
+ *         ...each pixel of s that passes the depth test...
+ */
+
+/* The edge values at the first pixel of a row, their steps along a row and down to
+ * the next: a row starts from the row above's by adds, not from products. */
+typedef struct {
+    int32_t at[3];
+    int32_t step_x[3], step_y[3];
+} tarn_row_edges;
+
+/* A triangle set up for one tile, and where its walk down the rows stands. */
+typedef struct {
+    tarn_tile_target *target;
+    tarn_triangle_setup setup;
+    tarn_pixel_box draw;           /* the pixels of the tile its box covers */
+    tarn_attribute_set set;
+    uint32_t values[TARN_ATTRIBUTES_MAX];
+    tarn_row_edges edges;          /* at (draw.x0, next row) */
+    tarn_exact_value row_depth;    /* likewise */
+    int32_t next_row;
+    tarn_span span;
+} tarn_triangle_rows;
+
+/* Sets up the triangle for the tile; 0 when it draws no pixel there (culled, or
+ * its box misses the tile or lies beyond one of its edges). */
+int tarn_triangle_enters_tile(tarn_triangle_rows *rows, tarn_tile_target *target,
+                              const tarn_screen_vertex vertex[3], uint8_t cull);
+/* Its attribute and depth planes for `request`, and the walk at its first row. */
+void tarn_triangle_rows_begin(tarn_triangle_rows *rows, const tarn_attribute_request *request);
+/* The covered pixels of the next row that has any, or NULL after the last. */
+tarn_span *tarn_triangle_next_span(tarn_triangle_rows *rows);
+
+/* A triangle of an opaque material into the tile `target` (a tarn_tile_target): a
+ * tarn_triangle_sink. */
+void tarn_raster_triangle(void *target, const tarn_screen_vertex vertex[3], const tarn_object *object);
+
+#endif

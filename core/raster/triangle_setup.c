@@ -1,0 +1,282 @@
+/* raster_setup.c: per-triangle setup for the rasterizer: winding and culling, edge
+ * functions, the pixel box, attribute planes and the exact depth plane. 64-bit
+ * products and divisions are allowed here (once per triangle per tile), never in
+ * raster.c. */
+#include "raster/raster_internal.h"
+
+static tarn_exact_value floor_divmod(int64_t num, const tarn_divisor *den)
+{
+    uint32_t r;
+    const int64_t q = tarn_divide_floor_i64(num, den, &r);
+    tarn_exact_value v = {(uint32_t)q, r};
+    return v;
+}
+
+static tarn_exact_step_value exact_step_of(int64_t num, const tarn_divisor *den)
+{
+    const tarn_exact_value v = floor_divmod(num, den);
+    const tarn_exact_step_value step = {v.quotient, v.remainder, den->divisor - v.remainder};
+    return step;
+}
+
+static unsigned bit_length_u32(uint32_t v)
+{
+    return 32u - tarn_clz32(v);
+}
+
+static tarn_edge make_edge(const tarn_screen_vertex *from, const tarn_screen_vertex *to)
+{
+    tarn_edge e;
+    int32_t dx = to->x - from->x, dy = to->y - from->y;
+    e.a = -dy;
+    e.b = dx;
+    e.x = from->x;
+    e.y = from->y;
+    /* With area2 > 0 on a y-down screen, top edges run in +x and left edges in -y. */
+    int top_or_left = (dy == 0 && dx > 0) || dy < 0;
+    e.bias = top_or_left ? 0 : -1;
+    return e;
+}
+
+/* The edge function without its bias at a pixel centre inside the triangle's
+ * bounds: 32-bit, as raster.c's edge_at, since coordinates inside the guard box
+ * differ by less than 2^15 subpixels (tarn_config_check) and each product stays
+ * below 2^30. */
+static int32_t edge_unbiased_at(const tarn_edge *e, int32_t px, int32_t py)
+{
+    return e->a * (px - e->x) + e->b * (py - e->y);
+}
+
+int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned s,
+                           tarn_triangle_setup *t)
+{
+    const int64_t area2 = tarn_drawn_area2(in, cull);
+    if (area2 == 0) return 0;
+    int front = area2 < 0;
+    t->v[0] = &in[0];
+    t->v[1] = front ? &in[2] : &in[1];
+    t->v[2] = front ? &in[1] : &in[2];
+    t->area2 = front ? -area2 : area2;
+    t->subpixel_bits = s;
+    /* edge k is the one opposite vertex k */
+    t->edges[0] = make_edge(t->v[1], t->v[2]);
+    t->edges[1] = make_edge(t->v[2], t->v[0]);
+    t->edges[2] = make_edge(t->v[0], t->v[1]);
+    return 1;
+}
+
+tarn_pixel_box tarn_triangle_pixels(const tarn_triangle_setup *t)
+{
+    tarn_subpixel_bounds bounds = tarn_bounds_empty();
+    for (int k = 0; k < 3; k++) tarn_bounds_add(&bounds, t->v[k]);
+    return tarn_bounds_pixels(&bounds, t->subpixel_bits);
+}
+
+/* Edges 1 and 2 at the centre of the pixel every plane is anchored at, (box.x0,
+ * box.y0): the same for all of a triangle's planes, so taken once. */
+typedef struct {
+    int32_t e1, e2;
+} plane_anchor;
+
+static plane_anchor anchor_of(const tarn_triangle_setup *t)
+{
+    const unsigned s = t->subpixel_bits;
+    const int32_t px = tarn_pixel_centre(t->box.x0, s), py = tarn_pixel_centre(t->box.y0, s);
+    const plane_anchor anchor = {edge_unbiased_at(&t->edges[1], px, py), edge_unbiased_at(&t->edges[2], px, py)};
+    return anchor;
+}
+
+/* e1 * d1 + e2 * d2 for two edge values and two value differences. */
+static int64_t weighted_sum(int32_t e1, int32_t d1, int32_t e2, int32_t d2)
+{
+    return tarn_mul_i32_wide(e1, d1) + tarn_mul_i32_wide(e2, d2);
+}
+
+/* The same for two edge coefficients (a or b), which are coordinate differences
+ * inside the guard box and so below 2^15. */
+static int64_t coefficient_sum(int32_t a1, int32_t d1, int32_t a2, int32_t d2)
+{
+    return tarn_mul_i16_i32_wide(a1, d1) + tarn_mul_i16_i32_wide(a2, d2);
+}
+
+/* A plane through the three vertex values (each within [0, 2^30], so their
+ * differences fit 32 bits). Its anchor and steps divide by the area in one multiply
+ * each (tarn_divide_round_approx_i64): an attribute plane is an approximation
+ * already, and the exact division cost the Cortex-M0 several thousand instructions
+ * a triangle. */
+static tarn_plane make_plane(const tarn_triangle_setup *t, const tarn_divisor *area2, const plane_anchor *anchor,
+                        const uint32_t value[3])
+{
+    const unsigned s = t->subpixel_bits;
+    const tarn_edge *e1 = &t->edges[1], *e2 = &t->edges[2];
+    const int32_t d1 = (int32_t)(value[1] - value[0]), d2 = (int32_t)(value[2] - value[0]);
+    if (d1 == 0 && d2 == 0) { /* a flat plane: every quotient below would be 0 */
+        const tarn_plane flat = {value[0], 0u, 0u};
+        return flat;
+    }
+    int64_t at_anchor = value[0] + tarn_divide_round_approx_i64(weighted_sum(anchor->e1, d1, anchor->e2, d2), area2);
+    int64_t step_x = tarn_divide_round_approx_i64(coefficient_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
+    int64_t step_y = tarn_divide_round_approx_i64(coefficient_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
+    tarn_plane p = {(uint32_t)at_anchor, (uint32_t)step_x, (uint32_t)step_y};
+    return p;
+}
+
+/* Scales one attribute's three values toward 2^30 and premultiplies by q; an
+ * attribute below set->first_varying is constant and gets no plane. */
+static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_anchor *anchor,
+                          const uint32_t value[3], const uint32_t q[3])
+{
+    const int k = set->count++;
+    const unsigned length = bit_length_u32(value[0] | value[1] | value[2]);
+    const unsigned shift = 30u - (length > 30u ? 30u : length);
+    uint32_t scaled[3];
+    for (int n = 0; n < 3; n++) {
+        const uint32_t v = (value[n] > TARN_T_ONE ? TARN_T_ONE : value[n]) << shift;
+        scaled[n] = v > TARN_T_ONE ? TARN_T_ONE : v;
+    }
+    /* at most T_ONE: the signed least and largest are the same numbers */
+    set->t_min[k] = (uint32_t)tarn_min3_i32((int32_t)scaled[0], (int32_t)scaled[1], (int32_t)scaled[2]);
+    set->t_max[k] = (uint32_t)tarn_max3_i32((int32_t)scaled[0], (int32_t)scaled[1], (int32_t)scaled[2]);
+    set->t_shift[k] = shift;
+    if (k < set->first_varying) return; /* constant: no plane */
+    if (set->perspective != TARN_PERSPECTIVE_AFFINE)
+        for (int n = 0; n < 3; n++) scaled[n] = (uint32_t)(tarn_mul_u32_wide(scaled[n], q[n]) >> 30);
+    set->premultiplied[k] = make_plane(t, &set->depth.den, anchor, scaled);
+}
+
+/* Whether the lit colour's three channels are all 255.0 (65280 in Q8.8). */
+static int lit_is_full(const tarn_attribute_set *set)
+{
+    for (int c = 0; c < 3; c++)
+        if ((set->t_min[c] >> set->t_shift[c]) != 65280u) return 0;
+    return 1;
+}
+
+/* Whether the three vertices are lit alike: on a level surface or a flat-lit one. */
+static int lit_alike(const tarn_triangle_setup *t)
+{
+    for (int c = 0; c < 3; c++)
+        if (t->v[1]->lit[c] != t->v[0]->lit[c] || t->v[2]->lit[c] != t->v[0]->lit[c]) return 0;
+    return 1;
+}
+
+/* Texture coordinates less their whole repeats (which do not move a texel). */
+static void texture_coordinates(const tarn_triangle_setup *t, int axis, uint32_t out[3], uint32_t *base)
+{
+    int32_t c[3], low;
+    for (int n = 0; n < 3; n++) c[n] = axis == 0 ? t->v[n]->uv.u : t->v[n]->uv.v;
+    low = c[0] < c[1] ? c[0] : c[1];
+    low = low < c[2] ? low : c[2];
+    int32_t whole = tarn_floor_shift(low, 16);
+    *base = (uint32_t)whole << 16;
+    for (int n = 0; n < 3; n++) out[n] = (uint32_t)c[n] - *base;
+}
+
+/* Vertex k's inverse depth less vertex 0's: both within [1, 2^30]. */
+static int32_t depth_difference(const tarn_triangle_setup *t, int k)
+{
+    return (int32_t)(t->v[k]->inv_depth - t->v[0]->inv_depth);
+}
+
+static int64_t depth_numerator_step(const tarn_triangle_setup *t, int32_t a1, int32_t a2)
+{
+    return coefficient_sum(a1, depth_difference(t, 1), a2, depth_difference(t, 2)) * ((int64_t)1 << t->subpixel_bits);
+}
+
+static tarn_depth_plane make_exact_depth_plane(const tarn_triangle_setup *t)
+{
+    tarn_depth_plane p;
+    p.den = tarn_divisor_of((uint32_t)t->area2);
+    p.step_x = exact_step_of(depth_numerator_step(t, t->edges[1].a, t->edges[2].a), &p.den);
+    p.step_y = exact_step_of(depth_numerator_step(t, t->edges[1].b, t->edges[2].b), &p.den);
+    p.anchor = 0u;
+    p.exact = 1u;
+    return p;
+}
+
+/* Depth on a plane through the vertices' near/d, as the attributes' planes. */
+static tarn_depth_plane make_depth_plane(const tarn_triangle_setup *t, const plane_anchor *anchor)
+{
+    tarn_depth_plane p;
+    p.den = tarn_divisor_of((uint32_t)t->area2);
+    const uint32_t value[3] = {t->v[0]->inv_depth, t->v[1]->inv_depth, t->v[2]->inv_depth};
+    const tarn_plane steps = make_plane(t, &p.den, anchor, value);
+    const tarn_exact_step_value step_x = {steps.step_x, 0u, UINT32_MAX}, step_y = {steps.step_y, 0u, UINT32_MAX};
+    p.step_x = step_x;
+    p.step_y = step_y;
+    p.anchor = steps.anchor;
+    p.exact = 0u;
+    return p;
+}
+
+/* Exact depth at pixel (i, j): (area2*z0 + E1*(z1 - z0) + E2*(z2 - z0) + area2/2) / area2,
+ * each term below 2^61 inside the guard box. */
+tarn_exact_value tarn_exact_depth_at(const tarn_triangle_setup *t, const tarn_depth_plane *depth, int32_t i, int32_t j)
+{
+    const unsigned s = t->subpixel_bits;
+    const int32_t px = tarn_pixel_centre(i, s), py = tarn_pixel_centre(j, s);
+    /* area2 is below 2^31: two products of coordinate differences */
+    int64_t num = (int64_t)tarn_mul_u32_wide((uint32_t)t->area2, t->v[0]->inv_depth) + t->area2 / 2 +
+                  weighted_sum(edge_unbiased_at(&t->edges[1], px, py), depth_difference(t, 1),
+                               edge_unbiased_at(&t->edges[2], px, py), depth_difference(t, 2));
+    return floor_divmod(num, &depth->den);
+}
+
+/* The texel a pixel samples, from u or v's T value: (T >> t_shift) is Q16.16, whose
+ * top log2(size) fraction bits pick the texel. Taken as one shift, which at 31
+ * gives 0 as the two would (T is at most 2^30). */
+static uint8_t texel_shift(unsigned t_shift, uint32_t size)
+{
+    const unsigned shift = t_shift + 16u - (31u - tarn_clz32(size));
+    return (uint8_t)(shift > 31u ? 31u : shift);
+}
+
+static void set_texel_lookup(tarn_attribute_set *set, const tarn_texture *texture)
+{
+    set->texel_shift[0] = texel_shift(set->t_shift[TARN_ATTRIBUTE_U], texture->width);
+    set->texel_shift[1] = texel_shift(set->t_shift[TARN_ATTRIBUTE_V], texture->height);
+    set->texel_mask[0] = texture->width - 1u;
+    set->texel_mask[1] = texture->height - 1u;
+    set->log2_width = 31u - tarn_clz32(texture->width);
+}
+
+void tarn_setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_request *request,
+                           uint8_t perspective, uint8_t depth_interpolation, tarn_attribute_set *set)
+{
+    uint32_t q[3], largest = 0;
+    set->count = 0;
+    set->first_varying = lit_alike(t) ? 3 : 0;
+    set->perspective = perspective;
+    for (int n = 0; n < 3; n++)
+        if (t->v[n]->inv_depth > largest) largest = t->v[n]->inv_depth;
+    unsigned normalise = tarn_clz32(largest) > 2u ? tarn_clz32(largest) - 2u : 0u;
+    set->q_min = TARN_T_ONE;
+    set->q_max = 0;
+    for (int n = 0; n < 3; n++) {
+        q[n] = t->v[n]->inv_depth << normalise;
+        if (q[n] < set->q_min) set->q_min = q[n];
+        if (q[n] > set->q_max) set->q_max = q[n];
+    }
+    const plane_anchor anchor = anchor_of(t);
+    set->depth = TARN_LINK_EXACT_DEPTH && depth_interpolation == TARN_DEPTH_EXACT ? make_exact_depth_plane(t)
+                                                                                   : make_depth_plane(t, &anchor);
+    if (perspective != TARN_PERSPECTIVE_AFFINE) /* affine interpolation never reads q */
+        set->q = make_plane(t, &set->depth.den, &anchor, q);
+    for (int c = 0; c < 3; c++) {
+        uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
+        add_attribute(set, t, &anchor, lit, q);
+    }
+    set->lit_full = (uint8_t)(set->first_varying == 3 && lit_is_full(set));
+    if (request->uv) {
+        uint32_t coordinate[3];
+        texture_coordinates(t, 0, coordinate, &set->u_base);
+        add_attribute(set, t, &anchor, coordinate, q);
+        texture_coordinates(t, 1, coordinate, &set->v_base);
+        add_attribute(set, t, &anchor, coordinate, q);
+        if (request->texture != NULL) set_texel_lookup(set, request->texture);
+    }
+    if (request->fresnel) {
+        uint32_t fresnel[3] = {t->v[0]->fresnel, t->v[1]->fresnel, t->v[2]->fresnel};
+        add_attribute(set, t, &anchor, fresnel, q);
+    }
+}

@@ -1,0 +1,84 @@
+/* quality.c: the named presets. Their values come from the pond's sweep
+ * (docs/sweep.md, `make sweep-docs`), measured against the float reference on its
+ * finest subpixel grid:
+ *  - subpixel bits are the largest knob of error and cost nothing, but each bit
+ *    halves the largest frame the edge functions hold: 4 bits take every frame up
+ *    to TARN_FRAME_SIZE_MAX, 5 up to 640 pixels a side, 6 refuse 320x240. The
+ *    default must draw any frame, so balanced and fast keep 4; exact takes 5;
+ *  - balanced: one Newton step and an 8-bit fog argument measure within 0.01 dB
+ *    of two steps and 16 bits, here and on the extreme scenes, for less cost;
+ *  - exact: every knob at its most accurate;
+ *  - fast: the Cortex-M0's choice. Its 16 KB hold no refraction apron; without one
+ *    the water pass draws in place, so 16-bit depth and 40-pixel tiles fit (the
+ *    baked pond's 11,040 bytes of the board's ~11,800: bigger tiles walk each
+ *    cluster fewer times, and 42 no longer fits), span perspective and one
+ *    Newton step are on the M0's front, and
+ *    the smallest exp2 table and fog argument cost nothing visible once refraction
+ *    is gone. Without refraction, water blocks cost the pond 0.14 dB for 20% of
+ *    the M0's instructions (1319 against 1648); with it they save next to nothing
+ *    (refracted effects are never shared) and cost 2.6 dB, so only fast takes
+ *    them. 4x4 blocks cost the M0 more from the meshes (1378), since fewer pixels
+ *    share a block with one triangle over one depth; over still water, where a
+ *    block shares only its highlight, they are the board's choice (docs/bake.md).
+ *    Fast also steps depth on a plane (TARN_DEPTH_PLANE): three exact divisions
+ *    less a triangle and a plain add a pixel, 6% of the M0's instructions (1319
+ *    against 1399), the pond the same to 0.01 dB; its images differ from exact
+ *    depth's in a few pixels where surfaces meet. */
+#include "tarn/tarn_render.h"
+
+static tarn_quality preset_exact(void)
+{
+    tarn_quality q;
+    q.exp2.entries = 256;
+    q.exp2.interpolate = 1;
+    q.recip_newton_steps = 2;
+    q.subpixel_bits = 5;
+    q.perspective = TARN_PERSPECTIVE_PIXEL;
+    q.perspective_span = 16;
+    q.depth_bits = 32;
+    q.depth_interpolation = TARN_DEPTH_EXACT;
+    q.tile_size = 32;
+    q.refraction_apron = TARN_APRON_FULL;
+    q.cluster_bins = 1;
+    q.fog_argument_bits = 16;
+    q.water_block = 1;
+    return q;
+}
+
+tarn_quality tarn_quality_preset(tarn_preset preset)
+{
+    tarn_quality q = preset_exact();
+    if (preset == TARN_PRESET_BALANCED || preset == TARN_PRESET_FAST) {
+        q.subpixel_bits = 4;
+        q.exp2.entries = 64;
+        q.recip_newton_steps = 1;
+        q.fog_argument_bits = 8;
+    }
+    if (preset == TARN_PRESET_FAST) {
+        q.exp2.entries = 16;
+        q.exp2.interpolate = 0;
+        q.perspective = TARN_PERSPECTIVE_SPAN;
+        q.depth_bits = 16;
+        q.depth_interpolation = TARN_DEPTH_PLANE;
+        q.tile_size = 40;
+        q.refraction_apron = 0;
+        q.fog_argument_bits = 6;
+        q.water_block = 2;
+    }
+    return q;
+}
+
+const char *tarn_preset_name(tarn_preset preset)
+{
+    switch (preset) {
+    case TARN_PRESET_FAST: return "fast";
+    case TARN_PRESET_BALANCED: return "balanced";
+    case TARN_PRESET_EXACT: return "exact";
+    }
+    return NULL;
+}
+
+tarn_quality tarn_quality_default(void)
+{
+    return tarn_quality_preset(TARN_PRESET_BALANCED);
+}

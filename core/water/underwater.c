@@ -1,0 +1,75 @@
+/* underwater.c: the underwater view, per pixel in 32-bit products; its setup, at
+ * the end, runs once a frame. */
+#include "water/underwater_internal.h"
+
+static uint32_t depth_q30(const tarn_underwater_context *u, int32_t offset)
+{
+    if (u->depth_bits == 16) return tarn_depth16_decode(((const uint16_t *)u->depth)[offset]);
+    return ((const uint32_t *)u->depth)[offset];
+}
+
+/* The pixel the displacement at (i, j) samples. */
+static int32_t displaced_offset(const tarn_underwater_context *u, int32_t i, int32_t j)
+{
+    const tarn_underwater *under = u->under;
+    /* screen (x / width, y / width) at the pixel centre, Q0.16, then panned */
+    const uint32_t sx = tarn_mul_hi_u32((uint32_t)(2 * i + 1) << 16, u->screen_u_per_half);
+    const uint32_t sy = tarn_mul_hi_u32((uint32_t)(2 * j + 1) << 16, u->screen_u_per_half);
+    const uint32_t fu = (tarn_water_repeat_fraction(sx, (uint32_t)under->pan.scale) + u->pan[0]) & 0xFFFFu;
+    const uint32_t fv = (tarn_water_repeat_fraction(sy, (uint32_t)under->pan.scale) + u->pan[1]) & 0xFFFFu;
+    const uint8_t *texel = tarn_water_texel_at(under->normal_map, fu, fv);
+    int32_t target[2] = {i, j};
+    for (int k = 0; k < 2; k++) {
+        /* N (Q1.15) * pixels per unit normal (Q16.16) / 2^23 -> pixels, Q24.8 */
+        int32_t offset_q8 = tarn_mul_hi_s32_u32(tarn_water_normal_component(texel[k]) * 512, u->distortion_px);
+        const int32_t offset = tarn_floor_shift(tarn_clamp_i32(offset_q8, -(64 << 8), 64 << 8) + 128, 8);
+        target[k] += tarn_clamp_i32(offset, -u->offset_limit, u->offset_limit);
+    }
+    const int32_t x = tarn_clamp_i32(target[0], u->sample_rect.x0, u->sample_rect.x1 - 1);
+    const int32_t y = tarn_clamp_i32(target[1], u->sample_rect.y0, u->sample_rect.y1 - 1);
+    return (y - u->origin_y) * u->stride + (x - u->origin_x);
+}
+
+static uint32_t tinted(const tarn_underwater_context *u, int32_t offset)
+{
+    const uint32_t d = tarn_water_linear_depth(depth_q30(u, offset), u->near, u->far, u->recip_steps);
+    const uint32_t argument = tarn_fog_argument_q16((uint32_t)u->under->tint_density, d, u->fog_argument_bits);
+    const uint32_t keep = tarn_exp2_neg_q16(-(tarn_q16)argument, u->exp2) >> 1; /* Q1.15 */
+    const uint32_t rgb = u->colour[offset];
+    uint32_t out = 0;
+    for (int c = 0; c < 3; c++) {
+        const int32_t below = (int32_t)(((rgb >> (16 - 8 * c)) & 0xFFu) << 8);
+        const int32_t tint = (int32_t)(((u->under->tint_rgb >> (16 - 8 * c)) & 0xFFu) << 8);
+        const int32_t mixed = tint + ((below - tint) * (int32_t)keep) / 32768; /* Q8.8 */
+        const int32_t byte = (mixed + 128) >> 8;
+        out = (out << 8) | (uint32_t)(byte > 255 ? 255 : (byte < 0 ? 0 : byte));
+    }
+    return out;
+}
+
+void tarn_underwater_tile(const tarn_underwater_context *u, const tarn_pixel_rect *rect,
+                          uint32_t *out, int32_t out_stride)
+{
+    for (int32_t j = rect->y0; j < rect->y1; j++)
+        for (int32_t i = rect->x0; i < rect->x1; i++)
+            out[(j - rect->y0) * out_stride + (i - rect->x0)] = tinted(u, displaced_offset(u, i, j));
+}
+
+void tarn_underwater_setup(tarn_underwater_context *u, const tarn_view *view,
+                           const tarn_frame_config *config, const tarn_underwater *under)
+{
+    u->under = under;
+    u->near = view->near;
+    u->far = view->far;
+    u->exp2 = config->quality.exp2;
+    u->fog_argument_bits = config->quality.fog_argument_bits;
+    u->recip_steps = config->quality.recip_newton_steps;
+    u->pan[0] = tarn_water_pan_offset(under->pan.speed_u, config->time_ms);
+    u->pan[1] = tarn_water_pan_offset(under->pan.speed_v, config->time_ms);
+    /* rounded up: a pixel centre exactly on a texel edge must land on the texel
+     * above it, as floor() puts it, not a hair below */
+    u->screen_u_per_half = (uint32_t)tarn_divide_once_i64(((int64_t)1 << 32) + 2 * config->width - 1,
+                                                           2u * config->width);
+    int64_t px = (int64_t)under->distortion * config->width;
+    u->distortion_px = px > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)px;
+}

@@ -1,0 +1,29 @@
+/* water_refraction.c: step 2 of tarn_water.h, the texel-snapped refracted sample
+ * (TARN_WATER_REFRACTION). */
+#include "water/water_internal.h"
+
+#define Q16_ONE 65536u
+#define Q15_ONE 32768
+
+/* Step 2: the refracted sample, or the pixel's own when it would land in front. */
+tarn_water_sample tarn_water_refract(const tarn_water_context *w, int32_t i, int32_t j,
+                                     tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth)
+{
+    tarn_water_normalise(n);
+    uint32_t reach = own.depth > surface_depth ? own.depth - surface_depth : 0u;
+    if (reach > Q16_ONE) reach = Q16_ONE; /* saturate(db - ds), Q0.16 */
+    const int32_t normal[2] = {n->x, n->y};
+    int32_t target[2] = {i, j};
+    for (int k = 0; k < 2; k++) {
+        /* N (Q1.15) * pixels per unit normal (Q16.16) / 2^23 -> pixels, Q24.8 */
+        int32_t offset_q8 = tarn_mul_hi_s32_u32(normal[k] * 512, w->refraction_px);
+        offset_q8 = tarn_clamp_i32(offset_q8, -(64 << 8), 64 << 8);
+        offset_q8 = (offset_q8 * (int32_t)(reach >> 1)) / Q15_ONE; /* times saturate(db - ds) */
+        target[k] += tarn_clamp_i32(tarn_floor_shift(offset_q8 + 128, 8), -w->offset_limit, w->offset_limit);
+    }
+    target[0] = tarn_clamp_i32(target[0], w->sample_rect.x0, w->sample_rect.x1 - 1);
+    target[1] = tarn_clamp_i32(target[1], w->sample_rect.y0, w->sample_rect.y1 - 1);
+    if (target[0] == i && target[1] == j) return own; /* read already */
+    tarn_water_sample shifted = tarn_water_background(w, target[0], target[1]);
+    return shifted.depth < surface_depth ? own : shifted;
+}

@@ -1,0 +1,166 @@
+/* water_span.c: water triangles. The rasterizer (core/raster/) sets each one up
+ * and finds its covered pixels row by row; this is the span shader it hands them
+ * to, and where the quality's water_block 2 or 4 lets a block of pixels share the
+ * effects its top-left pixel found (tarn_water_block). */
+#include "water/water_internal.h"
+
+/* T / 2^shift rounded to nearest: the water's panned maps multiply u and v by
+ * their scale, which would multiply a truncation's bias too. */
+static uint32_t rounded_shift(uint32_t t, unsigned shift)
+{
+    return shift == 0u ? t : (t + (1u << (shift - 1u))) >> shift;
+}
+
+/* The water pixel's inputs from the interpolated attributes. */
+static tarn_water_input water_input(const tarn_attribute_set *set, const uint32_t values[TARN_ATTRIBUTES_MAX],
+                                    uint32_t inv_depth)
+{
+    tarn_water_input in;
+    in.inv_depth = inv_depth;
+    for (int c = 0; c < 3; c++) in.lit[c] = values[c] >> set->t_shift[c];
+    in.u = rounded_shift(values[TARN_ATTRIBUTE_U], set->t_shift[TARN_ATTRIBUTE_U]) + set->u_base;
+    in.v = rounded_shift(values[TARN_ATTRIBUTE_V], set->t_shift[TARN_ATTRIBUTE_V]) + set->v_base;
+    in.fresnel = set->count > TARN_ATTRIBUTE_FRESNEL ? values[TARN_ATTRIBUTE_FRESNEL] >> set->t_shift[TARN_ATTRIBUTE_FRESNEL] : 0u;
+    return in;
+}
+
+/* Whether a pixel's background (near/d, Q1.30) lies as deep as its block's. */
+static int as_deep_as(uint32_t depth_q30, const tarn_water_block *block)
+{
+    const uint32_t apart = depth_q30 > block->depth_q30 ? depth_q30 - block->depth_q30 : block->depth_q30 - depth_q30;
+    return apart <= block->depth_q30 >> TARN_WATER_BLOCK_DEPTH_SHIFT;
+}
+
+/* The slot of the block of water pixel (i, j), in a frame with water blocks. */
+static tarn_water_block *block_slot(const tarn_water_pass *pass, int32_t i)
+{
+    return &pass->water->blocks[(i - pass->target.rect.x0) >> pass->water->block_shift];
+}
+
+/* Whether pixel (i, j), its background at depth_q30, takes its block's effects:
+ * this triangle found them at the block's top-left pixel over as deep a
+ * background (tarn_water_block). Which pixels share depends on the triangles
+ * alone: even tiles hold whole blocks. */
+static int shares_block(const tarn_water_context *w, const tarn_water_block *block, int32_t j, uint32_t depth_q30)
+{
+    return block->serial == w->triangle_serial && block->row == (j >> w->block_shift << w->block_shift) &&
+           as_deep_as(depth_q30, block);
+}
+
+/* The effects of a pixel that does not share its block's: its own, kept in the
+ * block's slot when it is the block's top-left pixel, unless they refract: a
+ * refracted sample moves with each pixel's own normal, and shared it would move
+ * the block's other pixels by the top-left pixel's. */
+static const tarn_water_effects *own_effects(const tarn_water_pass *pass, int32_t i, int32_t j,
+                                             const tarn_water_input *in, uint32_t depth_q30,
+                                             tarn_water_effects *own)
+{
+    tarn_water_context *w = pass->water;
+    tarn_water_block *block = block_slot(pass, i);
+    const int top_left = ((i | j) & ((1 << w->block_shift) - 1)) == 0;
+    tarn_water_effects *e = top_left ? &block->effects : own;
+    tarn_water_effects_at(w, i, j, in, e);
+    if (top_left) {
+        const int refracts = TARN_LINK_APRON && (e->offset[0] | e->offset[1]) != 0;
+        block->serial = refracts ? 0u : w->triangle_serial;
+        block->row = j;
+        block->depth_q30 = depth_q30;
+    }
+    return e;
+}
+
+/* How a water pixel gets its effects: its block's, when it shares them, or its own. */
+typedef struct {
+    tarn_water_block *block; /* NULL without water blocks */
+    uint32_t depth_q30;      /* the background's near/d, with blocks */
+    int shares;
+} water_choice;
+
+static water_choice water_choice_at(const tarn_water_pass *pass, int32_t i, int32_t j)
+{
+    water_choice c = {NULL, 0u, 0};
+    const tarn_water_context *w = pass->water;
+    if (!TARN_LINK_WATER_BLOCKS || w->blocks == NULL) return c;
+    c.block = block_slot(pass, i);
+    c.depth_q30 = tarn_water_background_q30(w, i, j);
+    c.shares = shares_block(w, c.block, j, c.depth_q30);
+    return c;
+}
+
+/* Whether a water pixel needs inputs of its own: all but one that shares its
+ * block's effects where no sharp feature can show, which needs no attributes. */
+static int water_needs_inputs(const tarn_water_context *w, const water_choice *c)
+{
+    return !c->shares || tarn_water_sharp_possible(w, &c->block->effects);
+}
+
+/* The colour of water pixel (i, j) from its attributes `values` (found only where
+ * water_needs_inputs). */
+static uint32_t water_colour(const tarn_water_pass *pass, const water_choice *c, const tarn_attribute_set *set,
+                             const uint32_t values[TARN_ATTRIBUTES_MAX], uint32_t inv_depth, int32_t i, int32_t j)
+{
+    tarn_water_context *w = pass->water;
+    if (c->shares) {
+        const tarn_water_effects *shared = &c->block->effects;
+        if (!tarn_water_sharp_possible(w, shared)) return tarn_water_apply(w, shared, 0u, i, j);
+        const tarn_water_input in = water_input(set, values, inv_depth);
+        return tarn_water_apply(w, shared, tarn_water_sharp_features(w, &in, shared), i, j);
+    }
+    const tarn_water_input in = water_input(set, values, inv_depth);
+    if (c->block == NULL) return tarn_water_shade(w, i, j, &in);
+    tarn_water_effects own;
+    const tarn_water_effects *e = own_effects(pass, i, j, &in, c->depth_q30, &own);
+    return tarn_water_apply(w, e, e->sharp, i, j);
+}
+
+/* A pass in place (mark set) marks each pixel it writes; writing a marked one
+ * again means this pixel read the other water pixel as its background, not the
+ * opaque pass's, and the frame draws the tile's water again from a copy. */
+static void write_water_pixel(tarn_water_pass *pass, int32_t offset, uint32_t rgb)
+{
+    uint32_t *colour = pass->target.colour;
+    pass->overlap |= colour[offset] & pass->mark;
+    colour[offset] = rgb | pass->mark;
+}
+
+/* The covered pixels of a span of a water triangle. Skipping a pixel's attributes
+ * is safe in every perspective mode: a span is filled for whichever pixel first
+ * reaches it. */
+static void draw_water_span(tarn_water_pass *pass, tarn_span *s)
+{
+    void *const depth_buffer = s->target->depth;
+    const int depth_bits = s->target->quality->depth_bits;
+    const tarn_exact_step_value step = s->set->depth.step_x;
+    const int exact_depth = s->set->depth.exact;
+    tarn_exact_value depth = s->depth;
+    for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
+        const uint32_t closer = tarn_closer_depth(depth_buffer, depth_bits, index, depth.quotient);
+        if (closer != 0u) {
+            const water_choice choice = water_choice_at(pass, i, s->j);
+            if (water_needs_inputs(pass->water, &choice)) tarn_span_attributes(s, i);
+            write_water_pixel(pass, index, water_colour(pass, &choice, s->set, s->values, depth.quotient, i, s->j));
+            tarn_store_depth(depth_buffer, depth_bits, index, closer);
+        }
+        tarn_step_depth(&depth, &step, exact_depth);
+    }
+}
+
+void tarn_water_draw_triangle(void *pass_ctx, const tarn_screen_vertex vertex[3], const tarn_object *object)
+{
+    tarn_water_pass *pass = pass_ctx;
+    tarn_triangle_rows rows;
+    if (!tarn_triangle_enters_tile(&rows, &pass->target, vertex, object->material->cull)) return;
+    if (pass->water->object != object) tarn_water_context_setup(pass->water, pass->view, pass->config, object);
+    pass->water->triangle_serial++;
+    const tarn_attribute_request request = {NULL, 1, (object->material->water->features & TARN_WATER_FRESNEL) != 0};
+    tarn_triangle_rows_begin(&rows, &request);
+    for (tarn_span *s; (s = tarn_triangle_next_span(&rows)) != NULL;) draw_water_span(pass, s);
+}
+
+void tarn_water_clear_marks(const tarn_tile_target *t)
+{
+    for (int32_t j = t->rect.y0; j < t->rect.y1; j++) {
+        const int32_t row = (j - t->origin_y) * t->stride - t->origin_x;
+        for (int32_t i = t->rect.x0; i < t->rect.x1; i++) t->colour[row + i] &= ~TARN_WATER_MARK;
+    }
+}

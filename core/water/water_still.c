@@ -1,0 +1,161 @@
+/* water_still.c: the water over a still-water backdrop (tarn_scene.h, "Still
+ * water"), which holds steps 3 to 7 of tarn_water.h drawn. No triangle is drawn:
+ * the pixels of a tile marked with a water object are walked, and only the terms
+ * that move with the clock are found there, from texture coordinates its plane
+ * gives: step 1's normal, step 8's highlight, step 9's foam lines and step 10's
+ * sparkles. */
+#include "water/water_internal.h"
+
+#define Q16_ONE 65536u
+
+/* An affine function of the plane at pixel (i, j), modulo 2^32. */
+static uint32_t affine_at(const int32_t f[3], int32_t i, int32_t j)
+{
+    return (uint32_t)f[0] + (uint32_t)f[1] * (uint32_t)i + (uint32_t)f[2] * (uint32_t)j;
+}
+
+/* numerator * 2^shift / depth in Q16.16, modulo 2^32, from depth's reciprocal
+ * recip = 2^62 / (depth << lz): numerator * recip / 2^32 * 2^(shift + lz - 30),
+ * rounded to nearest as the rasterizer rounds its coordinates: the panned maps
+ * multiply them by their scale, which would multiply a truncation's bias too. */
+static uint32_t texture_coordinate(uint32_t numerator, uint32_t recip, unsigned lz, unsigned shift)
+{
+    const int32_t high = tarn_mul_hi_s32_u32((int32_t)numerator, recip);
+    const int up = (int)(shift + lz) - 30; /* -29..32: lz 1..31, shift 0..31 */
+    if (up >= 32) return 0u;
+    if (up >= 0) return (uint32_t)high << up;
+    const unsigned down = (unsigned)-up;
+    return (uint32_t)tarn_floor_shift((int32_t)((uint32_t)high + (1u << (down - 1u))), down);
+}
+
+/* What a water pixel's moving terms read, from the plane at pixel (i, j): the
+ * surface's near/d, within the depth buffer's [1, 2^30], and the texture
+ * coordinates through one reciprocal of it. */
+static tarn_water_input plane_input(const tarn_still_plane *p, unsigned recip_steps, int32_t i, int32_t j)
+{
+    tarn_water_input in;
+    in.lit[0] = in.lit[1] = in.lit[2] = 0u; /* drawn into the still colour */
+    in.fresnel = 0u;
+    in.inv_depth = (uint32_t)tarn_clamp_i32((int32_t)affine_at(p->depth, i, j), 1, 1 << 30);
+    const unsigned lz = tarn_clz32(in.inv_depth);
+    const uint32_t recip = tarn_recip_q30(in.inv_depth << lz, recip_steps);
+    in.u = texture_coordinate(affine_at(p->u, i, j), recip, lz, p->uv_shift);
+    in.v = texture_coordinate(affine_at(p->v, i, j), recip, lz, p->uv_shift);
+    return in;
+}
+
+/* Step 8's highlight at a pixel (Q8.8 a channel) from its own normal, which `n`
+ * returns for the sparkles. */
+static void own_highlight(const tarn_water_context *w, const tarn_water_input *in, tarn_water_normal *n,
+                          uint32_t highlight[3])
+{
+    *n = tarn_water_uses(w, TARN_WATER_NORMALS) ? tarn_water_surface_normal(w, in) : tarn_water_flat_normal();
+    for (int c = 0; c < 3; c++) highlight[c] = 0u;
+    if (tarn_water_uses(w, TARN_WATER_SPECULAR)) (void)tarn_water_specular(w, n, highlight);
+}
+
+/* The bits of a still colour (marks included) that say a sharp feature could show
+ * at its pixel: any, since sparkles can show anywhere; TARN_BACKDROP_STILL_FOAM,
+ * where the backdrop marks that foam can; none without either. */
+static uint32_t sharp_bits(const tarn_water_context *w)
+{
+    if (tarn_water_sparkles_possible(w)) return UINT32_MAX;
+    return tarn_water_uses(w, TARN_WATER_FOAM) ? TARN_BACKDROP_STILL_FOAM : 0u;
+}
+
+/* Step 9's place in the foam band at pixel (i, j), which the backdrop keeps where
+ * foam can show; beyond the band (Q16_ONE) elsewhere. */
+static uint32_t foam_band(const tarn_water_context *w, const tarn_backdrop *b, uint32_t still, int32_t i, int32_t j)
+{
+    if (!tarn_water_uses(w, TARN_WATER_FOAM) || (still & TARN_BACKDROP_STILL_FOAM) == 0u) return Q16_ONE;
+    return tarn_backdrop_foam_band(b, i, j);
+}
+
+/* The sharp features at water pixel (i, j) with its inputs, `n` its normal when it
+ * found one, else NULL. */
+static unsigned sharp_at(const tarn_water_context *w, const tarn_backdrop *b, const tarn_water_input *in,
+                         const tarn_water_normal *n, uint32_t still, int32_t i, int32_t j)
+{
+    const tarn_water_normal maps = n == NULL && tarn_water_sparkles_possible(w) ? tarn_water_map_x(w, in) : tarn_water_flat_normal();
+    return tarn_water_sharp_at(w, in, foam_band(w, b, still, i, j), n != NULL ? n : &maps);
+}
+
+/* The still colour (0xRRGGBB below the marks of `still`) with a highlight and the
+ * sharp features over it, 0x00RRGGBB. */
+static uint32_t over_still(const tarn_water_context *w, uint32_t still, const uint32_t highlight[3], unsigned sharp)
+{
+    if ((highlight[0] | highlight[1] | highlight[2] | sharp) == 0u) return still & 0xFFFFFFu;
+    uint32_t colour[3];
+    for (int c = 0; c < 3; c++) colour[c] = tarn_water_channel_q8(still, c) + highlight[c];
+    return tarn_water_finish(w, sharp, colour);
+}
+
+/* The slot of pixel (i, j)'s block, in a tile whose rect starts at column x0;
+ * NULL without water blocks. */
+static tarn_still_block *block_at(const tarn_water_context *w, int32_t i, int32_t x0)
+{
+    return w->still_blocks != NULL ? &w->still_blocks[(i - x0) >> w->block_shift] : NULL;
+}
+
+/* What one walk reads: the backdrop, the object's plane, the walk's number, and
+ * where it is. */
+typedef struct {
+    const tarn_backdrop *backdrop;
+    const tarn_still_plane *plane;
+    uint32_t number;
+    uint32_t sharp_bits; /* sharp_bits() */
+    int specular;        /* the object has a highlight: without, only sharp features move */
+    int32_t x0;          /* the tile's first column */
+    int32_t block_row;   /* the top row of the blocks of the row walked */
+} still_walk;
+
+/* Water pixel (i, j) of a walk: its block's highlight when this walk found it at
+ * the block's top-left pixel, else its own, kept for the block when it is that
+ * pixel. */
+static uint32_t water_pixel(tarn_water_context *w, const still_walk *walk, uint32_t still, int32_t i, int32_t j)
+{
+    tarn_still_block *block = block_at(w, i, walk->x0);
+    const int shared = block != NULL && block->walk == walk->number && block->row == walk->block_row;
+    const int sharp = (still & walk->sharp_bits) != 0u;
+    if (shared && !sharp) return block->lit ? over_still(w, still, block->highlight, 0u) : still & 0xFFFFFFu;
+    if (!walk->specular && !sharp) return still & 0xFFFFFFu; /* nothing moves here */
+    const tarn_water_input in = plane_input(walk->plane, w->recip_steps, i, j);
+    if (shared || !walk->specular) {
+        static const uint32_t dark[3] = {0u, 0u, 0u};
+        return over_still(w, still, shared ? block->highlight : dark, sharp_at(w, walk->backdrop, &in, NULL, still, i, j));
+    }
+    tarn_water_normal n;
+    uint32_t highlight[3];
+    own_highlight(w, &in, &n, highlight);
+    if (block != NULL && ((i | j) & ((1 << w->block_shift) - 1)) == 0) {
+        for (int c = 0; c < 3; c++) block->highlight[c] = highlight[c];
+        block->lit = highlight[0] | highlight[1] | highlight[2];
+        block->walk = walk->number;
+        block->row = j;
+    }
+    return over_still(w, still, highlight, sharp ? sharp_at(w, walk->backdrop, &in, &n, still, i, j) : 0u);
+}
+
+/* The first pixel of [from, end) that carries `mark`, or `end`: the walk's own
+ * loop, kept apart from the water pixel's work. */
+static uint32_t *next_marked(uint32_t *from, const uint32_t *end, uint32_t mark)
+{
+    while (from != end && (*from & TARN_BACKDROP_STILL_OBJECT) != mark) from++;
+    return from;
+}
+
+void tarn_water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop, uint32_t object,
+                           tarn_tile_target *tile)
+{
+    const tarn_pixel_rect r = tile->rect;
+    still_walk walk = {backdrop, &backdrop->planes[object], ++w->still_walks, sharp_bits(w),
+                       tarn_water_uses(w, TARN_WATER_SPECULAR), r.x0, 0};
+    const uint32_t mark = (object + 1u) << TARN_BACKDROP_STILL_SHIFT;
+    for (int32_t j = r.y0; j < r.y1; j++) {
+        walk.block_row = j >> w->block_shift << w->block_shift;
+        uint32_t *first = &tile->colour[(j - tile->origin_y) * tile->stride + (r.x0 - tile->origin_x)];
+        const uint32_t *end = first + (r.x1 - r.x0);
+        for (uint32_t *pixel = first; (pixel = next_marked(pixel, end, mark)) != end; pixel++)
+            *pixel = water_pixel(w, &walk, *pixel, r.x0 + (int32_t)(pixel - first), j);
+    }
+}
