@@ -7,7 +7,7 @@
 # by firmware/firmware.mk.
 BOARD_ARCH := arm
 BOARD_CPU := -mcpu=cortex-m0plus -mthumb -mfloat-abi=soft
-BOARD_SRC := boards/common/cortex_m_startup.c boards/rp2040-st7789/board.c \
+BOARD_SRC := boards/common/cortex_m_startup.c boards/common/real_board.c \
 	boards/rp2040-st7789/clock.c boards/rp2040-st7789/panel_spi.c
 BOARD_INCLUDE := -Iboards/common -Iboards/rp2040-st7789
 BOARD_LDSCRIPT := boards/rp2040-st7789/link.ld

@@ -10,7 +10,7 @@
 # multilib provides memset/memcpy.
 BOARD_ARCH := arm
 BOARD_CPU := -mcpu=cortex-m4 -mthumb -mfloat-abi=soft
-BOARD_SRC := boards/common/cortex_m_startup.c boards/stm32f411-st7789/board.c \
+BOARD_SRC := boards/common/cortex_m_startup.c boards/common/real_board.c \
 	boards/stm32f411-st7789/clock.c boards/stm32f411-st7789/panel_spi.c
 BOARD_INCLUDE := -Iboards/common -Iboards/stm32f411-st7789
 BOARD_LDSCRIPT := boards/stm32f411-st7789/link.ld
