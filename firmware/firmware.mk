@@ -220,7 +220,7 @@ $(FW_DIR)/obj/%.o: $(FW_DIR)/%.c | fw-toolchain
 
 $(FW_DIR)/obj/%.o: %.S | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(BOARD_CPU) -c -o $@ $<
+	$(FW_CC) $(BOARD_CPU) $(BOARD_INCLUDE) -MMD -MP -c -o $@ $<
 
 # A link that overflows a memory region names the region and the bytes over; the
 # note after it says what to change. A linked image whose deepest call chain

@@ -6,7 +6,7 @@
 # gives what fits and what does not). Variables read by firmware/firmware.mk.
 BOARD_ARCH := arm
 BOARD_CPU := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft
-BOARD_SRC := boards/common/cortex_m_startup.c boards/common/semihosting.c \
+BOARD_SRC := boards/common/cortex_m_startup.c boards/common/stack_peak.c boards/common/semihosting.c \
 	boards/common/semihosted_io.c boards/qemu-m0/board.c
 BOARD_INCLUDE := -Iboards/common
 BOARD_LDSCRIPT := boards/qemu-m0/link.ld

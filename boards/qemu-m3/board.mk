@@ -2,7 +2,7 @@
 # the default quality. Variables read by firmware/firmware.mk.
 BOARD_ARCH := arm
 BOARD_CPU := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
-BOARD_SRC := boards/common/cortex_m_startup.c boards/common/semihosting.c \
+BOARD_SRC := boards/common/cortex_m_startup.c boards/common/stack_peak.c boards/common/semihosting.c \
 	boards/common/semihosted_io.c boards/qemu-m3/board.c
 BOARD_INCLUDE := -Iboards/common
 BOARD_LDSCRIPT := boards/qemu-m3/link.ld
