@@ -226,7 +226,7 @@ $(FW_DIR)/obj/%.o: %.S | fw-toolchain
 # note after it says what to change. A linked image whose deepest call chain
 # (firmware/stack_bound.sh: GCC's call graphs, no recursion allowed) needs more
 # stack than the board reserves is refused too.
-$(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
+$(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) $(wildcard boards/common/*.ld) | fw-toolchain
 	@if ! $(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LDSCRIPT) -Lboards/common \
 		-Wl,--gc-sections -Wl,-Map=$(FW_DIR)/firmware.map \
 		-Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES) \
