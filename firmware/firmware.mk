@@ -74,6 +74,8 @@ firmware firmware-run bench-target firmware-check profile-target firmware-sweep:
 else
 
 include boards/$(BOARD)/board.mk
+# the board's board.mk and what it includes (boards/common/*.mk, another board's board.mk)
+FW_BOARD_MK := $(filter boards/%,$(MAKEFILE_LIST))
 
 # FW_BUILD_DIR: another build directory, for builds of other scenes beside the board's own
 FW_DIR := $(if $(FW_BUILD_DIR),$(FW_BUILD_DIR),build/$(if $(filter sweep,$(FW_MAIN)),firmware-sweep,firmware)/$(BOARD))
@@ -156,7 +158,7 @@ firmware-check: $(FW_OUTPUTS) $(FW_DIR)/firmware.conf
 endif
 
 # what tests/check_firmware.sh and tests/test_firmware.c need to know about the build
-$(FW_DIR)/firmware.conf: boards/$(BOARD)/board.mk firmware/firmware.mk FORCE
+$(FW_DIR)/firmware.conf: $(FW_BOARD_MK) firmware/firmware.mk FORCE
 	@mkdir -p $(FW_DIR)
 	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
 		"bake_flags=$(FW_BAKE_FLAGS)" "times=0,1000" "dither=1" "cross=$(FW_CROSS)" \
@@ -193,7 +195,7 @@ FW_CORE_OBJ := $(filter $(FW_DIR)/obj/core/%,$(FW_OBJ))
 $(FW_CORE_OBJ): $(FW_DIR)/scene_link.h
 $(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h
 
-$(FW_OBJ): firmware/firmware.mk boards/$(BOARD)/board.mk
+$(FW_OBJ): firmware/firmware.mk $(FW_BOARD_MK)
 FW_MAIN_OBJ := $(patsubst %,$(FW_DIR)/obj/firmware/%.o,main sweep_main display_main)
 $(FW_MAIN_OBJ): $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
 $(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"'
