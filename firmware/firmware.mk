@@ -74,6 +74,8 @@ firmware firmware-run bench-target firmware-check profile-target firmware-sweep:
 else
 
 include boards/$(BOARD)/board.mk
+# the board's board.mk and what it includes (boards/common/*.mk, another board's board.mk)
+FW_BOARD_MK := $(filter boards/%,$(MAKEFILE_LIST))
 
 # FW_BUILD_DIR: another build directory, for builds of other scenes beside the board's own
 FW_DIR := $(if $(FW_BUILD_DIR),$(FW_BUILD_DIR),build/$(if $(filter sweep,$(FW_MAIN)),firmware-sweep,firmware)/$(BOARD))
@@ -156,7 +158,7 @@ firmware-check: $(FW_OUTPUTS) $(FW_DIR)/firmware.conf
 endif
 
 # what tests/check_firmware.sh and tests/test_firmware.c need to know about the build
-$(FW_DIR)/firmware.conf: boards/$(BOARD)/board.mk firmware/firmware.mk FORCE
+$(FW_DIR)/firmware.conf: $(FW_BOARD_MK) firmware/firmware.mk FORCE
 	@mkdir -p $(FW_DIR)
 	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
 		"bake_flags=$(FW_BAKE_FLAGS)" "times=0,1000" "dither=1" "cross=$(FW_CROSS)" \
@@ -193,7 +195,7 @@ FW_CORE_OBJ := $(filter $(FW_DIR)/obj/core/%,$(FW_OBJ))
 $(FW_CORE_OBJ): $(FW_DIR)/scene_link.h
 $(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h
 
-$(FW_OBJ): firmware/firmware.mk boards/$(BOARD)/board.mk
+$(FW_OBJ): firmware/firmware.mk $(FW_BOARD_MK)
 FW_MAIN_OBJ := $(patsubst %,$(FW_DIR)/obj/firmware/%.o,main sweep_main display_main)
 $(FW_MAIN_OBJ): $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
 $(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"'
@@ -221,13 +223,13 @@ $(FW_DIR)/obj/%.o: $(FW_DIR)/%.c | fw-toolchain
 
 $(FW_DIR)/obj/%.o: %.S | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(BOARD_CPU) -c -o $@ $<
+	$(FW_CC) $(BOARD_CPU) $(BOARD_INCLUDE) -MMD -MP -c -o $@ $<
 
 # A link that overflows a memory region names the region and the bytes over; the
 # note after it says what to change. A linked image whose deepest call chain
 # (firmware/stack_bound.sh: GCC's call graphs, no recursion allowed) needs more
 # stack than the board reserves is refused too.
-$(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) | fw-toolchain
+$(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) $(wildcard boards/common/*.ld) | fw-toolchain
 	@if ! $(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LDSCRIPT) -Lboards/common \
 		-Wl,--gc-sections -Wl,-Map=$(FW_DIR)/firmware.map \
 		-Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES) \

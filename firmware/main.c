@@ -26,12 +26,6 @@
 #include "tarn/tarn_panel.h"
 #include "tarn/tarn_render.h"
 
-#ifndef FW_SCENE_LABEL
-#define FW_SCENE_LABEL "scene"
-#endif
-#ifndef FW_BOARD_NAME /* the board's folder in boards/, from firmware.mk */
-#define FW_BOARD_NAME "board"
-#endif
 #ifndef FW_TIME_0
 #define FW_TIME_0 0u
 #endif

@@ -1,7 +1,7 @@
 /* panel_spi.h: what a real board's SPI, DMA and panel pins give dma_transport.c.
- * Each real board implements these in its panel_spi.c; board_init() has already set
- * the pins, the SPI and the DMA channel up (and left reset released, DC high, CS
- * asserted and the backlight on).
+ * Each real board implements these in its panel_spi.c; board_init()
+ * (boards/common/real_board.c) has already set the pins, the SPI and the DMA channel
+ * up through panel_spi_init().
  *
  * A transfer is started and then polled: nothing here waits, so that the
  * transport alone owns every timeout. */
@@ -13,6 +13,10 @@
 
 /* The longest transfer panel_spi_start takes (the STM32's NDTR is 16 bits). */
 #define PANEL_SPI_TRANSFER_MAX 65535u
+
+/* Sets the pins, the SPI and the DMA channel up, once the clocks run (clock_init):
+ * reset released, D/CX high, CS asserted for good and the backlight on. */
+void panel_spi_init(void);
 
 /* The D/CX line: 0 command, 1 data. Only while panel_spi_poll() says idle. */
 void panel_spi_dc(int data);

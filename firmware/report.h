@@ -26,6 +26,16 @@ void report_hex32(report *r, uint32_t value);
 void report_frame_header(report *r, const char *kind, const char *board, const char *scene,
                          uint32_t width, uint32_t height);
 
+/* The board and the scene that report lines name: firmware.mk gives both programs
+ * the board's folder in boards/ and the scene file's name; these stand in for a
+ * build without it. */
+#ifndef FW_BOARD_NAME
+#define FW_BOARD_NAME "board"
+#endif
+#ifndef FW_SCENE_LABEL
+#define FW_SCENE_LABEL "scene"
+#endif
+
 /* board_report of the text so far: 0, or non-zero when the link failed. */
 int report_send(const report *r);
 

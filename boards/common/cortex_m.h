@@ -1,5 +1,5 @@
-/* cortex_m.h: what the emulated Cortex-M boards share: SysTick as an extended
- * counter. Startup is cortex_m_startup.c. */
+/* cortex_m.h: what every Cortex-M board, emulated or real, shares: SysTick as an
+ * extended counter. Startup is cortex_m_startup.c. */
 #ifndef TARN_CORTEX_M_H
 #define TARN_CORTEX_M_H
 

@@ -1,15 +1,14 @@
 /* cortex_m_startup.c: the vector table, reset (stack paint, .data copy, .bss zero,
- * main, exit), the SysTick counter and the stack high-water mark, for ARMv6-M and
- * ARMv7-M. The linker script (cortex_m_sections.ld) provides the symbols. */
+ * main, exit) and the SysTick counter, for ARMv6-M and ARMv7-M. The linker script
+ * (cortex_m_sections.ld) provides the symbols; stack_peak.c reads the paint back. */
 #include <stdint.h>
 #include "cortex_m.h"
 #include "board.h"
+#include "stack_paint.h"
 
 extern uint32_t __stack_limit[], __stack_top[];
 extern uint32_t __data_load[], __data_start[], __data_end[], __bss_start[], __bss_end[];
 int main(void);
-
-#define STACK_PAINT 0x5AA5C33Cu
 
 void reset_handler(void) __attribute__((noreturn, used));
 void reset_handler(void)
@@ -23,13 +22,6 @@ void reset_handler(void)
     for (uint32_t *p = __data_start; p < __data_end; p++) *p = *src++;
     for (uint32_t *p = __bss_start; p < __bss_end; p++) *p = 0;
     board_exit(main());
-}
-
-size_t board_stack_peak(void)
-{
-    const uint32_t *p = __stack_limit;
-    while (p < __stack_top && *p == STACK_PAINT) p++;
-    return (size_t)((const uint8_t *)__stack_top - (const uint8_t *)p);
 }
 
 /* A fault ends the run with a status that says so instead of hanging the test. */

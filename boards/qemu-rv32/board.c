@@ -51,16 +51,6 @@ uint64_t board_instructions(void)
     return ((uint64_t)hi << 32) | lo;
 }
 
-extern uint32_t __stack_limit[], __stack_top[];
-#define STACK_PAINT 0x5AA5C33Cu
-
-size_t board_stack_peak(void)
-{
-    const uint32_t *p = __stack_limit;
-    while (p < __stack_top && *p == STACK_PAINT) p++;
-    return (size_t)((const uint8_t *)__stack_top - (const uint8_t *)p);
-}
-
 int board_report(const char *text, size_t count)
 {
     if (report < 0) return 1;

@@ -6,7 +6,8 @@
 # firmware/firmware.mk.
 BOARD_ARCH := riscv
 BOARD_CPU := -march=rv32imac_zicsr -mabi=ilp32 -mcmodel=medany
-BOARD_SRC := boards/qemu-rv32/startup.S boards/qemu-rv32/board.c boards/common/semihosting.c
+BOARD_SRC := boards/qemu-rv32/startup.S boards/qemu-rv32/board.c boards/common/stack_peak.c \
+	boards/common/semihosting.c
 BOARD_INCLUDE := -Iboards/common
 BOARD_LDSCRIPT := boards/qemu-rv32/link.ld
 BOARD_STACK_BYTES := 4096

@@ -1,7 +1,7 @@
 /* startup.S: reset for qemu-rv32. Stack pointer and global pointer, a trap vector
  * that ends the run, the stack painted for the high-water mark, .data copied,
  * .bss zeroed, then main() and board_exit() with its result. */
-#define STACK_PAINT 0x5AA5C33C
+#include "stack_paint.h"
 
     .section .text.start, "ax"
     .globl _start

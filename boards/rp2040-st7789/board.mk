@@ -4,20 +4,15 @@
 # output to flash is firmware.uf2 (hold BOOTSEL, copy it). It renders the full pond
 # at the default quality: 81,920 bytes of renderer memory, two 8,192-byte tile
 # buffers and an 8 KB stack in 256 KB (README.md gives the figures). Variables read
-# by firmware/firmware.mk.
-BOARD_ARCH := arm
+# by firmware/firmware.mk; the rest, as for every real board, from
+# boards/common/real_board.mk.
+BOARD_DIR := boards/rp2040-st7789
 BOARD_CPU := -mcpu=cortex-m0plus -mthumb -mfloat-abi=soft
-BOARD_SRC := boards/common/cortex_m_startup.c boards/rp2040-st7789/board.c \
-	boards/rp2040-st7789/clock.c boards/rp2040-st7789/panel_spi.c
-BOARD_INCLUDE := -Iboards/common -Iboards/rp2040-st7789
-BOARD_LDSCRIPT := boards/rp2040-st7789/link.ld
 BOARD_STACK_BYTES := 8192
-# where the stack starts and what can interrupt it (handler:bytes the hardware pushes),
-# for firmware/stack_bound.sh
-BOARD_STACK_ENTRY := reset_handler systick_handler:36
 BOARD_SCENE := scenes/pond.json
 BOARD_BAKE_FLAGS :=
 # the second stage the bootrom loads (checksummed at build time), and the UF2 output
 BOARD_BOOT2 := boards/rp2040-st7789/boot2.S
 BOARD_FLASH_BASE := 0x10000000
 BOARD_UF2_FAMILY := 0xe48bff56
+include boards/common/real_board.mk

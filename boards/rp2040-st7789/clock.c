@@ -17,8 +17,7 @@
  * (the board then resets) rather than hang. */
 #include "clock.h"
 #include "rp2040.h"
-
-#define READY_POLLS 1000000u /* far longer than any of these takes at 6..12 MHz */
+#include "wait_for_bits.h"
 
 #define XOSC_STARTUP_DELAY 47u /* ((12 MHz / 1000) + 128) / 256: 1 ms */
 #define PLL_REFDIV 1u
@@ -27,41 +26,35 @@
 #define PLL_POSTDIV2 2u
 #define USED_BLOCKS (RESETS_PLL_SYS | RESETS_IO_BANK0 | RESETS_PADS_BANK0 | RESETS_SPI0 | RESETS_DMA)
 
-static int wait_set(volatile uint32_t *reg, uint32_t mask, uint32_t value)
-{
-    for (uint32_t i = 0; i < READY_POLLS; i++)
-        if ((*reg & mask) == value) return 0;
-    return 1;
-}
-
 int clock_init(void)
 {
     XOSC_CTRL = XOSC_CTRL_FREQ_RANGE_1_15MHZ;
     XOSC_STARTUP = XOSC_STARTUP_DELAY;
     XOSC_CTRL = XOSC_CTRL_FREQ_RANGE_1_15MHZ | XOSC_CTRL_ENABLE_VALUE << XOSC_CTRL_ENABLE_Pos;
-    if (wait_set(&XOSC_STATUS, XOSC_STATUS_STABLE, XOSC_STATUS_STABLE) != 0) return 1;
+    if (wait_for_bits(&XOSC_STATUS, XOSC_STATUS_STABLE, XOSC_STATUS_STABLE) != 0) return 1;
 
     CLK_SYS_CTRL &= ~CLK_SYS_CTRL_SRC_AUX; /* clk_sys from clk_ref while the PLL changes */
-    if (wait_set(&CLK_SYS_SELECTED, 1u, 1u) != 0) return 1;
+    if (wait_for_bits(&CLK_SYS_SELECTED, 1u, 1u) != 0) return 1;
     CLK_REF_CTRL = CLK_REF_CTRL_SRC_XOSC;
-    if (wait_set(&CLK_REF_SELECTED, 1u << CLK_REF_CTRL_SRC_XOSC, 1u << CLK_REF_CTRL_SRC_XOSC) != 0)
+    if (wait_for_bits(&CLK_REF_SELECTED, 1u << CLK_REF_CTRL_SRC_XOSC,
+                      1u << CLK_REF_CTRL_SRC_XOSC) != 0)
         return 1;
 
     /* a PLL left running by a warm start is reset too, so it starts from its defaults */
     RESETS_RESET_SET = RESETS_PLL_SYS;
     RESETS_RESET_CLR = USED_BLOCKS;
-    if (wait_set(&RESETS_RESET_DONE, USED_BLOCKS, USED_BLOCKS) != 0) return 1;
+    if (wait_for_bits(&RESETS_RESET_DONE, USED_BLOCKS, USED_BLOCKS) != 0) return 1;
 
     PLL_CS = PLL_REFDIV;
     PLL_FBDIV_INT = PLL_FBDIV;
     PLL_PWR &= ~(PLL_PWR_PD | PLL_PWR_VCOPD);
-    if (wait_set(&PLL_CS, PLL_CS_LOCK, PLL_CS_LOCK) != 0) return 1;
+    if (wait_for_bits(&PLL_CS, PLL_CS_LOCK, PLL_CS_LOCK) != 0) return 1;
     PLL_PRIM = PLL_POSTDIV1 << PLL_PRIM_POSTDIV1_Pos | PLL_POSTDIV2 << PLL_PRIM_POSTDIV2_Pos;
     PLL_PWR &= ~PLL_PWR_POSTDIVPD;
 
     CLK_SYS_CTRL &= ~CLK_SYS_CTRL_AUXSRC_Msk; /* 0: clksrc_pll_sys */
     CLK_SYS_CTRL |= CLK_SYS_CTRL_SRC_AUX;
-    if (wait_set(&CLK_SYS_SELECTED, 2u, 2u) != 0) return 1;
+    if (wait_for_bits(&CLK_SYS_SELECTED, 2u, 2u) != 0) return 1;
 
     CLK_PERI_CTRL = CLK_PERI_CTRL_ENABLE | CLK_PERI_CTRL_AUXSRC_CLK_SYS;
     return 0;

@@ -117,8 +117,4 @@
 #define DMA_CHAN_ABORT RP_REG(DMA_BASE + 0x444u)
 #define DREQ_SPI0_TX 16u
 
-/* Cortex-M0+ system control (ARMv6-M Architecture Reference Manual, B3.2) */
-#define SCB_AIRCR RP_REG(0xE000ED0Cu)
-#define SCB_AIRCR_SYSRESETREQ (0x05FAu << 16 | 1u << 2) /* VECTKEY and the request */
-
 #endif

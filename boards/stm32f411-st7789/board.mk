@@ -3,20 +3,15 @@
 # on SPI1, fed by DMA2 while the next tile renders. It renders the full pond at the
 # default quality: 81,920 bytes of renderer memory, two 8,192-byte tile buffers and
 # an 8 KB stack in the 128 KB (README.md gives the figures). Variables read by
-# firmware/firmware.mk.
+# firmware/firmware.mk; the rest, as for every real board, from
+# boards/common/real_board.mk.
 #
 # The float ABI is soft (-mfloat-abi=soft): the core has no float, so the M4F's FPU
 # stays off, nothing saves FPU registers on an interrupt, and newlib's nofp
 # multilib provides memset/memcpy.
-BOARD_ARCH := arm
+BOARD_DIR := boards/stm32f411-st7789
 BOARD_CPU := -mcpu=cortex-m4 -mthumb -mfloat-abi=soft
-BOARD_SRC := boards/common/cortex_m_startup.c boards/stm32f411-st7789/board.c \
-	boards/stm32f411-st7789/clock.c boards/stm32f411-st7789/panel_spi.c
-BOARD_INCLUDE := -Iboards/common -Iboards/stm32f411-st7789
-BOARD_LDSCRIPT := boards/stm32f411-st7789/link.ld
 BOARD_STACK_BYTES := 8192
-# where the stack starts and what can interrupt it (handler:bytes the hardware pushes:
-# 32, plus 4 of alignment; no FPU context with the soft ABI), for firmware/stack_bound.sh
-BOARD_STACK_ENTRY := reset_handler systick_handler:36
 BOARD_SCENE := scenes/pond.json
 BOARD_BAKE_FLAGS :=
+include boards/common/real_board.mk

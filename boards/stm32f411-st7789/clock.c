@@ -15,8 +15,7 @@
  * (the board then resets) rather than hang. */
 #include "clock.h"
 #include "stm32f411.h"
-
-#define READY_POLLS 1000000u /* far longer than any of these takes (microseconds at 16 MHz) */
+#include "wait_for_bits.h"
 
 #define PLLM 8u
 #define PLLN 200u
@@ -25,13 +24,6 @@
 #define FLASH_WAIT_STATES 3u
 #define PPRE1_DIV2 4u
 
-static int wait_set(volatile uint32_t *reg, uint32_t mask, uint32_t value)
-{
-    for (uint32_t i = 0; i < READY_POLLS; i++)
-        if ((*reg & mask) == value) return 0;
-    return 1;
-}
-
 int clock_init(void)
 {
     RCC_APB1ENR |= RCC_APB1ENR_PWREN;
@@ -39,23 +31,24 @@ int clock_init(void)
     PWR_CR = (PWR_CR & ~PWR_CR_VOS_Msk) | (3u << PWR_CR_VOS_Pos);
 
     RCC_CR |= RCC_CR_HSION; /* on since reset; said again for a warm start */
-    if (wait_set(&RCC_CR, RCC_CR_HSIRDY, RCC_CR_HSIRDY) != 0) return 1;
+    if (wait_for_bits(&RCC_CR, RCC_CR_HSIRDY, RCC_CR_HSIRDY) != 0) return 1;
 
     FLASH_ACR = FLASH_ACR_PRFTEN | FLASH_ACR_ICEN | FLASH_ACR_DCEN |
                 (FLASH_WAIT_STATES << FLASH_ACR_LATENCY_Pos);
-    if (wait_set(&FLASH_ACR, FLASH_ACR_LATENCY_Msk, FLASH_WAIT_STATES << FLASH_ACR_LATENCY_Pos) != 0)
+    if (wait_for_bits(&FLASH_ACR, FLASH_ACR_LATENCY_Msk,
+                      FLASH_WAIT_STATES << FLASH_ACR_LATENCY_Pos) != 0)
         return 1;
 
     RCC_CR &= ~RCC_CR_PLLON; /* the PLL takes a new configuration only while off */
-    if (wait_set(&RCC_CR, RCC_CR_PLLRDY, 0) != 0) return 1;
+    if (wait_for_bits(&RCC_CR, RCC_CR_PLLRDY, 0) != 0) return 1;
     RCC_PLLCFGR = (PLLM << RCC_PLLCFGR_PLLM_Pos) | (PLLN << RCC_PLLCFGR_PLLN_Pos) |
                   (PLLP_DIV4 << RCC_PLLCFGR_PLLP_Pos) | (PLLQ << RCC_PLLCFGR_PLLQ_Pos);
     RCC_CR |= RCC_CR_PLLON;
-    if (wait_set(&RCC_CR, RCC_CR_PLLRDY, RCC_CR_PLLRDY) != 0) return 1;
+    if (wait_for_bits(&RCC_CR, RCC_CR_PLLRDY, RCC_CR_PLLRDY) != 0) return 1;
     /* VOSRDY: the regulator has reached scale 1, which it does once the PLL is on */
-    if (wait_set(&PWR_CSR, PWR_CSR_VOSRDY, PWR_CSR_VOSRDY) != 0) return 1;
+    if (wait_for_bits(&PWR_CSR, PWR_CSR_VOSRDY, PWR_CSR_VOSRDY) != 0) return 1;
 
     RCC_CFGR = (0u << RCC_CFGR_HPRE_Pos) | (PPRE1_DIV2 << RCC_CFGR_PPRE1_Pos) |
                (0u << RCC_CFGR_PPRE2_Pos) | (RCC_CFGR_SW_PLL << RCC_CFGR_SW_Pos);
-    return wait_set(&RCC_CFGR, RCC_CFGR_SWS_Msk, RCC_CFGR_SW_PLL << RCC_CFGR_SWS_Pos);
+    return wait_for_bits(&RCC_CFGR, RCC_CFGR_SWS_Msk, RCC_CFGR_SW_PLL << RCC_CFGR_SWS_Pos);
 }

@@ -1,11 +1,12 @@
-/* clock.h: the STM32F411's clocks for this board. */
+/* clock.h: the STM32F411's clocks for this board (boards/common/real_board.c reads
+ * CLOCK_PROCESSOR_HZ for its millisecond tick). */
 #ifndef TARN_STM32F411_CLOCK_H
 #define TARN_STM32F411_CLOCK_H
 
 #include <stdint.h>
 
 /* SYSCLK and HCLK after clock_init(): the core and SysTick run at this. */
-#define CLOCK_HCLK_HZ 100000000u
+#define CLOCK_PROCESSOR_HZ 100000000u
 /* APB2, the clock of SPI1 */
 #define CLOCK_PCLK2_HZ 100000000u
 

@@ -113,8 +113,4 @@
 #define DMA_SxCR_PL_HIGH (2u << 16)
 #define DMA_SxCR_CHSEL_Pos 25u /* bits 27:25 */
 
-/* Cortex-M4 system control (ARMv7-M Architecture Reference Manual, B3.2) */
-#define SCB_AIRCR STM32_REG(0xE000ED0Cu)
-#define SCB_AIRCR_SYSRESETREQ (0x05FAu << 16 | 1u << 2) /* VECTKEY and the request */
-
 #endif
