@@ -1077,6 +1077,7 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     int blocks = p->config.quality.water_block > 1;
     int exact_depth = p->config.quality.depth_interpolation == TARN_DEPTH_EXACT;
     int found_bins = finds_bins(&p->scene->scene, &p->config.quality);
+    int depth16 = p->config.quality.depth_bits == 16, depth32 = p->config.quality.depth_bits == 32;
     for (size_t i = 0; i < p->points->count; i++) {
         span |= p->points->qualities[i].perspective == TARN_PERSPECTIVE_SPAN;
         pixel |= p->points->qualities[i].perspective == TARN_PERSPECTIVE_PIXEL;
@@ -1085,12 +1086,16 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
         blocks |= p->points->qualities[i].water_block > 1;
         exact_depth |= p->points->qualities[i].depth_interpolation == TARN_DEPTH_EXACT;
         found_bins |= finds_bins(&p->scene->scene, &p->points->qualities[i]);
+        depth16 |= p->points->qualities[i].depth_bits == 16;
+        depth32 |= p->points->qualities[i].depth_bits == 32;
     }
     fprintf(out, "#define TARN_LINK_PERSPECTIVE_AFFINE %d\n", affine);
     fprintf(out, "#define TARN_LINK_PERSPECTIVE_SPAN %d\n", span);
     fprintf(out, "#define TARN_LINK_PERSPECTIVE_PIXEL %d\n", pixel);
     fprintf(out, "#define TARN_LINK_APRON %d\n", apron);
     fprintf(out, "#define TARN_LINK_WATER_BLOCKS %d\n", blocks);
+    fprintf(out, "#define TARN_LINK_DEPTH16 %d\n", depth16);
+    fprintf(out, "#define TARN_LINK_DEPTH32 %d\n", depth32);
     fprintf(out, "#define TARN_LINK_EXACT_DEPTH %d\n", exact_depth);
     fprintf(out, "#define TARN_LINK_FOUND_BINS %d\n", found_bins);
     fprintf(out, "#define TARN_LINK_OPAQUE_OBJECTS %d\n", has_opaque_objects(&p->scene->scene));

@@ -211,7 +211,7 @@ static inline uint32_t tarn_closer_depth(const void *depth, int depth_bits, int3
 {
     if ((int32_t)inv_depth < 1) inv_depth = 1;
     if (inv_depth > TARN_T_ONE) inv_depth = TARN_T_ONE;
-    if (depth_bits == 16) {
+    if (tarn_depth_is_16_bits((unsigned)depth_bits)) {
         const uint16_t value = tarn_depth16_encode(inv_depth);
         return value > ((const uint16_t *)depth)[index] ? value : 0u;
     }
@@ -222,7 +222,7 @@ static inline uint32_t tarn_closer_depth(const void *depth, int depth_bits, int3
  * beneath it first. */
 static inline void tarn_store_depth(void *depth, int depth_bits, int32_t index, uint32_t value)
 {
-    if (depth_bits == 16)
+    if (tarn_depth_is_16_bits((unsigned)depth_bits))
         ((uint16_t *)depth)[index] = (uint16_t)value;
     else
         ((uint32_t *)depth)[index] = value;

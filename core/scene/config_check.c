@@ -20,7 +20,7 @@ static int quality_in_range(const tarn_quality *q)
            (TARN_LINK_PERSPECTIVE_SPAN || q->perspective != TARN_PERSPECTIVE_SPAN) &&
            (TARN_LINK_PERSPECTIVE_PIXEL || q->perspective != TARN_PERSPECTIVE_PIXEL) &&
            tarn_is_power_of_two(q->perspective_span) && q->perspective_span >= 2 && q->perspective_span <= 64 &&
-           (q->depth_bits == 16 || q->depth_bits == 32) &&
+           ((TARN_LINK_DEPTH16 && q->depth_bits == 16) || (TARN_LINK_DEPTH32 && q->depth_bits == 32)) &&
            (q->depth_interpolation == TARN_DEPTH_PLANE ||
             (TARN_LINK_EXACT_DEPTH && q->depth_interpolation == TARN_DEPTH_EXACT)) &&
            q->tile_size >= TARN_TILE_SIZE_MIN && q->tile_size <= TARN_TILE_SIZE_MAX &&

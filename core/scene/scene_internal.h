@@ -15,6 +15,13 @@
  * sees the tile; no backdrop colour may hold it. */
 #define TARN_WATER_MARK 0x01000000u
 
+/* Whether a depth buffer of the quality's depth_bits holds 16-bit codes: known when
+ * the build links one form only (tarn_config.h), so a pixel need not ask. */
+static inline int tarn_depth_is_16_bits(unsigned depth_bits)
+{
+    return TARN_LINK_DEPTH16 && (!TARN_LINK_DEPTH32 || depth_bits == 16u);
+}
+
 /* Validates a frame config; TARN_OK or TARN_ERR_CONFIG (config_check.c). */
 tarn_status tarn_config_check(const tarn_frame_config *config);
 

@@ -4,7 +4,7 @@
 
 static uint32_t depth_q30(const tarn_underwater_context *u, int32_t offset)
 {
-    if (u->depth_bits == 16) return tarn_depth16_decode(((const uint16_t *)u->depth)[offset]);
+    if (tarn_depth_is_16_bits(u->depth_bits)) return tarn_depth16_decode(((const uint16_t *)u->depth)[offset]);
     return ((const uint32_t *)u->depth)[offset];
 }
 

@@ -47,7 +47,7 @@ uint32_t tarn_water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, u
 
 static uint32_t background_depth_q30(const tarn_water_context *w, int32_t offset)
 {
-    if (w->depth_bits == 16) return tarn_depth16_decode(((const uint16_t *)w->background_depth)[offset]);
+    if (tarn_depth_is_16_bits(w->depth_bits)) return tarn_depth16_decode(((const uint16_t *)w->background_depth)[offset]);
     return ((const uint32_t *)w->background_depth)[offset];
 }
 

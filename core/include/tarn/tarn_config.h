@@ -33,6 +33,16 @@
 #define TARN_LINK_PERSPECTIVE_PIXEL 1
 #endif
 
+/* The depth buffer's forms (the quality's depth_bits): 16 bits, a small float of
+ * near/d, and 32 bits, near/d in Q1.30. Every pixel's depth test and store is
+ * compiled for the forms linked. */
+#ifndef TARN_LINK_DEPTH16
+#define TARN_LINK_DEPTH16 1
+#endif
+#ifndef TARN_LINK_DEPTH32
+#define TARN_LINK_DEPTH32 1
+#endif
+
 /* TARN_DEPTH_EXACT: the exact per-pixel division of the depth. Without it every
  * quality must use TARN_DEPTH_PLANE. */
 #ifndef TARN_LINK_EXACT_DEPTH
