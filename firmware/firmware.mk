@@ -209,7 +209,7 @@ $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-d
 # which a static view mostly spares: -Os takes about 1,240 bytes more off for 4
 # instructions a pixel of the M0's pond.
 FW_SIZE_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,$(basename $(wildcard core/scene/*.c)) core/geometry/view \
-	core/water/water_setup core/frame/layout core/frame/status firmware/report \
+	core/water/water_setup core/water/underwater_setup core/frame/layout core/frame/status firmware/report \
 	$(if $(BOARD_CODE_BYTES_MAX),core/frame/frame core/geometry/vertex core/geometry/clip))
 $(FW_SIZE_OBJ): FW_DEFINES += -Os
 

@@ -14,7 +14,7 @@
 /* T = premultiplied * 2^30 / q, given 1/q as a Q2.30 mantissa and q's leading zeros:
  * 1/q = recip * 2^(lz - 62), so T = mul_hi(p << 1, recip) << (lz - 1). Clamped to the
  * triangle's own range, which rounding can overshoot by a few units. */
-static uint32_t divide_by_q(uint32_t premultiplied, uint32_t recip, unsigned lz,
+static TARN_ALWAYS_INLINE uint32_t divide_by_q(uint32_t premultiplied, uint32_t recip, unsigned lz,
                             uint32_t t_min, uint32_t t_max)
 {
     if ((int32_t)premultiplied < 0) premultiplied = 0;
@@ -26,7 +26,7 @@ static uint32_t divide_by_q(uint32_t premultiplied, uint32_t recip, unsigned lz,
 }
 
 /* 1/q as a Q2.30 mantissa, and the leading zeros of q (1..31) that scale it. */
-static uint32_t reciprocal_of_q(uint32_t q, unsigned steps, unsigned *lz)
+static TARN_ALWAYS_INLINE uint32_t reciprocal_of_q(uint32_t q, unsigned steps, unsigned *lz)
 {
     if ((int32_t)q < 1) q = 1;
     if (q > TARN_T_ONE) q = TARN_T_ONE;

@@ -9,7 +9,8 @@
  *   water_highlights.c, water_foam.c   the effects, a file each
  *   water_common.c     what the effects share: products, texels, depths
  *   water_still.c      the moving terms over a still-water backdrop, no triangle drawn
- *   underwater.c       the underwater view (underwater_internal.h)
+ *   underwater.c       the underwater view (underwater_internal.h), its constants
+ *                      in underwater_setup.c
  *
  * It takes the opaque pass's colour and depth around the tile and water triangles
  * from core/tile/'s walk, and hands on the tile's colour. A water pixel costs
