@@ -5,14 +5,14 @@
 #include <errno.h>
 #include <jansson.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
 #include "obj_load.h"
-
+#include "scene_fields.h"
+#include "scene_textures.h"
 #include "water_load.h"
 
 #define PI 3.14159265358979323846
@@ -20,128 +20,13 @@
 /* The most textures one material loads: its own, two normal maps, foam and a ramp. */
 #define TEXTURES_PER_MATERIAL 5u
 
-/* State while one scene file loads. */
-struct tarn_loader {
-    const char *file; /* the scene path as given: every message starts with it */
-    char *dir;        /* its directory with a trailing '/', or "" */
-    tarn_error *err;
-    tarn_loaded_scene *out;
-};
-
-int tarn_fail_field(tarn_loader *l, const char *field, const char *format, ...)
-{
-    char message[sizeof l->err->message];
-    va_list args;
-    va_start(args, format);
-    vsnprintf(message, sizeof message, format, args);
-    va_end(args);
-    return tarn_fail(l->err, "%s: %s: %s", l->file, field, message);
-}
-
-void tarn_join_path(char out[TARN_FIELD_PATH_MAX], const char *parent, const char *key)
-{
-    int length = snprintf(out, TARN_FIELD_PATH_MAX, "%s%s%s", parent, parent[0] ? "." : "", key);
-    /* only absurdly long material names get here; say the path was cut */
-    if (length >= TARN_FIELD_PATH_MAX) memcpy(out + TARN_FIELD_PATH_MAX - 4, "...", 4);
-}
-
-const char *tarn_json_type(const json_t *v)
-{
-    switch (json_typeof(v)) {
-    case JSON_OBJECT: return "object";
-    case JSON_ARRAY: return "array";
-    case JSON_STRING: return "string";
-    case JSON_INTEGER:
-    case JSON_REAL: return "number";
-    case JSON_TRUE:
-    case JSON_FALSE: return "boolean";
-    default: return "null";
-    }
-}
-
 /* ---- field rules ------------------------------------------------------------ */
 
-/* Q16.16 holds |v| < 32768: the widest any field may be. */
-const tarn_rule TARN_COORDINATE = { "a number, -32768 < v < 32768", -32768, 32768,
-                                    TARN_MIN_OPEN | TARN_MAX_OPEN };
-const tarn_rule TARN_POSITIVE = { "a number > 0 and < 32768", 0, 32768,
-                                  TARN_MIN_OPEN | TARN_MAX_OPEN };
 static const tarn_rule FOV = { "a number of degrees, 1..179", 1, 179, 0 };
 static const tarn_rule FRAME_SIDE = { "an integer 1..1024", 1, 1024, TARN_INTEGER };
 static const tarn_rule SEGMENTS = { "an integer 1..256", 1, 256, TARN_INTEGER };
 static const tarn_rule SPHERE_SEGMENTS = { "an integer 3..256", 3, 256, TARN_INTEGER };
 static const tarn_rule SPHERE_RINGS = { "an integer 2..256", 2, 256, TARN_INTEGER };
-
-static int number_fits(const tarn_rule *rule, double v)
-{
-    if (!isfinite(v) || v < rule->min || v > rule->max) return 0;
-    if ((rule->flags & TARN_MIN_OPEN) && v == rule->min) return 0;
-    if ((rule->flags & TARN_MAX_OPEN) && v == rule->max) return 0;
-    if ((rule->flags & TARN_INTEGER) && v != floor(v)) return 0;
-    return 1;
-}
-
-static int read_number(tarn_loader *l, const json_t *value, const char *field,
-                       const tarn_rule *rule, double *out)
-{
-    if (!json_is_number(value)) {
-        return tarn_fail_field(l, field, "expected a number, got %s", tarn_json_type(value));
-    }
-    double v = json_number_value(value);
-    if (!number_fits(rule, v)) {
-        return tarn_fail_field(l, field, "expected %s, got %g", rule->what, v);
-    }
-    /* "> 0" must still hold once rounded to Q16.16 */
-    if ((rule->flags & TARN_MIN_OPEN) && rule->min == 0 && tarn_q16_from_double(v) <= 0) {
-        return tarn_fail_field(l, field, "expected %s, got %g (0 in Q16.16)", rule->what, v);
-    }
-    *out = v;
-    return 0;
-}
-
-/* `key` of `object` (at `parent`): the rule's number, `fallback` when absent, or
- * an error when absent and fallback is NULL. */
-int tarn_get_number(tarn_loader *l, const json_t *object, const char *parent, const char *key,
-                    const tarn_rule *rule, const double *fallback, double *out)
-{
-    char field[TARN_FIELD_PATH_MAX];
-    tarn_join_path(field, parent, key);
-    const json_t *value = json_object_get(object, key);
-    if (value) return read_number(l, value, field, rule, out);
-    if (!fallback) return tarn_fail_field(l, field, "missing (expected %s)", rule->what);
-    *out = *fallback;
-    return 0;
-}
-
-/* An array of exactly `n` numbers, each following `rule`. */
-int tarn_get_numbers(tarn_loader *l, const json_t *object, const char *parent, const char *key,
-                     size_t n, const tarn_rule *rule, const double *fallback, double *out)
-{
-    char field[TARN_FIELD_PATH_MAX];
-    tarn_join_path(field, parent, key);
-    const json_t *value = json_object_get(object, key);
-    if (!value) {
-        if (!fallback) {
-            return tarn_fail_field(l, field, "missing (expected an array of %zu numbers)", n);
-        }
-        memcpy(out, fallback, n * sizeof *out);
-        return 0;
-    }
-    if (!json_is_array(value)) {
-        return tarn_fail_field(l, field, "expected an array of %zu numbers, got %s", n,
-                               tarn_json_type(value));
-    }
-    if (json_array_size(value) != n) {
-        return tarn_fail_field(l, field, "expected an array of %zu numbers, got %zu", n,
-                               json_array_size(value));
-    }
-    for (size_t k = 0; k < n; k++) {
-        char element[TARN_FIELD_PATH_MAX + 24]; /* room for "[index]" */
-        snprintf(element, sizeof element, "%s[%zu]", field, k);
-        if (read_number(l, json_array_get(value, k), element, rule, &out[k])) return -1;
-    }
-    return 0;
-}
 
 static int get_vec3(tarn_loader *l, const json_t *object, const char *parent, const char *key,
                     const double *fallback, double out[3])
@@ -154,146 +39,6 @@ static tarn_vec3 vec3_q16(const double v[3])
     tarn_vec3 q = { tarn_q16_from_double(v[0]), tarn_q16_from_double(v[1]),
                     tarn_q16_from_double(v[2]) };
     return q;
-}
-
-/* A string field; *out stays NULL when absent and optional. */
-static int get_string(tarn_loader *l, const json_t *object, const char *parent, const char *key,
-                      const char *what, int required, const char **out)
-{
-    char field[TARN_FIELD_PATH_MAX];
-    tarn_join_path(field, parent, key);
-    const json_t *value = json_object_get(object, key);
-    *out = NULL;
-    if (!value) return required ? tarn_fail_field(l, field, "missing (expected %s)", what) : 0;
-    if (!json_is_string(value)) {
-        return tarn_fail_field(l, field, "expected %s, got %s", what, tarn_json_type(value));
-    }
-    *out = json_string_value(value);
-    return 0;
-}
-
-static int hex_digit(char c)
-{
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-}
-
-/* "#rrggbb" -> 0xRRGGBB */
-int tarn_get_colour(tarn_loader *l, const json_t *object, const char *parent, const char *key,
-                    uint32_t fallback, uint32_t *out)
-{
-    static const char what[] = "a colour \"#rrggbb\"";
-    const char *text;
-    if (get_string(l, object, parent, key, what, 0, &text)) return -1;
-    *out = fallback;
-    if (!text) return 0;
-    uint32_t rgb = 0;
-    int ok = strlen(text) == 7 && text[0] == '#';
-    for (int k = 1; ok && k < 7; k++) {
-        int digit = hex_digit(text[k]);
-        ok = digit >= 0;
-        rgb = rgb << 4 | (uint32_t)(digit & 15);
-    }
-    if (!ok) {
-        char field[TARN_FIELD_PATH_MAX];
-        tarn_join_path(field, parent, key);
-        return tarn_fail_field(l, field, "expected %s, got \"%s\"", what, text);
-    }
-    *out = rgb;
-    return 0;
-}
-
-int tarn_get_bool(tarn_loader *l, const json_t *object, const char *parent, const char *key,
-                  int fallback, int *out)
-{
-    const json_t *value = json_object_get(object, key);
-    *out = fallback;
-    if (!value) return 0;
-    if (!json_is_boolean(value)) {
-        char field[TARN_FIELD_PATH_MAX];
-        tarn_join_path(field, parent, key);
-        return tarn_fail_field(l, field, "expected true or false, got %s", tarn_json_type(value));
-    }
-    *out = json_is_true(value);
-    return 0;
-}
-
-/* A nested object; *out stays NULL when absent and optional. */
-int tarn_get_object(tarn_loader *l, const json_t *object, const char *parent, const char *key,
-                    const char *what, int required, json_t **out)
-{
-    char field[TARN_FIELD_PATH_MAX];
-    tarn_join_path(field, parent, key);
-    json_t *value = json_object_get(object, key);
-    *out = NULL;
-    if (!value) return required ? tarn_fail_field(l, field, "missing (expected %s)", what) : 0;
-    if (!json_is_object(value)) {
-        return tarn_fail_field(l, field, "expected %s, got %s", what, tarn_json_type(value));
-    }
-    *out = value;
-    return 0;
-}
-
-static int name_in(const char *name, const char *const *names)
-{
-    for (; names && *names; names++) {
-        if (strcmp(name, *names) == 0) return 1;
-    }
-    return 0;
-}
-
-static void append_names(char *out, size_t size, const char *const *names)
-{
-    for (; names && *names; names++) {
-        size_t used = strlen(out);
-        snprintf(out + used, size - used, "%s%s", used ? ", " : "", *names);
-    }
-}
-
-/* Every key of `object` must be in `common` or `specific` (NULL-terminated lists).
- * `kind` (may be "") says what the object is in the message: " for a sphere". */
-int tarn_check_fields(tarn_loader *l, const json_t *object, const char *parent,
-                      const char *const *common, const char *const *specific, const char *kind)
-{
-    const char *key;
-    const json_t *value;
-    json_object_foreach((json_t *)object, key, value) {
-        if (name_in(key, common) || name_in(key, specific)) continue;
-        char field[TARN_FIELD_PATH_MAX], allowed[256] = "";
-        tarn_join_path(field, parent, key);
-        append_names(allowed, sizeof allowed, common);
-        append_names(allowed, sizeof allowed, specific);
-        return tarn_fail_field(l, field, "unknown field%s (expected %s)", kind, allowed);
-    }
-    return 0;
-}
-
-/* An asset path relative to the scene file's directory (absolute paths stay). */
-static char *resolve_asset(const tarn_loader *l, const char *name)
-{
-    const char *dir = name[0] == '/' ? "" : l->dir;
-    size_t size = strlen(dir) + strlen(name) + 1;
-    char *path = malloc(size);
-    if (path) snprintf(path, size, "%s%s", dir, name);
-    return path;
-}
-
-/* A file-name field, resolved; the caller frees *out. */
-static int get_asset_path(tarn_loader *l, const json_t *object, const char *parent,
-                          const char *key, const char *what, char **out)
-{
-    const char *name;
-    *out = NULL;
-    if (get_string(l, object, parent, key, what, 1, &name)) return -1;
-    if (name[0] == '\0') {
-        char field[TARN_FIELD_PATH_MAX];
-        tarn_join_path(field, parent, key);
-        return tarn_fail_field(l, field, "expected %s, got \"\"", what);
-    }
-    *out = resolve_asset(l, name);
-    return *out ? 0 : tarn_fail(l->err, "%s: out of memory", l->file);
 }
 
 /* ---- frame, camera, light ----------------------------------------------------- */
@@ -380,48 +125,12 @@ static int load_light(tarn_loader *l, const json_t *root)
 
 /* ---- materials and textures --------------------------------------------------- */
 
-/* The texture for `path`, loaded once however many materials use it. */
-static int find_or_load_texture(tarn_loader *l, const char *path, const tarn_texture **out)
-{
-    tarn_loaded_scene *s = l->out;
-    for (size_t k = 0; k < s->texture_count; k++) {
-        if (strcmp(s->texture_paths[k], path) == 0) {
-            *out = &s->textures[k];
-            return 0;
-        }
-    }
-    size_t k = s->texture_count;
-    if (k == s->texture_capacity) { /* the capacity counts every texture field: a bug */
-        return tarn_fail(l->err, "%s: more textures than the loader made room for", l->file);
-    }
-    tarn_image *image = &s->texture_images[k];
-    if (tarn_png_read_texture(path, image, l->err)) return -1;
-    s->texture_paths[k] = strdup(path);
-    s->texture_count++; /* counted now, so that scene_free releases the image */
-    if (!s->texture_paths[k]) return tarn_fail(l->err, "%s: out of memory", l->file);
-    s->textures[k].width = image->width;
-    s->textures[k].height = image->height;
-    s->textures[k].rgb = image->pixels;
-    *out = &s->textures[k];
-    return 0;
-}
-
-int tarn_get_texture(tarn_loader *l, const json_t *object, const char *parent, const char *key,
-                     const tarn_texture **out)
-{
-    char *path;
-    if (get_asset_path(l, object, parent, key, "a PNG file name", &path)) return -1;
-    int result = find_or_load_texture(l, path, out);
-    free(path);
-    return result;
-}
-
 static int parse_cull(tarn_loader *l, const json_t *m, const char *field, uint8_t *out)
 {
     static const char *const modes[] = { "back", "none", "front", NULL }; /* tarn_cull order */
     static const char what[] = "one of \"back\", \"none\", \"front\"";
     const char *text;
-    if (get_string(l, m, field, "cull", what, 0, &text)) return -1;
+    if (tarn_get_string(l, m, field, "cull", what, 0, &text)) return -1;
     *out = TARN_CULL_BACK;
     if (!text) return 0;
     for (uint8_t k = 0; modes[k]; k++) {
@@ -555,7 +264,7 @@ static int build_heightfield(tarn_loader *l, const json_t *o, const char *field,
     if (tarn_get_numbers(l, o, field, "size", 2, &TARN_POSITIVE, NULL, size) ||
         tarn_get_number(l, o, field, "height", &TARN_POSITIVE, NULL, &height) ||
         tarn_get_numbers(l, o, field, "uv_scale", 2, &TARN_COORDINATE, one_by_one, uv_scale) ||
-        get_asset_path(l, o, field, "image", "a PNG file name", &path)) {
+        tarn_get_asset_path(l, o, field, "image", "a PNG file name", &path)) {
         return -1;
     }
     tarn_image image;
@@ -574,7 +283,7 @@ static int build_obj_mesh(tarn_loader *l, const json_t *o, const char *field,
 {
     (void)material;
     char *path;
-    if (get_asset_path(l, o, field, "file", "an OBJ file name", &path)) return -1;
+    if (tarn_get_asset_path(l, o, field, "file", "an OBJ file name", &path)) return -1;
     int result = tarn_obj_load(path, mesh, l->err);
     free(path);
     return result;
@@ -604,7 +313,7 @@ static int find_object_type(tarn_loader *l, const json_t *o, const char *field,
                             const object_type **out)
 {
     const char *type;
-    if (get_string(l, o, field, "type", TYPE_CHOICES, 1, &type)) return -1;
+    if (tarn_get_string(l, o, field, "type", TYPE_CHOICES, 1, &type)) return -1;
     for (size_t k = 0; k < OBJECT_TYPE_COUNT; k++) {
         if (strcmp(type, OBJECT_TYPES[k].type) == 0) {
             *out = &OBJECT_TYPES[k];
@@ -620,7 +329,7 @@ static int find_material(tarn_loader *l, const json_t *o, const char *field,
                          const tarn_material **out)
 {
     const char *name;
-    if (get_string(l, o, field, "material", "a material name", 1, &name)) return -1;
+    if (tarn_get_string(l, o, field, "material", "a material name", 1, &name)) return -1;
     for (size_t k = 0; k < l->out->material_count; k++) {
         if (strcmp(name, l->out->material_names[k]) == 0) {
             *out = &l->out->materials[k];

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "mesh_gen.h"
+#include "scene_textures.h"
 
 static const tarn_rule UNIT = { "a number 0..1", 0, 1, 0 };
 static const tarn_rule DENSITY = { "a number 0..64", 0, 64, 0 };

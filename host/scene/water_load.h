@@ -22,7 +22,7 @@
 #define TARN_HOST_WATER_LOAD_H
 
 #include <stdint.h>
-#include "scene_load.h"
+#include "scene_fields.h"
 #include "tarn_water.h"
 
 /* The "water" block of `material` (at field path `parent`, "materials.NAME"), if
