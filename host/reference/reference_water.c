@@ -6,6 +6,8 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "ref_texel.h"
+
 #define Q16_SCALE 65536.0
 
 static double q16(tarn_q16 v)

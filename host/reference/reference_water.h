@@ -1,27 +1,14 @@
-/* reference_water.h: the float reference's water, private to host/reference*.c.
+/* reference_water.h: the float reference's water, private to host/reference/.
  *
  * reference_water.c shades one water pixel by the rules of core/tarn_water.h and
  * applies the underwater view, in doubles with libm; reference.c rasterizes, keeps
- * the buffers and calls it. The first block is what reference.c shares with it, so
- * that both sample textures and round by one definition. */
+ * the buffers and calls it. Both sample textures and round through ref_texel.h,
+ * so by one definition; reference_water.c calls nothing of reference.c. */
 #ifndef TARN_HOST_REFERENCE_WATER_H
 #define TARN_HOST_REFERENCE_WATER_H
 
 #include <stdint.h>
 #include "tarn_water.h"
-
-/* ---- from reference.c -------------------------------------------------------- */
-
-/* Channel c (0 red, 1 green, 2 blue) of a 0xRRGGBB colour, 0..255. */
-double tarn_ref_channel(uint32_t rgb, int c);
-/* Nearest integer (halves up), clamped to 0..255; NaN gives 0. */
-double tarn_ref_round_to_byte(double v);
-/* Texel = (floor(u*W) mod W, floor(v*H) mod H), wrapping negatives too. */
-const uint8_t *tarn_ref_sample_texel(const tarn_texture *tex, const double uv[2]);
-/* NULL, or texels present and power-of-two sizes within TARN_TEXTURE_SIZE_MAX. */
-int tarn_ref_texture_is_valid(const tarn_texture *tex);
-
-/* ---- water (reference_water.c) ------------------------------------------------ */
 
 /* Everything a water pixel reads besides its own surface: the frame, the opaque
  * pass's buffers (never the water pass's: water does not see water) and the
