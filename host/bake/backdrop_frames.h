@@ -1,7 +1,7 @@
 /* backdrop_frames.h: what the makers of both backdrops share (backdrop.c and
- * still_backdrop.c; private to them): whole frames drawn by the core on the host,
- * the scene split into its water and its other objects, and the picture and depth
- * spans kept from a frame. */
+ * still_backdrop.c; private to them), in backdrop_frames.c, which calls neither:
+ * whole frames drawn by the core on the host, the scene split into its water and
+ * its other objects, and the picture and depth spans kept from a frame. */
 #ifndef TARN_HOST_BACKDROP_FRAMES_H
 #define TARN_HOST_BACKDROP_FRAMES_H
 
@@ -39,10 +39,5 @@ void tarn_backdrop_set_quality(tarn_backdrop *b, const tarn_quality *q, int stil
 int tarn_backdrop_index_colours(const uint32_t *rgb, size_t pixels, tarn_backdrop_image *b, tarn_error *err);
 int tarn_backdrop_keep_depth(const tarn_drawn_frame *f, const uint8_t *kept, uint32_t height, tarn_backdrop_image *b,
                              tarn_error *err);
-
-/* The still-water backdrop (still_backdrop.c), and where the frame's water draws
- * (`*water`, width * height flags). */
-int tarn_still_image_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_image *b,
-                          uint8_t **water, tarn_error *err);
 
 #endif

@@ -2,6 +2,7 @@
  * water"): the scene drawn with its water's still terms alone, each water pixel
  * marked with its object and where foam can show, the foam band's places, and
  * each water object's plane (still_planes.h). */
+#include "still_backdrop.h"
 #include "backdrop_frames.h"
 #include "water.h"
 
