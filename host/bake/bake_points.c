@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli_options.h"
+#include "quality_options.h"
 
 void tarn_bake_points_free(tarn_bake_points *points)
 {

@@ -12,8 +12,9 @@
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
  *   --depth 16|32  --depth-interpolation exact|plane  --recip-steps N (0..2)
  *   --exp2 N[:nearest|:linear] (8..256)
- *   --apron on|off|N  --bins on|off  --fog-bits N (4..16)  --water-block 1|2
- *   --quality fast|balanced|exact   a preset (core/quality.c) as the base of the others */
+ *   --apron on|off|N  --bins on|off  --fog-bits N (4..16)  --water-block 1|2|4
+ *   --quality fast|balanced|exact   a preset (core/quality.c) as the base of the others
+ * (parsed by quality_options.h) */
 #ifndef TARN_HOST_CLI_OPTIONS_H
 #define TARN_HOST_CLI_OPTIONS_H
 
@@ -57,8 +58,6 @@ typedef struct {
 int tarn_cli_parse(int argc, char **argv, tarn_cli_options *options, tarn_error *err);
 
 #define TARN_CLI_FRAMES_MAX 10000u
-#define TARN_CLI_FPS_MAX 120u
-#define TARN_CLI_FPS_DEFAULT 30u
 
 /* Frame `index` of a --frames sequence: "out.png" -> "out-0007.png" (a name without
  * ".png" gains "-0007.png"). 0, or -1 if it does not fit `size` bytes. */
@@ -66,22 +65,6 @@ int tarn_cli_frame_path(const char *output, unsigned index, char *out, size_t si
 
 /* The clock of frame `index`: time_ms + floor(index * 1000 / fps). */
 uint32_t tarn_cli_frame_time(const tarn_cli_options *options, unsigned index);
-
-/* One QUALITY option for commands with parsers of their own (tarn show): 0 when
- * `name` was applied to `quality`, -1 with `err` set for a bad value, 1 when `name`
- * is not a quality option. --quality is only checked here: call
- * tarn_cli_apply_preset on the whole list first, so that a preset is the base the
- * other knobs change wherever they stand. */
-int tarn_cli_parse_quality_option(const char *name, const char *value, tarn_quality *quality,
-                                  tarn_error *err);
-
-/* Applies the list's --quality NAME to `quality`, if it has one: 0, or -1 with
- * `err` set for an unknown name or a second --quality. */
-int tarn_cli_apply_preset(int argc, char *const argv[], tarn_quality *quality, tarn_error *err);
-
-/* The knobs' constraints on each other, once every option is applied: 0, or -1
- * with `err` naming the options (--water-block 2 needs an even --tile). */
-int tarn_cli_check_quality(const tarn_quality *q, tarn_error *err);
 
 extern const char tarn_cli_usage[];
 

@@ -1,12 +1,13 @@
 /* show_options.c: `tarn show`'s command line (show_options.h). Quality knobs are
- * cli_options.c's, through tarn_cli_parse_quality_option. */
+ * every command's, through tarn_cli_parse_quality_option (quality_options.h). */
 #include "show_options.h"
 
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli_options.h"
+#include "option_values.h"
+#include "quality_options.h"
 
 const char tarn_show_usage[] =
     "usage: tarn show SCENE --display DISPLAY --panel MODEL [--rotation 0..3] [--frames N] [--fps F]\n"

@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_options.h"
+#include "quality_options.h"
 
 #define VALUES_MAX 16
 
