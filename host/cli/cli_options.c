@@ -4,7 +4,6 @@
 #include "quality_options.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 const char tarn_cli_usage[] =
@@ -54,16 +53,29 @@ static int parse_size(const char *text, tarn_cli_options *o, tarn_error *err)
                      TARN_FRAME_SIZE_MAX, text ? text : "");
 }
 
+static const tarn_option_choice commands[] = {
+    {"render", TARN_CMD_RENDER, NULL}, {"compare", TARN_CMD_COMPARE, NULL}, {"accuracy", TARN_CMD_ACCURACY, NULL},
+    {"memory", TARN_CMD_MEMORY, NULL}, {"bake", TARN_CMD_BAKE, NULL}};
+
+/* bake --static-view on|off: whether the baked objects carry static vertices. */
+static const tarn_option_choice static_views[] = {{"on", 0, NULL}, {"off", 1, NULL}};
+
+/* render, bake --backdrop on|off|still. */
+static const tarn_option_choice backdrops[] = {
+    {"on", TARN_BACKDROP_OPAQUE, NULL}, {"off", TARN_BACKDROP_NONE, NULL}, {"still", TARN_BACKDROP_STILL, NULL}};
+
+/* The command word (NULL when there is none). */
 static int parse_command(const char *word, tarn_cli_options *o, tarn_error *err)
 {
-    if (word && strcmp(word, "render") == 0) o->command = TARN_CMD_RENDER;
-    else if (word && strcmp(word, "compare") == 0) o->command = TARN_CMD_COMPARE;
-    else if (word && strcmp(word, "accuracy") == 0) o->command = TARN_CMD_ACCURACY;
-    else if (word && strcmp(word, "memory") == 0) o->command = TARN_CMD_MEMORY;
-    else if (word && strcmp(word, "bake") == 0) o->command = TARN_CMD_BAKE;
-    else return tarn_fail(err, "unknown command '%s'; expected render, compare, accuracy, memory or bake",
-                          word ? word : "");
-    return 0;
+    int command;
+    if (tarn_find_choice(word, TARN_CHOICES(commands), &command) == 0) {
+        o->command = (tarn_command)command;
+        return 0;
+    }
+    char expected[64]; /* "render, compare, accuracy, memory or bake" */
+    tarn_list_choices(TARN_CHOICES(commands), expected, sizeof expected);
+    if (word == NULL) return tarn_fail(err, "expected a command: %s", expected);
+    return tarn_fail(err, "unknown command '%s'; expected %s", word, expected);
 }
 
 /* --frames N and --fps F. */
@@ -72,40 +84,17 @@ static int parse_sequence_option(const char *name, const char *value, tarn_cli_o
 {
     unsigned long n;
     if (strcmp(name, "--frames") == 0) {
-        if (tarn_parse_whole(value, 1, TARN_CLI_FRAMES_MAX, &n) != 0)
-            return tarn_fail(err, "--frames: expected a whole number 1..%u, got '%s'",
-                             TARN_CLI_FRAMES_MAX, value ? value : "");
+        if (tarn_parse_number(name, value, 1, TARN_CLI_FRAMES_MAX, &n, err) != 0) return -1;
         o->frames = (uint16_t)n;
         return 0;
     }
-    if (tarn_parse_whole(value, 1, TARN_CLI_FPS_MAX, &n) != 0)
-        return tarn_fail(err, "--fps: expected a whole number 1..%u, got '%s'", TARN_CLI_FPS_MAX,
-                         value ? value : "");
+    if (tarn_parse_number(name, value, 1, TARN_CLI_FPS_MAX, &n, err) != 0) return -1;
     o->fps = (uint8_t)n;
     return 0;
 }
 
-/* bake --static-view on|off: whether the baked objects carry static vertices. */
-static int parse_static_view(const char *value, tarn_cli_options *o, tarn_error *err)
-{
-    o->static_view_given = 1;
-    if (value && strcmp(value, "on") == 0) o->no_static_view = 0;
-    else if (value && strcmp(value, "off") == 0) o->no_static_view = 1;
-    else return tarn_fail(err, "--static-view: expected on or off, got '%s'", value ? value : "");
-    return 0;
-}
-
-/* render, bake --backdrop on|off|still. */
-static int parse_backdrop(const char *value, tarn_cli_options *o, tarn_error *err)
-{
-    if (value && strcmp(value, "on") == 0) o->backdrop = TARN_BACKDROP_OPAQUE;
-    else if (value && strcmp(value, "still") == 0) o->backdrop = TARN_BACKDROP_STILL;
-    else if (value && strcmp(value, "off") == 0) o->backdrop = TARN_BACKDROP_NONE;
-    else return tarn_fail(err, "--backdrop: expected on, off or still, got '%s'", value ? value : "");
-    return 0;
-}
-
-/* Options with a value; returns 1 if `name` is none of them. */
+/* Options with a value: TARN_OPTION_VALUE, TARN_OPTION_UNKNOWN for none of them,
+ * or -1. */
 static int parse_valued_option(const char *name, const char *value, tarn_cli_options *o,
                                tarn_error *err)
 {
@@ -113,9 +102,12 @@ static int parse_valued_option(const char *name, const char *value, tarn_cli_opt
     if (strcmp(name, "-o") == 0) o->output_path = value;
     else if (strcmp(name, "--diff") == 0) o->diff_path = value;
     else if (strcmp(name, "--points") == 0) o->points_path = value;
-    else if (strcmp(name, "--static-view") == 0) return parse_static_view(value, o, err);
-    else if (strcmp(name, "--backdrop") == 0) return parse_backdrop(value, o, err);
-    else if (strcmp(name, "--name") == 0) {
+    else if (strcmp(name, "--static-view") == 0) {
+        o->static_view_given = 1;
+        return tarn_parse_choice(name, value, TARN_CHOICES(static_views), &o->no_static_view, err);
+    } else if (strcmp(name, "--backdrop") == 0) {
+        return tarn_parse_choice(name, value, TARN_CHOICES(backdrops), &o->backdrop, err);
+    } else if (strcmp(name, "--name") == 0) {
         o->name = value; /* checked by bake, so that "" gets the one-line error "3d" gets */
         return value ? 0 : tarn_fail(err, "--name: expected a C identifier");
     } else if (strcmp(name, "--size") == 0) return parse_size(value, o, err);
@@ -138,6 +130,13 @@ static int parse_flag(const char *name, tarn_cli_options *o)
     else if (strcmp(name, "--math") == 0) o->math = 1;
     else return 1;
     return 0;
+}
+
+/* A tarn_option_reader. */
+static int read_option(void *options, const char *name, const char *value, tarn_error *err)
+{
+    tarn_cli_options *o = options;
+    return parse_flag(name, o) == 0 ? TARN_OPTION_FLAG : parse_valued_option(name, value, o, err);
 }
 
 /* In 64 bits, so that a clock past UINT32_MAX shows instead of wrapping. */
@@ -189,22 +188,9 @@ int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
     o->quality = tarn_quality_default();
     o->argc = argc;
     o->argv = argv;
-    if (argc < 2) return tarn_fail(err, "expected a command: render, compare, accuracy, memory or bake");
-    if (parse_command(argv[1], o, err) != 0) return -1;
+    if (parse_command(argc < 2 ? NULL : argv[1], o, err) != 0) return -1;
     if (tarn_cli_apply_preset(argc - 2, argv + 2, &o->quality, err) != 0) return -1;
-    for (int i = 2; i < argc; i++) {
-        const char *arg = argv[i];
-        if (arg[0] != '-') {
-            if (o->scene_path != NULL) return tarn_fail(err, "unexpected argument '%s'", arg);
-            o->scene_path = arg;
-            continue;
-        }
-        if (parse_flag(arg, o) == 0) continue;
-        int result = parse_valued_option(arg, i + 1 < argc ? argv[i + 1] : NULL, o, err);
-        if (result < 0) return -1;
-        if (result > 0) return tarn_fail(err, "unknown option '%s'", arg);
-        i++;
-    }
+    if (tarn_parse_arguments(argc, argv, &o->scene_path, read_option, o, err) != 0) return -1;
     return check_combination(o, err);
 }
 

@@ -12,10 +12,11 @@
 #include "error.h"
 #include "tarn_render.h"
 
-/* One QUALITY option: 0 when `name` was applied to `quality`, -1 with `err` set for
- * a bad value, 1 when `name` is not a quality option. --quality is only checked
- * here: call tarn_cli_apply_preset on the whole list first, so that a preset is the
- * base the other knobs change wherever they stand. */
+/* One QUALITY option: TARN_OPTION_VALUE (0) when `name` was applied to `quality`,
+ * TARN_OPTION_UNKNOWN (1) when it is not a quality option (option_values.h), -1
+ * with `err` set for a bad value. --quality is only checked here: call
+ * tarn_cli_apply_preset on the whole list first, so that a preset is the base the
+ * other knobs change wherever they stand. */
 int tarn_cli_parse_quality_option(const char *name, const char *value, tarn_quality *quality,
                                   tarn_error *err);
 

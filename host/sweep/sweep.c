@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include "atomic_file.h"
+#include "option_values.h"
 #include "scene_load.h"
 #include "sweep_error.h"
 #include "sweep_grid.h"
@@ -63,15 +64,15 @@ static int parse_option(sweep_options *o, const char *name, const char *value, t
     else if (strcmp(name, "--extremes") == 0) o->extremes_dir = value;
     else if (strcmp(name, "--boards") == 0) return parse_sources(o, value, err);
     else if (strcmp(name, "--grid") == 0) {
-        const char *const grids[] = {"full", "quick", "presets"};
-        for (int g = 0; g < 3; g++)
-            if (strcmp(value, grids[g]) == 0) o->grid = (tarn_sweep_grid)g;
-        if (strcmp(value, grids[o->grid]) != 0)
-            return tarn_fail(err, "--grid: expected full, quick or presets, got '%s'", value);
+        static const tarn_option_choice grids[] = {
+            {"full", TARN_SWEEP_GRID_FULL, NULL}, {"quick", TARN_SWEEP_GRID_QUICK, NULL},
+            {"presets", TARN_SWEEP_GRID_PRESETS, NULL}};
+        int grid;
+        if (tarn_parse_choice(name, value, TARN_CHOICES(grids), &grid, err) != 0) return -1;
+        o->grid = (tarn_sweep_grid)grid;
     } else if (strcmp(name, "--host-cost") == 0) {
-        if (strcmp(value, "callgrind") != 0 && strcmp(value, "none") != 0)
-            return tarn_fail(err, "--host-cost: expected callgrind or none, got '%s'", value);
-        o->host_cost = strcmp(value, "callgrind") == 0;
+        static const tarn_option_choice host_costs[] = {{"callgrind", 1, NULL}, {"none", 0, NULL}};
+        return tarn_parse_choice(name, value, TARN_CHOICES(host_costs), &o->host_cost, err);
     } else return tarn_fail(err, "unknown option '%s'", name);
     return 0;
 }
