@@ -5,46 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* ---- The emulator reached directly: counts its bytes as an SPI link would ---- */
-
-typedef struct {
-    tarn_panel_transport panel;
-    tarn_link_counts *counts;
-    uint32_t hz;
-} counted_link;
-
-static counted_link direct; /* one display at a time uses it */
-
-static int counted_command(void *user, uint8_t command)
-{
-    counted_link *l = user;
-    l->counts->spi_bytes++;
-    l->counts->transfers++;
-    l->counts->link_ns += tarn_link_ns(1, l->hz);
-    return l->panel.command(l->panel.user, command);
-}
-
-static int counted_data(void *user, const uint8_t *bytes, size_t count)
-{
-    counted_link *l = user;
-    l->counts->spi_bytes += count;
-    l->counts->transfers++;
-    l->counts->link_ns += tarn_link_ns(count, l->hz);
-    return l->panel.data(l->panel.user, bytes, count);
-}
-
-static int counted_reset(void *user, int asserted)
-{
-    counted_link *l = user;
-    return l->panel.reset(l->panel.user, asserted);
-}
-
-static int counted_delay(void *user, uint16_t milliseconds)
-{
-    counted_link *l = user;
-    return l->panel.delay_ms(l->panel.user, milliseconds);
-}
-
 /* ---- Lines ---- */
 
 /* A LINE option: CHIP:OFFSET, or (bit-bang) an offset on the display's chip. */
@@ -104,17 +64,54 @@ static int mcp2210_wiring_of(const tarn_show_options *o, tarn_mcp2210_wiring *w,
                : 0;
 }
 
-/* ---- Real links ---- */
+/* ---- Each link, real or on the emulated module ---- */
+
+/* The display sends through `link`: its transport, its counts, its failures. */
+static void send_through(tarn_display *d, tarn_panel_link *link, tarn_panel_transport transport)
+{
+    d->transport = transport;
+    d->counts = &link->counts;
+    d->link_error = &link->error;
+}
+
+/* A backend driving the emulated module pauses on the module's clock. */
+static void pause_with_module(tarn_display *d, tarn_panel_link *link)
+{
+    link->delay = tarn_panel_wiring_delay;
+    link->delay_user = &d->wiring;
+}
+
+/* spidev, attached, with its DC and reset lines in d->lines. */
+static void send_through_spidev(tarn_display *d)
+{
+    d->spidev.dc = &d->lines[LINE_DC];
+    d->spidev.reset = &d->lines[LINE_RESET];
+    send_through(d, &d->spidev.link, tarn_spidev_transport(&d->spidev));
+}
+
+/* The bit-bang on the lines in d->lines. */
+static void send_through_gpio_spi(tarn_display *d)
+{
+    tarn_gpio_spi_init(&d->gpio_spi, &d->lines[LINE_SCK], &d->lines[LINE_MOSI], &d->lines[LINE_CS],
+                       &d->lines[LINE_DC], &d->lines[LINE_RESET]);
+    send_through(d, &d->gpio_spi.link, tarn_gpio_spi_transport(&d->gpio_spi));
+}
+
+/* The MCP2210 protocol over `seam`, set up for `wiring`. */
+static int send_through_mcp2210(tarn_display *d, tarn_mcp2210_seam seam, const tarn_mcp2210_wiring *wiring,
+                                tarn_error *err)
+{
+    if (tarn_mcp2210_setup(&d->mcp2210, seam, wiring, d->name, err) != 0) return -1;
+    send_through(d, &d->mcp2210.link, tarn_mcp2210_transport(&d->mcp2210));
+    d->spi_hz = wiring->bit_rate;
+    return 0;
+}
 
 static int open_spidev(tarn_display *d, const tarn_show_options *o, tarn_error *err)
 {
     if (tarn_spidev_open(&d->spidev, o->target, o->hz, err) != 0) return -1;
     if (request_lines(d, o, NULL, err) != 0) return -1;
-    d->spidev.dc = &d->lines[LINE_DC];
-    d->spidev.reset = &d->lines[LINE_RESET];
-    d->transport = tarn_spidev_transport(&d->spidev);
-    d->counts = &d->spidev.counts;
-    d->link_error = &d->spidev.error;
+    send_through_spidev(d);
     d->spi_hz = o->hz;
     return 0;
 }
@@ -122,11 +119,7 @@ static int open_spidev(tarn_display *d, const tarn_show_options *o, tarn_error *
 static int open_gpio_spi(tarn_display *d, const tarn_show_options *o, tarn_error *err)
 {
     if (request_lines(d, o, o->target, err) != 0) return -1;
-    tarn_gpio_spi_init(&d->gpio_spi, &d->lines[LINE_SCK], &d->lines[LINE_MOSI], &d->lines[LINE_CS],
-                       &d->lines[LINE_DC], &d->lines[LINE_RESET]);
-    d->transport = tarn_gpio_spi_transport(&d->gpio_spi);
-    d->counts = &d->gpio_spi.counts;
-    d->link_error = &d->gpio_spi.error;
+    send_through_gpio_spi(d);
     return 0;
 }
 
@@ -135,18 +128,53 @@ static int open_mcp2210(tarn_display *d, const tarn_show_options *o, tarn_error 
     tarn_mcp2210_wiring wiring;
     tarn_mcp2210_seam seam;
     snprintf(d->name, sizeof d->name, "%s", o->display_text);
-    if (mcp2210_wiring_of(o, &wiring, err) != 0 || tarn_mcp2210_usb_open(o->target, &d->usb, &seam, err) != 0 ||
-        tarn_mcp2210_setup(&d->mcp2210, seam, &wiring, d->name, err) != 0)
+    if (mcp2210_wiring_of(o, &wiring, err) != 0 || tarn_mcp2210_usb_open(o->target, &d->usb, &seam, err) != 0)
         return -1;
-    d->transport = tarn_mcp2210_transport(&d->mcp2210);
-    d->counts = &d->mcp2210.counts;
-    d->link_error = &d->mcp2210.error;
-    d->spi_hz = wiring.bit_rate;
+    return send_through_mcp2210(d, seam, &wiring, err);
+}
+
+/* The emulated module behind the spidev backend: its ioctl, its lines. */
+static int emulate_spidev(tarn_display *d, const tarn_show_options *o, tarn_error *err)
+{
+    if (tarn_spidev_attach(&d->spidev, "emulated", 0, tarn_panel_wiring_spidev_ioctl, &d->wiring, o->hz, err) != 0)
+        return -1;
+    d->spidev.chunk_bytes = d->wiring.spidev_bufsiz;
+    d->lines[LINE_DC] = tarn_panel_wiring_line(&d->wiring, TARN_WIRE_DC);
+    d->lines[LINE_RESET] = tarn_panel_wiring_line(&d->wiring, TARN_WIRE_RESET);
+    send_through_spidev(d);
+    pause_with_module(d, &d->spidev.link);
     return 0;
 }
 
-/* ---- The emulator, directly or through a backend ---- */
+/* The emulated module's pins behind the bit-bang; it has no backlight line. */
+static void emulate_gpio_spi(tarn_display *d)
+{
+    static const tarn_wire wires[LINE_COUNT] = {TARN_WIRE_DC, TARN_WIRE_RESET, TARN_WIRE_DC, /* unused */
+                                                TARN_WIRE_SCK, TARN_WIRE_MOSI, TARN_WIRE_CS};
+    for (int i = 0; i < LINE_COUNT; i++) d->lines[i] = tarn_panel_wiring_line(&d->wiring, wires[i]);
+    memset(&d->lines[LINE_BACKLIGHT], 0, sizeof d->lines[LINE_BACKLIGHT]); /* the module's is always lit */
+    send_through_gpio_spi(d);
+    pause_with_module(d, &d->gpio_spi.link);
+    d->spi_hz = 0;
+}
 
+/* The MCP2210 emulator with the module on its SPI bus and GP pins. */
+static int emulate_mcp2210(tarn_display *d, const tarn_show_options *o, tarn_error *err)
+{
+    tarn_mcp2210_wiring wiring;
+    if (mcp2210_wiring_of(o, &wiring, err) != 0) return -1;
+    tarn_mcp2210_emulator *e = &d->mcp2210_emulator;
+    tarn_mcp2210_emulator_init(e, &d->wiring);
+    e->gp_wire[wiring.cs] = TARN_WIRE_CS;
+    e->gp_wire[wiring.dc] = TARN_WIRE_DC;
+    e->gp_wire[wiring.reset] = TARN_WIRE_RESET;
+    snprintf(d->name, sizeof d->name, "mcp2210 (emulated)");
+    if (send_through_mcp2210(d, tarn_mcp2210_emulator_seam(e), &wiring, err) != 0) return -1;
+    pause_with_module(d, &d->mcp2210.link);
+    return 0;
+}
+
+/* The emulator, directly or through a backend's own code (--via). */
 static int open_emulated(tarn_display *d, const tarn_show_options *o, tarn_error *err)
 {
     d->emulator = malloc(sizeof *d->emulator);
@@ -156,57 +184,12 @@ static int open_emulated(tarn_display *d, const tarn_show_options *o, tarn_error
     d->spi_hz = o->hz;
     switch (d->link) {
     case TARN_DISPLAY_EMULATOR:
-        direct = (counted_link){d->wiring.panel, &d->direct_counts, o->hz};
-        d->transport = (tarn_panel_transport){&direct, counted_command, counted_data, counted_reset, counted_delay};
-        d->counts = &d->direct_counts;
+        tarn_counted_link_init(&d->direct, d->wiring.panel, o->hz);
+        send_through(d, &d->direct.link, tarn_panel_link_transport(&d->direct.link));
         return 0;
-    case TARN_DISPLAY_SPIDEV:
-        if (tarn_spidev_attach(&d->spidev, "emulated", 0, tarn_panel_wiring_spidev_ioctl, &d->wiring, o->hz, err) != 0)
-            return -1;
-        d->spidev.chunk_bytes = d->wiring.spidev_bufsiz;
-        d->lines[LINE_DC] = tarn_panel_wiring_line(&d->wiring, TARN_WIRE_DC);
-        d->lines[LINE_RESET] = tarn_panel_wiring_line(&d->wiring, TARN_WIRE_RESET);
-        d->spidev.dc = &d->lines[LINE_DC];
-        d->spidev.reset = &d->lines[LINE_RESET];
-        d->spidev.delay = tarn_panel_wiring_delay;
-        d->spidev.delay_user = &d->wiring;
-        d->transport = tarn_spidev_transport(&d->spidev);
-        d->counts = &d->spidev.counts;
-        d->link_error = &d->spidev.error;
-        return 0;
-    case TARN_DISPLAY_GPIO_SPI: {
-        static const tarn_wire wires[LINE_COUNT] = {TARN_WIRE_DC, TARN_WIRE_RESET, TARN_WIRE_DC, /* unused */
-                                                    TARN_WIRE_SCK, TARN_WIRE_MOSI, TARN_WIRE_CS};
-        for (int i = 0; i < LINE_COUNT; i++) d->lines[i] = tarn_panel_wiring_line(&d->wiring, wires[i]);
-        memset(&d->lines[LINE_BACKLIGHT], 0, sizeof d->lines[LINE_BACKLIGHT]); /* the module's is always lit */
-        tarn_gpio_spi_init(&d->gpio_spi, &d->lines[LINE_SCK], &d->lines[LINE_MOSI], &d->lines[LINE_CS],
-                           &d->lines[LINE_DC], &d->lines[LINE_RESET]);
-        d->gpio_spi.delay = tarn_panel_wiring_delay;
-        d->gpio_spi.delay_user = &d->wiring;
-        d->transport = tarn_gpio_spi_transport(&d->gpio_spi);
-        d->counts = &d->gpio_spi.counts;
-        d->link_error = &d->gpio_spi.error;
-        d->spi_hz = 0;
-        return 0;
-    }
-    case TARN_DISPLAY_MCP2210: {
-        tarn_mcp2210_wiring wiring;
-        if (mcp2210_wiring_of(o, &wiring, err) != 0) return -1;
-        tarn_mcp2210_emulator *e = &d->mcp2210_emulator;
-        tarn_mcp2210_emulator_init(e, &d->wiring);
-        e->gp_wire[wiring.cs] = TARN_WIRE_CS;
-        e->gp_wire[wiring.dc] = TARN_WIRE_DC;
-        e->gp_wire[wiring.reset] = TARN_WIRE_RESET;
-        snprintf(d->name, sizeof d->name, "mcp2210 (emulated)");
-        if (tarn_mcp2210_setup(&d->mcp2210, tarn_mcp2210_emulator_seam(e), &wiring, d->name, err) != 0) return -1;
-        d->mcp2210.delay = tarn_panel_wiring_delay;
-        d->mcp2210.delay_user = &d->wiring;
-        d->transport = tarn_mcp2210_transport(&d->mcp2210);
-        d->counts = &d->mcp2210.counts;
-        d->link_error = &d->mcp2210.error;
-        d->spi_hz = wiring.bit_rate;
-        return 0;
-    }
+    case TARN_DISPLAY_SPIDEV: return emulate_spidev(d, o, err);
+    case TARN_DISPLAY_GPIO_SPI: emulate_gpio_spi(d); return 0;
+    case TARN_DISPLAY_MCP2210: return emulate_mcp2210(d, o, err);
     }
     return tarn_fail(err, "unknown link");
 }

@@ -18,6 +18,7 @@
 #include "mcp2210_emulator.h"
 #include "mcp2210_hidapi.h"
 #include "panel_emulator.h"
+#include "panel_link.h"
 #include "panel_wiring.h"
 #include "show_options.h"
 
@@ -41,7 +42,7 @@ typedef struct {
     tarn_panel_emulator *emulator;   /* when emulated */
     tarn_panel_wiring wiring;
     tarn_mcp2210_emulator mcp2210_emulator;
-    tarn_link_counts direct_counts;  /* emulator reached directly: bytes at spi_hz */
+    tarn_counted_link direct;        /* emulator reached directly: bytes at spi_hz */
 } tarn_display;
 
 /* 0, or -1 with one line in `err` and nothing left open. */

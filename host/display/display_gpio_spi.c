@@ -1,17 +1,11 @@
 /* display_gpio_spi.c: the bit-banged SPI backend (display_gpio_spi.h). */
 #include "display_gpio_spi.h"
 
-void tarn_gpio_spi_init(tarn_gpio_spi *spi, tarn_gpio_line *sck, tarn_gpio_line *mosi, tarn_gpio_line *cs,
-                        tarn_gpio_line *dc, tarn_gpio_line *reset)
-{
-    tarn_gpio_spi s = {sck, mosi, cs, dc, reset, tarn_sleep_ms, NULL, -1, -1, {0, 0, 0, 0}, {{0}}};
-    *spi = s;
-}
-
 static int drive(tarn_gpio_spi *spi, tarn_gpio_line *line, int level)
 {
-    spi->counts.transfers++;
-    if (tarn_gpio_line_set(line, level) != 0) return tarn_fail(&spi->error, "gpio-spi: cannot drive %s", line->name);
+    spi->link.counts.transfers++;
+    if (tarn_gpio_line_set(line, level) != 0)
+        return tarn_fail(&spi->link.error, "gpio-spi: cannot drive %s", line->name);
     return 0;
 }
 
@@ -25,14 +19,15 @@ static int shift_out(tarn_gpio_spi *spi, uint8_t byte)
         }
         if (drive(spi, spi->sck, 1) != 0 || drive(spi, spi->sck, 0) != 0) return -1;
     }
-    spi->counts.spi_bytes++;
+    spi->link.counts.spi_bytes++;
     return 0;
 }
 
 /* CS framing per call: selected while the bytes go, released after, so a panel
  * that lost a bit finds the byte boundary again at the next call. */
-static int send_bytes(tarn_gpio_spi *spi, int dc, const uint8_t *bytes, size_t count)
+static int send_bytes(tarn_panel_link *link, int dc, const uint8_t *bytes, size_t count)
 {
+    tarn_gpio_spi *spi = (tarn_gpio_spi *)link; /* the link is its first member */
     if (spi->dc_level != dc) {
         if (drive(spi, spi->dc, dc) != 0) return -1;
         spi->dc_level = dc;
@@ -43,31 +38,21 @@ static int send_bytes(tarn_gpio_spi *spi, int dc, const uint8_t *bytes, size_t c
     return drive(spi, spi->cs, 1);
 }
 
-static int gpio_spi_command(void *user, uint8_t command)
+static int gpio_spi_reset(tarn_panel_link *link, int asserted)
 {
-    return send_bytes(user, 0, &command, 1);
-}
-
-static int gpio_spi_data(void *user, const uint8_t *bytes, size_t count)
-{
-    return send_bytes(user, 1, bytes, count);
-}
-
-static int gpio_spi_reset(void *user, int asserted)
-{
-    tarn_gpio_spi *spi = user;
+    tarn_gpio_spi *spi = (tarn_gpio_spi *)link;
     return drive(spi, spi->reset, asserted ? 0 : 1);
 }
 
-static int gpio_spi_delay(void *user, uint16_t milliseconds)
+void tarn_gpio_spi_init(tarn_gpio_spi *spi, tarn_gpio_line *sck, tarn_gpio_line *mosi, tarn_gpio_line *cs,
+                        tarn_gpio_line *dc, tarn_gpio_line *reset)
 {
-    tarn_gpio_spi *spi = user;
-    return spi->delay(spi->delay_user, milliseconds);
+    tarn_gpio_spi s = {tarn_panel_link_make(send_bytes), sck, mosi, cs, dc, reset, -1, -1};
+    *spi = s;
 }
 
 tarn_panel_transport tarn_gpio_spi_transport(tarn_gpio_spi *spi)
 {
-    tarn_panel_transport t = {spi, gpio_spi_command, gpio_spi_data,
-                              spi->reset && spi->reset->set ? gpio_spi_reset : NULL, gpio_spi_delay};
-    return t;
+    spi->link.reset = spi->reset && spi->reset->set ? gpio_spi_reset : NULL;
+    return tarn_panel_link_transport(&spi->link);
 }

@@ -6,16 +6,15 @@
 #define TARN_HOST_DISPLAY_GPIO_SPI_H
 
 #include "gpio_lines.h"
-#include "link_counts.h"
+#include "panel_link.h"
 #include "tarn_panel.h"
 
 typedef struct {
+    tarn_panel_link link;                         /* first (panel_link.h); its counts'
+                                                     transfers are line sets, and no
+                                                     link_ns is modelled */
     tarn_gpio_line *sck, *mosi, *cs, *dc, *reset; /* reset may hold no line */
-    tarn_delay_fn delay;
-    void *delay_user;
     int mosi_level, dc_level;                     /* -1: not driven yet */
-    tarn_link_counts counts;                      /* transfers = line sets; no link_ns model */
-    tarn_error error;                             /* why the last call failed */
 } tarn_gpio_spi;
 
 /* Lines already requested by the caller; SCK low, CS high. */

@@ -30,10 +30,13 @@ static int real_ioctl(void *user, int fd, unsigned long request, void *arg)
     return ioctl(fd, request, arg);
 }
 
+static int spidev_send(tarn_panel_link *link, int dc, const uint8_t *bytes, size_t count);
+
 int tarn_spidev_attach(tarn_spidev *spi, const char *path, int fd, tarn_spidev_ioctl_fn ioctl_fn,
                        void *ioctl_user, uint32_t pixel_hz, tarn_error *err)
 {
     memset(spi, 0, sizeof *spi);
+    spi->link = tarn_panel_link_make(spidev_send);
     spi->fd = fd;
     spi->ioctl = ioctl_fn;
     spi->ioctl_user = ioctl_user;
@@ -41,7 +44,6 @@ int tarn_spidev_attach(tarn_spidev *spi, const char *path, int fd, tarn_spidev_i
     spi->command_hz = pixel_hz < COMMAND_HZ_MAX ? pixel_hz : COMMAND_HZ_MAX;
     spi->chunk_bytes = tarn_spidev_bufsiz();
     spi->dc_level = -1;
-    spi->delay = tarn_sleep_ms;
     snprintf(spi->path, sizeof spi->path, "%s", path);
     uint8_t mode = SPI_MODE_0, bits = 8;
     uint32_t hz = pixel_hz;
@@ -87,12 +89,12 @@ static int transfer(tarn_spidev *spi, const uint8_t *bytes, size_t count, uint32
     t.bits_per_word = 8;
     if (spi->ioctl(spi->ioctl_user, spi->fd, SPI_IOC_MESSAGE(1), &t) < 0) {
         int e = errno;
-        return tarn_fail(&spi->error, "spidev:%s: a transfer of %zu bytes failed: %s (was the device removed?)",
+        return tarn_fail(&spi->link.error, "spidev:%s: a transfer of %zu bytes failed: %s (was the device removed?)",
                          spi->path, count, strerror(e));
     }
-    spi->counts.spi_bytes += count;
-    spi->counts.transfers++;
-    spi->counts.link_ns += tarn_link_ns(count, hz);
+    spi->link.counts.spi_bytes += count;
+    spi->link.counts.transfers++;
+    spi->link.counts.link_ns += tarn_link_ns(count, hz);
     return 0;
 }
 
@@ -100,22 +102,16 @@ static int set_dc(tarn_spidev *spi, int level)
 {
     if (spi->dc_level == level) return 0;
     if (tarn_gpio_line_set(spi->dc, level) != 0)
-        return tarn_fail(&spi->error, "spidev:%s: cannot drive %s", spi->path, spi->dc->name);
+        return tarn_fail(&spi->link.error, "spidev:%s: cannot drive %s", spi->path, spi->dc->name);
     spi->dc_level = level;
     return 0;
 }
 
-static int spidev_command(void *user, uint8_t command)
+static int spidev_send(tarn_panel_link *link, int dc, const uint8_t *bytes, size_t count)
 {
-    tarn_spidev *spi = user;
-    return set_dc(spi, 0) == 0 && transfer(spi, &command, 1, spi->command_hz) == 0 ? 0 : -1;
-}
-
-static int spidev_data(void *user, const uint8_t *bytes, size_t count)
-{
-    tarn_spidev *spi = user;
-    if (set_dc(spi, 1) != 0) return -1;
-    uint32_t hz = count <= TARN_SPIDEV_PARAMETER_BYTES_MAX ? spi->command_hz : spi->pixel_hz;
+    tarn_spidev *spi = (tarn_spidev *)link; /* the link is its first member */
+    if (set_dc(spi, dc) != 0) return -1;
+    uint32_t hz = !dc || count <= TARN_SPIDEV_PARAMETER_BYTES_MAX ? spi->command_hz : spi->pixel_hz;
     for (size_t done = 0; done < count;) {
         size_t piece = count - done < spi->chunk_bytes ? count - done : spi->chunk_bytes;
         if (transfer(spi, bytes + done, piece, hz) != 0) return -1;
@@ -124,25 +120,18 @@ static int spidev_data(void *user, const uint8_t *bytes, size_t count)
     return 0;
 }
 
-static int spidev_reset(void *user, int asserted)
+static int spidev_reset(tarn_panel_link *link, int asserted)
 {
-    tarn_spidev *spi = user;
+    tarn_spidev *spi = (tarn_spidev *)link;
     if (tarn_gpio_line_set(spi->reset, asserted ? 0 : 1) != 0)
-        return tarn_fail(&spi->error, "spidev:%s: cannot drive %s", spi->path, spi->reset->name);
+        return tarn_fail(&link->error, "spidev:%s: cannot drive %s", spi->path, spi->reset->name);
     return 0;
-}
-
-static int spidev_delay(void *user, uint16_t milliseconds)
-{
-    tarn_spidev *spi = user;
-    return spi->delay(spi->delay_user, milliseconds);
 }
 
 tarn_panel_transport tarn_spidev_transport(tarn_spidev *spi)
 {
-    tarn_panel_transport t = {spi, spidev_command, spidev_data,
-                              spi->reset && spi->reset->set ? spidev_reset : NULL, spidev_delay};
-    return t;
+    spi->link.reset = spi->reset && spi->reset->set ? spidev_reset : NULL;
+    return tarn_panel_link_transport(&spi->link);
 }
 
 void tarn_spidev_close(tarn_spidev *spi)

@@ -13,7 +13,7 @@
 #include <stdint.h>
 #include "error.h"
 #include "gpio_lines.h"
-#include "link_counts.h"
+#include "panel_link.h"
 #include "tarn_panel.h"
 
 typedef int (*tarn_spidev_ioctl_fn)(void *user, int fd, unsigned long request, void *arg);
@@ -22,18 +22,15 @@ typedef int (*tarn_spidev_ioctl_fn)(void *user, int fd, unsigned long request, v
 #define TARN_SPIDEV_PARAMETER_BYTES_MAX 16u /* data calls this short are parameters: command clock */
 
 typedef struct {
+    tarn_panel_link link;         /* first (panel_link.h): counts, error, delay */
     int fd;                       /* -1 when not open */
     tarn_spidev_ioctl_fn ioctl;
     void *ioctl_user;
     tarn_gpio_line *dc, *reset;   /* reset may hold no line (set == NULL) */
-    tarn_delay_fn delay;
-    void *delay_user;
     uint32_t pixel_hz, command_hz;
     size_t chunk_bytes;           /* the driver's bufsiz */
     int dc_level;                 /* -1 before the first transfer */
     char path[128];
-    tarn_link_counts counts;
-    tarn_error error;             /* why the last transport call failed */
 } tarn_spidev;
 
 /* The transfer limit from /sys/module/spidev/parameters/bufsiz, or the default. */
@@ -49,7 +46,8 @@ int tarn_spidev_attach(tarn_spidev *spi, const char *path, int fd, tarn_spidev_i
 
 /* The transport: command() drives DC low and sends one byte at command_hz, data()
  * drives DC high and sends in chunk_bytes pieces, reset() drives the reset line
- * (asserted = low), delay_ms() calls `delay`. The caller sets dc, reset, delay. */
+ * (asserted = low), delay_ms() calls link.delay. The caller sets dc, reset and, to
+ * replace the sleep, link.delay. */
 tarn_panel_transport tarn_spidev_transport(tarn_spidev *spi);
 
 /* Closes the device (real fds only); safe to call twice. */

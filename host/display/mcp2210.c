@@ -13,24 +13,24 @@ static void put_u16_le(uint8_t *out, uint32_t value)
 }
 
 /* One command report and its response; `reply` gets the response. 0, or -1 with
- * bridge->error set when the bridge did not answer or answered another command. */
+ * bridge->link.error set when the bridge did not answer or answered another command. */
 static int exchange(tarn_mcp2210 *b, const uint8_t command[TARN_MCP2210_REPORT_BYTES],
                     uint8_t reply[TARN_MCP2210_REPORT_BYTES])
 {
-    b->counts.transfers++;
-    b->counts.link_ns += TARN_MCP2210_EXCHANGE_NS;
+    b->link.counts.transfers++;
+    b->link.counts.link_ns += TARN_MCP2210_EXCHANGE_NS;
     if (b->seam.write(b->seam.user, command) != 0)
-        return tarn_fail(&b->error, "%s: cannot send command 0x%02X: the bridge is gone (unplugged? check the USB cable and lsusb for 04d8:00de)",
+        return tarn_fail(&b->link.error, "%s: cannot send command 0x%02X: the bridge is gone (unplugged? check the USB cable and lsusb for 04d8:00de)",
                          b->name, command[0]);
     int got = b->seam.read(b->seam.user, reply, TARN_MCP2210_TIMEOUT_MS);
     if (got < 0)
-        return tarn_fail(&b->error, "%s: no response to command 0x%02X: the bridge is gone (unplugged? check the USB cable and lsusb for 04d8:00de)",
+        return tarn_fail(&b->link.error, "%s: no response to command 0x%02X: the bridge is gone (unplugged? check the USB cable and lsusb for 04d8:00de)",
                          b->name, command[0]);
     if (got == 0)
-        return tarn_fail(&b->error, "%s: no response to command 0x%02X within %d ms (check the bridge; replug it)",
+        return tarn_fail(&b->link.error, "%s: no response to command 0x%02X within %d ms (check the bridge; replug it)",
                          b->name, command[0], TARN_MCP2210_TIMEOUT_MS);
     if (reply[0] != command[0])
-        return tarn_fail(&b->error, "%s: response 0x%02X to command 0x%02X (expected its echo; is this an MCP2210?)",
+        return tarn_fail(&b->link.error, "%s: response 0x%02X to command 0x%02X (expected its echo; is this an MCP2210?)",
                          b->name, reply[0], command[0]);
     return 0;
 }
@@ -38,11 +38,11 @@ static int exchange(tarn_mcp2210 *b, const uint8_t command[TARN_MCP2210_REPORT_B
 static int status_error(tarn_mcp2210 *b, uint8_t command, uint8_t status)
 {
     if (status == TARN_MCP2210_BUS_NOT_AVAILABLE)
-        return tarn_fail(&b->error, "%s: command 0x%02X: the SPI bus is owned by an external master (status 0xF7)",
+        return tarn_fail(&b->link.error, "%s: command 0x%02X: the SPI bus is owned by an external master (status 0xF7)",
                          b->name, command);
     if (status == TARN_MCP2210_UNKNOWN_COMMAND)
-        return tarn_fail(&b->error, "%s: command 0x%02X: unknown to the bridge (status 0xF9)", b->name, command);
-    return tarn_fail(&b->error, "%s: command 0x%02X failed with status 0x%02X", b->name, command, status);
+        return tarn_fail(&b->link.error, "%s: command 0x%02X: unknown to the bridge (status 0xF9)", b->name, command);
+    return tarn_fail(&b->link.error, "%s: command 0x%02X failed with status 0x%02X", b->name, command, status);
 }
 
 /* A settings command that must complete with status 0x00. */
@@ -92,15 +92,15 @@ static int send_chunk(tarn_mcp2210 *b, const uint8_t *bytes, size_t count)
     for (unsigned attempt = 0; attempt < TARN_MCP2210_BUSY_RETRIES; attempt++) {
         if (exchange(b, command, reply) != 0) return -1;
         if (reply[1] == TARN_MCP2210_BUSY) {
-            b->counts.busy_replies++;
+            b->link.counts.busy_replies++;
             continue;
         }
         if (reply[1] != TARN_MCP2210_OK) return status_error(b, command[0], reply[1]);
-        b->counts.spi_bytes += count;
-        b->counts.link_ns += tarn_link_ns(count, b->wiring.bit_rate);
+        b->link.counts.spi_bytes += count;
+        b->link.counts.link_ns += tarn_link_ns(count, b->wiring.bit_rate);
         return reply[3];
     }
-    return tarn_fail(&b->error, "%s: the bridge stayed busy (0xF8) for %u tries of one chunk (replug it)",
+    return tarn_fail(&b->link.error, "%s: the bridge stayed busy (0xF8) for %u tries of one chunk (replug it)",
                      b->name, TARN_MCP2210_BUSY_RETRIES);
 }
 
@@ -118,7 +118,7 @@ static int transaction(tarn_mcp2210 *b, const uint8_t *bytes, size_t count)
     /* the response to the last chunk may come before the engine finished */
     for (unsigned poll = 0; engine != TARN_MCP2210_ENGINE_FINISHED; poll++) {
         if (poll == TARN_MCP2210_BUSY_RETRIES)
-            return tarn_fail(&b->error, "%s: the SPI transaction of %zu bytes never finished (engine status 0x%02X)",
+            return tarn_fail(&b->link.error, "%s: the SPI transaction of %zu bytes never finished (engine status 0x%02X)",
                              b->name, count, (unsigned)engine);
         engine = send_chunk(b, NULL, 0);
         if (engine < 0) return -1;
@@ -126,8 +126,9 @@ static int transaction(tarn_mcp2210 *b, const uint8_t *bytes, size_t count)
     return 0;
 }
 
-static int spi_bytes(tarn_mcp2210 *b, int dc, const uint8_t *bytes, size_t count)
+static int spi_bytes(tarn_panel_link *link, int dc, const uint8_t *bytes, size_t count)
 {
+    tarn_mcp2210 *b = (tarn_mcp2210 *)link; /* the link is its first member */
     if (set_gpio(b, b->wiring.dc, dc) != 0) return -1;
     for (size_t done = 0; done < count;) {
         size_t piece = count - done < TARN_MCP2210_TRANSACTION_MAX ? count - done : TARN_MCP2210_TRANSACTION_MAX;
@@ -137,33 +138,16 @@ static int spi_bytes(tarn_mcp2210 *b, int dc, const uint8_t *bytes, size_t count
     return 0;
 }
 
-static int bridge_command(void *user, uint8_t command)
+static int bridge_reset(tarn_panel_link *link, int asserted)
 {
-    return spi_bytes(user, 0, &command, 1);
-}
-
-static int bridge_data(void *user, const uint8_t *bytes, size_t count)
-{
-    return spi_bytes(user, 1, bytes, count);
-}
-
-static int bridge_reset(void *user, int asserted)
-{
-    tarn_mcp2210 *b = user;
+    tarn_mcp2210 *b = (tarn_mcp2210 *)link;
     return set_gpio(b, b->wiring.reset, !asserted);
-}
-
-static int bridge_delay(void *user, uint16_t milliseconds)
-{
-    tarn_mcp2210 *b = user;
-    return b->delay(b->delay_user, milliseconds);
 }
 
 tarn_panel_transport tarn_mcp2210_transport(tarn_mcp2210 *b)
 {
-    tarn_panel_transport t = {b, bridge_command, bridge_data,
-                              b->wiring.reset < TARN_MCP2210_GP_PINS ? bridge_reset : NULL, bridge_delay};
-    return t;
+    b->link.reset = b->wiring.reset < TARN_MCP2210_GP_PINS ? bridge_reset : NULL;
+    return tarn_panel_link_transport(&b->link);
 }
 
 /* 0x21 (3.2.4): GP designations at 4-12 (0x00 GPIO, 0x01 chip select), default
@@ -200,21 +184,21 @@ int tarn_mcp2210_setup(tarn_mcp2210 *b, tarn_mcp2210_seam seam, const tarn_mcp22
                        const char *name, tarn_error *err)
 {
     memset(b, 0, sizeof *b);
+    b->link = tarn_panel_link_make(spi_bytes);
     b->seam = seam;
     b->wiring = *wiring;
     b->name = name;
-    b->delay = tarn_sleep_ms;
     if (check_wiring(wiring, name, err) != 0) return -1;
     /* 0x10 (3.6.1): byte 3 is the bus owner, 0x02 an external master */
     uint8_t command[TARN_MCP2210_REPORT_BYTES] = {TARN_MCP2210_GET_STATUS};
     uint8_t reply[TARN_MCP2210_REPORT_BYTES];
     int failed = exchange(b, command, reply) != 0 ||
                  (reply[3] == 0x02 &&
-                  tarn_fail(&b->error, "%s: the SPI bus is owned by an external master (check what else drives it)",
+                  tarn_fail(&b->link.error, "%s: the SPI bus is owned by an external master (check what else drives it)",
                             name)) ||
                  set_chip_settings(b) != 0;
     if (failed) {
-        *err = b->error;
+        *err = b->link.error;
         return -1;
     }
     return 0;

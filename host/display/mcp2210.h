@@ -23,7 +23,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "error.h"
-#include "link_counts.h"
+#include "panel_link.h"
 #include "tarn_panel.h"
 
 #define TARN_MCP2210_REPORT_BYTES 64u
@@ -77,15 +77,13 @@ typedef struct {
 #define TARN_MCP2210_EXCHANGE_NS 1000000u
 
 typedef struct {
+    tarn_panel_link link;     /* first (panel_link.h); its counts' transfers are
+                                 command reports */
     tarn_mcp2210_seam seam;
     tarn_mcp2210_wiring wiring;
     const char *name;         /* "mcp2210" or "mcp2210:SERIAL", for messages */
     uint16_t gpio_values;     /* the outputs as last set */
     uint16_t transaction_bytes; /* bytes per SPI transaction as last set; 0: not set */
-    tarn_delay_fn delay;
-    void *delay_user;
-    tarn_link_counts counts;  /* transfers = command reports */
-    tarn_error error;         /* why the last call failed */
 } tarn_mcp2210;
 
 /* Checks the bridge answers and owns its SPI bus, then sets the chip and SPI
@@ -94,7 +92,7 @@ int tarn_mcp2210_setup(tarn_mcp2210 *bridge, tarn_mcp2210_seam seam, const tarn_
                        const char *name, tarn_error *err);
 
 /* command() and data() as SPI transactions with DC set through GPIO; reset() when
- * the wiring has a reset pin; delay_ms() calls `delay` (a sleep unless replaced). */
+ * the wiring has a reset pin; delay_ms() calls link.delay (a sleep unless replaced). */
 tarn_panel_transport tarn_mcp2210_transport(tarn_mcp2210 *bridge);
 
 #endif
