@@ -1,9 +1,10 @@
 /* bake.c: the scene as C source. Three steps:
  *  1. types:  a table per struct of core/tarn_scene.h and tarn_water.h says what each
- *             member is, so that one printer writes any of them, and one layout
- *             rule sizes them for a 32-bit target (checked against this host's own
- *             layout before every bake, so a member added to a core struct and not
- *             here stops the baker instead of silently baking as 0);
+ *             member is (one STRUCT_TYPE each, an entry a member), so that one
+ *             printer writes any of them, and one layout rule sizes them for a
+ *             32-bit target (checked against this host's own layout before every
+ *             bake, so a member added to a core struct and not here stops the
+ *             baker instead of silently baking as 0);
  *  2. plan:   the list of objects to define, in an order where each is defined
  *             before its first use, and where each pointer of the loaded scene goes;
  *  3. emit:   the plan written out through atomic_file.h. */
@@ -53,10 +54,23 @@ struct bake_type {
     int one_line;             /* V_STRUCT: positional on one line, {1, 2, 3} */
 };
 
+enum { BLOCK = 0, ONE_LINE = 1 }; /* how a struct is written: designated members, or {1, 2, 3} */
+
 #define SCALAR(name, kind, c_type) { name, kind, sizeof(c_type), NULL, 0, 0 }
 #define FIELD(s, member, type) { #member, offsetof(s, member), &type }
-#define STRUCT(s, fields, one_line) \
-    { #s, V_STRUCT, sizeof(s), fields, sizeof fields / sizeof fields[0], one_line }
+#define COUNT(array) (sizeof array / sizeof array[0])
+
+/* A struct's table and its type in one declaration: the type T of struct s, written
+ * as a BLOCK or on ONE_LINE, every member FIELD(s, member, type) in declaration
+ * order (table_matches_host holds the list to the compiler's layout). */
+#define STRUCT_TYPE(T, s, layout, ...)                    \
+    static const bake_field T##_fields[] = {__VA_ARGS__}; \
+    static const bake_type T = { #s, V_STRUCT, sizeof(s), T##_fields, COUNT(T##_fields), layout }
+
+/* element_c[3], written positionally like a ONE_LINE struct. */
+#define TRIPLE_TYPE(T, element_c, element)                                                    \
+    STRUCT_TYPE(T, element_c[3], ONE_LINE, { "0", 0, &element }, { "1", sizeof(element_c), &element }, \
+                { "2", 2 * sizeof(element_c), &element })
 
 static const bake_type T_U8 = SCALAR("uint8_t", V_U8, uint8_t);
 static const bake_type T_U16 = SCALAR("uint16_t", V_U16, uint16_t);
@@ -70,162 +84,112 @@ static const bake_type T_FEATURES = SCALAR("uint32_t", V_FEATURES, uint32_t);
 static const bake_type T_REF = SCALAR("const void *", V_REF, const void *);
 static const bake_type T_MATRIX = SCALAR("tarn_q16[3][3]", V_MATRIX, tarn_q16[3][3]);
 
-static const bake_field vec3_fields[] = {
-    FIELD(tarn_vec3, x, T_Q16), FIELD(tarn_vec3, y, T_Q16), FIELD(tarn_vec3, z, T_Q16)};
-static const bake_type T_VEC3 = STRUCT(tarn_vec3, vec3_fields, 1);
+TRIPLE_TYPE(T_U16_TRIPLE, uint16_t, T_U16);
+TRIPLE_TYPE(T_I32_TRIPLE, int32_t, T_I32);
 
-static const bake_field uv_fields[] = {FIELD(tarn_uv, u, T_Q16), FIELD(tarn_uv, v, T_Q16)};
-static const bake_type T_UV = STRUCT(tarn_uv, uv_fields, 1);
-
-static const bake_field cluster_fields[] = {
-    FIELD(tarn_cluster, centre, T_VEC3), FIELD(tarn_cluster, radius, T_Q16),
-    FIELD(tarn_cluster, first_triangle, T_U16), FIELD(tarn_cluster, triangle_count, T_U16)};
-static const bake_type T_CLUSTER = STRUCT(tarn_cluster, cluster_fields, 1);
-
-static const bake_field texture_fields[] = {
-    FIELD(tarn_texture, width, T_U16), FIELD(tarn_texture, height, T_U16),
-    FIELD(tarn_texture, rgb, T_REF)};
-static const bake_type T_TEXTURE = STRUCT(tarn_texture, texture_fields, 0);
-
-static const bake_field mesh_fields[] = {
-    FIELD(tarn_mesh, positions, T_REF),     FIELD(tarn_mesh, normals, T_REF),
-    FIELD(tarn_mesh, uvs, T_REF),           FIELD(tarn_mesh, colours, T_REF),
-    FIELD(tarn_mesh, indices, T_REF),       FIELD(tarn_mesh, vertex_count, T_U16),
-    FIELD(tarn_mesh, triangle_count, T_U16), FIELD(tarn_mesh, clusters, T_REF),
-    FIELD(tarn_mesh, cluster_count, T_U16)};
-static const bake_type T_MESH = STRUCT(tarn_mesh, mesh_fields, 0);
-
-static const bake_field panning_fields[] = {
-    FIELD(tarn_panning, scale, T_Q16), FIELD(tarn_panning, speed_u, T_Q16),
-    FIELD(tarn_panning, speed_v, T_Q16)};
-static const bake_type T_PANNING = STRUCT(tarn_panning, panning_fields, 0);
-
-static const bake_field water_fields[] = {
-    FIELD(tarn_water, features, T_FEATURES),    FIELD(tarn_water, albedo_rgb, T_RGB),
-    FIELD(tarn_water, alpha, T_Q16),            FIELD(tarn_water, fog_rgb, T_RGB),
-    FIELD(tarn_water, fog_density, T_Q16),      FIELD(tarn_water, absorb_rgb, T_RGB),
-    FIELD(tarn_water, absorption, T_Q16),       FIELD(tarn_water, absorption_squared, T_U8),
-    FIELD(tarn_water, shallow_rgb, T_RGB),      FIELD(tarn_water, deep_rgb, T_RGB),
-    FIELD(tarn_water, depth_scale, T_Q16),      FIELD(tarn_water, colour_ramp, T_REF),
-    FIELD(tarn_water, normal_a, T_REF),         FIELD(tarn_water, normal_b, T_REF),
-    FIELD(tarn_water, pan_a, T_PANNING),        FIELD(tarn_water, pan_b, T_PANNING),
-    FIELD(tarn_water, normal_strength, T_Q16),  FIELD(tarn_water, normal_xy_max, T_Q16),
-    FIELD(tarn_water, refraction, T_Q16),       FIELD(tarn_water, fresnel, T_Q16),
-    FIELD(tarn_water, specular, T_Q16),         FIELD(tarn_water, specular_power, T_U16),
-    FIELD(tarn_water, foam_texture, T_REF),     FIELD(tarn_water, foam_pan, T_PANNING),
-    FIELD(tarn_water, foam_distance, T_Q16),    FIELD(tarn_water, foam_line_speed, T_Q16),
-    FIELD(tarn_water, foam_line_count, T_U8),   FIELD(tarn_water, foam_rgb, T_RGB),
-    FIELD(tarn_water, foam_opacity, T_Q16),     FIELD(tarn_water, sparkle_amount, T_Q16),
-    FIELD(tarn_water, sparkle_rgb, T_RGB)};
-static const bake_type T_WATER = STRUCT(tarn_water, water_fields, 0);
-
-static const bake_field underwater_fields[] = {
-    FIELD(tarn_underwater, level, T_Q16),      FIELD(tarn_underwater, normal_map, T_REF),
-    FIELD(tarn_underwater, pan, T_PANNING),    FIELD(tarn_underwater, distortion, T_Q16),
-    FIELD(tarn_underwater, tint_rgb, T_RGB),   FIELD(tarn_underwater, tint_density, T_Q16)};
-static const bake_type T_UNDERWATER = STRUCT(tarn_underwater, underwater_fields, 0);
-
-static const bake_field material_fields[] = {
-    FIELD(tarn_material, colour_rgb, T_RGB), FIELD(tarn_material, texture, T_REF),
-    FIELD(tarn_material, cull, T_U8),        FIELD(tarn_material, unlit, T_U8),
-    FIELD(tarn_material, water, T_REF)};
-static const bake_type T_MATERIAL = STRUCT(tarn_material, material_fields, 0);
-
-/* uint16_t[3], written positionally like a one-line struct */
-static const bake_field u16_triple_fields[] = {
-    {"0", 0, &T_U16}, {"1", sizeof(uint16_t), &T_U16}, {"2", 2 * sizeof(uint16_t), &T_U16}};
-static const bake_type T_U16_TRIPLE = {"uint16_t[3]", V_STRUCT, sizeof(uint16_t[3]), u16_triple_fields, 3, 1};
-
-static const bake_field i32_triple_fields[] = {
-    {"0", 0, &T_I32}, {"1", sizeof(int32_t), &T_I32}, {"2", 2 * sizeof(int32_t), &T_I32}};
-static const bake_type T_I32_TRIPLE = {"int32_t[3]", V_STRUCT, sizeof(int32_t[3]), i32_triple_fields, 3, 1};
-
-static const bake_field static_vertex_fields[] = {
-    FIELD(tarn_static_vertex, x, T_Q16),        FIELD(tarn_static_vertex, y, T_Q16),
-    FIELD(tarn_static_vertex, d, T_Q16),        FIELD(tarn_static_vertex, inv_depth, T_U32),
-    FIELD(tarn_static_vertex, screen_x, T_I16), FIELD(tarn_static_vertex, screen_y, T_I16),
-    FIELD(tarn_static_vertex, lit, T_U16_TRIPLE), FIELD(tarn_static_vertex, fresnel, T_U16)};
-static const bake_type T_STATIC_VERTEX = STRUCT(tarn_static_vertex, static_vertex_fields, 1);
-
-static const bake_field object_fields[] = {
-    FIELD(tarn_object, mesh, T_REF),          FIELD(tarn_object, material, T_REF),
-    FIELD(tarn_object, position, T_VEC3),     FIELD(tarn_object, rotation, T_MATRIX),
-    FIELD(tarn_object, scale, T_Q16),         FIELD(tarn_object, static_vertices, T_REF)};
-static const bake_type T_OBJECT = STRUCT(tarn_object, object_fields, 0);
-
-static const bake_field camera_fields[] = {
-    FIELD(tarn_camera, position, T_VEC3),     FIELD(tarn_camera, target, T_VEC3),
-    FIELD(tarn_camera, fov_y_degrees, T_Q16), FIELD(tarn_camera, near, T_Q16),
-    FIELD(tarn_camera, far, T_Q16)};
-static const bake_type T_CAMERA = STRUCT(tarn_camera, camera_fields, 0);
-
-static const bake_field light_fields[] = {
-    FIELD(tarn_light, direction, T_VEC3), FIELD(tarn_light, colour_rgb, T_RGB),
-    FIELD(tarn_light, ambient_rgb, T_RGB)};
-static const bake_type T_LIGHT = STRUCT(tarn_light, light_fields, 0);
-
-static const bake_field bin_fields[] = {
-    FIELD(tarn_cluster_bin, x0, T_U8), FIELD(tarn_cluster_bin, y0, T_U8),
-    FIELD(tarn_cluster_bin, x1, T_U8), FIELD(tarn_cluster_bin, y1, T_U8)};
-static const bake_type T_BIN = STRUCT(tarn_cluster_bin, bin_fields, 1);
-
-static const bake_field still_plane_fields[] = {
-    FIELD(tarn_still_plane, depth, T_I32_TRIPLE), FIELD(tarn_still_plane, u, T_I32_TRIPLE),
-    FIELD(tarn_still_plane, v, T_I32_TRIPLE), FIELD(tarn_still_plane, uv_shift, T_U8)};
-static const bake_type T_STILL_PLANE = STRUCT(tarn_still_plane, still_plane_fields, 1);
-
-static const bake_field backdrop_span_fields[] = {
-    FIELD(tarn_backdrop_span, x0, T_U16), FIELD(tarn_backdrop_span, x1, T_U16),
-    FIELD(tarn_backdrop_span, first, T_U32)};
-static const bake_type T_BACKDROP_SPAN = STRUCT(tarn_backdrop_span, backdrop_span_fields, 1);
-
-static const bake_field backdrop_fields[] = {
-    FIELD(tarn_backdrop, recip_newton_steps, T_U8), FIELD(tarn_backdrop, perspective, T_U8),
-    FIELD(tarn_backdrop, perspective_span, T_U8),   FIELD(tarn_backdrop, depth_bits, T_U8),
-    FIELD(tarn_backdrop, depth_interpolation, T_U8), FIELD(tarn_backdrop, still_water, T_U8),
-    FIELD(tarn_backdrop, water_block, T_U8),         FIELD(tarn_backdrop, fog_argument_bits, T_U8),
-    FIELD(tarn_backdrop, exp2_interpolate, T_U8),    FIELD(tarn_backdrop, exp2_entries, T_U16),
-    FIELD(tarn_backdrop, planes, T_REF),
-    FIELD(tarn_backdrop, index_bits, T_U8),
-    FIELD(tarn_backdrop, palette, T_REF),
-    FIELD(tarn_backdrop, palette_count, T_U32),     FIELD(tarn_backdrop, colour, T_REF),
-    FIELD(tarn_backdrop, row_spans, T_REF),         FIELD(tarn_backdrop, spans, T_REF),
-    FIELD(tarn_backdrop, span_count, T_U32),        FIELD(tarn_backdrop, depth, T_REF),
-    FIELD(tarn_backdrop, depth_count, T_U32)};
-static const bake_type T_BACKDROP = STRUCT(tarn_backdrop, backdrop_fields, 0);
-
-static const bake_field static_view_fields[] = {
-    FIELD(tarn_static_view, camera, T_CAMERA), FIELD(tarn_static_view, light, T_LIGHT),
-    FIELD(tarn_static_view, width, T_U16),     FIELD(tarn_static_view, height, T_U16),
-    FIELD(tarn_static_view, subpixel_bits, T_U8), FIELD(tarn_static_view, bins, T_REF),
-    FIELD(tarn_static_view, backdrop, T_REF)};
-static const bake_type T_STATIC_VIEW = STRUCT(tarn_static_view, static_view_fields, 0);
-
-static const bake_field scene_fields[] = {
-    FIELD(tarn_scene, objects, T_REF),        FIELD(tarn_scene, object_count, T_U16),
-    FIELD(tarn_scene, camera, T_CAMERA),      FIELD(tarn_scene, light, T_LIGHT),
-    FIELD(tarn_scene, background_rgb, T_RGB), FIELD(tarn_scene, underwater, T_REF),
-    FIELD(tarn_scene, static_view, T_REF)};
-static const bake_type T_SCENE = STRUCT(tarn_scene, scene_fields, 0);
-
-static const bake_field exp2_fields[] = {
-    FIELD(tarn_exp2_config, entries, T_U16), FIELD(tarn_exp2_config, interpolate, T_U8)};
-static const bake_type T_EXP2 = STRUCT(tarn_exp2_config, exp2_fields, 0);
-
-static const bake_field quality_fields[] = {
-    FIELD(tarn_quality, exp2, T_EXP2),
-    FIELD(tarn_quality, recip_newton_steps, T_U8), FIELD(tarn_quality, subpixel_bits, T_U8),
-    FIELD(tarn_quality, perspective, T_U8),        FIELD(tarn_quality, perspective_span, T_U8),
-    FIELD(tarn_quality, depth_bits, T_U8),         FIELD(tarn_quality, depth_interpolation, T_U8),
-    FIELD(tarn_quality, tile_size, T_U8),
-    FIELD(tarn_quality, refraction_apron, T_U8),   FIELD(tarn_quality, cluster_bins, T_U8),
-    FIELD(tarn_quality, fog_argument_bits, T_U8),  FIELD(tarn_quality, water_block, T_U8)};
-static const bake_type T_QUALITY = STRUCT(tarn_quality, quality_fields, 0);
-
-static const bake_field config_fields[] = {
-    FIELD(tarn_frame_config, width, T_U16), FIELD(tarn_frame_config, height, T_U16),
-    FIELD(tarn_frame_config, quality, T_QUALITY), FIELD(tarn_frame_config, time_ms, T_U32)};
-static const bake_type T_CONFIG = STRUCT(tarn_frame_config, config_fields, 0);
+STRUCT_TYPE(T_VEC3, tarn_vec3, ONE_LINE,
+            FIELD(tarn_vec3, x, T_Q16), FIELD(tarn_vec3, y, T_Q16), FIELD(tarn_vec3, z, T_Q16));
+STRUCT_TYPE(T_UV, tarn_uv, ONE_LINE, FIELD(tarn_uv, u, T_Q16), FIELD(tarn_uv, v, T_Q16));
+STRUCT_TYPE(T_CLUSTER, tarn_cluster, ONE_LINE,
+            FIELD(tarn_cluster, centre, T_VEC3), FIELD(tarn_cluster, radius, T_Q16),
+            FIELD(tarn_cluster, first_triangle, T_U16), FIELD(tarn_cluster, triangle_count, T_U16));
+STRUCT_TYPE(T_TEXTURE, tarn_texture, BLOCK,
+            FIELD(tarn_texture, width, T_U16), FIELD(tarn_texture, height, T_U16), FIELD(tarn_texture, rgb, T_REF));
+STRUCT_TYPE(T_MESH, tarn_mesh, BLOCK,
+            FIELD(tarn_mesh, positions, T_REF),     FIELD(tarn_mesh, normals, T_REF),
+            FIELD(tarn_mesh, uvs, T_REF),           FIELD(tarn_mesh, colours, T_REF),
+            FIELD(tarn_mesh, indices, T_REF),       FIELD(tarn_mesh, vertex_count, T_U16),
+            FIELD(tarn_mesh, triangle_count, T_U16), FIELD(tarn_mesh, clusters, T_REF),
+            FIELD(tarn_mesh, cluster_count, T_U16));
+STRUCT_TYPE(T_PANNING, tarn_panning, BLOCK,
+            FIELD(tarn_panning, scale, T_Q16), FIELD(tarn_panning, speed_u, T_Q16),
+            FIELD(tarn_panning, speed_v, T_Q16));
+STRUCT_TYPE(T_WATER, tarn_water, BLOCK,
+            FIELD(tarn_water, features, T_FEATURES),    FIELD(tarn_water, albedo_rgb, T_RGB),
+            FIELD(tarn_water, alpha, T_Q16),            FIELD(tarn_water, fog_rgb, T_RGB),
+            FIELD(tarn_water, fog_density, T_Q16),      FIELD(tarn_water, absorb_rgb, T_RGB),
+            FIELD(tarn_water, absorption, T_Q16),       FIELD(tarn_water, absorption_squared, T_U8),
+            FIELD(tarn_water, shallow_rgb, T_RGB),      FIELD(tarn_water, deep_rgb, T_RGB),
+            FIELD(tarn_water, depth_scale, T_Q16),      FIELD(tarn_water, colour_ramp, T_REF),
+            FIELD(tarn_water, normal_a, T_REF),         FIELD(tarn_water, normal_b, T_REF),
+            FIELD(tarn_water, pan_a, T_PANNING),        FIELD(tarn_water, pan_b, T_PANNING),
+            FIELD(tarn_water, normal_strength, T_Q16),  FIELD(tarn_water, normal_xy_max, T_Q16),
+            FIELD(tarn_water, refraction, T_Q16),       FIELD(tarn_water, fresnel, T_Q16),
+            FIELD(tarn_water, specular, T_Q16),         FIELD(tarn_water, specular_power, T_U16),
+            FIELD(tarn_water, foam_texture, T_REF),     FIELD(tarn_water, foam_pan, T_PANNING),
+            FIELD(tarn_water, foam_distance, T_Q16),    FIELD(tarn_water, foam_line_speed, T_Q16),
+            FIELD(tarn_water, foam_line_count, T_U8),   FIELD(tarn_water, foam_rgb, T_RGB),
+            FIELD(tarn_water, foam_opacity, T_Q16),     FIELD(tarn_water, sparkle_amount, T_Q16),
+            FIELD(tarn_water, sparkle_rgb, T_RGB));
+STRUCT_TYPE(T_UNDERWATER, tarn_underwater, BLOCK,
+            FIELD(tarn_underwater, level, T_Q16),      FIELD(tarn_underwater, normal_map, T_REF),
+            FIELD(tarn_underwater, pan, T_PANNING),    FIELD(tarn_underwater, distortion, T_Q16),
+            FIELD(tarn_underwater, tint_rgb, T_RGB),   FIELD(tarn_underwater, tint_density, T_Q16));
+STRUCT_TYPE(T_MATERIAL, tarn_material, BLOCK,
+            FIELD(tarn_material, colour_rgb, T_RGB), FIELD(tarn_material, texture, T_REF),
+            FIELD(tarn_material, cull, T_U8),        FIELD(tarn_material, unlit, T_U8),
+            FIELD(tarn_material, water, T_REF));
+STRUCT_TYPE(T_STATIC_VERTEX, tarn_static_vertex, ONE_LINE,
+            FIELD(tarn_static_vertex, x, T_Q16),        FIELD(tarn_static_vertex, y, T_Q16),
+            FIELD(tarn_static_vertex, d, T_Q16),        FIELD(tarn_static_vertex, inv_depth, T_U32),
+            FIELD(tarn_static_vertex, screen_x, T_I16), FIELD(tarn_static_vertex, screen_y, T_I16),
+            FIELD(tarn_static_vertex, lit, T_U16_TRIPLE), FIELD(tarn_static_vertex, fresnel, T_U16));
+STRUCT_TYPE(T_OBJECT, tarn_object, BLOCK,
+            FIELD(tarn_object, mesh, T_REF),          FIELD(tarn_object, material, T_REF),
+            FIELD(tarn_object, position, T_VEC3),     FIELD(tarn_object, rotation, T_MATRIX),
+            FIELD(tarn_object, scale, T_Q16),         FIELD(tarn_object, static_vertices, T_REF));
+STRUCT_TYPE(T_CAMERA, tarn_camera, BLOCK,
+            FIELD(tarn_camera, position, T_VEC3),     FIELD(tarn_camera, target, T_VEC3),
+            FIELD(tarn_camera, fov_y_degrees, T_Q16), FIELD(tarn_camera, near, T_Q16),
+            FIELD(tarn_camera, far, T_Q16));
+STRUCT_TYPE(T_LIGHT, tarn_light, BLOCK,
+            FIELD(tarn_light, direction, T_VEC3), FIELD(tarn_light, colour_rgb, T_RGB),
+            FIELD(tarn_light, ambient_rgb, T_RGB));
+STRUCT_TYPE(T_BIN, tarn_cluster_bin, ONE_LINE,
+            FIELD(tarn_cluster_bin, x0, T_U8), FIELD(tarn_cluster_bin, y0, T_U8),
+            FIELD(tarn_cluster_bin, x1, T_U8), FIELD(tarn_cluster_bin, y1, T_U8));
+STRUCT_TYPE(T_STILL_PLANE, tarn_still_plane, ONE_LINE,
+            FIELD(tarn_still_plane, depth, T_I32_TRIPLE), FIELD(tarn_still_plane, u, T_I32_TRIPLE),
+            FIELD(tarn_still_plane, v, T_I32_TRIPLE), FIELD(tarn_still_plane, uv_shift, T_U8));
+STRUCT_TYPE(T_BACKDROP_SPAN, tarn_backdrop_span, ONE_LINE,
+            FIELD(tarn_backdrop_span, x0, T_U16), FIELD(tarn_backdrop_span, x1, T_U16),
+            FIELD(tarn_backdrop_span, first, T_U32));
+STRUCT_TYPE(T_BACKDROP, tarn_backdrop, BLOCK,
+            FIELD(tarn_backdrop, recip_newton_steps, T_U8), FIELD(tarn_backdrop, perspective, T_U8),
+            FIELD(tarn_backdrop, perspective_span, T_U8),   FIELD(tarn_backdrop, depth_bits, T_U8),
+            FIELD(tarn_backdrop, depth_interpolation, T_U8), FIELD(tarn_backdrop, still_water, T_U8),
+            FIELD(tarn_backdrop, water_block, T_U8),         FIELD(tarn_backdrop, fog_argument_bits, T_U8),
+            FIELD(tarn_backdrop, exp2_interpolate, T_U8),    FIELD(tarn_backdrop, exp2_entries, T_U16),
+            FIELD(tarn_backdrop, planes, T_REF),
+            FIELD(tarn_backdrop, index_bits, T_U8),
+            FIELD(tarn_backdrop, palette, T_REF),
+            FIELD(tarn_backdrop, palette_count, T_U32),     FIELD(tarn_backdrop, colour, T_REF),
+            FIELD(tarn_backdrop, row_spans, T_REF),         FIELD(tarn_backdrop, spans, T_REF),
+            FIELD(tarn_backdrop, span_count, T_U32),        FIELD(tarn_backdrop, depth, T_REF),
+            FIELD(tarn_backdrop, depth_count, T_U32));
+STRUCT_TYPE(T_STATIC_VIEW, tarn_static_view, BLOCK,
+            FIELD(tarn_static_view, camera, T_CAMERA), FIELD(tarn_static_view, light, T_LIGHT),
+            FIELD(tarn_static_view, width, T_U16),     FIELD(tarn_static_view, height, T_U16),
+            FIELD(tarn_static_view, subpixel_bits, T_U8), FIELD(tarn_static_view, bins, T_REF),
+            FIELD(tarn_static_view, backdrop, T_REF));
+STRUCT_TYPE(T_SCENE, tarn_scene, BLOCK,
+            FIELD(tarn_scene, objects, T_REF),        FIELD(tarn_scene, object_count, T_U16),
+            FIELD(tarn_scene, camera, T_CAMERA),      FIELD(tarn_scene, light, T_LIGHT),
+            FIELD(tarn_scene, background_rgb, T_RGB), FIELD(tarn_scene, underwater, T_REF),
+            FIELD(tarn_scene, static_view, T_REF));
+STRUCT_TYPE(T_EXP2, tarn_exp2_config, BLOCK,
+            FIELD(tarn_exp2_config, entries, T_U16), FIELD(tarn_exp2_config, interpolate, T_U8));
+STRUCT_TYPE(T_QUALITY, tarn_quality, BLOCK,
+            FIELD(tarn_quality, exp2, T_EXP2),
+            FIELD(tarn_quality, recip_newton_steps, T_U8), FIELD(tarn_quality, subpixel_bits, T_U8),
+            FIELD(tarn_quality, perspective, T_U8),        FIELD(tarn_quality, perspective_span, T_U8),
+            FIELD(tarn_quality, depth_bits, T_U8),         FIELD(tarn_quality, depth_interpolation, T_U8),
+            FIELD(tarn_quality, tile_size, T_U8),
+            FIELD(tarn_quality, refraction_apron, T_U8),   FIELD(tarn_quality, cluster_bins, T_U8),
+            FIELD(tarn_quality, fog_argument_bits, T_U8),  FIELD(tarn_quality, water_block, T_U8));
+STRUCT_TYPE(T_CONFIG, tarn_frame_config, BLOCK,
+            FIELD(tarn_frame_config, width, T_U16), FIELD(tarn_frame_config, height, T_U16),
+            FIELD(tarn_frame_config, quality, T_QUALITY), FIELD(tarn_frame_config, time_ms, T_U32));
 
 static const bake_type *const all_structs[] = {
     &T_VEC3,  &T_UV,       &T_CLUSTER,  &T_TEXTURE, &T_MESH,  &T_PANNING,
@@ -289,7 +253,7 @@ static int table_matches_host(const bake_type *t)
 
 static int check_tables(tarn_error *err)
 {
-    for (size_t i = 0; i < sizeof all_structs / sizeof all_structs[0]; i++) {
+    for (size_t i = 0; i < COUNT(all_structs); i++) {
         if (!table_matches_host(all_structs[i]))
             return tarn_fail(err, "internal error: host/bake.c does not describe every member of %s; "
                              "update its table", all_structs[i]->c_name);
@@ -395,6 +359,19 @@ static bake_item *add_item(bake_plan *p, byte_kind kind, const bake_type *type, 
     return item;
 }
 
+/* The comment above `item`'s definition; none for NULL (out of memory, which the
+ * plan already records). */
+static void note(bake_item *item, const char *format, ...) __attribute__((format(printf, 2, 3)));
+
+static void note(bake_item *item, const char *format, ...)
+{
+    if (item == NULL) return;
+    va_list args;
+    va_start(args, format);
+    vsnprintf(item->note, sizeof item->note, format, args);
+    va_end(args);
+}
+
 static int material_used(const tarn_scene *scene, const tarn_material *material)
 {
     for (uint32_t i = 0; i < scene->object_count; i++)
@@ -424,11 +401,8 @@ static void plan_textures(bake_plan *p)
     for (size_t k = 0; k < s->texture_count; k++) {
         const tarn_texture *t = &s->textures[k];
         if (!texture_used(&s->scene, t)) continue;
-        bake_item *texels = add_item(p, BYTES_TEXTURE, &T_BYTE, t->rgb, 3u * t->width * t->height,
-                                     "%s_texture_%zu_rgb", p->name, k);
-        if (texels)
-            snprintf(texels->note, sizeof texels->note, "%s: %ux%u texels, R G B, rows top to bottom",
-                     s->texture_paths[k], t->width, t->height);
+        note(add_item(p, BYTES_TEXTURE, &T_BYTE, t->rgb, 3u * t->width * t->height, "%s_texture_%zu_rgb", p->name, k),
+             "%s: %ux%u texels, R G B, rows top to bottom", s->texture_paths[k], t->width, t->height);
         add_item(p, BYTES_TEXTURE, &T_TEXTURE, t, 0, "%s_texture_%zu", p->name, k);
     }
 }
@@ -449,7 +423,7 @@ static const struct mesh_array {
     {"indices", offsetof(tarn_mesh, indices), &T_U16, PER_INDEX},
     {"clusters", offsetof(tarn_mesh, clusters), &T_CLUSTER, PER_CLUSTER}};
 
-#define MESH_ARRAYS (sizeof mesh_arrays / sizeof mesh_arrays[0])
+#define MESH_ARRAYS COUNT(mesh_arrays)
 
 static const void *read_pointer(const void *at)
 {
@@ -508,8 +482,8 @@ static void note_mesh(bake_item *item, const tarn_scene *scene, size_t i)
     size_t repeats = later_same_meshes(scene, i);
     char shared[80] = "";
     if (repeats) snprintf(shared, sizeof shared, ", also used for %zu later object(s) with the same data", repeats);
-    snprintf(item->note, sizeof item->note, "objects[%zu]'s mesh%s; vertices: %u, triangles: %u, clusters: %u",
-             i, shared, m->vertex_count, m->triangle_count, m->cluster_count);
+    note(item, "objects[%zu]'s mesh%s; vertices: %u, triangles: %u, clusters: %u", i, shared, m->vertex_count,
+         m->triangle_count, m->cluster_count);
 }
 
 static void plan_mesh(bake_plan *p, size_t i)
@@ -561,16 +535,16 @@ static void plan_materials(bake_plan *p)
     for (size_t k = 0; k < s->material_count; k++) {
         const tarn_material *m = &s->materials[k];
         if (!material_used(&s->scene, m) || !m->water) continue;
-        bake_item *water = add_item(p, BYTES_WATER, &T_WATER, m->water, 0, "%s_water_%zu", p->name, k);
-        if (water) snprintf(water->note, sizeof water->note, "materials.%s.water", s->material_names[k]);
+        note(add_item(p, BYTES_WATER, &T_WATER, m->water, 0, "%s_water_%zu", p->name, k), "materials.%s.water",
+             s->material_names[k]);
     }
     if (s->scene.underwater)
         add_item(p, BYTES_WATER, &T_UNDERWATER, s->scene.underwater, 0, "%s_underwater", p->name);
     for (size_t k = 0; k < s->material_count; k++) {
         const tarn_material *m = &s->materials[k];
         if (!material_used(&s->scene, m)) continue;
-        bake_item *material = add_item(p, BYTES_MATERIAL, &T_MATERIAL, m, 0, "%s_material_%zu", p->name, k);
-        if (material) snprintf(material->note, sizeof material->note, "materials.%s", s->material_names[k]);
+        note(add_item(p, BYTES_MATERIAL, &T_MATERIAL, m, 0, "%s_material_%zu", p->name, k), "materials.%s",
+             s->material_names[k]);
     }
 }
 
@@ -579,43 +553,34 @@ static void plan_backdrop(bake_plan *p, const tarn_static_view *view)
 {
     const tarn_backdrop *b = view->backdrop;
     if (b == NULL) return;
-    bake_item *item = add_item(p, BYTES_BACKDROP, &T_RGB, b->palette, b->palette_count, "%s_backdrop_palette",
-                               p->name);
-    if (item)
-        snprintf(item->note, sizeof item->note, "backdrop: the %lu colours the opaque objects%s draw, ascending, "
-                 "padded with the last to %lu: every %u-bit index names one", (unsigned long)p->backdrop_colours,
-                 b->still_water ? " and the still water (with its marks)" : "",
-                 (unsigned long)b->palette_count, b->index_bits);
-    item = add_item(p, BYTES_BACKDROP, &T_U16, b->colour, p->backdrop_colour_words, "%s_backdrop_colour", p->name);
-    if (item)
-        snprintf(item->note, sizeof item->note, "backdrop: a %u-bit palette index per pixel, rows top to bottom, "
-                 "packed low bits first", b->index_bits);
-    if (!b->still_water) {
+    note(add_item(p, BYTES_BACKDROP, &T_RGB, b->palette, b->palette_count, "%s_backdrop_palette", p->name),
+         "backdrop: the %lu colours the opaque objects%s draw, ascending, padded with the last to %lu: every "
+         "%u-bit index names one", (unsigned long)p->backdrop_colours,
+         b->still_water ? " and the still water (with its marks)" : "", (unsigned long)b->palette_count,
+         b->index_bits);
+    note(add_item(p, BYTES_BACKDROP, &T_U16, b->colour, p->backdrop_colour_words, "%s_backdrop_colour", p->name),
+         "backdrop: a %u-bit palette index per pixel, rows top to bottom, packed low bits first", b->index_bits);
+    if (!b->still_water)
         add_alias(p, b->planes, NO_ITEM);
-    } else {
-        item = add_item(p, BYTES_BACKDROP, &T_STILL_PLANE, b->planes, p->scene->scene.object_count,
-                        "%s_backdrop_planes", p->name);
-        if (item)
-            snprintf(item->note, sizeof item->note, "backdrop: each water object's surface as the frame sees it, "
-                     "at pixel (0, 0), per pixel right, per pixel down");
-    }
-    item = add_item(p, BYTES_BACKDROP, &T_U16, b->row_spans, view->height + 1u, "%s_backdrop_row_spans", p->name);
-    if (item)
-        snprintf(item->note, sizeof item->note, "backdrop: row j's spans of kept depth are spans[row_spans[j] .. "
-                 "row_spans[j + 1])");
+    else
+        note(add_item(p, BYTES_BACKDROP, &T_STILL_PLANE, b->planes, p->scene->scene.object_count,
+                      "%s_backdrop_planes", p->name),
+             "backdrop: each water object's surface as the frame sees it, at pixel (0, 0), per pixel right, per "
+             "pixel down");
+    note(add_item(p, BYTES_BACKDROP, &T_U16, b->row_spans, view->height + 1u, "%s_backdrop_row_spans", p->name),
+         "backdrop: row j's spans of kept depth are spans[row_spans[j] .. row_spans[j + 1])");
     if (b->span_count == 0) add_alias(p, b->spans, NO_ITEM);
     else add_item(p, BYTES_BACKDROP, &T_BACKDROP_SPAN, b->spans, b->span_count, "%s_backdrop_spans", p->name);
     if (b->depth_count == 0) {
         add_alias(p, b->depth, NO_ITEM);
     } else {
-        item = add_item(p, BYTES_BACKDROP, b->depth_bits == 16 || b->still_water ? &T_U16 : &T_U32, b->depth,
-                        b->depth_count, "%s_backdrop_depth", p->name);
-        if (item && b->still_water)
-            snprintf(item->note, sizeof item->note, "backdrop: each span's pixels' place in the foam band (Q0.16), "
-                     "where foam can show");
-        else if (item)
-            snprintf(item->note, sizeof item->note, "backdrop: near/d (%s) of each span's pixels [x0, x1), "
-                     "where water may draw or sample", b->depth_bits == 16 ? "tarn_depth16 codes" : "Q1.30");
+        bake_item *item = add_item(p, BYTES_BACKDROP, b->depth_bits == 16 || b->still_water ? &T_U16 : &T_U32,
+                                   b->depth, b->depth_count, "%s_backdrop_depth", p->name);
+        if (b->still_water)
+            note(item, "backdrop: each span's pixels' place in the foam band (Q0.16), where foam can show");
+        else
+            note(item, "backdrop: near/d (%s) of each span's pixels [x0, x1), where water may draw or sample",
+                 b->depth_bits == 16 ? "tarn_depth16 codes" : "Q1.30");
     }
     add_item(p, BYTES_BACKDROP, &T_BACKDROP, b, 0, "%s_backdrop", p->name);
 }
@@ -631,18 +596,13 @@ static void plan_static_vertices(bake_plan *p)
             add_alias(p, object->static_vertices, NO_ITEM);
             continue;
         }
-        bake_item *item = add_item(p, BYTES_STATIC, &T_STATIC_VERTEX, object->static_vertices,
-                                   object->mesh->vertex_count, "%s_object_%zu_static_vertices", p->name, i);
-        if (item)
-            snprintf(item->note, sizeof item->note,
-                     "objects[%zu] from the scene's camera: view position, near/d and screen position "
-                     "(subpixels), lit colour (Q8.8), fresnel (Q1.15)", i);
+        note(add_item(p, BYTES_STATIC, &T_STATIC_VERTEX, object->static_vertices, object->mesh->vertex_count,
+                      "%s_object_%zu_static_vertices", p->name, i),
+             "objects[%zu] from the scene's camera: view position, near/d and screen position (subpixels), lit "
+             "colour (Q8.8), fresnel (Q1.15)", i);
     }
-    bake_item *item = add_item(p, BYTES_STATIC, &T_BIN, scene->static_view->bins, p->static_bin_count,
-                               "%s_static_bins", p->name);
-    if (item)
-        snprintf(item->note, sizeof item->note,
-                 "each cluster's screen box in 4-pixel cells, every object's in scene order");
+    note(add_item(p, BYTES_STATIC, &T_BIN, scene->static_view->bins, p->static_bin_count, "%s_static_bins", p->name),
+         "each cluster's screen box in 4-pixel cells, every object's in scene order");
     plan_backdrop(p, scene->static_view);
     add_item(p, BYTES_STATIC, &T_STATIC_VIEW, scene->static_view, 0, "%s_static_view", p->name);
 }
@@ -660,8 +620,8 @@ static void plan_scene(bake_plan *p)
     item = add_item(p, BYTES_SCENE, &T_QUALITY, p->points->qualities, p->points->count, "%s_points", p->name);
     if (item == NULL) return;
     item->exported = 1;
-    snprintf(item->note, sizeof item->note, "--points %s: %zu qualities, each %s_config's with one line's options",
-             p->points->path, p->points->count, p->name);
+    note(item, "--points %s: %zu qualities, each %s_config's with one line's options", p->points->path,
+         p->points->count, p->name);
 }
 
 /* Every definition in an order where each comes before its first use. */
@@ -758,7 +718,7 @@ static const struct {
 static void format_features(text_buffer *b, uint32_t features)
 {
     const char *separator = "";
-    for (size_t k = 0; k < sizeof water_features / sizeof water_features[0]; k++) {
+    for (size_t k = 0; k < COUNT(water_features); k++) {
         if (!(features & water_features[k].bit)) continue;
         append(b, "%s%s", separator, water_features[k].name);
         features &= ~water_features[k].bit;
