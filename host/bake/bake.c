@@ -255,7 +255,7 @@ static int check_tables(tarn_error *err)
 {
     for (size_t i = 0; i < COUNT(all_structs); i++) {
         if (!table_matches_host(all_structs[i]))
-            return tarn_fail(err, "internal error: host/bake.c does not describe every member of %s; "
+            return tarn_fail(err, "internal error: host/bake/bake.c does not describe every member of %s; "
                              "update its table", all_structs[i]->c_name);
     }
     return 0;

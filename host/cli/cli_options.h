@@ -7,7 +7,7 @@
  *   tarn memory SCENE [--size WxH] [QUALITY]   (the working memory a frame needs)
  *   tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]
  *             [--static-view on|off] [--backdrop on|off|still] [QUALITY]
- *                                              (the scene as const C data: host/bake.h)
+ *                                              (the scene as const C data: host/bake/bake.h)
  * QUALITY knobs (defaults from tarn_quality_default()):
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
  *   --depth 16|32  --depth-interpolation exact|plane  --recip-steps N (0..2)
@@ -37,11 +37,11 @@ typedef struct {
     const char *output_path; /* render, bake: -o */
     const char *diff_path;   /* compare: --diff, or NULL */
     const char *name;        /* bake: --name, or NULL (checked by the bake itself) */
-    const char *points_path; /* bake: --points, or NULL (host/bake_points.h) */
+    const char *points_path; /* bake: --points, or NULL (host/bake/bake_points.h) */
     int no_static_view;      /* bake --static-view off: vertices computed each frame */
     int static_view_given;   /* --static-view appeared */
     int backdrop;            /* render, bake --backdrop: a tarn_backdrop_kind, what is
-                                drawn once (host/backdrop.h) */
+                                drawn once (host/bake/backdrop.h) */
     uint16_t width, height;  /* 0: the scene's own frame size */
     uint32_t time_ms;
     uint16_t frames;         /* render --frames: 0 for one frame written to -o itself */

@@ -12,7 +12,7 @@ int tarn_command_accuracy(const tarn_cli_options *options);
 /* Prints the renderer's working memory for the scene at this size and quality:
  *   memory scene=NAME size=WxH tile=N depth_bits=N apron=N bytes=N */
 int tarn_command_memory(const tarn_cli_options *options);
-/* Writes the scene as const C data (host/bake.h) and prints
+/* Writes the scene as const C data (host/bake/bake.h) and prints
  *   bake scene=NAME const_bytes=N memory_bytes=N */
 int tarn_command_bake(const tarn_cli_options *options);
 

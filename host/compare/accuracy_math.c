@@ -381,7 +381,7 @@ int tarn_accuracy_math_print(FILE *out)
             "\nErrors are against libm in doubles, in units of the output's last place (LSB).\n"
             "max_rel_excess: largest relative error beyond the final rounding to an integer,\n"
             "  max(0, |result - exact| - 0.5) / exact, for functions whose outputs span many\n"
-            "  magnitudes. The inputs swept are listed in host/accuracy_math.h.\n"
+            "  magnitudes. The inputs swept are listed in host/compare/accuracy_math.h.\n"
             "host_ns: median of %d runs, nanoseconds per call on this machine, including the\n"
             "  benchmark loop's indirect call (%.2f ns per call on its own). For deterministic\n"
             "  instruction counts run scripts/bench-math.sh.\n",

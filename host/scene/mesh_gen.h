@@ -22,7 +22,7 @@ typedef struct {
     tarn_uv *uvs; /* NULL when the mesh has no texture coordinates */
     uint32_t *colours; /* 0xRRGGBB per vertex; NULL when the mesh has none (white) */
     uint16_t *indices;
-    tarn_cluster *clusters; /* NULL until tarn_mesh_build_clusters (host/mesh_clusters.h) */
+    tarn_cluster *clusters; /* NULL until tarn_mesh_build_clusters (host/scene/mesh_clusters.h) */
     uint32_t vertex_capacity, triangle_capacity;
 } tarn_mesh_buffer;
 

@@ -31,7 +31,7 @@ typedef struct {
 /* Every value of every knob, one at a time; returns the count, at most `max`. */
 size_t tarn_sweep_variants(tarn_sweep_variant *variants, size_t max);
 
-/* A points file (host/bake_points.h's format, what tarn bake --points and the
+/* A points file (host/bake/bake_points.h's format, what tarn bake --points and the
  * host-cost workers read): `count` qualities, a line of every knob's option each. */
 int tarn_sweep_write_points(const char *path, const tarn_quality *qualities, size_t count, tarn_error *err);
 

@@ -7,7 +7,7 @@
  *               (PSNR against instructions per pixel)
  *   SCENE.png   per scene, PSNR against instructions per pixel, one panel a source:
  *               every point, the front as a line, the presets named (gnuplot)
- * The text goes to files the caller opened (host/sweep.c writes them all or none). */
+ * The text goes to files the caller opened (host/sweep/sweep.c writes them all or none). */
 #ifndef TARN_HOST_SWEEP_REPORT_H
 #define TARN_HOST_SWEEP_REPORT_H
 
