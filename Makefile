@@ -15,18 +15,21 @@ CORE_CFLAGS := -std=c99 -pedantic $(WARN) $(OPT) -Icore -Icore/include
 # Display backends, each optional and found by pkg-config: libgpiod 1.x (Debian 12)
 # or 2.x for GPIO lines, hidapi for the MCP2210 bridge; without one, a stub says so.
 GPIOD_VERSION := $(shell pkg-config --modversion libgpiod 2>/dev/null)
-GPIO_LINES_SRC := $(if $(GPIOD_VERSION),$(if $(filter 1.%,$(GPIOD_VERSION)),host/gpio_lines_gpiod1.c,host/gpio_lines_gpiod2.c),host/gpio_lines_none.c)
+GPIO_LINES_SRC := $(if $(GPIOD_VERSION),$(if $(filter 1.%,$(GPIOD_VERSION)),host/display/gpio_lines_gpiod1.c,host/display/gpio_lines_gpiod2.c),host/display/gpio_lines_none.c)
 HIDAPI_PKG := $(shell pkg-config --exists hidapi-hidraw 2>/dev/null && echo hidapi-hidraw)
-MCP2210_USB_SRC := $(if $(HIDAPI_PKG),host/mcp2210_hidapi.c,host/mcp2210_hidapi_none.c)
+MCP2210_USB_SRC := $(if $(HIDAPI_PKG),host/display/mcp2210_hidapi.c,host/display/mcp2210_hidapi_none.c)
 HOST_PKGS := libpng jansson $(if $(GPIOD_VERSION),libgpiod) $(HIDAPI_PKG)
-HOST_CFLAGS := -std=c99 $(WARN) $(OPT) -D_POSIX_C_SOURCE=200809L -Icore -Icore/include -Icore/include/tarn -Ihost \
+# host/ is in folders by job (host/*/README.md); every folder is on the include path,
+# so a host header is included by its name alone wherever it lives.
+HOST_INCLUDES := -Icore -Icore/include $(patsubst %/,-I%,$(sort $(wildcard host/*/)))
+HOST_CFLAGS := -std=c99 $(WARN) $(OPT) -D_POSIX_C_SOURCE=200809L $(HOST_INCLUDES) \
 	$(shell pkg-config --cflags $(HOST_PKGS) 2>/dev/null)
 HOST_LIBS := $(shell pkg-config --libs $(HOST_PKGS) 2>/dev/null) -lm -pthread
 TEST_LIBS := $(shell pkg-config --libs cmocka zlib 2>/dev/null)
 
 CORE_SRC := $(wildcard core/*/*.c)
-HOST_SRC := $(filter-out host/main.c host/gpio_lines_gpiod%.c host/gpio_lines_none.c host/mcp2210_hidapi%.c,\
-	$(wildcard host/*.c)) $(GPIO_LINES_SRC) $(MCP2210_USB_SRC)
+HOST_SRC := $(filter-out host/cli/main.c host/display/gpio_lines_gpiod%.c host/display/gpio_lines_none.c \
+	host/display/mcp2210_hidapi%.c,$(wildcard host/*/*.c)) $(GPIO_LINES_SRC) $(MCP2210_USB_SRC)
 # test_gpio_lines_gpiod1.c emulates libgpiod 1.x at its calls: only with that backend
 TEST_SRC := $(filter-out $(if $(filter %gpiod1.c,$(GPIO_LINES_SRC)),,tests/test_gpio_lines_gpiod1.c),\
 	$(wildcard tests/test_*.c))
@@ -103,7 +106,7 @@ sweep-docs: deps-test $(TARN)
 	@mkdir -p docs/sweep
 	cp build/sweep/sweep.csv build/sweep/front.md build/sweep/stability.md $(SWEEP_SCENES:%=build/sweep/%.png) docs/sweep/
 
-$(TARN): $(BUILD)/host/main.o $(HOST_OBJ) $(CORE_OBJ)
+$(TARN): $(BUILD)/host/cli/main.o $(HOST_OBJ) $(CORE_OBJ)
 	$(CC) $(OPT) -o $@ $^ $(HOST_LIBS)
 
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(TEST_SUPPORT_OBJ) $(HOST_OBJ) $(CORE_OBJ)

@@ -82,7 +82,7 @@ FW_DIR := $(if $(FW_BUILD_DIR),$(FW_BUILD_DIR),build/$(if $(filter sweep,$(FW_MA
 FW_SCENE := $(if $(SCENE),$(SCENE),$(BOARD_SCENE))
 FW_BAKE_FLAGS := $(if $(SCENE),$(BAKE_FLAGS),$(if $(BAKE_FLAGS),$(BAKE_FLAGS),$(BOARD_BAKE_FLAGS)))
 FW_SCENE_LABEL := $(basename $(notdir $(FW_SCENE)))
-# the sweep's points: baked with the scene (host/bake_points.h)
+# the sweep's points: baked with the scene (host/bake/bake_points.h)
 FW_POINTS_FLAGS := $(if $(filter sweep,$(FW_MAIN)),--points $(POINTS))
 FW_ELF := $(FW_DIR)/firmware.elf
 

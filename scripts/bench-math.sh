@@ -1,7 +1,7 @@
 #!/bin/sh
 # Instructions per call of each fixed-point math function and configuration, counted
 # by callgrind on the host: deterministic, unlike wall time. Each case of
-# host/accuracy_math.c runs in its own process over its fixed benchmark inputs; the
+# host/compare/accuracy_math.c runs in its own process over its fixed benchmark inputs; the
 # count is the function's inclusive Ir divided by the number of calls.
 # Usage: scripts/bench-math.sh            (from the repository root)
 # Needs valgrind and cc. Compiler flags: $CC -O2, as the release build, but without
@@ -16,7 +16,7 @@ trap 'rm -rf "$work"' EXIT INT TERM
 
 rounds=8
 cat >"$work/bench.c" <<'EOF'
-/* Runs one case of host/accuracy_math.c over its benchmark inputs: bench CASE ROUNDS.
+/* Runs one case of host/compare/accuracy_math.c over its benchmark inputs: bench CASE ROUNDS.
  * Prints the function's C name, the configuration and the number of calls. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -35,8 +35,8 @@ int main(int argc, char **argv)
     return 0;
 }
 EOF
-$CC -std=c99 -O2 -D_POSIX_C_SOURCE=200809L -Icore -Icore/include -Icore/include/tarn -Ihost -o "$work/bench" \
-    "$work/bench.c" host/accuracy_math.c core/math/*.c -lm
+$CC -std=c99 -O2 -D_POSIX_C_SOURCE=200809L -Icore -Icore/include -Ihost/compare -o "$work/bench" \
+    "$work/bench.c" host/compare/accuracy_math.c core/math/*.c -lm
 
 printf '%-18s %-15s %12s\n' function config Ir_per_call
 index=0

@@ -7,7 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "scene_load.h"
-#include "tarn_render.h"
+#include "tarn/tarn_render.h"
 
 /* The whole file, NUL-terminated (NULL if it cannot be read); `size` (may be NULL)
  * gets its length. The caller frees it. */

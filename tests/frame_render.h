@@ -4,7 +4,7 @@
 #define TARN_TESTS_FRAME_RENDER_H
 
 #include <stdint.h>
-#include "tarn_render.h"
+#include "tarn/tarn_render.h"
 
 /* Every demo and water scene, one-effect scenes that each stress a part of the
  * water, and the extremes: the scenes a test that two ways of drawing give the

@@ -3,7 +3,7 @@
 #define TARN_TEST_SCENE_BUILDER_H
 
 #include <stdint.h>
-#include "tarn_render.h"
+#include "tarn/tarn_render.h"
 
 #define BUILDER_VERTICES_MAX 8192
 #define BUILDER_OBJECTS_MAX 4

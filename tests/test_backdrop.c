@@ -1,6 +1,6 @@
 /* test_backdrop.c: a scene's water drawn over the backdrop of its opaque objects
- * (tarn_scene.h, host/backdrop.h), without its triangles that draw no pixel
- * (host/water_cull.h), gives the frame the whole scene gives, byte for byte: on
+ * (tarn_scene.h, host/bake/backdrop.h), without its triangles that draw no pixel
+ * (host/bake/water_cull.h), gives the frame the whole scene gives, byte for byte: on
  * every scene, at each preset and two times, and with the knobs that move what the
  * water reads (aprons, blocks, tiles, depth, perspective). The backdrop
  * keeps the depth only around the water, in as few colours' bits as it can; a frame

@@ -11,7 +11,7 @@
 #include "core_render.h"
 #include "image_checksum.h"
 #include "scene_load.h"
-#include "tarn_checksum.h"
+#include "tarn/tarn_checksum.h"
 
 #define WIDTH 120
 #define HEIGHT 90

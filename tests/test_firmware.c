@@ -29,7 +29,7 @@
 #include "panel_emulator.h"
 #include "panel_stream.h"
 #include "scene_load.h"
-#include "tarn_panel.h"
+#include "tarn/tarn_panel.h"
 
 #define FIRMWARE_DIR "build/firmware"
 #define BOARDS_MAX 16

@@ -25,7 +25,7 @@
 #include "image_checksum.h"
 #include "scene_load.h"
 #include "static_view.h"
-#include "tarn_checksum.h"
+#include "tarn/tarn_checksum.h"
 
 #define SWEEP_DIR_DEFAULT "build/firmware-sweep-check/qemu-m0"
 #define SWEEP_TIME_MS 1000u /* FW_TIME_1 */

@@ -2,7 +2,7 @@
  * at the library's own calls.
  *
  * No GPIO chip is attached to the build machine and the kernel has no gpio-sim, so
- * this file defines the libgpiod 1.x functions host/gpio_lines_gpiod1.c calls, and
+ * this file defines the libgpiod 1.x functions host/display/gpio_lines_gpiod1.c calls, and
  * the link takes them instead of the library's: a chip "gpiochip0" with 32 lines,
  * line 7 held by another consumer. It proves what a user sees when a line does not
  * exist or is busy, and that nothing stays requested or open after a failure,

@@ -10,9 +10,9 @@
 #include <stdint.h>
 #include <cmocka.h>
 
-#include "tarn_math.h"
-#include "tarn_panel.h"
-#include "tarn_render.h"
+#include "tarn/tarn_math.h"
+#include "tarn/tarn_panel.h"
+#include "tarn/tarn_render.h"
 #include "tarn_internal.h"
 
 static void saturation_and_clamping(void **state)

@@ -1,6 +1,6 @@
 /* test_math.c: core/'s fixed-point math against libm, over each whole input range.
  *
- * The sweeps are host/accuracy_math.c's (the same numbers `tarn accuracy --math`
+ * The sweeps are host/compare/accuracy_math.c's (the same numbers `tarn accuracy --math`
  * prints); this file asserts the error bounds documented in core/tarn_math.h, the
  * exact values at the limits, and that invalid knob values stay in bounds. Running
  * it under ASan + UBSan also checks every swept input for undefined behaviour and
@@ -16,8 +16,8 @@
 
 #include "accuracy_math.h"
 #include "tarn_internal.h"
-#include "tarn_math.h"
-#include "tarn_render.h"
+#include "tarn/tarn_math.h"
+#include "tarn/tarn_render.h"
 
 #define EXP2_CONFIGS 6 /* table sizes 8, 16, ..., 256 */
 

@@ -20,7 +20,7 @@
 #include "panel_emulator.h"
 #include "panel_stream.h"
 #include "scene_load.h"
-#include "tarn_panel.h"
+#include "tarn/tarn_panel.h"
 
 #define SCENE_PATH "scenes/effects/none.json"
 #define POISON 0xF81Fu /* magenta: RAM the driver never wrote */

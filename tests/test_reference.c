@@ -18,7 +18,7 @@
 
 #include "compare.h"
 #include "reference.h"
-#include "tarn_render.h"
+#include "tarn/tarn_render.h"
 
 #define W 16
 #define H 16

@@ -20,7 +20,7 @@
 #include <string.h>
 
 #include "reference.h"
-#include "tarn_render.h"
+#include "tarn/tarn_render.h"
 
 #define W 16
 #define H 16

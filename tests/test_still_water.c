@@ -1,5 +1,5 @@
 /* test_still_water.c: the water drawn over a still-water backdrop (tarn_scene.h,
- * host/backdrop.h), which holds the water's still terms drawn and each flat water
+ * host/bake/backdrop.h), which holds the water's still terms drawn and each flat water
  * object's plane: where the water has no moving terms, the frame is the whole
  * scene's, byte for byte; where it has some, it is as close to the float reference
  * as the whole scene drawn, one water object or two that overlap. The backdrop

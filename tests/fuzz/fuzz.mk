@@ -18,7 +18,7 @@ FUZZ_DIR := build/fuzz
 FUZZ_CC := clang
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 FUZZ_CFLAGS := -std=c99 -Wall -Wextra -Werror -g -O1 $(FUZZ_SAN) -fsanitize=fuzzer-no-link -D_POSIX_C_SOURCE=200809L \
-	-Icore -Icore/include -Icore/include/tarn -Ihost -Itests/fuzz $(shell pkg-config --cflags $(HOST_PKGS) 2>/dev/null)
+	$(HOST_INCLUDES) -Itests/fuzz $(shell pkg-config --cflags $(HOST_PKGS) 2>/dev/null)
 FUZZ_LIB_OBJ := $(CORE_SRC:%.c=$(FUZZ_DIR)/%.o) $(HOST_SRC:%.c=$(FUZZ_DIR)/%.o) $(FUZZ_DIR)/tests/fuzz/fuzz_input.o
 FUZZ_BIN := $(FUZZ_TARGETS:%=$(FUZZ_DIR)/%)
 # libFuzzer's options for every run: a slow input is a finding (the renderer must

@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "fuzz_input.h"
-#include "tarn_render.h"
+#include "tarn/tarn_render.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

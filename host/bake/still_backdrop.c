@@ -1,0 +1,222 @@
+/* still_backdrop.c: the still-water backdrop (backdrop.h, tarn_scene.h "Still
+ * water"): the scene drawn with its water's still terms alone, each water pixel
+ * marked with its object and where foam can show, the foam band's places, and
+ * each water object's plane (still_planes.h). */
+#include "still_backdrop.h"
+#include "backdrop_frames.h"
+#include "tarn_internal.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* A copy of a scene's objects whose water objects draw with materials of their
+ * own, which an edit changes. */
+typedef struct {
+    tarn_scene scene;
+    tarn_object *objects;
+    tarn_material *materials; /* per object; a water object's only */
+    tarn_water *waters;
+} water_edit;
+
+typedef void (*water_change)(tarn_water *water, const void *arg);
+
+static void water_edit_free(water_edit *e)
+{
+    free(e->objects);
+    free(e->materials);
+    free(e->waters);
+    memset(e, 0, sizeof *e);
+}
+
+/* `scene` with each water object's material copied and its water changed. */
+static int water_edit_make(const tarn_scene *scene, water_change change, const void *arg, water_edit *e,
+                           tarn_error *err)
+{
+    const size_t count = scene->object_count > 0 ? scene->object_count : 1u;
+    e->objects = malloc(count * sizeof *e->objects);
+    e->materials = malloc(count * sizeof *e->materials);
+    e->waters = malloc(count * sizeof *e->waters);
+    if (e->objects == NULL || e->materials == NULL || e->waters == NULL) {
+        water_edit_free(e);
+        return tarn_fail(err, "backdrop: out of memory copying the water's materials");
+    }
+    e->scene = *scene;
+    e->scene.objects = e->objects;
+    for (uint32_t i = 0; i < scene->object_count; i++) {
+        e->objects[i] = scene->objects[i];
+        if (!tarn_object_is_water(&scene->objects[i])) continue;
+        e->waters[i] = *scene->objects[i].material->water;
+        change(&e->waters[i], arg);
+        e->materials[i] = *scene->objects[i].material;
+        e->materials[i].water = &e->waters[i];
+        e->objects[i].material = &e->materials[i];
+    }
+    return 0;
+}
+
+/* Features cut to the uint32_t mask `arg`. */
+static void keep_features(tarn_water *water, const void *arg)
+{
+    water->features &= *(const uint32_t *)arg;
+}
+
+/* The water object a still-water mark names: the mark-th of the scene's water
+ * objects. */
+static const tarn_object *water_object(const tarn_scene *scene, uint32_t mark)
+{
+    for (uint32_t k = 0; k < scene->object_count; k++)
+        if (tarn_object_is_water(&scene->objects[k]) && --mark == 0u) return &scene->objects[k];
+    return NULL;
+}
+
+/* What keeps still water from applying, refused before anything is drawn; and
+ * the water objects' planes. */
+static int still_water_planes(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_image *b,
+                              tarn_error *err)
+{
+    if (scene->underwater != NULL)
+        return tarn_fail(err, "--backdrop still: the scene's underwater view moves every pixel with the clock; "
+                              "use --backdrop on");
+    const int32_t apron = tarn_frame_apron_pixels(scene, config);
+    if (apron > 0)
+        return tarn_fail(err, "--backdrop still: the water refracts up to %d pixels at this quality, and a "
+                              "refracted sample moves with the clock; use --apron off (as --quality fast does) "
+                              "or --backdrop on", (int)apron);
+    uint32_t water_objects = 0;
+    for (uint32_t i = 0; i < scene->object_count; i++) water_objects += (uint32_t)tarn_object_is_water(&scene->objects[i]);
+    if (water_objects > TARN_BACKDROP_STILL_OBJECTS_MAX)
+        return tarn_fail(err, "--backdrop still: the scene has %u water objects, at most %u can be told apart",
+                         water_objects, TARN_BACKDROP_STILL_OBJECTS_MAX);
+    b->planes = calloc(water_objects > 0 ? water_objects : 1u, sizeof *b->planes);
+    if (b->planes == NULL) return tarn_fail(err, "backdrop: out of memory finding the water's planes");
+    b->backdrop.planes = b->planes;
+    return tarn_still_planes_make(scene, config, b->planes, err);
+}
+
+/* Marks each water pixel of `still` with its water object's number (1 + its index
+ * among the water objects): the first whose frame over the opaque objects alone
+ * leaves the still frame's depth there. */
+static int mark_objects(const tarn_scene *scene, const tarn_frame_config *config, tarn_drawn_frame *still,
+                        const uint8_t *water, tarn_error *err)
+{
+    const size_t pixels = (size_t)config->width * config->height;
+    tarn_object *objects = malloc((scene->object_count > 0 ? scene->object_count : 1u) * sizeof *objects);
+    uint8_t *marked = calloc(pixels, 1);
+    int failed = objects == NULL || marked == NULL ? tarn_fail(err, "backdrop: out of memory marking the water") : 0;
+    uint32_t number = 0;
+    for (uint32_t i = 0; !failed && i < scene->object_count; i++) {
+        if (!tarn_object_is_water(&scene->objects[i])) continue;
+        number++;
+        tarn_scene alone = tarn_scene_part(scene, 0, objects);
+        objects[alone.object_count++] = scene->objects[i];
+        tarn_drawn_frame f = {NULL, NULL, 0, 0};
+        failed = tarn_backdrop_draw(&alone, config, &f, "marking the water", err);
+        for (size_t k = 0; !failed && k < pixels; k++) {
+            if (!water[k] || marked[k] || tarn_drawn_depth_differs(&f, still, k)) continue;
+            marked[k] = 1;
+            still->rgb[k] |= number << TARN_BACKDROP_STILL_SHIFT;
+        }
+        tarn_drawn_free(&f);
+    }
+    free(objects);
+    free(marked);
+    return failed;
+}
+
+/* The water objects of `scene` alone, as drawn with exact (32-bit) depth. */
+static int draw_water_alone(const tarn_scene *scene, const tarn_frame_config *config, tarn_drawn_frame *surface,
+                            tarn_error *err)
+{
+    tarn_frame_config exact = *config;
+    exact.quality.depth_bits = 32;
+    return tarn_backdrop_draw_part(scene, 1, &exact, surface, "finding the foam band", err);
+}
+
+/* near/d (Q1.30) at pixel k of a frame's depth. */
+static uint32_t depth_q30(const tarn_drawn_frame *f, size_t k)
+{
+    if (f->depth_bytes == 2u) {
+        uint16_t code;
+        memcpy(&code, f->depth + 2u * k, sizeof code);
+        return tarn_depth16_decode(code);
+    }
+    uint32_t q30;
+    memcpy(&q30, f->depth + 4u * k, sizeof q30);
+    return q30;
+}
+
+/* Each water pixel's place in its object's foam band (step 9's f, Q0.16) as the
+ * scene drawn whole finds it with a pixel's own effects, by the core's own steps:
+ * from the opaque depth beneath and the water's own near/d. Where it is in the band
+ * (f < 1), `band` is 1 and the pixel's colour takes TARN_BACKDROP_STILL_FOAM. */
+static int find_foam_places(const tarn_scene *scene, const tarn_frame_config *config, const tarn_drawn_frame *opaque,
+                            tarn_drawn_frame *still, const uint8_t *water, uint16_t *places, uint8_t *band,
+                            tarn_error *err)
+{
+    tarn_drawn_frame surface = {NULL, NULL, 0, 0};
+    if (draw_water_alone(scene, config, &surface, err) != 0) return -1;
+    tarn_view view;
+    tarn_view_setup(scene, config, &view);
+    tarn_water_context context;
+    memset(&context, 0, sizeof context);
+    for (size_t k = 0; k < (size_t)config->width * config->height; k++) {
+        places[k] = 0xFFFFu;
+        band[k] = 0;
+        if (!water[k]) continue;
+        const tarn_object *object = water_object(scene, (still->rgb[k] & TARN_BACKDROP_STILL_OBJECT) >> TARN_BACKDROP_STILL_SHIFT);
+        if (context.object != object) tarn_water_context_setup(&context, &view, config, object);
+        if (!tarn_water_uses(&context, TARN_WATER_FOAM)) continue;
+        const uint32_t below = tarn_water_linear_depth(depth_q30(opaque, k), context.near, context.far, context.recip_steps);
+        const uint32_t at = tarn_water_linear_depth(depth_q30(&surface, k), context.near, context.far, context.recip_steps);
+        const uint32_t f = tarn_water_foam_band(&context, below > at ? below - at : 0u);
+        if (f >= 65536u) continue;
+        places[k] = (uint16_t)f;
+        band[k] = 1;
+        still->rgb[k] |= TARN_BACKDROP_STILL_FOAM;
+    }
+    tarn_drawn_free(&surface);
+    return 0;
+}
+
+/* The opaque frame, the still one with its water marked with its object, and
+ * where the water draws (`water`). */
+static int draw_still_frames(const tarn_scene *scene, const tarn_frame_config *config, tarn_drawn_frame *opaque,
+                             tarn_drawn_frame *still, uint8_t *water, tarn_error *err)
+{
+    const uint32_t still_features = ~(uint32_t)(TARN_WATER_MOVING | TARN_WATER_REFRACTION);
+    water_edit edit = {{0}, NULL, NULL, NULL};
+    int failed = tarn_backdrop_draw_part(scene, 0, config, opaque, "drawing the opaque objects", err) ||
+                 water_edit_make(scene, keep_features, &still_features, &edit, err) ||
+                 tarn_backdrop_draw(&edit.scene, config, still, "drawing the still water", err);
+    for (size_t k = 0; !failed && k < (size_t)config->width * config->height; k++)
+        water[k] = tarn_drawn_depth_differs(still, opaque, k);
+    failed = failed || mark_objects(&edit.scene, config, still, water, err);
+    water_edit_free(&edit);
+    return failed;
+}
+
+/* The still-water backdrop, and where the frame's water draws. */
+int tarn_still_image_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_image *b,
+                            uint8_t **water, tarn_error *err)
+{
+    if (still_water_planes(scene, config, b, err) != 0) return -1;
+    tarn_backdrop_set_quality(&b->backdrop, &config->quality, 1);
+    const size_t pixels = (size_t)config->width * config->height;
+    *water = malloc(pixels);
+    uint8_t *band = malloc(pixels);
+    uint16_t *places = malloc(pixels * sizeof *places);
+    tarn_drawn_frame opaque = {NULL, NULL, 0, 0}, still = {NULL, NULL, 0, 0};
+    /* the places in the band are kept as a frame's depth is */
+    const tarn_drawn_frame kept = {NULL, (uint8_t *)places, sizeof *places, config->width};
+    const int failed = *water == NULL || band == NULL || places == NULL
+        ? tarn_fail(err, "backdrop: out of memory drawing the still water")
+        : draw_still_frames(scene, config, &opaque, &still, *water, err) ||
+              find_foam_places(scene, config, &opaque, &still, *water, places, band, err) ||
+              tarn_backdrop_index_colours(still.rgb, pixels, b, err) || tarn_backdrop_keep_depth(&kept, band, config->height, b, err);
+    tarn_drawn_free(&opaque);
+    tarn_drawn_free(&still);
+    free(band);
+    free(places);
+    return failed;
+}
+

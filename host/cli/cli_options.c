@@ -1,0 +1,208 @@
+#include "cli_options.h"
+#include "backdrop.h"
+#include "option_values.h"
+#include "quality_options.h"
+
+#include <stdio.h>
+#include <string.h>
+
+const char tarn_cli_usage[] =
+    "usage: tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]\n"
+    "                   [--reference [--snapped]] [--backdrop on|off|still] [QUALITY]\n"
+    "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]\n"
+    "       tarn accuracy --math\n"
+    "       tarn memory SCENE [--size WxH] [QUALITY]\n"
+    "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]\n"
+    "                 [--static-view on|off] [--backdrop on|off|still] [QUALITY]\n"
+    "       (--backdrop on: the opaque objects drawn once, for the frame and quality, into\n"
+    "        a palette image the water draws over; the image is the same. still: the\n"
+    "        water's still terms drawn into it too, and only its moving ones each frame;\n"
+    "        each channel within 1 of the scene drawn whole, but for the highlights that\n"
+    "        water blocks share)\n"
+    "       tarn show SCENE --display DISPLAY --panel MODEL [...]   (tarn show --help)\n"
+    "       tarn sweep [SCENE...] [--out DIR] [...]                 (tarn sweep --help)\n"
+    "QUALITY: --quality fast|balanced|exact (a preset, balanced by default; the knobs below\n"
+    "         override it wherever they stand)\n"
+    "         --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
+    "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n"
+    "         --depth-interpolation exact|plane (near/d rounded exactly at each pixel, or on a\n"
+    "         plane like the attributes': a division less a triangle)\n"
+    "         --fog-bits N (4..16: fraction bits of the depth of water in fog's exp2)\n"
+    "         --apron on|off|N (how far refraction may move a sample, so how much opaque scene\n"
+    "         each tile renders around its water: as far as it reaches, not at all, or N pixels 0..32)\n"
+    "         --bins on|off (find each cluster's screen box once a frame, 4 bytes a cluster)\n"
+    "         --water-block 1|2|4 (water effects found at every pixel, or once per 2x2 or 4x4 block:\n"
+    "         tiles a multiple of the block only)\n";
+
+static int parse_size(const char *text, tarn_cli_options *o, tarn_error *err)
+{
+    const char *x = text ? strchr(text, 'x') : NULL;
+    unsigned long w, h;
+    char width_text[16];
+    if (x != NULL && (size_t)(x - text) < sizeof width_text) {
+        memcpy(width_text, text, (size_t)(x - text));
+        width_text[x - text] = '\0';
+        if (tarn_parse_whole(width_text, 1, TARN_FRAME_SIZE_MAX, &w) == 0 &&
+            tarn_parse_whole(x + 1, 1, TARN_FRAME_SIZE_MAX, &h) == 0) {
+            o->width = (uint16_t)w;
+            o->height = (uint16_t)h;
+            return 0;
+        }
+    }
+    return tarn_fail(err, "--size: expected WxH with each side 1..%u, got '%s'",
+                     TARN_FRAME_SIZE_MAX, text ? text : "");
+}
+
+static const tarn_option_choice commands[] = {
+    {"render", TARN_CMD_RENDER, NULL}, {"compare", TARN_CMD_COMPARE, NULL}, {"accuracy", TARN_CMD_ACCURACY, NULL},
+    {"memory", TARN_CMD_MEMORY, NULL}, {"bake", TARN_CMD_BAKE, NULL}};
+
+/* bake --static-view on|off: whether the baked objects carry static vertices. */
+static const tarn_option_choice static_views[] = {{"on", 0, NULL}, {"off", 1, NULL}};
+
+/* render, bake --backdrop on|off|still. */
+static const tarn_option_choice backdrops[] = {
+    {"on", TARN_BACKDROP_OPAQUE, NULL}, {"off", TARN_BACKDROP_NONE, NULL}, {"still", TARN_BACKDROP_STILL, NULL}};
+
+/* The command word (NULL when there is none). */
+static int parse_command(const char *word, tarn_cli_options *o, tarn_error *err)
+{
+    int command;
+    if (tarn_find_choice(word, TARN_CHOICES(commands), &command) == 0) {
+        o->command = (tarn_command)command;
+        return 0;
+    }
+    char expected[64]; /* "render, compare, accuracy, memory or bake" */
+    tarn_list_choices(TARN_CHOICES(commands), expected, sizeof expected);
+    if (word == NULL) return tarn_fail(err, "expected a command: %s", expected);
+    return tarn_fail(err, "unknown command '%s'; expected %s", word, expected);
+}
+
+/* --frames N and --fps F. */
+static int parse_sequence_option(const char *name, const char *value, tarn_cli_options *o,
+                                 tarn_error *err)
+{
+    unsigned long n;
+    if (strcmp(name, "--frames") == 0) {
+        if (tarn_parse_number(name, value, 1, TARN_CLI_FRAMES_MAX, &n, err) != 0) return -1;
+        o->frames = (uint16_t)n;
+        return 0;
+    }
+    if (tarn_parse_number(name, value, 1, TARN_CLI_FPS_MAX, &n, err) != 0) return -1;
+    o->fps = (uint8_t)n;
+    return 0;
+}
+
+/* Options with a value: TARN_OPTION_VALUE, TARN_OPTION_UNKNOWN for none of them,
+ * or -1. */
+static int parse_valued_option(const char *name, const char *value, tarn_cli_options *o,
+                               tarn_error *err)
+{
+    unsigned long ms;
+    if (strcmp(name, "-o") == 0) o->output_path = value;
+    else if (strcmp(name, "--diff") == 0) o->diff_path = value;
+    else if (strcmp(name, "--points") == 0) o->points_path = value;
+    else if (strcmp(name, "--static-view") == 0) {
+        o->static_view_given = 1;
+        return tarn_parse_choice(name, value, TARN_CHOICES(static_views), &o->no_static_view, err);
+    } else if (strcmp(name, "--backdrop") == 0) {
+        return tarn_parse_choice(name, value, TARN_CHOICES(backdrops), &o->backdrop, err);
+    } else if (strcmp(name, "--name") == 0) {
+        o->name = value; /* checked by bake, so that "" gets the one-line error "3d" gets */
+        return value ? 0 : tarn_fail(err, "--name: expected a C identifier");
+    } else if (strcmp(name, "--size") == 0) return parse_size(value, o, err);
+    else if (strcmp(name, "--frames") == 0 || strcmp(name, "--fps") == 0)
+        return parse_sequence_option(name, value, o, err);
+    else if (strcmp(name, "--time") == 0) {
+        if (tarn_parse_whole(value, 0, UINT32_MAX, &ms) != 0)
+            return tarn_fail(err, "--time: expected milliseconds 0..%lu, got '%s'",
+                             (unsigned long)UINT32_MAX, value ? value : "");
+        o->time_ms = (uint32_t)ms;
+    } else return tarn_cli_parse_quality_option(name, value, &o->quality, err);
+    if (value == NULL || *value == '\0') return tarn_fail(err, "%s: expected a file name", name);
+    return 0;
+}
+
+static int parse_flag(const char *name, tarn_cli_options *o)
+{
+    if (strcmp(name, "--reference") == 0) o->reference = 1;
+    else if (strcmp(name, "--snapped") == 0) o->snapped = 1;
+    else if (strcmp(name, "--math") == 0) o->math = 1;
+    else return 1;
+    return 0;
+}
+
+/* A tarn_option_reader. */
+static int read_option(void *options, const char *name, const char *value, tarn_error *err)
+{
+    tarn_cli_options *o = options;
+    return parse_flag(name, o) == 0 ? TARN_OPTION_FLAG : parse_valued_option(name, value, o, err);
+}
+
+/* In 64 bits, so that a clock past UINT32_MAX shows instead of wrapping. */
+static uint64_t frame_clock(const tarn_cli_options *o, unsigned index)
+{
+    return o->time_ms + (uint64_t)index * 1000u / (o->fps ? o->fps : 1u);
+}
+
+/* A sequence is for render; its last frame's clock must not wrap. */
+static int check_sequence(tarn_cli_options *o, tarn_error *err)
+{
+    if (o->frames && o->command != TARN_CMD_RENDER)
+        return tarn_fail(err, "--frames applies to render");
+    if (o->fps && !o->frames) return tarn_fail(err, "--fps applies to a sequence: add --frames N");
+    if (!o->frames) return 0;
+    if (!o->fps) o->fps = TARN_CLI_FPS_DEFAULT;
+    uint64_t last = frame_clock(o, o->frames - 1u);
+    if (last > UINT32_MAX)
+        return tarn_fail(err, "--frames: the last frame would be at %llu ms, past %lu",
+                         (unsigned long long)last, (unsigned long)UINT32_MAX);
+    return 0;
+}
+
+static int check_combination(tarn_cli_options *o, tarn_error *err)
+{
+    if (tarn_cli_check_quality(&o->quality, err) != 0) return -1;
+    if (o->command == TARN_CMD_ACCURACY)
+        return o->math ? 0 : tarn_fail(err, "accuracy: expected --math");
+    if (o->scene_path == NULL) return tarn_fail(err, "expected a scene file");
+    if (o->command == TARN_CMD_RENDER && o->output_path == NULL)
+        return tarn_fail(err, "render: expected -o OUT.png");
+    if (o->command == TARN_CMD_BAKE && o->output_path == NULL) return tarn_fail(err, "bake: expected -o OUT.c");
+    if (o->name && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--name applies to bake");
+    if (o->points_path && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--points applies to bake");
+    if (o->static_view_given && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--static-view applies to bake");
+    if (o->backdrop && o->command != TARN_CMD_RENDER && o->command != TARN_CMD_BAKE)
+        return tarn_fail(err, "--backdrop applies to render and bake");
+    if (o->backdrop && (o->reference || o->points_path || o->no_static_view))
+        return tarn_fail(err, "--backdrop: draws one quality of the core with static vertices; "
+                         "it excludes %s", o->reference ? "--reference" : o->points_path ? "--points" : "--static-view off");
+    if (o->snapped && o->command == TARN_CMD_RENDER && !o->reference)
+        return tarn_fail(err, "--snapped applies to the reference: add --reference");
+    return check_sequence(o, err);
+}
+
+int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
+{
+    memset(o, 0, sizeof *o);
+    o->quality = tarn_quality_default();
+    o->argc = argc;
+    o->argv = argv;
+    if (parse_command(argc < 2 ? NULL : argv[1], o, err) != 0) return -1;
+    if (tarn_cli_apply_preset(argc - 2, argv + 2, &o->quality, err) != 0) return -1;
+    if (tarn_parse_arguments(argc, argv, &o->scene_path, read_option, o, err) != 0) return -1;
+    return check_combination(o, err);
+}
+
+int tarn_cli_frame_path(const char *output, unsigned index, char *out, size_t size)
+{
+    size_t length = strlen(output);
+    if (length >= 4 && strcmp(output + length - 4, ".png") == 0) length -= 4;
+    int written = snprintf(out, size, "%.*s-%04u.png", (int)length, output, index);
+    return written >= 0 && (size_t)written < size ? 0 : -1;
+}
+
+uint32_t tarn_cli_frame_time(const tarn_cli_options *o, unsigned index)
+{
+    return (uint32_t)frame_clock(o, index); /* in range: the parser checked the last frame */
+}

@@ -1,0 +1,71 @@
+/* cli_options.h: the command line of the `tarn` tool, parsed and range-checked.
+ *
+ *   tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]
+ *               [--reference [--snapped]] [--backdrop on|off|still] [QUALITY]
+ *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]
+ *   tarn accuracy --math
+ *   tarn memory SCENE [--size WxH] [QUALITY]   (the working memory a frame needs)
+ *   tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]
+ *             [--static-view on|off] [--backdrop on|off|still] [QUALITY]
+ *                                              (the scene as const C data: host/bake/bake.h)
+ * QUALITY knobs (defaults from tarn_quality_default()):
+ *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
+ *   --depth 16|32  --depth-interpolation exact|plane  --recip-steps N (0..2)
+ *   --exp2 N[:nearest|:linear] (8..256)
+ *   --apron on|off|N  --bins on|off  --fog-bits N (4..16)  --water-block 1|2|4
+ *   --quality fast|balanced|exact   a preset (core/quality.c) as the base of the others
+ * (parsed by quality_options.h) */
+#ifndef TARN_HOST_CLI_OPTIONS_H
+#define TARN_HOST_CLI_OPTIONS_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "error.h"
+#include "tarn/tarn_render.h"
+
+typedef enum {
+    TARN_CMD_RENDER,
+    TARN_CMD_COMPARE,
+    TARN_CMD_ACCURACY,
+    TARN_CMD_MEMORY,
+    TARN_CMD_BAKE
+} tarn_command;
+
+typedef struct {
+    tarn_command command;
+    const char *scene_path;
+    const char *output_path; /* render, bake: -o */
+    const char *diff_path;   /* compare: --diff, or NULL */
+    const char *name;        /* bake: --name, or NULL (checked by the bake itself) */
+    const char *points_path; /* bake: --points, or NULL (host/bake/bake_points.h) */
+    int no_static_view;      /* bake --static-view off: vertices computed each frame */
+    int static_view_given;   /* --static-view appeared */
+    int backdrop;            /* render, bake --backdrop: a tarn_backdrop_kind, what is
+                                drawn once (host/bake/backdrop.h) */
+    uint16_t width, height;  /* 0: the scene's own frame size */
+    uint32_t time_ms;
+    uint16_t frames;         /* render --frames: 0 for one frame written to -o itself */
+    uint8_t fps;             /* frame k is at time_ms + floor(k * 1000 / fps) */
+    int reference;           /* render with the float reference */
+    int snapped;             /* the reference rasterizes the core's snapped triangles */
+    int math;                /* accuracy --math */
+    tarn_quality quality;
+    int argc;                /* the whole command line, as given */
+    char **argv;
+} tarn_cli_options;
+
+/* 0, or -1 with a one-line message in `err`. */
+int tarn_cli_parse(int argc, char **argv, tarn_cli_options *options, tarn_error *err);
+
+#define TARN_CLI_FRAMES_MAX 10000u
+
+/* Frame `index` of a --frames sequence: "out.png" -> "out-0007.png" (a name without
+ * ".png" gains "-0007.png"). 0, or -1 if it does not fit `size` bytes. */
+int tarn_cli_frame_path(const char *output, unsigned index, char *out, size_t size);
+
+/* The clock of frame `index`: time_ms + floor(index * 1000 / fps). */
+uint32_t tarn_cli_frame_time(const tarn_cli_options *options, unsigned index);
+
+extern const char tarn_cli_usage[];
+
+#endif

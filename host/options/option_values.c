@@ -1,0 +1,79 @@
+/* option_values.c: the values of command-line options (option_values.h). */
+#include "option_values.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Room for the longest list of words with their meanings. */
+#define CHOICE_LIST_MAX 320
+
+int tarn_parse_whole(const char *text, unsigned long min, unsigned long max, unsigned long *out)
+{
+    if (text == NULL || *text < '0' || *text > '9') return -1;
+    errno = 0;
+    char *end;
+    unsigned long value = strtoul(text, &end, 10);
+    if (errno != 0 || *end != '\0' || value < min || value > max) return -1;
+    *out = value;
+    return 0;
+}
+
+int tarn_parse_number(const char *option, const char *text, unsigned long min, unsigned long max,
+                      unsigned long *out, tarn_error *err)
+{
+    if (tarn_parse_whole(text, min, max, out) == 0) return 0;
+    return tarn_fail(err, "%s: expected a whole number %lu..%lu, got '%s'", option, min, max, text ? text : "");
+}
+
+int tarn_find_choice(const char *text, const tarn_option_choice *choices, size_t count, int *value)
+{
+    for (size_t k = 0; text != NULL && k < count; k++) {
+        if (strcmp(text, choices[k].name) == 0) {
+            *value = choices[k].value;
+            return 0;
+        }
+    }
+    return -1;
+}
+
+void tarn_list_choices(const tarn_option_choice *choices, size_t count, char *out, size_t size)
+{
+    size_t used = 0;
+    out[0] = '\0';
+    for (size_t k = 0; k < count && used < size; k++) {
+        const char *separator = k == 0 ? "" : k + 1 < count ? ", " : " or ";
+        int n = choices[k].meaning != NULL
+                    ? snprintf(out + used, size - used, "%s%s (%s)", separator, choices[k].name, choices[k].meaning)
+                    : snprintf(out + used, size - used, "%s%s", separator, choices[k].name);
+        used += n > 0 ? (size_t)n : 0u;
+    }
+}
+
+int tarn_parse_choice(const char *option, const char *text, const tarn_option_choice *choices, size_t count,
+                      int *value, tarn_error *err)
+{
+    if (tarn_find_choice(text, choices, count, value) == 0) return 0;
+    char expected[CHOICE_LIST_MAX];
+    tarn_list_choices(choices, count, expected, sizeof expected);
+    return tarn_fail(err, "%s: expected %s, got '%s'", option, expected, text ? text : "");
+}
+
+int tarn_parse_arguments(int argc, char **argv, const char **scene, tarn_option_reader read, void *options,
+                         tarn_error *err)
+{
+    for (int i = 2; i < argc; i++) {
+        const char *arg = argv[i];
+        if (arg[0] != '-') {
+            if (*scene != NULL) return tarn_fail(err, "unexpected argument '%s'", arg);
+            *scene = arg;
+            continue;
+        }
+        int taken = read(options, arg, i + 1 < argc ? argv[i + 1] : NULL, err);
+        if (taken < 0) return -1;
+        if (taken == TARN_OPTION_UNKNOWN) return tarn_fail(err, "unknown option '%s'", arg);
+        if (taken == TARN_OPTION_VALUE) i++;
+    }
+    return 0;
+}

@@ -1,0 +1,538 @@
+#include "scene_load.h"
+
+#include "mesh_clusters.h"
+
+#include <errno.h>
+#include <jansson.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "obj_load.h"
+#include "scene_fields.h"
+#include "scene_textures.h"
+#include "water_load.h"
+
+#define PI 3.14159265358979323846
+
+/* The most textures one material loads: its own, two normal maps, foam and a ramp. */
+#define TEXTURES_PER_MATERIAL 5u
+
+/* ---- field rules ------------------------------------------------------------ */
+
+static const tarn_rule FOV = { "a number of degrees, 1..179", 1, 179, 0 };
+static const tarn_rule FRAME_SIDE = { "an integer 1..1024", 1, 1024, TARN_INTEGER };
+static const tarn_rule SEGMENTS = { "an integer 1..256", 1, 256, TARN_INTEGER };
+static const tarn_rule SPHERE_SEGMENTS = { "an integer 3..256", 3, 256, TARN_INTEGER };
+static const tarn_rule SPHERE_RINGS = { "an integer 2..256", 2, 256, TARN_INTEGER };
+
+static int get_vec3(tarn_loader *l, const json_t *object, const char *parent, const char *key,
+                    const double *fallback, double out[3])
+{
+    return tarn_get_numbers(l, object, parent, key, 3, &TARN_COORDINATE, fallback, out);
+}
+
+static tarn_vec3 vec3_q16(const double v[3])
+{
+    tarn_vec3 q = { tarn_q16_from_double(v[0]), tarn_q16_from_double(v[1]),
+                    tarn_q16_from_double(v[2]) };
+    return q;
+}
+
+/* ---- frame, camera, light ----------------------------------------------------- */
+
+static int load_frame(tarn_loader *l, const json_t *root)
+{
+    static const char *const fields[] = { "width", "height", NULL };
+    static const double side = 240;
+    json_t *frame;
+    double width = side, height = side;
+    if (tarn_get_object(l, root, "", "frame", "an object {\"width\", \"height\"}", 0, &frame)) {
+        return -1;
+    }
+    if (frame && (tarn_check_fields(l, frame, "frame", fields, NULL, "") ||
+                  tarn_get_number(l, frame, "frame", "width", &FRAME_SIDE, &side, &width) ||
+                  tarn_get_number(l, frame, "frame", "height", &FRAME_SIDE, &side, &height))) {
+        return -1;
+    }
+    l->out->width = (uint16_t)width;
+    l->out->height = (uint16_t)height;
+    return 0;
+}
+
+static int load_camera(tarn_loader *l, const json_t *root)
+{
+    static const char *const fields[] = { "position", "target", "fov", "near", "far", NULL };
+    static const double default_near = 0.1, default_far = 100;
+    json_t *c;
+    double position[3], target[3], fov, near, far;
+    if (tarn_get_object(l, root, "", "camera",
+                        "an object {\"position\", \"target\", \"fov\"...}", 1, &c) ||
+        tarn_check_fields(l, c, "camera", fields, NULL, "") ||
+        get_vec3(l, c, "camera", "position", NULL, position) ||
+        get_vec3(l, c, "camera", "target", NULL, target) ||
+        tarn_get_number(l, c, "camera", "fov", &FOV, NULL, &fov) ||
+        tarn_get_number(l, c, "camera", "near", &TARN_POSITIVE, &default_near, &near) ||
+        tarn_get_number(l, c, "camera", "far", &TARN_POSITIVE, &default_far, &far)) {
+        return -1;
+    }
+    tarn_camera *camera = &l->out->scene.camera;
+    camera->position = vec3_q16(position);
+    camera->target = vec3_q16(target);
+    camera->fov_y_degrees = tarn_q16_from_double(fov);
+    camera->near = tarn_q16_from_double(near);
+    camera->far = tarn_q16_from_double(far);
+    if (camera->far <= camera->near) {
+        return tarn_fail_field(l, "camera.far",
+                               "expected a number greater than camera.near (%g), got %g",
+                               near, far);
+    }
+    if (memcmp(&camera->position, &camera->target, sizeof camera->position) == 0) {
+        return tarn_fail_field(l, "camera.target", "must differ from camera.position");
+    }
+    return 0;
+}
+
+static int load_light(tarn_loader *l, const json_t *root)
+{
+    static const char *const fields[] = { "direction", "colour", "ambient", NULL };
+    static const double from_above[3] = { 0, 1, 0 };
+    json_t *light;
+    double d[3];
+    tarn_light *out = &l->out->scene.light;
+    if (tarn_get_object(l, root, "", "light",
+                        "an object {\"direction\", \"colour\", \"ambient\"}", 0, &light)) {
+        return -1;
+    }
+    /* an absent light (NULL) has no fields, so every one takes its default */
+    if (tarn_check_fields(l, light, "light", fields, NULL, "") ||
+        get_vec3(l, light, "light", "direction", from_above, d) ||
+        tarn_get_colour(l, light, "light", "colour", 0xFFFFFF, &out->colour_rgb) ||
+        tarn_get_colour(l, light, "light", "ambient", 0x333333, &out->ambient_rgb)) {
+        return -1;
+    }
+    double length = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(length > 1e-9)) {
+        return tarn_fail_field(l, "light.direction", "expected a non-zero vector, got [%g, %g, %g]",
+                               d[0], d[1], d[2]);
+    }
+    double unit[3] = { d[0] / length, d[1] / length, d[2] / length };
+    out->direction = vec3_q16(unit);
+    return 0;
+}
+
+/* ---- materials and textures --------------------------------------------------- */
+
+static int parse_cull(tarn_loader *l, const json_t *m, const char *field, uint8_t *out)
+{
+    static const char *const modes[] = { "back", "none", "front", NULL }; /* tarn_cull order */
+    static const char what[] = "one of \"back\", \"none\", \"front\"";
+    const char *text;
+    if (tarn_get_string(l, m, field, "cull", what, 0, &text)) return -1;
+    *out = TARN_CULL_BACK;
+    if (!text) return 0;
+    for (uint8_t k = 0; modes[k]; k++) {
+        if (strcmp(text, modes[k]) == 0) {
+            *out = k;
+            return 0;
+        }
+    }
+    char cull_field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(cull_field, field, "cull");
+    return tarn_fail_field(l, cull_field, "expected %s, got \"%s\"", what, text);
+}
+
+/* `water` is the material's slot in the scene's waters, used if it has a block. */
+static int load_material(tarn_loader *l, const char *name, const json_t *m, tarn_material *out,
+                         tarn_water *water)
+{
+    static const char *const fields[] = { "colour", "texture", "cull", "unlit", "water", NULL };
+    char field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(field, "materials", name);
+    if (!json_is_object(m)) {
+        return tarn_fail_field(l, field, "expected an object {\"colour\", \"texture\", "
+                                         "\"cull\", \"unlit\", \"water\"}, got %s",
+                               tarn_json_type(m));
+    }
+    int unlit;
+    if (tarn_check_fields(l, m, field, fields, NULL, "") ||
+        tarn_get_colour(l, m, field, "colour", 0xFFFFFF, &out->colour_rgb) ||
+        parse_cull(l, m, field, &out->cull) || tarn_get_bool(l, m, field, "unlit", 0, &unlit)) {
+        return -1;
+    }
+    out->unlit = (uint8_t)unlit;
+    out->texture = NULL;
+    out->water = NULL;
+    if (json_object_get(m, "texture") && tarn_get_texture(l, m, field, "texture", &out->texture)) {
+        return -1;
+    }
+    int present;
+    if (tarn_water_load(l, m, field, l->out->width, water, &present)) return -1;
+    if (present) out->water = water;
+    return 0;
+}
+
+static int load_materials(tarn_loader *l, const json_t *root)
+{
+    tarn_loaded_scene *s = l->out;
+    json_t *materials;
+    if (tarn_get_object(l, root, "", "materials", "an object of named materials", 1, &materials)) {
+        return -1;
+    }
+    size_t n = json_object_size(materials);
+    s->texture_capacity = TEXTURES_PER_MATERIAL * n + 1; /* + the underwater normal map */
+    s->materials = calloc(n + 1, sizeof *s->materials);
+    s->material_names = calloc(n + 1, sizeof *s->material_names);
+    s->waters = calloc(n + 1, sizeof *s->waters);
+    s->textures = calloc(s->texture_capacity, sizeof *s->textures);
+    s->texture_images = calloc(s->texture_capacity, sizeof *s->texture_images);
+    s->texture_paths = calloc(s->texture_capacity, sizeof *s->texture_paths);
+    if (!s->materials || !s->material_names || !s->waters || !s->textures ||
+        !s->texture_images || !s->texture_paths) {
+        return tarn_fail(l->err, "%s: out of memory", l->file);
+    }
+    const char *name;
+    const json_t *m;
+    json_object_foreach(materials, name, m) {
+        size_t k = s->material_count++;
+        s->material_names[k] = strdup(name);
+        if (!s->material_names[k]) return tarn_fail(l->err, "%s: out of memory", l->file);
+        if (load_material(l, name, m, &s->materials[k], &s->waters[k])) return -1;
+    }
+    return 0;
+}
+
+/* ---- objects ------------------------------------------------------------------ */
+
+/* Builds an object's mesh from its type-specific fields; its material decides what
+ * a heightfield may merge. */
+typedef int (*mesh_builder)(tarn_loader *l, const json_t *o, const char *field,
+                            const tarn_material *material, tarn_mesh_buffer *mesh);
+
+static int build_plane(tarn_loader *l, const json_t *o, const char *field,
+                       const tarn_material *material, tarn_mesh_buffer *mesh)
+{
+    (void)material;
+    static const double one_by_one[2] = { 1, 1 };
+    double size[2], segments[2], uv_scale[2];
+    char what[TARN_FIELD_PATH_MAX + 64];
+    snprintf(what, sizeof what, "%s: %s", l->file, field);
+    if (tarn_get_numbers(l, o, field, "size", 2, &TARN_POSITIVE, NULL, size) ||
+        tarn_get_numbers(l, o, field, "segments", 2, &SEGMENTS, one_by_one, segments) ||
+        tarn_get_numbers(l, o, field, "uv_scale", 2, &TARN_COORDINATE, one_by_one, uv_scale)) {
+        return -1;
+    }
+    return tarn_mesh_plane(mesh, size[0], size[1], (uint32_t)segments[0], (uint32_t)segments[1],
+                           uv_scale[0], uv_scale[1], what, l->err);
+}
+
+static int build_box(tarn_loader *l, const json_t *o, const char *field,
+                     const tarn_material *material, tarn_mesh_buffer *mesh)
+{
+    (void)material;
+    double size[3];
+    char what[TARN_FIELD_PATH_MAX + 64];
+    snprintf(what, sizeof what, "%s: %s", l->file, field);
+    if (tarn_get_numbers(l, o, field, "size", 3, &TARN_POSITIVE, NULL, size)) return -1;
+    return tarn_mesh_box(mesh, size[0], size[1], size[2], what, l->err);
+}
+
+static int build_sphere(tarn_loader *l, const json_t *o, const char *field,
+                        const tarn_material *material, tarn_mesh_buffer *mesh)
+{
+    (void)material;
+    static const double default_segments = 16, default_rings = 8;
+    double radius, segments, rings;
+    char what[TARN_FIELD_PATH_MAX + 64];
+    snprintf(what, sizeof what, "%s: %s", l->file, field);
+    if (tarn_get_number(l, o, field, "radius", &TARN_POSITIVE, NULL, &radius) ||
+        tarn_get_number(l, o, field, "segments", &SPHERE_SEGMENTS, &default_segments, &segments) ||
+        tarn_get_number(l, o, field, "rings", &SPHERE_RINGS, &default_rings, &rings)) {
+        return -1;
+    }
+    return tarn_mesh_sphere(mesh, radius, (uint32_t)segments, (uint32_t)rings, what, l->err);
+}
+
+static int build_heightfield(tarn_loader *l, const json_t *o, const char *field,
+                             const tarn_material *material, tarn_mesh_buffer *mesh)
+{
+    static const double one_by_one[2] = { 1, 1 };
+    double size[2], height, uv_scale[2];
+    char *path;
+    if (tarn_get_numbers(l, o, field, "size", 2, &TARN_POSITIVE, NULL, size) ||
+        tarn_get_number(l, o, field, "height", &TARN_POSITIVE, NULL, &height) ||
+        tarn_get_numbers(l, o, field, "uv_scale", 2, &TARN_COORDINATE, one_by_one, uv_scale) ||
+        tarn_get_asset_path(l, o, field, "image", "a PNG file name", &path)) {
+        return -1;
+    }
+    tarn_image image;
+    int result = tarn_png_read_heightfield(path, &image, l->err);
+    if (result == 0) {
+        result = tarn_mesh_heightfield(mesh, &image, size[0], size[1], height, uv_scale[0],
+                                       uv_scale[1], material->water == NULL, path, l->err);
+    }
+    tarn_image_free(&image);
+    free(path);
+    return result;
+}
+
+static int build_obj_mesh(tarn_loader *l, const json_t *o, const char *field,
+                          const tarn_material *material, tarn_mesh_buffer *mesh)
+{
+    (void)material;
+    char *path;
+    if (tarn_get_asset_path(l, o, field, "file", "an OBJ file name", &path)) return -1;
+    int result = tarn_obj_load(path, mesh, l->err);
+    free(path);
+    return result;
+}
+
+typedef struct {
+    const char *type;
+    const char *kind;            /* " for a sphere": in unknown-field messages */
+    const char *const fields[5]; /* the type's own fields, NULL-terminated */
+    mesh_builder build;
+} object_type;
+
+static const object_type OBJECT_TYPES[] = {
+    { "plane", " for a plane", { "size", "segments", "uv_scale", NULL }, build_plane },
+    { "box", " for a box", { "size", NULL }, build_box },
+    { "sphere", " for a sphere", { "radius", "segments", "rings", NULL }, build_sphere },
+    { "heightfield", " for a heightfield", { "image", "size", "height", "uv_scale", NULL },
+      build_heightfield },
+    { "mesh", " for a mesh", { "file", NULL }, build_obj_mesh },
+};
+#define OBJECT_TYPE_COUNT (sizeof OBJECT_TYPES / sizeof OBJECT_TYPES[0])
+
+static const char TYPE_CHOICES[] =
+    "one of \"plane\", \"box\", \"sphere\", \"heightfield\", \"mesh\"";
+
+static int find_object_type(tarn_loader *l, const json_t *o, const char *field,
+                            const object_type **out)
+{
+    const char *type;
+    if (tarn_get_string(l, o, field, "type", TYPE_CHOICES, 1, &type)) return -1;
+    for (size_t k = 0; k < OBJECT_TYPE_COUNT; k++) {
+        if (strcmp(type, OBJECT_TYPES[k].type) == 0) {
+            *out = &OBJECT_TYPES[k];
+            return 0;
+        }
+    }
+    char type_field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(type_field, field, "type");
+    return tarn_fail_field(l, type_field, "expected %s, got \"%s\"", TYPE_CHOICES, type);
+}
+
+static int find_material(tarn_loader *l, const json_t *o, const char *field,
+                         const tarn_material **out)
+{
+    const char *name;
+    if (tarn_get_string(l, o, field, "material", "a material name", 1, &name)) return -1;
+    for (size_t k = 0; k < l->out->material_count; k++) {
+        if (strcmp(name, l->out->material_names[k]) == 0) {
+            *out = &l->out->materials[k];
+            return 0;
+        }
+    }
+    char material_field[TARN_FIELD_PATH_MAX];
+    tarn_join_path(material_field, field, "material");
+    return tarn_fail_field(l, material_field, "no material named \"%s\" in materials", name);
+}
+
+/* R = Rz * Ry * Rx from degrees, in double, each entry then rounded to Q16.16. */
+static void rotation_matrix(const double degrees[3], tarn_q16 out[3][3])
+{
+    double c[3], s[3];
+    for (int k = 0; k < 3; k++) {
+        c[k] = cos(degrees[k] * PI / 180);
+        s[k] = sin(degrees[k] * PI / 180);
+    }
+    const double rx[3][3] = { { 1, 0, 0 }, { 0, c[0], -s[0] }, { 0, s[0], c[0] } };
+    const double ry[3][3] = { { c[1], 0, s[1] }, { 0, 1, 0 }, { -s[1], 0, c[1] } };
+    const double rz[3][3] = { { c[2], -s[2], 0 }, { s[2], c[2], 0 }, { 0, 0, 1 } };
+    double ryx[3][3];
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            ryx[i][j] = ry[i][0] * rx[0][j] + ry[i][1] * rx[1][j] + ry[i][2] * rx[2][j];
+        }
+    }
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            out[i][j] = tarn_q16_from_double(rz[i][0] * ryx[0][j] + rz[i][1] * ryx[1][j] +
+                                             rz[i][2] * ryx[2][j]);
+        }
+    }
+}
+
+static int load_object(tarn_loader *l, const json_t *o, size_t index)
+{
+    static const char *const common[] = { "type",     "material", "position",
+                                          "rotation", "scale",    NULL };
+    static const double origin[3] = { 0, 0, 0 }, unit_scale = 1;
+    char field[TARN_FIELD_PATH_MAX];
+    snprintf(field, sizeof field, "objects[%zu]", index);
+    if (!json_is_object(o)) {
+        return tarn_fail_field(l, field, "expected an object {\"type\", \"material\"...}, got %s",
+                               tarn_json_type(o));
+    }
+    tarn_object *object = &l->out->objects[index];
+    tarn_mesh_buffer *mesh = &l->out->meshes[index];
+    const object_type *type = NULL;
+    double position[3], rotation[3], scale;
+    if (find_object_type(l, o, field, &type) ||
+        tarn_check_fields(l, o, field, common, type->fields, type->kind) ||
+        find_material(l, o, field, &object->material) ||
+        get_vec3(l, o, field, "position", origin, position) ||
+        get_vec3(l, o, field, "rotation", origin, rotation) ||
+        tarn_get_number(l, o, field, "scale", &TARN_POSITIVE, &unit_scale, &scale) ||
+        type->build(l, o, field, object->material, mesh) || tarn_mesh_build_clusters(mesh, l->err)) {
+        return -1;
+    }
+    object->mesh = &mesh->mesh;
+    object->position = vec3_q16(position);
+    rotation_matrix(rotation, object->rotation);
+    object->scale = tarn_q16_from_double(scale);
+    return 0;
+}
+
+static int load_objects(tarn_loader *l, const json_t *root)
+{
+    tarn_loaded_scene *s = l->out;
+    const json_t *objects = json_object_get(root, "objects");
+    if (!objects) return tarn_fail_field(l, "objects", "missing (expected an array of objects)");
+    if (!json_is_array(objects)) {
+        return tarn_fail_field(l, "objects", "expected an array of objects, got %s",
+                               tarn_json_type(objects));
+    }
+    size_t n = json_array_size(objects);
+    if (n > UINT16_MAX) {
+        return tarn_fail_field(l, "objects", "expected at most %u objects, got %zu", UINT16_MAX, n);
+    }
+    s->objects = calloc(n + 1, sizeof *s->objects);
+    s->meshes = calloc(n + 1, sizeof *s->meshes);
+    if (!s->objects || !s->meshes) return tarn_fail(l->err, "%s: out of memory", l->file);
+    s->object_count = n;
+    for (size_t k = 0; k < n; k++) {
+        if (load_object(l, json_array_get(objects, k), k)) return -1;
+    }
+    s->scene.objects = s->objects;
+    s->scene.object_count = (uint16_t)n;
+    return 0;
+}
+
+/* ---- the file ----------------------------------------------------------------- */
+
+static json_t *parse_json(const char *path, tarn_error *err)
+{
+    FILE *file = fopen(path, "r");
+    if (!file) {
+        tarn_fail(err, "%s: cannot open: %s", path, strerror(errno));
+        return NULL;
+    }
+    struct stat info;
+    if (fstat(fileno(file), &info) == 0 && S_ISDIR(info.st_mode)) {
+        fclose(file);
+        tarn_fail(err, "%s: is a directory, not a scene file", path);
+        return NULL;
+    }
+    /* the demo's scenes take 3 KB; a file this large is not a scene, and parsing it
+     * whole would take memory in proportion */
+    if (info.st_size > (off_t)TARN_SCENE_FILE_BYTES_MAX) {
+        fclose(file);
+        tarn_fail(err, "%s: is %lld bytes; a scene file holds at most %u", path, (long long)info.st_size,
+                  TARN_SCENE_FILE_BYTES_MAX);
+        return NULL;
+    }
+    json_error_t error;
+    json_t *root = json_loadf(file, JSON_REJECT_DUPLICATES, &error);
+    fclose(file);
+    if (!root) {
+        if (error.line > 0) {
+            tarn_fail(err, "%s:%d:%d: %s", path, error.line, error.column, error.text);
+        } else {
+            tarn_fail(err, "%s: %s", path, error.text);
+        }
+        return NULL;
+    }
+    if (!json_is_object(root)) {
+        tarn_fail(err, "%s: expected a JSON object at the top level, got %s", path,
+                  tarn_json_type(root));
+        json_decref(root);
+        return NULL;
+    }
+    return root;
+}
+
+/* "scenes/pond.json" -> name "pond", directory "scenes/" */
+static int split_path(const char *path, tarn_loaded_scene *out, char **dir)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    size_t dir_length = (size_t)(base - path);
+    *dir = malloc(dir_length + 1);
+    if (!*dir) return -1;
+    memcpy(*dir, path, dir_length);
+    (*dir)[dir_length] = '\0';
+    const char *dot = strrchr(base, '.');
+    size_t stem = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+    if (stem >= sizeof out->name) stem = sizeof out->name - 1;
+    memcpy(out->name, base, stem);
+    out->name[stem] = '\0';
+    return 0;
+}
+
+static int load_underwater(tarn_loader *l, const json_t *root)
+{
+    int present;
+    if (tarn_underwater_load(l, root, &l->out->underwater, &present)) return -1;
+    if (present) l->out->scene.underwater = &l->out->underwater;
+    return 0;
+}
+
+static int load_root(tarn_loader *l, const json_t *root)
+{
+    static const char *const fields[] = { "frame", "background", "camera", "light", "materials",
+                                          "underwater", "objects", NULL };
+    if (tarn_check_fields(l, root, "", fields, NULL, "") || load_frame(l, root) ||
+        tarn_get_colour(l, root, "", "background", 0x000000, &l->out->scene.background_rgb) ||
+        load_camera(l, root) || load_light(l, root) || load_materials(l, root) ||
+        load_underwater(l, root) || load_objects(l, root)) {
+        return -1;
+    }
+    return 0;
+}
+
+int tarn_scene_load(const char *path, tarn_loaded_scene *out, tarn_error *err)
+{
+    memset(out, 0, sizeof *out);
+    tarn_loader l = { path, NULL, err, out };
+    if (split_path(path, out, &l.dir)) return tarn_fail(err, "%s: out of memory", path);
+    json_t *root = parse_json(path, err);
+    int result = root ? load_root(&l, root) : -1;
+    json_decref(root);
+    free(l.dir);
+    if (result) tarn_scene_free(out);
+    return result;
+}
+
+void tarn_scene_free(tarn_loaded_scene *s)
+{
+    if (!s) return;
+    for (size_t k = 0; s->meshes && k < s->object_count; k++) tarn_mesh_buffer_free(&s->meshes[k]);
+    for (size_t k = 0; s->material_names && k < s->material_count; k++) free(s->material_names[k]);
+    for (size_t k = 0; k < s->texture_count; k++) {
+        tarn_image_free(&s->texture_images[k]);
+        free(s->texture_paths[k]);
+    }
+    free(s->objects);
+    free(s->meshes);
+    free(s->materials);
+    free(s->material_names);
+    free(s->waters);
+    free(s->textures);
+    free(s->texture_images);
+    free(s->texture_paths);
+    memset(s, 0, sizeof *s);
+}
