@@ -76,6 +76,7 @@ test: deps-test
 	@TARN_BIN=build/release/tarn tests/check_water_cost.sh
 	@$(MAKE) --no-print-directory firmware-check BOARD=
 	@tests/check_firmware_link.sh
+	@BUILD=build/release tests/check_layering.sh
 	@$(MAKE) --no-print-directory fuzz-replay
 	@cat build/release/summary build/san/summary | \
 		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'

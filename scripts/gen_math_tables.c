@@ -64,13 +64,13 @@ int main(void)
            " *   ./gen_math_tables > core/math/math_tables.c\n"
            " * What each table holds is described in math_tables_internal.h. */\n"
            "#include \"math/math_tables_internal.h\"\n");
-    print_table("const uint32_t tarn_exp2_table_q16[TARN_EXP2_TABLE_STEPS + 1u]",
+    print_table("const uint32_t tarn__exp2_table_q16[TARN_EXP2_TABLE_STEPS + 1u]",
                 TARN_EXP2_TABLE_STEPS + 1u, exp2_entry_q16);
-    print_table("const uint16_t tarn_recip_seed_q15[1u << TARN_RECIP_SEED_BITS]",
+    print_table("const uint16_t tarn__recip_seed_q15[1u << TARN_RECIP_SEED_BITS]",
                 1u << TARN_RECIP_SEED_BITS, recip_seed_q15);
-    print_table("const uint16_t tarn_rsqrt_seed_q15[TARN_RSQRT_SEED_COUNT]",
+    print_table("const uint16_t tarn__rsqrt_seed_q15[TARN_RSQRT_SEED_COUNT]",
                 TARN_RSQRT_SEED_COUNT, rsqrt_seed_q15);
-    print_table("const uint16_t tarn_sin_quarter_q15[TARN_SIN_TABLE_STEPS + 1u]",
+    print_table("const uint16_t tarn__sin_quarter_q15[TARN_SIN_TABLE_STEPS + 1u]",
                 TARN_SIN_TABLE_STEPS + 1u, sin_quarter_q15);
     print_table("const uint8_t tarn_clz8[256]", 256u, clz8_entry);
     return ferror(stdout) ? EXIT_FAILURE : EXIT_SUCCESS;

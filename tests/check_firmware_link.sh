@@ -3,12 +3,12 @@
 # perspective mode when the baked quality does not use it, nor refraction when the
 # quality has no apron for a refracted sample to move in, nor vertex lighting when
 # every object carries static vertices (the bake's default, --static-view on), nor
-# the water blocks' code (tarn_water_sharp_features) when no baked quality has water_block 2,
-# nor exact depth (tarn_exact_depth_at) when every baked quality steps depth on a plane,
-# nor the backdrop's reader (tarn_backdrop_fill) unless the scene is baked with one,
-# nor the water over still water (tarn_water_still_tile) unless that backdrop is baked
-# with still water, and then none of the shading it holds (tarn_water_shade, fog) and,
-# since no triangle is drawn at all, no depth interpolation (tarn_exact_depth_at).
+# the water blocks' code (tarn__water_sharp_features) when no baked quality has water_block 2,
+# nor exact depth (tarn__exact_depth_at) when every baked quality steps depth on a plane,
+# nor the backdrop's reader (tarn__backdrop_fill) unless the scene is baked with one,
+# nor the water over still water (tarn__water_still_tile) unless that backdrop is baked
+# with still water, and then none of the shading it holds (tarn__water_shade, fog) and,
+# since no triangle is drawn at all, no depth interpolation (tarn__exact_depth_at).
 #
 # Builds the qemu-m0 firmware for several scenes (each in its own directory under
 # build/firmware-link/, the board's own build untouched) and reads the images' symbols
@@ -20,9 +20,9 @@
 set -u
 board=qemu-m0
 flags="--apron off --tile 16 --depth 16"
-effects="tarn_water_shade tarn_water_sharp_features tarn_water_surface_normal tarn_water_refract tarn_water_fog tarn_water_absorb
-tarn_water_depth_colour tarn_water_fresnel_alpha tarn_water_specular tarn_water_foam tarn_water_sparkles
-tarn_underwater_tile span_end tarn_vertex_shade tarn_exact_depth_at tarn_backdrop_fill tarn_water_still_tile"
+effects="tarn__water_shade tarn__water_sharp_features tarn__water_surface_normal tarn__water_refract tarn__water_fog tarn__water_absorb
+tarn__water_depth_colour tarn__water_fresnel_alpha tarn__water_specular tarn__water_foam tarn__water_sparkles
+tarn__underwater_tile span_end tarn__vertex_shade tarn__exact_depth_at tarn__backdrop_fill tarn__water_still_tile"
 passed=0
 failed=0
 
@@ -60,26 +60,26 @@ check() {
 }
 
 extra_name= extra_flags=
-check scenes/effects/none.json tarn_exact_depth_at
-check scenes/effects/fog.json tarn_water_shade tarn_water_fog tarn_exact_depth_at
-check scenes/effects/foam.json tarn_water_shade tarn_water_foam tarn_exact_depth_at
-check scenes/effects/sparkles.json tarn_water_shade tarn_water_surface_normal tarn_water_sparkles tarn_exact_depth_at
-check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal tarn_exact_depth_at
-check scenes/effects/underwater.json tarn_underwater_tile tarn_exact_depth_at
+check scenes/effects/none.json tarn__exact_depth_at
+check scenes/effects/fog.json tarn__water_shade tarn__water_fog tarn__exact_depth_at
+check scenes/effects/foam.json tarn__water_shade tarn__water_foam tarn__exact_depth_at
+check scenes/effects/sparkles.json tarn__water_shade tarn__water_surface_normal tarn__water_sparkles tarn__exact_depth_at
+check scenes/effects/refraction.json tarn__water_shade tarn__water_surface_normal tarn__exact_depth_at
+check scenes/effects/underwater.json tarn__underwater_tile tarn__exact_depth_at
 extra_name=-span extra_flags=" --perspective span:16"
-check scenes/effects/fog.json tarn_water_shade tarn_water_fog span_end tarn_exact_depth_at
+check scenes/effects/fog.json tarn__water_shade tarn__water_fog span_end tarn__exact_depth_at
 extra_name=-apron extra_flags=" --apron 4"
-check scenes/effects/refraction.json tarn_water_shade tarn_water_surface_normal tarn_water_refract tarn_exact_depth_at
+check scenes/effects/refraction.json tarn__water_shade tarn__water_surface_normal tarn__water_refract tarn__exact_depth_at
 extra_name=-blocks extra_flags=" --water-block 2"
-check scenes/effects/fog.json tarn_water_shade tarn_water_sharp_features tarn_water_fog tarn_exact_depth_at
+check scenes/effects/fog.json tarn__water_shade tarn__water_sharp_features tarn__water_fog tarn__exact_depth_at
 extra_name=-plane extra_flags=" --depth-interpolation plane"
-check scenes/effects/fog.json tarn_water_shade tarn_water_fog
+check scenes/effects/fog.json tarn__water_shade tarn__water_fog
 extra_name=-moving extra_flags=" --static-view off"
-check scenes/effects/fog.json tarn_water_shade tarn_water_fog tarn_vertex_shade tarn_exact_depth_at
+check scenes/effects/fog.json tarn__water_shade tarn__water_fog tarn__vertex_shade tarn__exact_depth_at
 extra_name=-backdrop extra_flags=" --backdrop on"
-check scenes/effects/fog.json tarn_water_shade tarn_water_fog tarn_exact_depth_at tarn_backdrop_fill
+check scenes/effects/fog.json tarn__water_shade tarn__water_fog tarn__exact_depth_at tarn__backdrop_fill
 extra_name=-still extra_flags=" --backdrop still"
-check scenes/effects/fog.json tarn_backdrop_fill tarn_water_still_tile
-check scenes/effects/foam.json tarn_water_foam tarn_backdrop_fill tarn_water_still_tile
+check scenes/effects/fog.json tarn__backdrop_fill tarn__water_still_tile
+check scenes/effects/foam.json tarn__water_foam tarn__backdrop_fill tarn__water_still_tile
 echo "firmware-link: $passed passed, $failed failed"
 [ $failed -eq 0 ]

@@ -23,6 +23,7 @@ fail() { echo "FAIL: $*"; status=1; }
 file_edges() {
     find "$BUILD/$1" -name '*.o' | sort | while read -r o; do
         f=${o#"$BUILD"/}
+        [ -f "${f%.o}.c" ] || continue # left by a source that moved
         nm "$o" | awk -v f="${f%.o}" '$2 ~ /^[TDBR]$/ {print "def", $3, f} $1 == "U" {print "use", $2, f}'
     done | awk '$1 == "def" {def[$2] = $3} $1 == "use" {n++; sym[n] = $2; file[n] = $3}
         END {for (k = 1; k <= n; k++) if ((sym[k] in def) && def[sym[k]] != file[k]) print file[k], def[sym[k]]}' | sort -u
@@ -93,4 +94,17 @@ for src in $(find host tests firmware boards -name '*.c' -o -name '*.h' 2>/dev/n
     done
 done
 [ $bad -eq 0 ] && echo "ok: core/ includes follow the stages; host/, tests/ and firmware/ include only tarn/ and tarn_internal.h"
+
+# The API line: a global symbol of the core is declared in a public header, or is
+# marked internal with two underscores (tarn__); no public header names one.
+public=$(cat core/include/tarn/*.h | perl -0pe 's:/\*.*?\*/::gs' | grep -oE '\btarn_[a-z0-9_]+' | sort -u)
+unmarked=$(find "$BUILD/core" -name '*.o' | while read -r o; do
+        f=${o#"$BUILD"/}; [ -f "${f%.o}.c" ] && nm -g "$o"; done |
+    awk '$2 ~ /^[TDBR]$/ {print $3}' | sort -u | grep -v '^tarn__' | grep -vxF "$public" | tr '\n' ' ')
+if [ -n "$unmarked" ]; then fail "core/ defines symbols neither public nor marked tarn__: $unmarked"
+else echo "ok: every symbol of core/ is declared in core/include/tarn/ or named tarn__"; fi
+leaked=$(for h in core/include/tarn/*.h; do perl -0pe 's:/\*.*?\*/::gs' "$h" | grep -q 'tarn__' && echo "$h"; done |
+    tr '\n' ' ')
+if [ -n "$leaked" ]; then fail "public headers name internal tarn__ functions: $leaked"
+else echo "ok: no public header names an internal function"; fi
 exit $status

@@ -1,7 +1,7 @@
 #!/bin/sh
 # What each water effect costs on the host, and proof that a scene without water
 # does no water work: callgrind counts the instructions of a frame (inclusive of
-# tarn_render_frame) and of the water pixel (tarn_water_shade), per pixel.
+# tarn_render_frame) and of the water pixel (tarn__water_shade), per pixel.
 # Prints one line per scene:
 #   water-cost scene=NAME insn_per_pixel=N water_insn_per_pixel=N
 # Usage: TARN_BIN=build/release/tarn tests/check_water_cost.sh
@@ -23,7 +23,7 @@ for scene in none fog absorption depth_colour ramp refraction normals fresnel fo
     valgrind --tool=callgrind --callgrind-out-file="$profile" \
         "$TARN_BIN" render "scenes/effects/$scene.json" -o "$work/$scene.png" >/dev/null 2>&1
     frame=$(inclusive "$profile" tarn_render_frame)
-    water=$(inclusive "$profile" tarn_water_shade)
+    water=$(inclusive "$profile" tarn__water_shade)
     pixels=$((120 * 120))
     echo "water-cost scene=$scene insn_per_pixel=$(( ${frame:-0} / pixels )) water_insn_per_pixel=$(( ${water:-0} / pixels ))"
     if [ -z "$frame" ]; then failed=$((failed + 1)); echo "FAIL: no profile for $scene"; continue; fi

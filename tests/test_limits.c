@@ -184,11 +184,11 @@ static void fog_argument(void **state)
     for (unsigned bits = TARN_FOG_ARGUMENT_BITS_MIN; bits <= TARN_FOG_ARGUMENT_BITS_MAX; bits++)
         for (size_t a = 0; a < n; a++)
             for (size_t b = 0; b < n; b++)
-                assert_int_equal(tarn_fog_argument_q16(values[a], values[b], bits),
+                assert_int_equal(tarn__fog_argument_q16(values[a], values[b], bits),
                                  cut_product(values[a], values[b], bits));
-    assert_int_equal(tarn_fog_argument_q16(9830, 3u << 16, 16), tarn_water_mul_q16(9830, 3u << 16));
+    assert_int_equal(tarn__fog_argument_q16(9830, 3u << 16, 16), tarn__water_mul_q16(9830, 3u << 16));
     /* 4 bits: 3.03 units of water are cut to 3; density 0.15 (9830) stays whole */
-    assert_int_equal(tarn_fog_argument_q16(9830, (3u << 16) + 2000u, 4), 9830u * 3u);
+    assert_int_equal(tarn__fog_argument_q16(9830, (3u << 16) + 2000u, 4), 9830u * 3u);
 }
 
 int main(void)

@@ -201,7 +201,7 @@ static void recip_q30_limits(void **state)
 static uint32_t recip_q30_by_64_bits(uint32_t m, unsigned steps)
 {
     const uint32_t index = (m >> (31u - TARN_RECIP_SEED_BITS)) & ((1u << TARN_RECIP_SEED_BITS) - 1u);
-    uint32_t y = (uint32_t)tarn_recip_seed_q15[index] << 15;
+    uint32_t y = (uint32_t)tarn__recip_seed_q15[index] << 15;
     for (unsigned k = 0; k < steps; k++) {
         const uint32_t m_y = (uint32_t)(((uint64_t)m * y) >> 32);
         const uint32_t error = m_y <= (1u << 30) ? (1u << 30) - m_y : m_y - (1u << 30);

@@ -48,7 +48,7 @@ static void counter_draw(coverage_counter *c, const tarn_screen_vertex v[3])
                              .stride = FRAME, .quality = &c->quality};
     memset(c->colour, 0, sizeof c->colour);
     memset(c->depth, 0, sizeof c->depth);
-    tarn_raster_triangle(&tile, v, &c->object);
+    tarn__raster_triangle(&tile, v, &c->object);
     for (int i = 0; i < FRAME * FRAME; i++) c->count[i] += c->colour[i] != 0;
 }
 

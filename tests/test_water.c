@@ -453,7 +453,7 @@ static void test_specular_skip_matches_the_normalised_normal(void **state)
             water.specular_power = powers[p];
             tarn_water_context w = {0};
             w.water = &water;
-            w.dark_cosine = tarn_water_dark_cosine(&water);
+            w.dark_cosine = tarn__water_dark_cosine(&water);
             for (int c = 0; c < 3; c++) w.light_q8[c] = 65280u;
             for (int trial = 0; trial < 20000; trial++) {
                 seed = seed * 1664525u + 1013904223u;
@@ -462,7 +462,7 @@ static void test_specular_skip_matches_the_normalised_normal(void **state)
                 w.half_vector[1] = (int32_t)lround(32767.0 * 0.6 * sin(theta));
                 w.half_vector[2] = (int32_t)lround(32767.0 * 0.8);
                 /* a direction near h: its largest component in [2^13, 2^14) */
-                tarn_water_normal n = tarn_water_flat_normal();
+                tarn_water_normal n = tarn__water_flat_normal();
                 int32_t v[3];
                 for (int a = 0; a < 3; a++) {
                     seed = seed * 1664525u + 1013904223u;
@@ -474,10 +474,10 @@ static void test_specular_skip_matches_the_normalised_normal(void **state)
                 n.z = v[2];
                 n.length2 = (uint32_t)(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
                 tarn_water_normal normalised = n;
-                tarn_water_normalise(&normalised);
+                tarn__water_normalise(&normalised);
                 uint32_t lazy[3] = {0u, 0u, 0u}, eager[3] = {0u, 0u, 0u};
-                const int lazy_shows = tarn_water_specular(&w, &n, lazy);
-                const int eager_shows = tarn_water_specular(&w, &normalised, eager);
+                const int lazy_shows = tarn__water_specular(&w, &n, lazy);
+                const int eager_shows = tarn__water_specular(&w, &normalised, eager);
                 /* a skipped highlight adds nothing where the normalised one adds nothing */
                 assert_memory_equal(lazy, eager, sizeof lazy);
                 assert_true(lazy_shows || !eager_shows || (eager[0] | eager[1] | eager[2]) == 0u);

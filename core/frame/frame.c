@@ -53,7 +53,7 @@ typedef struct {
  * depends on the tile yet. */
 static void frame_begin(frame_state *f, void *memory)
 {
-    const tarn_frame_buffers b = tarn_frame_carve(&f->layout, memory);
+    const tarn_frame_buffers b = tarn__frame_carve(&f->layout, memory);
     f->water_colour = b.water_colour;
     f->water_depth = b.water_depth;
     f->final = b.final;
@@ -117,7 +117,7 @@ static void draw_water_copy(frame_state *f, const tarn_pixel_rect *rect, int32_t
     f->water.mark = 0u;
     copy_pixels(&f->opaque, w, f->layout.depth_bytes);
     if (WATER_TRIANGLES)
-        tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, rect, tarn_water_draw_triangle, &f->water);
+        tarn__walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, rect, tarn__water_draw_triangle, &f->water);
 }
 
 /* The water pass over the tile and the underwater apron, from a copy. */
@@ -141,8 +141,8 @@ static int draw_water_in_place(frame_state *f, const tarn_pixel_rect *tile_rect)
     w->overlap = 0u;
     begin_water(f);
     if (WATER_TRIANGLES)
-        tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, tile_rect, tarn_water_draw_triangle, w);
-    tarn_water_clear_marks(&w->target);
+        tarn__walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, tile_rect, tarn__water_draw_triangle, w);
+    tarn__water_clear_marks(&w->target);
     return w->overlap == 0u;
 }
 
@@ -174,7 +174,7 @@ static void draw_underwater(frame_state *f, const tarn_pixel_rect *tile_rect)
     u->stride = w->stride;
     u->offset_limit = f->layout.under_apron;
     u->sample_rect = w->rect;
-    tarn_underwater_tile(u, tile_rect, f->final, f->layout.tile);
+    tarn__underwater_tile(u, tile_rect, f->final, f->layout.tile);
 }
 
 static int rect_empty(const tarn_pixel_rect *r)
@@ -201,8 +201,8 @@ static void add_water_extent(void *ctx, const tarn_screen_vertex vertex[3], cons
 {
     water_extent *e = ctx;
     tarn_triangle_setup t;
-    if (!tarn_orient_triangle(vertex, object->material->cull, e->subpixel_bits, &t)) return;
-    const tarn_pixel_box box = tarn_triangle_pixels(&t);
+    if (!tarn__orient_triangle(vertex, object->material->cull, e->subpixel_bits, &t)) return;
+    const tarn_pixel_box box = tarn__triangle_pixels(&t);
     const tarn_pixel_rect r = {box.x0, box.y0, box.x1 + 1, box.y1 + 1};
     e->extent = rect_union(e->extent, intersect(r, e->within));
 }
@@ -220,7 +220,7 @@ static tarn_pixel_rect opaque_rect(const frame_state *f, const tarn_pixel_rect *
     *has_water = f->layout.water;
     if (!f->layout.water || f->layout.underwater) return whole;
     water_extent e = {*tile_rect, {0, 0, 0, 0}, f->config->quality.subpixel_bits};
-    tarn_walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, tile_rect, add_water_extent, &e);
+    tarn__walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, tile_rect, add_water_extent, &e);
     *has_water = !rect_empty(&e.extent);
     if (!*has_water) return *tile_rect;
     const int32_t a = f->layout.refraction_apron;
@@ -233,12 +233,12 @@ static void draw_opaque(frame_state *f)
 {
     tarn_tile_target *o = &f->opaque;
     if (TARN_LINK_BACKDROP && f->layout.backdrop != NULL) {
-        tarn_backdrop_fill(f->layout.backdrop, f->config->width, o, f->layout.depth_bytes);
+        tarn__backdrop_fill(f->layout.backdrop, f->config->width, o, f->layout.depth_bytes);
         return;
     }
     clear_rect(o, f->scene->background_rgb & 0xFFFFFFu, f->layout.depth_bytes);
     if (TARN_LINK_OPAQUE_OBJECTS)
-        tarn_walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, f->bins, &o->rect, tarn_raster_triangle, o);
+        tarn__walk_triangles(f->scene, f->view, TARN_WALK_OPAQUE, f->bins, &o->rect, tarn__raster_triangle, o);
 }
 
 /* The water pass in place over the tile, or, where a water pixel landed on another,
@@ -261,8 +261,8 @@ static void draw_still_water(frame_state *f)
     for (uint32_t k = 0; k < f->scene->object_count && k < TARN_BACKDROP_STILL_OBJECTS_MAX; k++) {
         const tarn_object *object = &f->scene->objects[k];
         if (object->material->water == NULL) continue;
-        if (c->object != object) tarn_water_context_setup(c, f->view, f->config, object);
-        tarn_water_still_tile(c, b, k, &f->opaque);
+        if (c->object != object) tarn__water_context_setup(c, f->view, f->config, object);
+        tarn__water_still_tile(c, b, k, &f->opaque);
     }
 }
 
@@ -315,22 +315,22 @@ static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, 
 tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *config,
                               void *memory, size_t memory_bytes, tarn_tile_sink sink, void *user)
 {
-    if (tarn_config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
-    tarn_status status = tarn_scene_check(scene);
-    if (status == TARN_OK) status = tarn_scene_check_reach(scene, config);
+    if (tarn__config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
+    tarn_status status = tarn__scene_check(scene);
+    if (status == TARN_OK) status = tarn__scene_check_reach(scene, config);
     if (status != TARN_OK) return status;
     if (memory == NULL || memory_bytes < tarn_frame_memory_bytes(config, scene)) return TARN_ERR_MEMORY;
 
     tarn_view view;
-    tarn_view_setup(scene, config, &view);
+    tarn__view_setup(scene, config, &view);
     frame_state f;
     f.scene = scene;
     f.config = config;
     f.view = &view;
-    f.layout = tarn_frame_layout_of(config, scene);
+    f.layout = tarn__frame_layout_of(config, scene);
     frame_begin(&f, memory);
-    if (TARN_LINK_FOUND_BINS && f.found_bins != NULL) tarn_bin_clusters(scene, &view, f.found_bins);
-    if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn_underwater_setup(&f.underwater, &view, config, scene->underwater);
+    if (TARN_LINK_FOUND_BINS && f.found_bins != NULL) tarn__bin_clusters(scene, &view, f.found_bins);
+    if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn__underwater_setup(&f.underwater, &view, config, scene->underwater);
     for (int32_t y = 0; y < config->height; y += f.layout.tile)
         for (int32_t x = 0; x < config->width; x += f.layout.tile)
             if (draw_tile(&f, x, y, sink, user) != 0) return TARN_ERR_SINK;
@@ -351,13 +351,13 @@ static void forward_to_visitor(void *ctx, const tarn_screen_vertex vertex[3], co
 tarn_status tarn_visit_screen_triangles(const tarn_scene *scene, const tarn_frame_config *config,
                                         tarn_triangle_visitor visit, void *user)
 {
-    if (tarn_config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
-    tarn_status status = tarn_scene_check(scene);
+    if (tarn__config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
+    tarn_status status = tarn__scene_check(scene);
     if (status != TARN_OK) return status;
     tarn_view view;
-    tarn_view_setup(scene, config, &view);
+    tarn__view_setup(scene, config, &view);
     visit_context ctx = {visit, user};
-    tarn_walk_triangles(scene, &view, TARN_WALK_OPAQUE, NULL, NULL, forward_to_visitor, &ctx);
-    tarn_walk_triangles(scene, &view, TARN_WALK_WATER, NULL, NULL, forward_to_visitor, &ctx);
+    tarn__walk_triangles(scene, &view, TARN_WALK_OPAQUE, NULL, NULL, forward_to_visitor, &ctx);
+    tarn__walk_triangles(scene, &view, TARN_WALK_WATER, NULL, NULL, forward_to_visitor, &ctx);
     return TARN_OK;
 }

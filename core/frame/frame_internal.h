@@ -56,10 +56,10 @@ typedef struct {
     tarn_cluster_bin *found_bins; /* bins this frame finds, or NULL */
 } tarn_frame_buffers;
 
-/* The layout of a frame of a config that tarn_config_check accepts. */
-tarn_frame_layout tarn_frame_layout_of(const tarn_frame_config *config, const tarn_scene *scene);
+/* The layout of a frame of a config that tarn__config_check accepts. */
+tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const tarn_scene *scene);
 /* The buffers carved from `memory` (4-byte aligned, at least
  * tarn_frame_memory_bytes long), the blocks' slots cleared. */
-tarn_frame_buffers tarn_frame_carve(const tarn_frame_layout *layout, void *memory);
+tarn_frame_buffers tarn__frame_carve(const tarn_frame_layout *layout, void *memory);
 
 #endif

@@ -4,14 +4,14 @@
 
 #include <string.h>
 
-tarn_frame_layout tarn_frame_layout_of(const tarn_frame_config *config, const tarn_scene *scene)
+tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const tarn_scene *scene)
 {
     tarn_frame_layout l;
     l.tile = config->quality.tile_size;
-    l.underwater = TARN_LINK_UNDERWATER && tarn_underwater_active(scene);
-    l.water = (TARN_LINK_WATER && tarn_scene_has_water(scene)) || l.underwater;
+    l.underwater = TARN_LINK_UNDERWATER && tarn__underwater_active(scene);
+    l.water = (TARN_LINK_WATER && tarn__scene_has_water(scene)) || l.underwater;
     l.under_apron = l.underwater
-        ? tarn_apron_limit(tarn_underwater_reach_pixels(scene->underwater, config->width), &config->quality)
+        ? tarn__apron_limit(tarn__underwater_reach_pixels(scene->underwater, config->width), &config->quality)
         : 0;
     l.refraction_apron = l.water ? tarn_frame_apron_pixels(scene, config) : 0;
     l.apron = l.refraction_apron + l.under_apron;
@@ -21,7 +21,7 @@ tarn_frame_layout tarn_frame_layout_of(const tarn_frame_config *config, const ta
     l.in_place = l.water && !l.underwater && l.apron == 0;
     l.region = l.tile + 2 * l.apron;
     l.water_region = l.tile + 2 * l.under_apron;
-    l.backdrop = tarn_backdrop_for(scene, config);
+    l.backdrop = tarn__backdrop_for(scene, config);
     /* over still water, no water triangle is drawn: no water pass, no copy, and no
      * depth but the backdrop's own */
     l.still = TARN_LINK_STILL_WATER && l.backdrop != NULL && l.backdrop->still_water;
@@ -32,9 +32,9 @@ tarn_frame_layout tarn_frame_layout_of(const tarn_frame_config *config, const ta
         ? (uint32_t)l.tile / config->quality.water_block : 0u;
     l.block_bytes = l.still ? sizeof(tarn_still_block) : sizeof(tarn_water_block);
     const int binned = scene != NULL && config->quality.cluster_bins;
-    l.static_bins = binned && TARN_LINK_STATIC_VERTICES && tarn_static_screen_applies(scene, config)
+    l.static_bins = binned && TARN_LINK_STATIC_VERTICES && tarn__static_screen_applies(scene, config)
         ? scene->static_view->bins : NULL;
-    l.bins = TARN_LINK_FOUND_BINS && binned && l.static_bins == NULL ? tarn_cluster_bin_count(scene) : 0u;
+    l.bins = TARN_LINK_FOUND_BINS && binned && l.static_bins == NULL ? tarn__cluster_bin_count(scene) : 0u;
     return l;
 }
 
@@ -56,12 +56,12 @@ static size_t layout_bytes(const tarn_frame_layout *l)
 
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
 {
-    if (tarn_config_check(config) != TARN_OK) return 0;
-    const tarn_frame_layout l = tarn_frame_layout_of(config, scene);
+    if (tarn__config_check(config) != TARN_OK) return 0;
+    const tarn_frame_layout l = tarn__frame_layout_of(config, scene);
     return layout_bytes(&l);
 }
 
-tarn_frame_buffers tarn_frame_carve(const tarn_frame_layout *l, void *memory)
+tarn_frame_buffers tarn__frame_carve(const tarn_frame_layout *l, void *memory)
 {
     const size_t region = (size_t)l->region * (size_t)l->region;
     const size_t water = water_pixels(l);

@@ -30,7 +30,7 @@ static int within_guard_slope(int32_t offset, tarn_q16 d, uint16_t slope_q8)
     return magnitude <= ((uint32_t)d >> 8) * slope_q8;
 }
 
-unsigned tarn_clip_outcode(const tarn_view *view, const tarn_view_vertex *v)
+unsigned tarn__clip_outcode(const tarn_view *view, const tarn_view_vertex *v)
 {
     /* most vertices lie well inside every plane: four wide products spared */
     if (v->d >= view->near && v->d <= view->far && within_guard_slope(v->x, v->d, view->guard_slope_q8[0]) &&
@@ -104,7 +104,7 @@ static int clip_against(const tarn_view *view, int plane,
     return out;
 }
 
-int tarn_clip_polygon(const tarn_view *view, unsigned planes,
+int tarn__clip_polygon(const tarn_view *view, unsigned planes,
                       tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX], int count)
 {
     for (int plane = 0; plane < PLANE_COUNT && count > 0; plane++)
@@ -114,20 +114,20 @@ int tarn_clip_polygon(const tarn_view *view, unsigned planes,
 
 /* A function of its own, not inlined into the walk: the polygon stays off the
  * stack of the common, unclipped path. */
-void tarn_clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_vertex v[3],
+void tarn__clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_vertex v[3],
                         const tarn_object *object, tarn_triangle_sink sink, void *ctx)
 {
     tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX]; /* the corners past count unread: not zeroed */
     for (int i = 0; i < 3; i++) polygon[i] = v[i];
-    const int count = tarn_clip_polygon(view, planes, polygon, 3);
+    const int count = tarn__clip_polygon(view, planes, polygon, 3);
     if (count < 3) return;
     /* a fan around the first corner: each corner projected once, in one place */
     tarn_screen_vertex fan[3];
     for (int i = 0; i < count; i++) {
         if (i >= 2) fan[1] = fan[2];
         tarn_screen_vertex *corner = &fan[i == 0 ? 0 : 2];
-        tarn_project_position(view, &polygon[i], corner);
-        tarn_project_attributes(&polygon[i], corner);
+        tarn__project_position(view, &polygon[i], corner);
+        tarn__project_attributes(&polygon[i], corner);
         if (i >= 2) sink(ctx, fan, object);
     }
 }

@@ -29,13 +29,13 @@ typedef struct {
     int16_t guard_pixels;    /* tarn_guard_band_pixels: below 2^15 */
     uint16_t width, height;
     /* at most half_extent / focal in Q8, and at most 511: |x| <= (d >> 8) * this
-     * puts a vertex inside both guard planes of its axis (tarn_clip_outcode) */
+     * puts a vertex inside both guard planes of its axis (tarn__clip_outcode) */
     uint16_t guard_slope_q8[2];
     uint8_t subpixel_bits;
     uint32_t light_q16[3];   /* directional light colour / 255 per channel, Q0.16 */
     uint32_t ambient_q16[3]; /* ambient colour / 255 per channel, Q0.16 */
     tarn_vec3 light_dir;     /* Q16.16 unit, toward the light */
-    uint8_t static_vertices; /* the scene's static vertices apply (tarn_static_view_applies) */
+    uint8_t static_vertices; /* the scene's static vertices apply (tarn__static_view_applies) */
     uint8_t static_screen;   /* and so do their screen positions: the frame is theirs */
 } tarn_view;
 
@@ -50,10 +50,10 @@ typedef struct {
 /* Per-object constants for one frame. */
 typedef struct {
     /* to_view (basis * scale * rotation, `to_view_frac_bits` fraction bits, entries
-     * within +-2^29) as high * 2^16 + low, for 32-bit products in tarn_vertex_position */
+     * within +-2^29) as high * 2^16 + low, for 32-bit products in tarn__vertex_position */
     uint16_t to_view_low[3][3];
     int16_t to_view_high[3][3];
-    /* per row, what tarn_vertex_position's sum starts from (the object's origin in view
+    /* per row, what tarn__vertex_position's sum starts from (the object's origin in view
      * space, the rounding half and the offsets of its unsigned forms), in 16-bit columns */
     uint16_t row_start_low[3];
     uint32_t row_start_middle[3], row_start_high[3];
@@ -68,26 +68,26 @@ typedef struct {
 
 #define TARN_CLIP_POLYGON_MAX 9 /* a triangle cut by six planes has at most 3 + 6 corners */
 
-void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, tarn_view *view);
+void tarn__view_setup(const tarn_scene *scene, const tarn_frame_config *config, tarn_view *view);
 
 /* The object's transform into view space and, unless its static vertices apply
  * (they come lit), its lighting constants. */
-void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
+void tarn__object_xform_setup(const tarn_view *view, const tarn_object *object,
                              tarn_object_xform *xform);
-void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *object_pos,
+void tarn__vertex_position(const tarn_object_xform *xform, const tarn_vec3 *object_pos,
                           tarn_view_vertex *out);
-void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
+void tarn__vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
                        const tarn_mesh *mesh, uint16_t index, tarn_view_vertex *out);
 /* The vector with each component cut to [-2, 2] (Q16.16): unit vectors unchanged. */
-tarn_vec3 tarn_unit_vector_bounded(const tarn_vec3 *v);
+tarn_vec3 tarn__unit_vector_bounded(const tarn_vec3 *v);
 /* The vertex's texture coordinates, (0, 0) for a mesh without them. */
-tarn_uv tarn_vertex_uv(const tarn_mesh *mesh, uint16_t index);
+tarn_uv tarn__vertex_uv(const tarn_mesh *mesh, uint16_t index);
 
 /* Bit i set: the vertex is outside clip plane i (near, far, left, right, top, bottom). */
-unsigned tarn_clip_outcode(const tarn_view *view, const tarn_view_vertex *v);
+unsigned tarn__clip_outcode(const tarn_view *view, const tarn_view_vertex *v);
 /* Clips the convex polygon in place against the planes in `planes` (outcode bits);
  * returns the new vertex count (0 when nothing is left). */
-int tarn_clip_polygon(const tarn_view *view, unsigned planes,
+int tarn__clip_polygon(const tarn_view *view, unsigned planes,
                       tarn_view_vertex polygon[TARN_CLIP_POLYGON_MAX], int count);
 
 /* Called for each screen triangle, in drawing order. */
@@ -96,24 +96,24 @@ typedef void (*tarn_triangle_sink)(void *ctx, const tarn_screen_vertex vertex[3]
 
 /* Clips the triangle (view vertices with their attributes) against the planes in
  * `planes` and hands what is left to the sink as a fan of screen triangles. */
-void tarn_clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_vertex v[3],
+void tarn__clip_and_emit(const tarn_view *view, unsigned planes, const tarn_view_vertex v[3],
                         const tarn_object *object, tarn_triangle_sink sink, void *ctx);
 
 /* Screen position and inverse depth; the attributes apart, as they are needed
  * only once a triangle is known to reach the tile. */
-void tarn_project_position(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out);
-void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out);
+void tarn__project_position(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out);
+void tarn__project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out);
 
 /* The subpixel position of pixel `pixel`'s centre: pixels are sampled at their
  * centres (tarn_render.h). */
-static inline int32_t tarn_pixel_centre(int32_t pixel, unsigned s)
+static inline int32_t tarn__pixel_centre(int32_t pixel, unsigned s)
 {
     return (int32_t)((uint32_t)pixel << s) + (int32_t)(1u << (s - 1));
 }
 
 /* Twice the signed area of the screen triangle (negative when it faces the
  * camera), or 0 when it has none or the material culls its side. */
-int64_t tarn_drawn_area2(const tarn_screen_vertex in[3], uint8_t cull);
+int64_t tarn__drawn_area2(const tarn_screen_vertex in[3], uint8_t cull);
 
 /* Pixels whose centres may be covered, inclusive: [x0, x1] x [y0, y1]. */
 typedef struct {
@@ -125,14 +125,14 @@ typedef struct {
     int32_t x0, y0, x1, y1; /* inclusive */
 } tarn_subpixel_bounds;
 
-static inline tarn_subpixel_bounds tarn_bounds_empty(void)
+static inline tarn_subpixel_bounds tarn__bounds_empty(void)
 {
     const tarn_subpixel_bounds b = {INT32_MAX, INT32_MAX, INT32_MIN, INT32_MIN};
     return b;
 }
 
 /* Grows the bounds by a vertex: inline, since the walk takes three a triangle. */
-static inline void tarn_bounds_add(tarn_subpixel_bounds *b, const tarn_screen_vertex *v)
+static inline void tarn__bounds_add(tarn_subpixel_bounds *b, const tarn_screen_vertex *v)
 {
     if (v->x < b->x0) b->x0 = v->x;
     if (v->x > b->x1) b->x1 = v->x;
@@ -142,6 +142,6 @@ static inline void tarn_bounds_add(tarn_subpixel_bounds *b, const tarn_screen_ve
 
 /* Pixels whose centres lie in non-empty bounds: from ceil((min - half) / 2^s) to
  * floor((max - half) / 2^s), half a pixel being 2^(s-1) subpixels. */
-tarn_pixel_box tarn_bounds_pixels(const tarn_subpixel_bounds *b, unsigned subpixel_bits);
+tarn_pixel_box tarn__bounds_pixels(const tarn_subpixel_bounds *b, unsigned subpixel_bits);
 
 #endif

@@ -53,7 +53,7 @@ static int32_t subpixels_from_centre(const tarn_view *view, int32_t offset, norm
 }
 
 /* centre + along, clamped to the guard band (in subpixels). The band's ends are
- * within 2^15 subpixels of each other (tarn_config_check), so the clamp is taken
+ * within 2^15 subpixels of each other (tarn__config_check), so the clamp is taken
  * on `along` against the ends less the centre, all in 32 bits. */
 static int32_t screen_coordinate(const tarn_view *view, int32_t along, int32_t frame_extent)
 {
@@ -76,7 +76,7 @@ static uint32_t inverse_depth_q30(const tarn_view *view, tarn_q16 depth_q16, nor
     return inverse < 1u ? 1u : (inverse > ((uint32_t)1 << 30) ? (uint32_t)1 << 30 : inverse);
 }
 
-void tarn_project_position(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out)
+void tarn__project_position(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out)
 {
     const tarn_q16 depth_q16 = in->d >= view->near ? in->d : view->near;
     const normalised depth = normalise((uint32_t)depth_q16);
@@ -87,7 +87,7 @@ void tarn_project_position(const tarn_view *view, const tarn_view_vertex *in, ta
     out->inv_depth = inverse_depth_q30(view, depth_q16, depth, recip);
 }
 
-void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out)
+void tarn__project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out)
 {
     out->uv = in->uv;
     for (int c = 0; c < 3; c++)
@@ -95,7 +95,7 @@ void tarn_project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out
     out->fresnel = (uint16_t)tarn_clamp_i32(in->fresnel, 0, 32768);
 }
 
-tarn_pixel_box tarn_bounds_pixels(const tarn_subpixel_bounds *b, unsigned s)
+tarn_pixel_box tarn__bounds_pixels(const tarn_subpixel_bounds *b, unsigned s)
 {
     const int32_t half = (int32_t)1 << (s - 1);
     tarn_pixel_box box;
@@ -106,7 +106,7 @@ tarn_pixel_box tarn_bounds_pixels(const tarn_subpixel_bounds *b, unsigned s)
     return box;
 }
 
-int64_t tarn_drawn_area2(const tarn_screen_vertex in[3], uint8_t cull)
+int64_t tarn__drawn_area2(const tarn_screen_vertex in[3], uint8_t cull)
 {
     /* coordinates inside the guard box differ by less than 2^15 */
     int64_t area2 = tarn_mul_i16_i32_wide(in[1].x - in[0].x, in[2].y - in[0].y) -

@@ -11,7 +11,7 @@ static unsigned bit_length_u64(uint64_t v)
 /* The view position's row i is floor(S / 2^f), saturated, f = to_view_frac_bits
  * (11..30), where S = sum_k m_k p_k + origin_i 2^f + 2^(f-1): the rounded shift of
  * the products' sum plus the origin, taken in one step (adding a multiple of 2^f
- * before the floor is adding it after). tarn_vertex_position takes S in 32-bit
+ * before the floor is adding it after). tarn__vertex_position takes S in 32-bit
  * words, with each product split into four of 16-bit halves:
  *   m = mh 2^16 + ml   (ml in [0, 2^16), mh in [-2^13, 2^13] as |m| <= 2^29)
  *   P = p + 2^31 = ph 2^16 + pl   (the coordinate's bits with the top one flipped:
@@ -48,7 +48,7 @@ static void object_to_view_matrix(const tarn_view *view, const tarn_object *obje
         }
     }
     /* Entries below 2^29 keep each product with a Q16.16 coordinate under 2^60, so
-     * the three-term sums in tarn_vertex_position cannot overflow. */
+     * the three-term sums in tarn__vertex_position cannot overflow. */
     unsigned drop = bit_length_u64(largest) > 29 ? bit_length_u64(largest) - 29 : 0;
     if (drop < 16) drop = 16; /* at most 30 fraction bits */
     const unsigned f = 46 - drop;
@@ -116,7 +116,7 @@ static void object_lighting_setup(const tarn_view *view, const tarn_object *obje
         xform->tint_q16[c] = ((((tint >> (16 - 8 * c)) & 0xFFu) * 65536u) + 127u) / 255u;
 }
 
-void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
+void tarn__object_xform_setup(const tarn_view *view, const tarn_object *object,
                              tarn_object_xform *xform)
 {
     tarn_q16 origin[3];
@@ -128,7 +128,7 @@ void tarn_object_xform_setup(const tarn_view *view, const tarn_object *object,
         object_lighting_setup(view, object, xform);
 }
 
-void tarn_vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,
+void tarn__vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,
                           tarn_view_vertex *out)
 {
     /* the arithmetic and its bounds: above object_to_view_matrix. Each coordinate's
@@ -195,7 +195,7 @@ static int32_t fresnel_q15(const tarn_object_xform *xform, const tarn_vec3 *norm
     for (int i = 0; i < 3; i++) {
         int64_t n_view = 0;
         for (int k = 0; k < 3; k++) n_view += tarn_mul_i32_wide(xform->normal_to_view[i][k], n_object[k]);
-        /* the normal is bounded (tarn_unit_vector_bounded), so with any rotation the
+        /* the normal is bounded (tarn__unit_vector_bounded), so with any rotation the
          * component stays below 2^20 and the sum within 64 bits */
         n_dot_p += tarn_mul_i32_wide((int32_t)tarn_round_shift_i64(n_view, 30), position[i]);
         length2 += (uint64_t)tarn_mul_i32_wide(position[i], position[i]);
@@ -213,7 +213,7 @@ static int32_t fresnel_q15(const tarn_object_xform *xform, const tarn_vec3 *norm
 /* A unit vector's components lie within +-1; one far longer (the scene's normals and
  * light are unit vectors by contract) has its components cut at +-2, which keeps the
  * three-term 64-bit sums it enters from overflowing. */
-tarn_vec3 tarn_unit_vector_bounded(const tarn_vec3 *v)
+tarn_vec3 tarn__unit_vector_bounded(const tarn_vec3 *v)
 {
     const int32_t limit = 2 * TARN_Q16_ONE;
     const tarn_vec3 bounded = {tarn_clamp_i32(v->x, -limit, limit), tarn_clamp_i32(v->y, -limit, limit),
@@ -221,10 +221,10 @@ tarn_vec3 tarn_unit_vector_bounded(const tarn_vec3 *v)
     return bounded;
 }
 
-void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
+void tarn__vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
                        const tarn_mesh *mesh, uint16_t index, tarn_view_vertex *out)
 {
-    const tarn_vec3 normal = tarn_unit_vector_bounded(&mesh->normals[index]);
+    const tarn_vec3 normal = tarn__unit_vector_bounded(&mesh->normals[index]);
     const tarn_vec3 *n = &normal;
     int64_t dot = tarn_mul_i32_wide(n->x, xform->light_dir[0]) + tarn_mul_i32_wide(n->y, xform->light_dir[1]) +
                   tarn_mul_i32_wide(n->z, xform->light_dir[2]);
@@ -236,11 +236,11 @@ void tarn_vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
         uint32_t vertex_channel = (vertex_rgb >> (16 - 8 * c)) & 0xFFu;
         out->lit[c] = (int32_t)((vertex_channel * factor + 128u) >> 8); /* Q8.8 */
     }
-    out->uv = tarn_vertex_uv(mesh, index);
+    out->uv = tarn__vertex_uv(mesh, index);
     out->fresnel = xform->fresnel ? fresnel_q15(xform, n, out) : 0;
 }
 
-tarn_uv tarn_vertex_uv(const tarn_mesh *mesh, uint16_t index)
+tarn_uv tarn__vertex_uv(const tarn_mesh *mesh, uint16_t index)
 {
     const tarn_uv none = {0, 0};
     return mesh->uvs != NULL ? mesh->uvs[index] : none;

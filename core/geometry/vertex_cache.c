@@ -1,7 +1,7 @@
 /* vertex_cache.c: see vertex_cache.h. */
 #include "geometry/vertex_cache_internal.h"
 
-int32_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half)
+int32_t tarn__tile_edge_slope(const tarn_view *view, int32_t offset_half)
 {
     /* focal in half pixels, rounded down: 1024 * offset / focal is bounded from
      * below by dividing by one more for a positive offset, and by this (at least
@@ -41,7 +41,7 @@ static unsigned beyond_tile_edges(const tarn_tile_edges *tile, const tarn_view *
     return beyond;
 }
 
-void tarn_vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
+void tarn__vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
                             const tarn_object_xform *xform, const tarn_object *object,
                             const tarn_tile_edges *tile)
 {
@@ -98,7 +98,7 @@ static void cached_position(tarn_vertex_cache *cache, uint16_t index, tarn_cache
         TARN_LINK_STATIC_VERTICES && cache->static_vertices != NULL ? &cache->static_vertices[index] : NULL;
     tarn_view_vertex v;
     if (TARN_LINK_COMPUTED_VERTICES && baked == NULL) {
-        tarn_vertex_position(cache->xform, &cache->mesh->positions[index], &v);
+        tarn__vertex_position(cache->xform, &cache->mesh->positions[index], &v);
     } else { /* the scene check saw to it that every object has them */
         v.x = baked->x;
         v.y = baked->y;
@@ -107,7 +107,7 @@ static void cached_position(tarn_vertex_cache *cache, uint16_t index, tarn_cache
     slot->index = index;
     slot->state = (uint8_t)(TARN_CACHED_FILLED | beyond_tile_edges(cache->tile, cache->view, &v)
                                                    << TARN_CACHED_BEYOND_TILE_SHIFT);
-    slot->outcode = (uint8_t)tarn_clip_outcode(cache->view, &v);
+    slot->outcode = (uint8_t)tarn__clip_outcode(cache->view, &v);
     slot->x = v.x;
     slot->y = v.y;
     slot->d = v.d;
@@ -115,7 +115,7 @@ static void cached_position(tarn_vertex_cache *cache, uint16_t index, tarn_cache
     *out = *slot;
 }
 
-unsigned tarn_cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3], tarn_cached_vertex c[3],
+unsigned tarn__cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3], tarn_cached_vertex c[3],
                               unsigned *outside_any)
 {
     unsigned all = ~0u, any = 0;
@@ -146,13 +146,13 @@ static tarn_cached_vertex *holding_slot(tarn_vertex_cache *cache, const tarn_cac
     return (slot->state & TARN_CACHED_FILLED) && slot->index == vertex->index ? slot : NULL;
 }
 
-void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex,
+void tarn__cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex,
                             tarn_screen_vertex *screen)
 {
     if (!(vertex->state & TARN_CACHED_PROJECTED)) {
         tarn_view_vertex v;
         set_view_position(&v, vertex);
-        tarn_project_position(cache->view, &v, screen);
+        tarn__project_position(cache->view, &v, screen);
         keep_projection(vertex, (int16_t)screen->x, (int16_t)screen->y, screen->inv_depth);
         tarn_cached_vertex *slot = holding_slot(cache, vertex);
         if (slot != NULL) keep_projection(slot, vertex->screen_x, vertex->screen_y, vertex->inv_depth);
@@ -162,12 +162,12 @@ void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex
     screen->inv_depth = vertex->inv_depth;
 }
 
-void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_view_vertex *v)
+void tarn__cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_view_vertex *v)
 {
     const tarn_mesh *mesh = cache->mesh;
     set_view_position(v, vertex);
     if (TARN_LINK_COMPUTED_VERTICES && !(vertex->state & TARN_CACHED_SHADED)) {
-        tarn_vertex_shade(cache->view, cache->xform, mesh, vertex->index, v);
+        tarn__vertex_shade(cache->view, cache->xform, mesh, vertex->index, v);
         const uint16_t lit[3] = {(uint16_t)v->lit[0], (uint16_t)v->lit[1], (uint16_t)v->lit[2]};
         keep_shading(vertex, lit, (uint16_t)v->fresnel);
         tarn_cached_vertex *slot = holding_slot(cache, vertex);
@@ -176,17 +176,17 @@ void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, t
     }
     for (int c = 0; c < 3; c++) v->lit[c] = vertex->lit[c];
     v->fresnel = vertex->fresnel;
-    v->uv = tarn_vertex_uv(mesh, vertex->index);
+    v->uv = tarn__vertex_uv(mesh, vertex->index);
 }
 
-void tarn_cached_attributes(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_screen_vertex *screen)
+void tarn__cached_attributes(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_screen_vertex *screen)
 {
     if (!(vertex->state & TARN_CACHED_SHADED)) {
         tarn_view_vertex v;
-        tarn_cached_shading(cache, vertex, &v);
+        tarn__cached_shading(cache, vertex, &v);
     }
-    /* in range already (vertex_cache.h), which tarn_project_attributes would clamp to */
+    /* in range already (vertex_cache.h), which tarn__project_attributes would clamp to */
     for (int c = 0; c < 3; c++) screen->lit[c] = vertex->lit[c];
     screen->fresnel = vertex->fresnel;
-    screen->uv = tarn_vertex_uv(cache->mesh, vertex->index);
+    screen->uv = tarn__vertex_uv(cache->mesh, vertex->index);
 }

@@ -19,7 +19,7 @@
 #define TARN_CACHED_SHADED 4u    /* lit and fresnel are set */
 #define TARN_CACHED_BEYOND_TILE_SHIFT 4u /* state bits 4..7: the tile edges the vertex lies beyond */
 
-/* tarn_cached_triangle's outcodes: tarn_clip_outcode's bits, and above them, from
+/* tarn__cached_triangle's outcodes: tarn__clip_outcode's bits, and above them, from
  * bit TARN_CACHED_TILE_OUTCODE_SHIFT, the tile edges. */
 #define TARN_CACHED_CLIP_PLANES 0x3Fu
 #define TARN_CACHED_TILE_OUTCODE_SHIFT 6u
@@ -39,11 +39,11 @@ typedef struct {
 typedef struct {
     uint16_t index;
     uint8_t state;     /* TARN_CACHED_* bits */
-    uint8_t outcode;   /* tarn_clip_outcode */
+    uint8_t outcode;   /* tarn__clip_outcode */
     tarn_q16 x, y, d;  /* view space */
     int16_t screen_x, screen_y; /* inside the guard box, which is below 2^15 subpixels */
     uint32_t inv_depth;
-    uint16_t lit[3];   /* tarn_vertex_shade's, Q8.8: always within 0..65280 */
+    uint16_t lit[3];   /* tarn__vertex_shade's, Q8.8: always within 0..65280 */
     uint16_t fresnel;  /* Q1.15, 0..32768 */
 } tarn_cached_vertex;
 
@@ -59,7 +59,7 @@ typedef struct {
 /* A tile edge's slope (tarn_tile_edges) from its offset from the frame centre in
  * half pixels, with the pixel beyond it, negated for the right and bottom edges;
  * TARN_TILE_EDGE_UNTESTED when no slope in range bounds it. */
-int32_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half);
+int32_t tarn__tile_edge_slope(const tarn_view *view, int32_t offset_half);
 
 #define TARN_TILE_EDGE_UNTESTED INT32_MIN
 
@@ -67,28 +67,28 @@ int32_t tarn_tile_edge_slope(const tarn_view *view, int32_t offset_half);
  * edges are given, or of the whole frame (NULL). Where the object's static vertices
  * apply (tarn_view's static_vertices), a vertex is read from them, already lit and,
  * in their own frame, projected. */
-void tarn_vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
+void tarn__vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
                             const tarn_object_xform *xform, const tarn_object *object,
                             const tarn_tile_edges *tile);
 
 /* The three vertices of a triangle (`index` its three indices) into c[]; returns the
  * outcode bits all three have, and in *outside_any those any of them has. */
-unsigned tarn_cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3], tarn_cached_vertex c[3],
+unsigned tarn__cached_triangle(tarn_vertex_cache *cache, const uint16_t index[3], tarn_cached_vertex c[3],
                               unsigned *outside_any);
 
 /* The screen position and inverse depth of a vertex inside every clip plane, into
  * `screen` (its attributes untouched); computed once and kept in `vertex` and, while
  * it still holds the vertex, its slot. */
-void tarn_cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex,
+void tarn__cached_projection(tarn_vertex_cache *cache, tarn_cached_vertex *vertex,
                             tarn_screen_vertex *screen);
 
 /* The vertex as a view vertex: its position and its shading (lit colour, fresnel,
  * texture coordinates), the shading computed once and kept as
- * tarn_cached_projection keeps the screen position. */
-void tarn_cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_view_vertex *v);
+ * tarn__cached_projection keeps the screen position. */
+void tarn__cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_view_vertex *v);
 
 /* The same shading straight into a screen vertex's attributes, as
- * tarn_project_attributes would set them from the view vertex. */
-void tarn_cached_attributes(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_screen_vertex *screen);
+ * tarn__project_attributes would set them from the view vertex. */
+void tarn__cached_attributes(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_screen_vertex *screen);
 
 #endif

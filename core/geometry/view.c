@@ -89,7 +89,7 @@ static uint32_t channel_q16(uint32_t rgb, int channel)
 
 
 
-void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, tarn_view *view)
+void tarn__view_setup(const tarn_scene *scene, const tarn_frame_config *config, tarn_view *view)
 {
     const tarn_camera *camera = &scene->camera;
     camera_basis(camera, view->basis);
@@ -117,7 +117,7 @@ void tarn_view_setup(const tarn_scene *scene, const tarn_frame_config *config, t
         view->light_q16[c] = channel_q16(scene->light.colour_rgb, c);
         view->ambient_q16[c] = channel_q16(scene->light.ambient_rgb, c);
     }
-    view->light_dir = tarn_unit_vector_bounded(&scene->light.direction);
-    view->static_vertices = (uint8_t)tarn_static_view_applies(scene);
-    view->static_screen = (uint8_t)tarn_static_screen_applies(scene, config);
+    view->light_dir = tarn__unit_vector_bounded(&scene->light.direction);
+    view->static_vertices = (uint8_t)tarn__static_view_applies(scene);
+    view->static_screen = (uint8_t)tarn__static_screen_applies(scene, config);
 }

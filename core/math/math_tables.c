@@ -5,7 +5,7 @@
  * What each table holds is described in math_tables_internal.h. */
 #include "math/math_tables_internal.h"
 
-const uint32_t tarn_exp2_table_q16[TARN_EXP2_TABLE_STEPS + 1u] = {
+const uint32_t tarn__exp2_table_q16[TARN_EXP2_TABLE_STEPS + 1u] = {
     65536, 65359, 65182, 65006, 64830, 64655, 64480, 64306,
     64132, 63958, 63785, 63613, 63441, 63269, 63098, 62928,
     62757, 62588, 62419, 62250, 62081, 61914, 61746, 61579,
@@ -41,7 +41,7 @@ const uint32_t tarn_exp2_table_q16[TARN_EXP2_TABLE_STEPS + 1u] = {
     32768,
 };
 
-const uint16_t tarn_recip_seed_q15[1u << TARN_RECIP_SEED_BITS] = {
+const uint16_t tarn__recip_seed_q15[1u << TARN_RECIP_SEED_BITS] = {
     65408, 65154, 64902, 64652, 64404, 64158, 63913, 63671,
     63430, 63191, 62954, 62719, 62485, 62253, 62023, 61795,
     61568, 61343, 61119, 60897, 60677, 60458, 60241, 60026,
@@ -76,7 +76,7 @@ const uint16_t tarn_recip_seed_q15[1u << TARN_RECIP_SEED_BITS] = {
     33255, 33189, 33124, 33059, 32994, 32929, 32864, 32800,
 };
 
-const uint16_t tarn_rsqrt_seed_q15[TARN_RSQRT_SEED_COUNT] = {
+const uint16_t tarn__rsqrt_seed_q15[TARN_RSQRT_SEED_COUNT] = {
     65282, 64782, 64293, 63815, 63347, 62890, 62442, 62004,
     61575, 61155, 60743, 60339, 59943, 59555, 59175, 58802,
     58435, 58076, 57722, 57376, 57035, 56701, 56372, 56049,
@@ -103,7 +103,7 @@ const uint16_t tarn_rsqrt_seed_q15[TARN_RSQRT_SEED_COUNT] = {
     33259, 33192, 33126, 33060, 32994, 32929, 32864, 32800,
 };
 
-const uint16_t tarn_sin_quarter_q15[TARN_SIN_TABLE_STEPS + 1u] = {
+const uint16_t tarn__sin_quarter_q15[TARN_SIN_TABLE_STEPS + 1u] = {
     0, 201, 402, 603, 804, 1005, 1206, 1407,
     1608, 1809, 2009, 2210, 2411, 2611, 2811, 3012,
     3212, 3412, 3612, 3812, 4011, 4211, 4410, 4609,

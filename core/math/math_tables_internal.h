@@ -12,24 +12,24 @@
  * that interpolating past the last step needs no special case. Held in 32 bits
  * because the first entry, 1.0, needs 17. */
 #define TARN_EXP2_TABLE_STEPS 256u
-extern const uint32_t tarn_exp2_table_q16[TARN_EXP2_TABLE_STEPS + 1u];
+extern const uint32_t tarn__exp2_table_q16[TARN_EXP2_TABLE_STEPS + 1u];
 
 /* Newton seeds for 1/m, m in [1/2, 1) split into 256 equal intervals; entry i is
  * 2 / (lo + hi) of interval i in Q1.15 (between 1 and 2), the value whose relative
  * error is smallest at both ends of the interval. */
 #define TARN_RECIP_SEED_BITS 8u
-extern const uint16_t tarn_recip_seed_q15[1u << TARN_RECIP_SEED_BITS];
+extern const uint16_t tarn__recip_seed_q15[1u << TARN_RECIP_SEED_BITS];
 
 /* Newton seeds for 1/sqrt(m), m in [1/4, 1) split into intervals of width 1/256
  * (entry i covers [(64 + i) / 256, (65 + i) / 256)); entry i is
  * 2 / (sqrt(lo) + sqrt(hi)) in Q1.15. */
 #define TARN_RSQRT_SEED_FIRST 64u  /* m = 64/256 = 1/4, the smallest mantissa */
 #define TARN_RSQRT_SEED_COUNT 192u /* up to m = 256/256 = 1 */
-extern const uint16_t tarn_rsqrt_seed_q15[TARN_RSQRT_SEED_COUNT];
+extern const uint16_t tarn__rsqrt_seed_q15[TARN_RSQRT_SEED_COUNT];
 
 /* sin(i/256 of a quarter turn) in Q1.15 for i = 0..256: 0 up to 32768 (1.0), with
  * the endpoint for the same reason as the exp2 table. */
 #define TARN_SIN_TABLE_STEPS 256u
-extern const uint16_t tarn_sin_quarter_q15[TARN_SIN_TABLE_STEPS + 1u];
+extern const uint16_t tarn__sin_quarter_q15[TARN_SIN_TABLE_STEPS + 1u];
 
 #endif

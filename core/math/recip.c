@@ -50,7 +50,7 @@ static uint32_t recip_first_step(uint32_t m, uint32_t seed)
 static uint32_t recip_normalised_q30(uint32_t m, unsigned newton_steps)
 {
     uint32_t seed_index = (m >> (31u - TARN_RECIP_SEED_BITS)) & ((1u << TARN_RECIP_SEED_BITS) - 1u);
-    const uint32_t seed = tarn_recip_seed_q15[seed_index];
+    const uint32_t seed = tarn__recip_seed_q15[seed_index];
     if (newton_steps == 0u) return seed << 15;
     uint32_t y = recip_first_step(m, seed);
     /* more steps than the maximum gain nothing; clamping also bounds the time */

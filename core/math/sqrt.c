@@ -63,7 +63,7 @@ uint32_t tarn_rsqrt_q16(uint32_t x_q16)
      * 1/sqrt(x / 2^16) in Q16.16 is (1/sqrt(m)) * 2^(8 + lz/2). */
     unsigned even_lz = tarn_clz32(x_q16) & ~1u; /* 0..30 */
     uint32_t m = x_q16 << even_lz;              /* Q0.32 in [1/4, 1) */
-    uint32_t y = (uint32_t)tarn_rsqrt_seed_q15[(m >> 24) - TARN_RSQRT_SEED_FIRST] << 15;
+    uint32_t y = (uint32_t)tarn__rsqrt_seed_q15[(m >> 24) - TARN_RSQRT_SEED_FIRST] << 15;
     for (int step = 0; step < RSQRT_NEWTON_STEPS; step++) y = rsqrt_newton_step(m, y);
 
     unsigned shift = 22u - (even_lz >> 1); /* 7..22: from Q2.30 to the result */

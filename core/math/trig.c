@@ -22,8 +22,8 @@ int32_t tarn_sin_q15(uint16_t angle_turns_q16)
     uint32_t to = backwards ? from - 1u : from + 1u;
 
     /* Q1.21: a weighted mean of two entries, so never negative and at most 2^21 */
-    uint32_t blended = tarn_sin_quarter_q15[from] * ((1u << STEP_BITS) - weight) +
-                       tarn_sin_quarter_q15[to] * weight;
+    uint32_t blended = tarn__sin_quarter_q15[from] * ((1u << STEP_BITS) - weight) +
+                       tarn__sin_quarter_q15[to] * weight;
     uint32_t magnitude = (blended + (1u << (STEP_BITS - 1u))) >> STEP_BITS;
     if (magnitude > Q15_MAX) magnitude = Q15_MAX; /* 1.0 itself is not a Q1.15 value */
     return quadrant >= 2u ? -(int32_t)magnitude : (int32_t)magnitude;

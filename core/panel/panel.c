@@ -13,7 +13,7 @@
 tarn_panel tarn_panel_preset(tarn_panel_model model, unsigned rotation)
 {
     tarn_panel panel = {0};
-    const tarn_panel_model_facts *facts = tarn_panel_model_facts_of((unsigned)model);
+    const tarn_panel_model_facts *facts = tarn__panel_model_facts_of((unsigned)model);
     if (facts == NULL) return panel; /* width 0: init and send_tile reject it */
     rotation &= 3u;
     panel.model = (uint8_t)model;
@@ -64,7 +64,7 @@ static int transport_complete(const tarn_panel_transport *transport)
 
 tarn_status tarn_panel_init(const tarn_panel *panel, const tarn_panel_transport *transport)
 {
-    const tarn_panel_model_facts *facts = panel ? tarn_panel_model_facts_of(panel->model) : NULL;
+    const tarn_panel_model_facts *facts = panel ? tarn__panel_model_facts_of(panel->model) : NULL;
     if (facts == NULL || panel->width == 0 || !transport_complete(transport) ||
         transport->delay_ms == NULL)
         return TARN_ERR_CONFIG;

@@ -105,7 +105,7 @@ static const tarn_panel_model_facts models[] = {
                                     {0, 0, 0, 0}, {0, 0, 0, 0}, PACKED(ili9341_init)},
 };
 
-const tarn_panel_model_facts *tarn_panel_model_facts_of(unsigned model)
+const tarn_panel_model_facts *tarn__panel_model_facts_of(unsigned model)
 {
     return model < sizeof models / sizeof models[0] ? &models[model] : NULL;
 }

@@ -22,6 +22,6 @@ typedef struct {
 } tarn_panel_model_facts;
 
 /* NULL for a value that names no model. */
-const tarn_panel_model_facts *tarn_panel_model_facts_of(unsigned model);
+const tarn_panel_model_facts *tarn__panel_model_facts_of(unsigned model);
 
 #endif

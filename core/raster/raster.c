@@ -59,13 +59,13 @@ static TARN_ALWAYS_INLINE void affine_t(const tarn_attribute_set *set, const uin
 static TARN_ALWAYS_INLINE void exact_t(const tarn_attribute_set *set, const tarn_triangle_setup *t, int32_t i, int32_t j,
                     unsigned steps, uint32_t out[TARN_ATTRIBUTES_MAX])
 {
-    uint32_t q = tarn_plane_at(&set->q, t, i, j);
+    uint32_t q = tarn__plane_at(&set->q, t, i, j);
     if ((int32_t)q < (int32_t)set->q_min) q = set->q_min;
     if (q > set->q_max) q = set->q_max;
     unsigned lz;
     uint32_t recip = reciprocal_of_q(q, steps, &lz);
     for (int k = set->first_varying; k < set->count; k++)
-        out[k] = divide_by_q(tarn_plane_at(&set->premultiplied[k], t, i, j), recip, lz,
+        out[k] = divide_by_q(tarn__plane_at(&set->premultiplied[k], t, i, j), recip, lz,
                              set->t_min[k], set->t_max[k]);
 }
 
@@ -92,12 +92,12 @@ static int32_t span_end_t(int32_t premultiplied, uint32_t recip, unsigned lz)
 static void span_end(const tarn_attribute_set *set, const tarn_triangle_setup *t, int32_t i, int32_t j,
                      unsigned steps, int32_t out[TARN_ATTRIBUTES_MAX])
 {
-    int32_t q = (int32_t)tarn_plane_at(&set->q, t, i, j);
+    int32_t q = (int32_t)tarn__plane_at(&set->q, t, i, j);
     int32_t q_floor = (int32_t)(set->q_min / 2u) > 1 ? (int32_t)(set->q_min / 2u) : 1;
     unsigned lz;
     uint32_t recip = reciprocal_of_q((uint32_t)tarn_clamp_i32(q, q_floor, (int32_t)TARN_T_ONE), steps, &lz);
     for (int k = set->first_varying; k < set->count; k++)
-        out[k] = span_end_t((int32_t)tarn_plane_at(&set->premultiplied[k], t, i, j), recip, lz);
+        out[k] = span_end_t((int32_t)tarn__plane_at(&set->premultiplied[k], t, i, j), recip, lz);
 }
 
 /* The span of pixel i: its exact ends, and the step between them. The far end of
@@ -187,7 +187,7 @@ static TARN_ALWAYS_INLINE void attributes_at(tarn_span *s, int32_t i, int mode)
         exact_t(set, s->triangle, i, s->j, steps, s->values);
 }
 
-void tarn_span_attributes(tarn_span *s, int32_t i)
+void tarn__span_attributes(tarn_span *s, int32_t i)
 {
     const int mode = s->set->perspective;
     if (TARN_LINK_PERSPECTIVE_AFFINE && mode == TARN_PERSPECTIVE_AFFINE)
@@ -209,12 +209,12 @@ static void draw_constant_span(tarn_span *s, uint32_t rgb)
     const int exact_depth = s->set->depth.exact;
     tarn_exact_value depth = s->depth;
     for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
-        const uint32_t closer = tarn_closer_depth(depth_buffer, depth_bits, index, depth.quotient);
+        const uint32_t closer = tarn__closer_depth(depth_buffer, depth_bits, index, depth.quotient);
         if (closer != 0u) {
             colour[index] = rgb;
-            tarn_store_depth(depth_buffer, depth_bits, index, closer);
+            tarn__store_depth(depth_buffer, depth_bits, index, closer);
         }
-        tarn_step_depth(&depth, &step, exact_depth);
+        tarn__step_depth(&depth, &step, exact_depth);
     }
 }
 
@@ -229,13 +229,13 @@ static TARN_ALWAYS_INLINE void draw_interpolated(tarn_span *s, const tarn_textur
     const int exact_depth = s->set->depth.exact;
     tarn_exact_value depth = s->depth;
     for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
-        const uint32_t closer = tarn_closer_depth(depth_buffer, depth_bits, index, depth.quotient);
+        const uint32_t closer = tarn__closer_depth(depth_buffer, depth_bits, index, depth.quotient);
         if (closer != 0u) {
             attributes_at(s, i, mode);
             colour[index] = shade_pixel(s->set, texture, s->values);
-            tarn_store_depth(depth_buffer, depth_bits, index, closer);
+            tarn__store_depth(depth_buffer, depth_bits, index, closer);
         }
-        tarn_step_depth(&depth, &step, exact_depth);
+        tarn__step_depth(&depth, &step, exact_depth);
     }
 }
 
@@ -258,7 +258,7 @@ static void row_edges_at(const tarn_triangle_setup *t, int32_t i, int32_t j, tar
 {
     const unsigned s = t->subpixel_bits;
     for (int k = 0; k < 3; k++) {
-        r->at[k] = tarn_edge_at(&t->edges[k], tarn_pixel_centre(i, s), tarn_pixel_centre(j, s));
+        r->at[k] = tarn__edge_at(&t->edges[k], tarn__pixel_centre(i, s), tarn__pixel_centre(j, s));
         r->step_x[k] = (int32_t)((uint32_t)t->edges[k].a << s);
         r->step_y[k] = (int32_t)((uint32_t)t->edges[k].b << s);
     }
@@ -287,7 +287,7 @@ static int covered_run(tarn_triangle_rows *r, int32_t j)
         e0 += step0;
         e1 += step1;
         e2 += step2;
-        tarn_step_depth(&depth, &r->set.depth.step_x, exact_depth);
+        tarn__step_depth(&depth, &r->set.depth.step_x, exact_depth);
     }
     if (i > i1) return 0;
     s->i0 = i;
@@ -306,12 +306,12 @@ static int covered_run(tarn_triangle_rows *r, int32_t j)
     return 1;
 }
 
-tarn_span *tarn_triangle_next_span(tarn_triangle_rows *r)
+tarn_span *tarn__triangle_next_span(tarn_triangle_rows *r)
 {
     while (r->next_row <= r->draw.y1) {
         const int covered = covered_run(r, r->next_row);
         r->next_row++;
-        tarn_step_depth(&r->row_depth, &r->set.depth.step_y, r->set.depth.exact);
+        tarn__step_depth(&r->row_depth, &r->set.depth.step_y, r->set.depth.exact);
         row_edges_down(&r->edges);
         if (covered) return &r->span;
     }
@@ -329,17 +329,17 @@ static uint8_t perspective_mode(const tarn_quality *quality, const tarn_pixel_bo
     return quality->perspective;
 }
 
-void tarn_triangle_rows_begin(tarn_triangle_rows *r, const tarn_attribute_request *request)
+void tarn__triangle_rows_begin(tarn_triangle_rows *r, const tarn_attribute_request *request)
 {
     const tarn_triangle_setup *t = &r->setup;
     const tarn_quality *quality = r->target->quality;
-    tarn_setup_attributes(t, request, perspective_mode(quality, &t->box), quality->depth_interpolation, &r->set);
+    tarn__setup_attributes(t, request, perspective_mode(quality, &t->box), quality->depth_interpolation, &r->set);
     for (int k = 0; k < r->set.first_varying; k++) r->values[k] = r->set.t_min[k]; /* = t_max: constant */
     r->span.target = r->target;
     r->span.triangle = t;
     r->span.set = &r->set;
     r->span.values = r->values;
-    r->row_depth = tarn_depth_at(t, &r->set.depth, r->draw.x0, r->draw.y0);
+    r->row_depth = tarn__depth_at(t, &r->set.depth, r->draw.x0, r->draw.y0);
     row_edges_at(t, r->draw.x0, r->draw.y0, &r->edges);
     r->next_row = r->draw.y0;
 }
@@ -354,20 +354,20 @@ static int box_outside_an_edge(const tarn_triangle_setup *t, const tarn_pixel_bo
     const unsigned s = t->subpixel_bits;
     for (int k = 0; k < 3; k++) {
         const tarn_edge *e = &t->edges[k];
-        const int32_t px = tarn_pixel_centre(e->a > 0 ? box->x1 : box->x0, s);
-        const int32_t py = tarn_pixel_centre(e->b > 0 ? box->y1 : box->y0, s);
-        if (tarn_edge_at(e, px, py) < 0) return 1;
+        const int32_t px = tarn__pixel_centre(e->a > 0 ? box->x1 : box->x0, s);
+        const int32_t py = tarn__pixel_centre(e->b > 0 ? box->y1 : box->y0, s);
+        if (tarn__edge_at(e, px, py) < 0) return 1;
     }
     return 0;
 }
 
-int tarn_triangle_enters_tile(tarn_triangle_rows *r, tarn_tile_target *tile, const tarn_screen_vertex vertex[3],
+int tarn__triangle_enters_tile(tarn_triangle_rows *r, tarn_tile_target *tile, const tarn_screen_vertex vertex[3],
                               uint8_t cull)
 {
     tarn_triangle_setup *t = &r->setup;
-    if (!tarn_orient_triangle(vertex, cull, tile->quality->subpixel_bits, t)) return 0;
+    if (!tarn__orient_triangle(vertex, cull, tile->quality->subpixel_bits, t)) return 0;
     r->target = tile;
-    t->box = tarn_triangle_pixels(t);
+    t->box = tarn__triangle_pixels(t);
     tarn_pixel_box *draw = &r->draw;
     *draw = t->box;
     if (draw->x0 < tile->rect.x0) draw->x0 = tile->rect.x0;
@@ -377,23 +377,23 @@ int tarn_triangle_enters_tile(tarn_triangle_rows *r, tarn_tile_target *tile, con
     return draw->x0 <= draw->x1 && draw->y0 <= draw->y1 && !box_outside_an_edge(t, draw);
 }
 
-void tarn_raster_triangle(void *target, const tarn_screen_vertex vertex[3], const tarn_object *object)
+void tarn__raster_triangle(void *target, const tarn_screen_vertex vertex[3], const tarn_object *object)
 {
     const tarn_material *material = object->material;
     tarn_triangle_rows rows;
-    if (!tarn_triangle_enters_tile(&rows, target, vertex, material->cull)) return;
+    if (!tarn__triangle_enters_tile(&rows, target, vertex, material->cull)) return;
     tarn_attribute_request request = {NULL, 0, 0};
     if (material->texture != NULL && object->mesh->uvs != NULL) {
         request.texture = material->texture;
         request.uv = 1;
     }
-    tarn_triangle_rows_begin(&rows, &request);
+    tarn__triangle_rows_begin(&rows, &request);
     /* a colour the three vertices share needs no attribute at any pixel: decided
      * once a triangle */
     const int constant = request.texture == NULL && rows.set.first_varying == rows.set.count;
     const uint32_t rgb = constant ? shade_pixel(&rows.set, NULL, rows.values) : 0u;
     const int mode = rows.set.perspective;
-    for (tarn_span *s; (s = tarn_triangle_next_span(&rows)) != NULL;) {
+    for (tarn_span *s; (s = tarn__triangle_next_span(&rows)) != NULL;) {
         if (constant)
             draw_constant_span(s, rgb);
         else if (TARN_LINK_PERSPECTIVE_AFFINE && mode == TARN_PERSPECTIVE_AFFINE)

@@ -101,17 +101,17 @@ typedef struct {
 
 /* ---- per-pixel helpers shared with setup (32-bit arithmetic only) ------------ */
 
-static inline int32_t tarn_edge_at(const tarn_edge *e, int32_t px, int32_t py)
+static inline int32_t tarn__edge_at(const tarn_edge *e, int32_t px, int32_t py)
 {
     return e->a * (px - e->x) + e->b * (py - e->y) + e->bias;
 }
 
-static inline uint32_t tarn_plane_at(const tarn_plane *p, const tarn_triangle_setup *t, int32_t i, int32_t j)
+static inline uint32_t tarn__plane_at(const tarn_plane *p, const tarn_triangle_setup *t, int32_t i, int32_t j)
 {
     return p->anchor + p->step_x * (uint32_t)(i - t->box.x0) + p->step_y * (uint32_t)(j - t->box.y0);
 }
 
-static inline void tarn_exact_step(tarn_exact_value *v, const tarn_exact_step_value *step)
+static inline void tarn__exact_step(tarn_exact_value *v, const tarn_exact_step_value *step)
 {
     v->quotient += step->quotient;
     if (v->remainder >= step->carry_at) {
@@ -125,10 +125,10 @@ static inline void tarn_exact_step(tarn_exact_value *v, const tarn_exact_step_va
 /* ---- setup, once per triangle per tile ------------------------------------------ */
 
 /* Culls by the material and orients the triangle; returns 0 when nothing draws. */
-int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned subpixel_bits,
+int tarn__orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned subpixel_bits,
                          tarn_triangle_setup *t);
 /* Pixels whose centres may be covered, before the tile clips them. */
-tarn_pixel_box tarn_triangle_pixels(const tarn_triangle_setup *t);
+tarn_pixel_box tarn__triangle_pixels(const tarn_triangle_setup *t);
 
 /* What a triangle interpolates besides its lit colour. */
 typedef struct {
@@ -137,29 +137,29 @@ typedef struct {
     int fresnel;                 /* the fresnel term (water; needs uv) */
 } tarn_attribute_request;
 
-void tarn_setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_request *request,
+void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_request *request,
                            uint8_t perspective, uint8_t depth_interpolation, tarn_attribute_set *set);
 /* The depth one step on: exactly, or along the plane, whose steps have no
  * remainder. `exact` is the triangle's depth.exact, taken into a local by the
  * caller: read through the set at each pixel, it would be read again after every
  * store to the tile. */
-static inline void tarn_step_depth(tarn_exact_value *v, const tarn_exact_step_value *step, int exact)
+static inline void tarn__step_depth(tarn_exact_value *v, const tarn_exact_step_value *step, int exact)
 {
     if (TARN_LINK_EXACT_DEPTH && exact)
-        tarn_exact_step(v, step);
+        tarn__exact_step(v, step);
     else
         v->quotient += step->quotient;
 }
 
 /* Exact depth (TARN_DEPTH_EXACT) at pixel (i, j). */
-tarn_exact_value tarn_exact_depth_at(const tarn_triangle_setup *t, const tarn_depth_plane *depth, int32_t i, int32_t j);
+tarn_exact_value tarn__exact_depth_at(const tarn_triangle_setup *t, const tarn_depth_plane *depth, int32_t i, int32_t j);
 
 /* Depth at pixel (i, j), to be stepped from there with step_depth. */
-static inline tarn_exact_value tarn_depth_at(const tarn_triangle_setup *t, const tarn_depth_plane *depth, int32_t i, int32_t j)
+static inline tarn_exact_value tarn__depth_at(const tarn_triangle_setup *t, const tarn_depth_plane *depth, int32_t i, int32_t j)
 {
-    if (TARN_LINK_EXACT_DEPTH && depth->exact) return tarn_exact_depth_at(t, depth, i, j);
+    if (TARN_LINK_EXACT_DEPTH && depth->exact) return tarn__exact_depth_at(t, depth, i, j);
     const tarn_plane p = {depth->anchor, depth->step_x.quotient, depth->step_y.quotient};
-    const tarn_exact_value v = {tarn_plane_at(&p, t, i, j), 0u};
+    const tarn_exact_value v = {tarn__plane_at(&p, t, i, j), 0u};
     return v;
 }
 
@@ -191,27 +191,27 @@ typedef struct {
     const tarn_triangle_setup *triangle;
     const tarn_attribute_set *set;
     int32_t j, i0, i1;
-    tarn_exact_value depth;  /* near/d (Q1.30) at i0, stepped along the row with tarn_step_depth */
+    tarn_exact_value depth;  /* near/d (Q1.30) at i0, stepped along the row with tarn__step_depth */
     int32_t offset;          /* index of pixel (0, j) in the target's buffers */
     uint32_t *values;        /* T values of the attributes: the constant ones set, the
-                                varying ones by tarn_span_attributes */
+                                varying ones by tarn__span_attributes */
     tarn_row_attributes row; /* the row's interpolation state */
 } tarn_span;
 
 /* The T values of the varying attributes at pixel i of the span, into its values,
  * for a shader that needs them at some pixels only. Pixels must come in order;
  * one may be skipped in any perspective mode. */
-void tarn_span_attributes(tarn_span *span, int32_t i);
+void tarn__span_attributes(tarn_span *span, int32_t i);
 
 /* The depth at buffer index `index` as the buffer holds it (a tarn_depth16 code or
  * Q1.30, by `depth_bits`), or 0 when inv_depth is not closer than the stored one.
  * Both forms are at least 1. The loops take the buffer and its bits into locals:
  * read through the span, they would be read again after every store to the tile. */
-static inline uint32_t tarn_closer_depth(const void *depth, int depth_bits, int32_t index, uint32_t inv_depth)
+static inline uint32_t tarn__closer_depth(const void *depth, int depth_bits, int32_t index, uint32_t inv_depth)
 {
     if ((int32_t)inv_depth < 1) inv_depth = 1;
     if (inv_depth > TARN_T_ONE) inv_depth = TARN_T_ONE;
-    if (tarn_depth_is_16_bits((unsigned)depth_bits)) {
+    if (tarn__depth_is_16_bits((unsigned)depth_bits)) {
         const uint16_t value = tarn_depth16_encode(inv_depth);
         return value > ((const uint16_t *)depth)[index] ? value : 0u;
     }
@@ -220,9 +220,9 @@ static inline uint32_t tarn_closer_depth(const void *depth, int depth_bits, int3
 
 /* Stored after the pixel is shaded: a water pass drawing in place reads the depth
  * beneath it first. */
-static inline void tarn_store_depth(void *depth, int depth_bits, int32_t index, uint32_t value)
+static inline void tarn__store_depth(void *depth, int depth_bits, int32_t index, uint32_t value)
 {
-    if (tarn_depth_is_16_bits((unsigned)depth_bits))
+    if (tarn__depth_is_16_bits((unsigned)depth_bits))
         ((uint16_t *)depth)[index] = (uint16_t)value;
     else
         ((uint32_t *)depth)[index] = value;
@@ -231,12 +231,12 @@ static inline void tarn_store_depth(void *depth, int depth_bits, int32_t index, 
 /* ---- a triangle into a tile, row by row ---------------------------------------
  *
  * The material's stage drives the rows, so the rasterizer calls no shader: for an
- * opaque material raster.c itself (tarn_raster_triangle), for water core/water/.
+ * opaque material raster.c itself (tarn__raster_triangle), for water core/water/.
  *
  *     tarn_triangle_rows rows;
- *     if (!tarn_triangle_enters_tile(&rows, target, vertex, cull)) return;
- *     tarn_triangle_rows_begin(&rows, &request);
- *     for (tarn_span *s; (s = tarn_triangle_next_span(&rows)) != NULL;)
+ *     if (!tarn__triangle_enters_tile(&rows, target, vertex, cull)) return;
+ *     tarn__triangle_rows_begin(&rows, &request);
+ *     for (tarn_span *s; (s = tarn__triangle_next_span(&rows)) != NULL;)
  *         ...each pixel of s that passes the depth test...
  */
 
@@ -262,15 +262,15 @@ typedef struct {
 
 /* Sets up the triangle for the tile; 0 when it draws no pixel there (culled, or
  * its box misses the tile or lies beyond one of its edges). */
-int tarn_triangle_enters_tile(tarn_triangle_rows *rows, tarn_tile_target *target,
+int tarn__triangle_enters_tile(tarn_triangle_rows *rows, tarn_tile_target *target,
                               const tarn_screen_vertex vertex[3], uint8_t cull);
 /* Its attribute and depth planes for `request`, and the walk at its first row. */
-void tarn_triangle_rows_begin(tarn_triangle_rows *rows, const tarn_attribute_request *request);
+void tarn__triangle_rows_begin(tarn_triangle_rows *rows, const tarn_attribute_request *request);
 /* The covered pixels of the next row that has any, or NULL after the last. */
-tarn_span *tarn_triangle_next_span(tarn_triangle_rows *rows);
+tarn_span *tarn__triangle_next_span(tarn_triangle_rows *rows);
 
 /* A triangle of an opaque material into the tile `target` (a tarn_tile_target): a
  * tarn_triangle_sink. */
-void tarn_raster_triangle(void *target, const tarn_screen_vertex vertex[3], const tarn_object *object);
+void tarn__raster_triangle(void *target, const tarn_screen_vertex vertex[3], const tarn_object *object);
 
 #endif

@@ -40,17 +40,17 @@ static tarn_edge make_edge(const tarn_screen_vertex *from, const tarn_screen_ver
 
 /* The edge function without its bias at a pixel centre inside the triangle's
  * bounds: 32-bit, as raster.c's edge_at, since coordinates inside the guard box
- * differ by less than 2^15 subpixels (tarn_config_check) and each product stays
+ * differ by less than 2^15 subpixels (tarn__config_check) and each product stays
  * below 2^30. */
 static int32_t edge_unbiased_at(const tarn_edge *e, int32_t px, int32_t py)
 {
     return e->a * (px - e->x) + e->b * (py - e->y);
 }
 
-int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned s,
+int tarn__orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned s,
                            tarn_triangle_setup *t)
 {
-    const int64_t area2 = tarn_drawn_area2(in, cull);
+    const int64_t area2 = tarn__drawn_area2(in, cull);
     if (area2 == 0) return 0;
     int front = area2 < 0;
     t->v[0] = &in[0];
@@ -65,11 +65,11 @@ int tarn_orient_triangle(const tarn_screen_vertex in[3], uint8_t cull, unsigned 
     return 1;
 }
 
-tarn_pixel_box tarn_triangle_pixels(const tarn_triangle_setup *t)
+tarn_pixel_box tarn__triangle_pixels(const tarn_triangle_setup *t)
 {
-    tarn_subpixel_bounds bounds = tarn_bounds_empty();
-    for (int k = 0; k < 3; k++) tarn_bounds_add(&bounds, t->v[k]);
-    return tarn_bounds_pixels(&bounds, t->subpixel_bits);
+    tarn_subpixel_bounds bounds = tarn__bounds_empty();
+    for (int k = 0; k < 3; k++) tarn__bounds_add(&bounds, t->v[k]);
+    return tarn__bounds_pixels(&bounds, t->subpixel_bits);
 }
 
 /* Edges 1 and 2 at the centre of the pixel every plane is anchored at, (box.x0,
@@ -81,7 +81,7 @@ typedef struct {
 static plane_anchor anchor_of(const tarn_triangle_setup *t)
 {
     const unsigned s = t->subpixel_bits;
-    const int32_t px = tarn_pixel_centre(t->box.x0, s), py = tarn_pixel_centre(t->box.y0, s);
+    const int32_t px = tarn__pixel_centre(t->box.x0, s), py = tarn__pixel_centre(t->box.y0, s);
     const plane_anchor anchor = {edge_unbiased_at(&t->edges[1], px, py), edge_unbiased_at(&t->edges[2], px, py)};
     return anchor;
 }
@@ -211,10 +211,10 @@ static tarn_depth_plane make_depth_plane(const tarn_triangle_setup *t, const pla
 
 /* Exact depth at pixel (i, j): (area2*z0 + E1*(z1 - z0) + E2*(z2 - z0) + area2/2) / area2,
  * each term below 2^61 inside the guard box. */
-tarn_exact_value tarn_exact_depth_at(const tarn_triangle_setup *t, const tarn_depth_plane *depth, int32_t i, int32_t j)
+tarn_exact_value tarn__exact_depth_at(const tarn_triangle_setup *t, const tarn_depth_plane *depth, int32_t i, int32_t j)
 {
     const unsigned s = t->subpixel_bits;
-    const int32_t px = tarn_pixel_centre(i, s), py = tarn_pixel_centre(j, s);
+    const int32_t px = tarn__pixel_centre(i, s), py = tarn__pixel_centre(j, s);
     /* area2 is below 2^31: two products of coordinate differences */
     int64_t num = (int64_t)tarn_mul_u32_wide((uint32_t)t->area2, t->v[0]->inv_depth) + t->area2 / 2 +
                   weighted_sum(edge_unbiased_at(&t->edges[1], px, py), depth_difference(t, 1),
@@ -240,7 +240,7 @@ static void set_texel_lookup(tarn_attribute_set *set, const tarn_texture *textur
     set->log2_width = 31u - tarn_clz32(texture->width);
 }
 
-void tarn_setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_request *request,
+void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_request *request,
                            uint8_t perspective, uint8_t depth_interpolation, tarn_attribute_set *set)
 {
     uint32_t q[3], largest = 0;

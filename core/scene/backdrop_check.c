@@ -19,15 +19,15 @@ static int still_water_applies(const tarn_backdrop *b, const tarn_scene *scene, 
     const tarn_quality *q = &config->quality;
     return TARN_LINK_STILL_WATER && b->water_block == q->water_block && b->fog_argument_bits == q->fog_argument_bits &&
            b->exp2_entries == q->exp2.entries && b->exp2_interpolate == q->exp2.interpolate &&
-           tarn_frame_apron_pixels(scene, config) == 0 && !tarn_underwater_active(scene);
+           tarn_frame_apron_pixels(scene, config) == 0 && !tarn__underwater_active(scene);
 }
 
-const tarn_backdrop *tarn_backdrop_for(const tarn_scene *scene, const tarn_frame_config *config)
+const tarn_backdrop *tarn__backdrop_for(const tarn_scene *scene, const tarn_frame_config *config)
 {
     if (!TARN_LINK_BACKDROP || !TARN_LINK_STATIC_VERTICES || scene == NULL || scene->static_view == NULL)
         return NULL;
     const tarn_backdrop *b = scene->static_view->backdrop;
-    return b != NULL && tarn_static_screen_applies(scene, config) && same_opaque_quality(b, &config->quality) &&
+    return b != NULL && tarn__static_screen_applies(scene, config) && same_opaque_quality(b, &config->quality) &&
                    (!b->still_water || still_water_applies(b, scene, config))
         ? b
         : NULL;
@@ -98,7 +98,7 @@ static int planes_valid(const tarn_backdrop *b, const tarn_scene *scene)
 /* A palette of 2^index_bits colours holds every index the bits can spell, so no
  * pixel's index needs checking: checked, they would cost each frame as much again
  * as reading them. */
-int tarn_backdrop_valid(const tarn_backdrop *b, const tarn_scene *scene)
+int tarn__backdrop_valid(const tarn_backdrop *b, const tarn_scene *scene)
 {
     if (b->palette == NULL || b->colour == NULL || b->row_spans == NULL || (b->span_count > 0u && b->spans == NULL) ||
         b->index_bits < 1u ||

@@ -32,7 +32,7 @@ static int quality_in_range(const tarn_quality *q)
             (TARN_LINK_WATER_BLOCKS && (q->water_block == 2 || q->water_block == 4) && q->tile_size % q->water_block == 0));
 }
 
-tarn_status tarn_config_check(const tarn_frame_config *config)
+tarn_status tarn__config_check(const tarn_frame_config *config)
 {
     if (config == NULL || config->width < 1 || config->height < 1 ||
         config->width > TARN_FRAME_SIZE_MAX || config->height > TARN_FRAME_SIZE_MAX ||

@@ -3,7 +3,7 @@
  * (tarn_water.h), the underwater view's displacement, and the quality's cut. */
 #include "scene/scene_internal.h"
 
-int tarn_scene_has_water(const tarn_scene *scene)
+int tarn__scene_has_water(const tarn_scene *scene)
 {
     for (uint32_t i = 0; scene != NULL && i < scene->object_count; i++)
         if (scene->objects[i].material != NULL && scene->objects[i].material->water != NULL) return 1;
@@ -23,7 +23,7 @@ int32_t tarn_water_reach_pixels(const tarn_water *water, uint16_t frame_width)
     return (int32_t)((q32 + 0xFFFFFFFFu) >> 32) + 1;
 }
 
-int32_t tarn_apron_limit(int32_t reach, const tarn_quality *q)
+int32_t tarn__apron_limit(int32_t reach, const tarn_quality *q)
 {
     const int32_t limit = q->refraction_apron == TARN_APRON_FULL ? (int32_t)TARN_WATER_APRON_MAX : q->refraction_apron;
     return tarn_clamp_i32(reach, 0, limit);
@@ -38,18 +38,18 @@ int32_t tarn_frame_apron_pixels(const tarn_scene *scene, const tarn_frame_config
         int32_t reach = m != NULL ? tarn_water_reach_pixels(m->water, config->width) : 0;
         if (reach > apron) apron = reach;
     }
-    return tarn_apron_limit(apron, &config->quality);
+    return tarn__apron_limit(apron, &config->quality);
 }
 
 /* ---- the underwater view ------------------------------------------------------ */
 
-int tarn_underwater_active(const tarn_scene *scene)
+int tarn__underwater_active(const tarn_scene *scene)
 {
     return scene != NULL && scene->underwater != NULL && scene->underwater->normal_map != NULL &&
            scene->camera.position.y < scene->underwater->level;
 }
 
-int32_t tarn_underwater_reach_pixels(const tarn_underwater *under, uint16_t frame_width)
+int32_t tarn__underwater_reach_pixels(const tarn_underwater *under, uint16_t frame_width)
 {
     /* |N.x|, |N.y| <= 1; one more pixel for rounding the offset */
     uint64_t q16 = (uint64_t)(uint32_t)under->distortion * frame_width;

@@ -62,17 +62,17 @@ static int mesh_valid(const tarn_mesh *m, int needs_positions)
 }
 
 /* The frame static screen positions were made for: a size and precision a frame
- * may have (tarn_config_check's own limits). */
+ * may have (tarn__config_check's own limits). */
 static int static_view_valid(const tarn_scene *scene)
 {
     const tarn_static_view *v = scene->static_view;
     return v->width >= 1u && v->width <= TARN_FRAME_SIZE_MAX && v->height >= 1u &&
            v->height <= TARN_FRAME_SIZE_MAX && v->subpixel_bits >= TARN_SUBPIXEL_BITS_MIN &&
            v->subpixel_bits <= TARN_SUBPIXEL_BITS_MAX &&
-           (v->backdrop == NULL || (TARN_LINK_BACKDROP && tarn_backdrop_valid(v->backdrop, scene)));
+           (v->backdrop == NULL || (TARN_LINK_BACKDROP && tarn__backdrop_valid(v->backdrop, scene)));
 }
 
-/* A screen coordinate inside the guard band of its frame, as tarn_project_position
+/* A screen coordinate inside the guard band of its frame, as tarn__project_position
  * clamps it: the edge functions' 32-bit bound rests on it. */
 static int screen_valid(int32_t subpixels, uint16_t extent, int32_t guard, unsigned s)
 {
@@ -115,14 +115,14 @@ static int underwater_valid(const tarn_underwater *u)
     return TARN_LINK_UNDERWATER && u->normal_map != NULL && texture_valid(u->normal_map);
 }
 
-tarn_status tarn_scene_check(const tarn_scene *scene)
+tarn_status tarn__scene_check(const tarn_scene *scene)
 {
     if (scene == NULL || (scene->object_count > 0 && scene->objects == NULL)) return TARN_ERR_SCENE;
     if (scene->camera.near <= 0 || scene->camera.far <= scene->camera.near) return TARN_ERR_SCENE;
     if (scene->underwater != NULL && !underwater_valid(scene->underwater)) return TARN_ERR_SCENE;
     if (TARN_LINK_STATIC_VERTICES && scene->static_view != NULL && !static_view_valid(scene))
         return TARN_ERR_SCENE;
-    const int static_view_applies = tarn_static_view_applies(scene);
+    const int static_view_applies = tarn__static_view_applies(scene);
     for (uint32_t i = 0; i < scene->object_count; i++) {
         const tarn_object *o = &scene->objects[i];
         if (o->mesh == NULL || o->material == NULL || !object_vertices_valid(scene, o, static_view_applies))
@@ -134,10 +134,10 @@ tarn_status tarn_scene_check(const tarn_scene *scene)
     return TARN_OK;
 }
 
-tarn_status tarn_scene_check_reach(const tarn_scene *scene, const tarn_frame_config *config)
+tarn_status tarn__scene_check_reach(const tarn_scene *scene, const tarn_frame_config *config)
 {
     /* the objects a backdrop stands for are gone from the scene */
-    const tarn_backdrop *backdrop = tarn_backdrop_for(scene, config);
+    const tarn_backdrop *backdrop = tarn__backdrop_for(scene, config);
     if (scene->static_view != NULL && scene->static_view->backdrop != NULL && backdrop == NULL)
         return TARN_ERR_SCENE;
     /* without the water shading linked, water draws only over still water */

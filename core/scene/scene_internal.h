@@ -17,43 +17,43 @@
 
 /* Whether a depth buffer of the quality's depth_bits holds 16-bit codes: known when
  * the build links one form only (tarn_config.h), so a pixel need not ask. */
-static inline int tarn_depth_is_16_bits(unsigned depth_bits)
+static inline int tarn__depth_is_16_bits(unsigned depth_bits)
 {
     return TARN_LINK_DEPTH16 && (!TARN_LINK_DEPTH32 || depth_bits == 16u);
 }
 
 /* Validates a frame config; TARN_OK or TARN_ERR_CONFIG (config_check.c). */
-tarn_status tarn_config_check(const tarn_frame_config *config);
+tarn_status tarn__config_check(const tarn_frame_config *config);
 
 /* Validates the scene's arrays so the walk never reads past them (scene_check.c). */
-tarn_status tarn_scene_check(const tarn_scene *scene);
+tarn_status tarn__scene_check(const tarn_scene *scene);
 /* TARN_ERR_SCENE when a water material's refraction reaches past the widest apron,
  * when the scene has a backdrop that does not apply to the frame, or when its water
  * needs shading this build left out. */
-tarn_status tarn_scene_check_reach(const tarn_scene *scene, const tarn_frame_config *config);
+tarn_status tarn__scene_check_reach(const tarn_scene *scene, const tarn_frame_config *config);
 
 /* 1 when the scene has a static view and its camera and light are that view's
  * (static_view.c). */
-int tarn_static_view_applies(const tarn_scene *scene);
+int tarn__static_view_applies(const tarn_scene *scene);
 /* 1 when moreover the frame is the static view's: its screen positions and bins hold. */
-int tarn_static_screen_applies(const tarn_scene *scene, const tarn_frame_config *config);
+int tarn__static_screen_applies(const tarn_scene *scene, const tarn_frame_config *config);
 
 /* The scene's backdrop when it applies to the frame (the static view's screen, the
  * quality it was drawn at), else NULL; whether its arrays hold what it says for the
  * static view's frame and the scene's objects (backdrop_check.c). */
-const tarn_backdrop *tarn_backdrop_for(const tarn_scene *scene, const tarn_frame_config *config);
-int tarn_backdrop_valid(const tarn_backdrop *backdrop, const tarn_scene *scene);
+const tarn_backdrop *tarn__backdrop_for(const tarn_scene *scene, const tarn_frame_config *config);
+int tarn__backdrop_valid(const tarn_backdrop *backdrop, const tarn_scene *scene);
 
 /* How far the water reaches (reach.c; tarn_water_reach_pixels and
  * tarn_frame_apron_pixels are public). */
 /* 1 when some object of the scene has a water material. */
-int tarn_scene_has_water(const tarn_scene *scene);
+int tarn__scene_has_water(const tarn_scene *scene);
 /* A reach in pixels, cut to the quality's apron width and to TARN_WATER_APRON_MAX. */
-int32_t tarn_apron_limit(int32_t reach, const tarn_quality *quality);
+int32_t tarn__apron_limit(int32_t reach, const tarn_quality *quality);
 /* 1 when the view is under water: the scene has an underwater block and the
  * camera is below its level. */
-int tarn_underwater_active(const tarn_scene *scene);
+int tarn__underwater_active(const tarn_scene *scene);
 /* Pixels the underwater displacement can reach at this frame width. */
-int32_t tarn_underwater_reach_pixels(const tarn_underwater *under, uint16_t frame_width);
+int32_t tarn__underwater_reach_pixels(const tarn_underwater *under, uint16_t frame_width);
 
 #endif

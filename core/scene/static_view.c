@@ -19,15 +19,15 @@ static int same_light(const tarn_light *a, const tarn_light *b)
            a->ambient_rgb == b->ambient_rgb;
 }
 
-int tarn_static_view_applies(const tarn_scene *scene)
+int tarn__static_view_applies(const tarn_scene *scene)
 {
     const tarn_static_view *s = scene->static_view;
     return TARN_LINK_STATIC_VERTICES && s != NULL && same_camera(&s->camera, &scene->camera) && same_light(&s->light, &scene->light);
 }
 
-int tarn_static_screen_applies(const tarn_scene *scene, const tarn_frame_config *config)
+int tarn__static_screen_applies(const tarn_scene *scene, const tarn_frame_config *config)
 {
     const tarn_static_view *s = scene->static_view;
-    return tarn_static_view_applies(scene) && s->width == config->width && s->height == config->height &&
+    return tarn__static_view_applies(scene) && s->width == config->width && s->height == config->height &&
            s->subpixel_bits == config->quality.subpixel_bits;
 }

@@ -51,7 +51,7 @@ static void fill_colour_row(const tarn_backdrop *b, uint16_t frame_width, int32_
     }
 }
 
-void tarn_backdrop_fill(const tarn_backdrop *b, uint16_t frame_width, tarn_tile_target *t, size_t depth_bytes)
+void tarn__backdrop_fill(const tarn_backdrop *b, uint16_t frame_width, tarn_tile_target *t, size_t depth_bytes)
 {
     for (int32_t j = t->rect.y0; j < t->rect.y1; j++) {
         const int32_t first = (j - t->origin_y) * t->stride - t->origin_x + t->rect.x0;
@@ -61,7 +61,7 @@ void tarn_backdrop_fill(const tarn_backdrop *b, uint16_t frame_width, tarn_tile_
     }
 }
 
-uint32_t tarn_backdrop_foam_band(const tarn_backdrop *b, int32_t i, int32_t j)
+uint32_t tarn__backdrop_foam_band(const tarn_backdrop *b, int32_t i, int32_t j)
 {
     for (uint32_t k = b->row_spans[j]; k < b->row_spans[j + 1] && i >= b->spans[k].x0; k++)
         if (i < b->spans[k].x1) return ((const uint16_t *)b->depth)[b->spans[k].first + (uint32_t)(i - b->spans[k].x0)];

@@ -6,24 +6,24 @@
 #include "tile/tile_internal.h"
 #include "geometry/vertex_cache_internal.h"
 
-#define NEAR_PLANE_BIT 1u /* tarn_clip_outcode's bit 0 */
+#define NEAR_PLANE_BIT 1u /* tarn__clip_outcode's bit 0 */
 
 static const tarn_cluster_bin bin_whole = {0, 0, 255, 255};
 static const tarn_cluster_bin bin_empty = {255, 255, 0, 0};
 
-uint32_t tarn_cluster_bins_of(const tarn_mesh *mesh)
+uint32_t tarn__cluster_bins_of(const tarn_mesh *mesh)
 {
     return mesh->clusters != NULL ? mesh->cluster_count : 1u;
 }
 
-uint32_t tarn_cluster_bin_count(const tarn_scene *scene)
+uint32_t tarn__cluster_bin_count(const tarn_scene *scene)
 {
     uint32_t count = 0;
-    for (uint32_t i = 0; i < scene->object_count; i++) count += tarn_cluster_bins_of(scene->objects[i].mesh);
+    for (uint32_t i = 0; i < scene->object_count; i++) count += tarn__cluster_bins_of(scene->objects[i].mesh);
     return count;
 }
 
-int tarn_cluster_bin_touches(const tarn_cluster_bin *bin, const tarn_pixel_rect *rect)
+int tarn__cluster_bin_touches(const tarn_cluster_bin *bin, const tarn_pixel_rect *rect)
 {
     if (bin->x0 > bin->x1) return 0;
     return ((int32_t)bin->x0 << TARN_BIN_CELL_SHIFT) < rect->x1 &&
@@ -32,7 +32,7 @@ int tarn_cluster_bin_touches(const tarn_cluster_bin *bin, const tarn_pixel_rect 
            ((int32_t)(bin->y1 + 1) << TARN_BIN_CELL_SHIFT) > rect->y0;
 }
 
-int tarn_cluster_bin_is_whole(const tarn_cluster_bin *bin)
+int tarn__cluster_bin_is_whole(const tarn_cluster_bin *bin)
 {
     return bin->x0 == 0 && bin->y0 == 0 && bin->x1 == 255 && bin->y1 == 255;
 }
@@ -42,7 +42,7 @@ int tarn_cluster_bin_is_whole(const tarn_cluster_bin *bin)
 static tarn_cluster_bin to_cells(const tarn_subpixel_bounds *bounds, int32_t margin, const tarn_view *view)
 {
     if (bounds->x0 > bounds->x1) return bin_empty;
-    const tarn_pixel_box box = tarn_bounds_pixels(bounds, view->subpixel_bits);
+    const tarn_pixel_box box = tarn__bounds_pixels(bounds, view->subpixel_bits);
     const int32_t x0 = tarn_clamp_i32(box.x0 - margin, 0, view->width - 1);
     const int32_t y0 = tarn_clamp_i32(box.y0 - margin, 0, view->height - 1);
     const int32_t x1 = tarn_clamp_i32(box.x1 + margin, 0, view->width - 1);
@@ -59,33 +59,33 @@ static tarn_cluster_bin bin_run(tarn_vertex_cache *cache, const tarn_object *obj
                                 uint32_t end)
 {
     const tarn_mesh *mesh = object->mesh;
-    tarn_subpixel_bounds bounds = tarn_bounds_empty();
+    tarn_subpixel_bounds bounds = tarn__bounds_empty();
     int32_t margin = 0; /* 1 once a triangle was clipped */
     for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
         tarn_cached_vertex c[3];
         unsigned outside_any;
-        const unsigned outside_all = tarn_cached_triangle(cache, index, c, &outside_any);
+        const unsigned outside_all = tarn__cached_triangle(cache, index, c, &outside_any);
         if (outside_all) continue;
         if (outside_any & NEAR_PLANE_BIT) return bin_whole;
         tarn_screen_vertex screen[3];
-        for (int k = 0; k < 3; k++) tarn_cached_projection(cache, &c[k], &screen[k]);
-        if (outside_any == 0 && tarn_drawn_area2(screen, object->material->cull) == 0) continue;
+        for (int k = 0; k < 3; k++) tarn__cached_projection(cache, &c[k], &screen[k]);
+        if (outside_any == 0 && tarn__drawn_area2(screen, object->material->cull) == 0) continue;
         if (outside_any) margin = 1;
-        for (int k = 0; k < 3; k++) tarn_bounds_add(&bounds, &screen[k]);
+        for (int k = 0; k < 3; k++) tarn__bounds_add(&bounds, &screen[k]);
     }
     return to_cells(&bounds, margin, cache->view);
 }
 
-void tarn_bin_clusters(const tarn_scene *scene, const tarn_view *view, tarn_cluster_bin *bins)
+void tarn__bin_clusters(const tarn_scene *scene, const tarn_view *view, tarn_cluster_bin *bins)
 {
     for (uint32_t i = 0; i < scene->object_count; i++) {
         const tarn_object *object = &scene->objects[i];
         const tarn_mesh *mesh = object->mesh;
         tarn_object_xform xform;
-        tarn_object_xform_setup(view, object, &xform);
+        tarn__object_xform_setup(view, object, &xform);
         tarn_vertex_cache cache;
-        tarn_vertex_cache_init(&cache, view, &xform, object, NULL);
+        tarn__vertex_cache_init(&cache, view, &xform, object, NULL);
         if (mesh->clusters == NULL) {
             *bins++ = bin_run(&cache, object, 0, mesh->triangle_count);
             continue;

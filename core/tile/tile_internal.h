@@ -42,9 +42,9 @@ typedef enum {
 
 /* Walks the triangles of the pass's objects in scene order; triangles whose screen
  * bounds miss `only_rect` (when not NULL) are skipped as early as possible, whole
- * clusters first: by their bins when `bins` (this frame's, tarn_bin_clusters) is
+ * clusters first: by their bins when `bins` (this frame's, tarn__bin_clusters) is
  * not NULL, else by their bounding spheres. */
-void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view, tarn_walk_pass pass,
+void tarn__walk_triangles(const tarn_scene *scene, const tarn_view *view, tarn_walk_pass pass,
                          const tarn_cluster_bin *bins, const tarn_pixel_rect *only_rect,
                          tarn_triangle_sink sink, void *ctx);
 
@@ -65,25 +65,25 @@ void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view, tarn_wa
 /* tarn_cluster_bin (tarn_scene.h): cells [x0, x1] x [y0, y1], inclusive. */
 
 /* Bins a mesh takes: one per cluster, or one for an unclustered mesh. */
-uint32_t tarn_cluster_bins_of(const tarn_mesh *mesh);
+uint32_t tarn__cluster_bins_of(const tarn_mesh *mesh);
 /* Bins a scene takes, every object in scene order. */
-uint32_t tarn_cluster_bin_count(const tarn_scene *scene);
-/* Fills bins[tarn_cluster_bin_count(scene)] for this frame's view. */
-void tarn_bin_clusters(const tarn_scene *scene, const tarn_view *view, tarn_cluster_bin *bins);
+uint32_t tarn__cluster_bin_count(const tarn_scene *scene);
+/* Fills bins[tarn__cluster_bin_count(scene)] for this frame's view. */
+void tarn__bin_clusters(const tarn_scene *scene, const tarn_view *view, tarn_cluster_bin *bins);
 
 /* 1 when the bin's box meets the pixel rectangle. */
-int tarn_cluster_bin_touches(const tarn_cluster_bin *bin, const tarn_pixel_rect *rect);
+int tarn__cluster_bin_touches(const tarn_cluster_bin *bin, const tarn_pixel_rect *rect);
 /* 1 when the bin is the whole screen (the sphere test must decide). */
-int tarn_cluster_bin_is_whole(const tarn_cluster_bin *bin);
+int tarn__cluster_bin_is_whole(const tarn_cluster_bin *bin);
 
 /* ---- a baked backdrop (backdrop_read.c) ------------------------------------------ */
 
 /* The target's rect from the backdrop of a frame `frame_width` pixels wide, as the
  * opaque pass would draw it; the colours alone with depth_bytes 0. */
-void tarn_backdrop_fill(const tarn_backdrop *backdrop, uint16_t frame_width, tarn_tile_target *target,
+void tarn__backdrop_fill(const tarn_backdrop *backdrop, uint16_t frame_width, tarn_tile_target *target,
                         size_t depth_bytes);
 /* A still-water backdrop's place in the foam band of frame pixel (i, j), Q0.16;
  * 65536, beyond the band, where it keeps none. */
-uint32_t tarn_backdrop_foam_band(const tarn_backdrop *backdrop, int32_t i, int32_t j);
+uint32_t tarn__backdrop_foam_band(const tarn_backdrop *backdrop, int32_t i, int32_t j);
 
 #endif

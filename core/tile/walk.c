@@ -36,7 +36,7 @@ static tile_frustum make_tile_frustum(const tarn_view *view, const tarn_pixel_re
          * frame is not tested, as the guard band may clamp a vertex short of it */
         const int inside_frame = f.side[k] > 0 ? edges[k] >= 0 : edges[k] <= centre;
         const int32_t offset_half = f.side[k] > 0 ? 2 * edges[k] - centre - 2 : centre - 2 * edges[k];
-        const int32_t slope = inside_frame ? tarn_tile_edge_slope(view, offset_half) : TARN_TILE_EDGE_UNTESTED;
+        const int32_t slope = inside_frame ? tarn__tile_edge_slope(view, offset_half) : TARN_TILE_EDGE_UNTESTED;
         f.edges.slope_q10[k] = (int16_t)(slope != TARN_TILE_EDGE_UNTESTED ? slope : 0);
         if (slope != TARN_TILE_EDGE_UNTESTED) f.edges.tested |= (uint8_t)(1u << k);
         uint64_t sum = (uint64_t)((int64_t)view->focal_q12 * view->focal_q12) +
@@ -64,12 +64,12 @@ static int sphere_misses_tile(const tarn_view *view, const tile_frustum *f,
 
 /* The subpixel positions of the centres of a rectangle's first and last pixels,
  * taken once a run: a triangle whose bounds end before the first or begin after
- * the last cannot cover a pixel centre of the rectangle (tarn_bounds_pixels' pixel
+ * the last cannot cover a pixel centre of the rectangle (tarn__bounds_pixels' pixel
  * box, without its divisions). */
 static tarn_subpixel_bounds rect_centres(const tarn_pixel_rect *rect, unsigned subpixel_bits)
 {
-    const tarn_subpixel_bounds b = {tarn_pixel_centre(rect->x0, subpixel_bits), tarn_pixel_centre(rect->y0, subpixel_bits),
-                               tarn_pixel_centre(rect->x1 - 1, subpixel_bits), tarn_pixel_centre(rect->y1 - 1, subpixel_bits)};
+    const tarn_subpixel_bounds b = {tarn__pixel_centre(rect->x0, subpixel_bits), tarn__pixel_centre(rect->y0, subpixel_bits),
+                               tarn__pixel_centre(rect->x1 - 1, subpixel_bits), tarn__pixel_centre(rect->y1 - 1, subpixel_bits)};
     return b;
 }
 
@@ -106,7 +106,7 @@ static void static_screen_attributes(const tarn_static_vertex *baked, const tarn
         const tarn_static_vertex *v = &baked[index[k]];
         for (int c = 0; c < 3; c++) screen[k].lit[c] = v->lit[c];
         screen[k].fresnel = v->fresnel;
-        screen[k].uv = tarn_vertex_uv(mesh, index[k]);
+        screen[k].uv = tarn__vertex_uv(mesh, index[k]);
     }
 }
 
@@ -120,18 +120,18 @@ static void walk_cached_triangle(const tarn_object *object, const uint16_t index
     const tarn_view *view = cache->view;
     tarn_cached_vertex c[3];
     unsigned outside_any;
-    const unsigned outside_all = tarn_cached_triangle(cache, index, c, &outside_any);
+    const unsigned outside_all = tarn__cached_triangle(cache, index, c, &outside_any);
     if (outside_all & TARN_CACHED_CLIP_PLANES) return; /* wholly outside one plane */
     if (outside_any & TARN_CACHED_CLIP_PLANES) {
         tarn_view_vertex v[3];
-        for (int k = 0; k < 3; k++) tarn_cached_shading(cache, &c[k], &v[k]);
-        tarn_clip_and_emit(view, outside_any & TARN_CACHED_CLIP_PLANES, v, object, sink, ctx);
+        for (int k = 0; k < 3; k++) tarn__cached_shading(cache, &c[k], &v[k]);
+        tarn__clip_and_emit(view, outside_any & TARN_CACHED_CLIP_PLANES, v, object, sink, ctx);
         return;
     }
     if (outside_all) return; /* wholly beyond an edge of the tile: unprojected */
-    for (int k = 0; k < 3; k++) tarn_cached_projection(cache, &c[k], &screen[k]);
+    for (int k = 0; k < 3; k++) tarn__cached_projection(cache, &c[k], &screen[k]);
     if (centres && bounds_miss(screen, centres)) return;
-    for (int k = 0; k < 3; k++) tarn_cached_attributes(cache, &c[k], &screen[k]);
+    for (int k = 0; k < 3; k++) tarn__cached_attributes(cache, &c[k], &screen[k]);
     sink(ctx, screen, object);
 }
 
@@ -143,7 +143,7 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
     const tarn_mesh *mesh = object->mesh;
     const tarn_static_vertex *projected =
         TARN_LINK_STATIC_VERTICES && view->static_screen ? cache->static_vertices : NULL;
-    const tarn_subpixel_bounds tile_centres = only_rect ? rect_centres(only_rect, view->subpixel_bits) : tarn_bounds_empty();
+    const tarn_subpixel_bounds tile_centres = only_rect ? rect_centres(only_rect, view->subpixel_bits) : tarn__bounds_empty();
     const tarn_subpixel_bounds *centres = only_rect ? &tile_centres : NULL;
     tarn_screen_vertex screen[3];
     for (uint32_t t = first; t < end; t++) {
@@ -166,11 +166,11 @@ static int cluster_may_touch(const tarn_view *view, const tarn_object_xform *xfo
                              const tarn_pixel_rect *only_rect)
 {
     if (bin != NULL && only_rect != NULL) {
-        if (!tarn_cluster_bin_touches(bin, only_rect)) return 0;
-        if (!tarn_cluster_bin_is_whole(bin)) return 1;
+        if (!tarn__cluster_bin_touches(bin, only_rect)) return 0;
+        if (!tarn__cluster_bin_is_whole(bin)) return 1;
     }
     tarn_view_vertex centre;
-    tarn_vertex_position(xform, &cluster->centre, &centre);
+    tarn__vertex_position(xform, &cluster->centre, &centre);
     /* at most Q16.16's range, so that radius * plane norm stays within 64 bits */
     int64_t radius = tarn_sat_i64_to_i32(tarn_round_shift_i64((int64_t)cluster->radius * object->scale, 16) + 1);
     return !sphere_misses_tile(view, frustum, &centre, radius);
@@ -179,7 +179,7 @@ static int cluster_may_touch(const tarn_view *view, const tarn_object_xform *xfo
 static int any_bin_touches(const tarn_cluster_bin *bins, uint32_t count, const tarn_pixel_rect *rect)
 {
     for (uint32_t i = 0; i < count; i++)
-        if (tarn_cluster_bin_touches(&bins[i], rect)) return 1;
+        if (tarn__cluster_bin_touches(&bins[i], rect)) return 1;
     return 0;
 }
 
@@ -188,12 +188,12 @@ static void walk_object(const tarn_view *view, const tarn_object *object, const 
                         tarn_triangle_sink sink, void *ctx)
 {
     const tarn_mesh *mesh = object->mesh;
-    if (bins != NULL && only_rect != NULL && !any_bin_touches(bins, tarn_cluster_bins_of(mesh), only_rect))
+    if (bins != NULL && only_rect != NULL && !any_bin_touches(bins, tarn__cluster_bins_of(mesh), only_rect))
         return; /* before the object's setup, which costs as much as a few vertices */
     tarn_object_xform xform;
-    tarn_object_xform_setup(view, object, &xform);
+    tarn__object_xform_setup(view, object, &xform);
     tarn_vertex_cache cache;
-    tarn_vertex_cache_init(&cache, view, &xform, object, frustum->active ? &frustum->edges : NULL);
+    tarn__vertex_cache_init(&cache, view, &xform, object, frustum->active ? &frustum->edges : NULL);
     if (mesh->clusters == NULL) { /* its one bin, if any, was tested above */
         walk_run(object, 0, mesh->triangle_count, only_rect, &cache, sink, ctx);
         return;
@@ -207,7 +207,7 @@ static void walk_object(const tarn_view *view, const tarn_object *object, const 
     }
 }
 
-void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view, tarn_walk_pass pass,
+void tarn__walk_triangles(const tarn_scene *scene, const tarn_view *view, tarn_walk_pass pass,
                          const tarn_cluster_bin *bins, const tarn_pixel_rect *only_rect,
                          tarn_triangle_sink sink, void *ctx)
 {
@@ -216,6 +216,6 @@ void tarn_walk_triangles(const tarn_scene *scene, const tarn_view *view, tarn_wa
         const tarn_object *object = &scene->objects[i];
         if ((object->material->water != NULL) == (pass == TARN_WALK_WATER))
             walk_object(view, object, &frustum, bins, only_rect, sink, ctx);
-        if (bins != NULL) bins += tarn_cluster_bins_of(object->mesh);
+        if (bins != NULL) bins += tarn__cluster_bins_of(object->mesh);
     }
 }

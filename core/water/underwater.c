@@ -3,7 +3,7 @@
 
 static uint32_t depth_q30(const tarn_underwater_context *u, int32_t offset)
 {
-    if (tarn_depth_is_16_bits(u->depth_bits)) return tarn_depth16_decode(((const uint16_t *)u->depth)[offset]);
+    if (tarn__depth_is_16_bits(u->depth_bits)) return tarn_depth16_decode(((const uint16_t *)u->depth)[offset]);
     return ((const uint32_t *)u->depth)[offset];
 }
 
@@ -14,13 +14,13 @@ static int32_t displaced_offset(const tarn_underwater_context *u, int32_t i, int
     /* screen (x / width, y / width) at the pixel centre, Q0.16, then panned */
     const uint32_t sx = tarn_mul_hi_u32((uint32_t)(2 * i + 1) << 16, u->screen_u_per_half);
     const uint32_t sy = tarn_mul_hi_u32((uint32_t)(2 * j + 1) << 16, u->screen_u_per_half);
-    const uint32_t fu = (tarn_water_repeat_fraction(sx, (uint32_t)under->pan.scale) + u->pan[0]) & 0xFFFFu;
-    const uint32_t fv = (tarn_water_repeat_fraction(sy, (uint32_t)under->pan.scale) + u->pan[1]) & 0xFFFFu;
-    const uint8_t *texel = tarn_water_texel_at(under->normal_map, fu, fv);
+    const uint32_t fu = (tarn__water_repeat_fraction(sx, (uint32_t)under->pan.scale) + u->pan[0]) & 0xFFFFu;
+    const uint32_t fv = (tarn__water_repeat_fraction(sy, (uint32_t)under->pan.scale) + u->pan[1]) & 0xFFFFu;
+    const uint8_t *texel = tarn__water_texel_at(under->normal_map, fu, fv);
     int32_t target[2] = {i, j};
     for (int k = 0; k < 2; k++) {
         /* N (Q1.15) * pixels per unit normal (Q16.16) / 2^23 -> pixels, Q24.8 */
-        int32_t offset_q8 = tarn_mul_hi_s32_u32(tarn_water_normal_component(texel[k]) * 512, u->distortion_px);
+        int32_t offset_q8 = tarn_mul_hi_s32_u32(tarn__water_normal_component(texel[k]) * 512, u->distortion_px);
         const int32_t offset = tarn_floor_shift(tarn_clamp_i32(offset_q8, -(64 << 8), 64 << 8) + 128, 8);
         target[k] += tarn_clamp_i32(offset, -u->offset_limit, u->offset_limit);
     }
@@ -31,8 +31,8 @@ static int32_t displaced_offset(const tarn_underwater_context *u, int32_t i, int
 
 static uint32_t tinted(const tarn_underwater_context *u, int32_t offset)
 {
-    const uint32_t d = tarn_water_linear_depth(depth_q30(u, offset), u->near, u->far, u->recip_steps);
-    const uint32_t argument = tarn_fog_argument_q16((uint32_t)u->under->tint_density, d, u->fog_argument_bits);
+    const uint32_t d = tarn__water_linear_depth(depth_q30(u, offset), u->near, u->far, u->recip_steps);
+    const uint32_t argument = tarn__fog_argument_q16((uint32_t)u->under->tint_density, d, u->fog_argument_bits);
     const uint32_t keep = tarn_exp2_neg_q16(-(tarn_q16)argument, u->exp2) >> 1; /* Q1.15 */
     const uint32_t rgb = u->colour[offset];
     uint32_t out = 0;
@@ -46,7 +46,7 @@ static uint32_t tinted(const tarn_underwater_context *u, int32_t offset)
     return out;
 }
 
-void tarn_underwater_tile(const tarn_underwater_context *u, const tarn_pixel_rect *rect,
+void tarn__underwater_tile(const tarn_underwater_context *u, const tarn_pixel_rect *rect,
                           uint32_t *out, int32_t out_stride)
 {
     for (int32_t j = rect->y0; j < rect->y1; j++)

@@ -24,11 +24,11 @@ typedef struct {
     tarn_pixel_rect sample_rect; /* where displaced samples may land: the frame */
 } tarn_underwater_context;
 
-void tarn_underwater_setup(tarn_underwater_context *u, const tarn_view *view,
+void tarn__underwater_setup(tarn_underwater_context *u, const tarn_view *view,
                            const tarn_frame_config *config, const tarn_underwater *under);
 
 /* Writes the tile's pixels (rect) into `out` (index 0 = the rect's first pixel). */
-void tarn_underwater_tile(const tarn_underwater_context *u, const tarn_pixel_rect *rect,
+void tarn__underwater_tile(const tarn_underwater_context *u, const tarn_pixel_rect *rect,
                           uint32_t *out, int32_t out_stride);
 
 #endif

@@ -4,24 +4,24 @@
 
 /* a * b / 2^16 for unsigned Q16.16 values, saturated to INT32_MAX: 16x16-bit
  * partial products summed in 64 bits (adds only; no divider, no 64-bit multiply). */
-uint32_t tarn_water_mul_q16(uint32_t a, uint32_t b)
+uint32_t tarn__water_mul_q16(uint32_t a, uint32_t b)
 {
     const uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
     const uint64_t sum = ((uint64_t)(ah * bh) << 16) + ah * bl + al * bh + ((al * bl) >> 16);
     return sum > (uint64_t)INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)sum;
 }
 
-uint32_t tarn_fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits)
+uint32_t tarn__fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits)
 {
-    if (bits >= 16u) return tarn_water_mul_q16(rate, x);
+    if (bits >= 16u) return tarn__water_mul_q16(rate, x);
     /* Only the depth is cut: a density is set once and may be tiny, and cutting it
      * would lose all of a thin fog. */
     const uint32_t depth = x >> (16u - bits); /* Q.bits */
     if ((rate | depth) < 65536u) return (rate * depth) >> bits; /* below 2^31 for bits >= 1 */
-    return tarn_water_mul_q16(rate, depth << (16u - bits));
+    return tarn__water_mul_q16(rate, depth << (16u - bits));
 }
 
-const uint8_t *tarn_water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction)
+const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction)
 {
     /* For a power-of-two side, fraction * side / 2^16 is the shift by 16 - log2(side)
      * without finding the log: one multiply, where clz costs the M0 a dozen
@@ -30,7 +30,7 @@ const uint8_t *tarn_water_texel_at(const tarn_texture *t, uint32_t u_fraction, u
     return &t->rgb[3u * (y * t->width + x)];
 }
 
-uint32_t tarn_water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps)
+uint32_t tarn__water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps)
 {
     if (iz_q30 == 0u) return (uint32_t)far;
     const unsigned lz = tarn_clz32(iz_q30);
@@ -47,22 +47,22 @@ uint32_t tarn_water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, u
 
 static uint32_t background_depth_q30(const tarn_water_context *w, int32_t offset)
 {
-    if (tarn_depth_is_16_bits(w->depth_bits)) return tarn_depth16_decode(((const uint16_t *)w->background_depth)[offset]);
+    if (tarn__depth_is_16_bits(w->depth_bits)) return tarn_depth16_decode(((const uint16_t *)w->background_depth)[offset]);
     return ((const uint32_t *)w->background_depth)[offset];
 }
 
-uint32_t tarn_water_decay(const tarn_water_context *w, uint32_t rate, uint32_t x)
+uint32_t tarn__water_decay(const tarn_water_context *w, uint32_t rate, uint32_t x)
 {
-    return tarn_exp2_neg_q16(-(tarn_q16)tarn_fog_argument_q16(rate, x, w->fog_argument_bits), w->exp2);
+    return tarn_exp2_neg_q16(-(tarn_q16)tarn__fog_argument_q16(rate, x, w->fog_argument_bits), w->exp2);
 }
 
-uint32_t tarn_water_background_q30(const tarn_water_context *w, int32_t i, int32_t j)
+uint32_t tarn__water_background_q30(const tarn_water_context *w, int32_t i, int32_t j)
 {
-    return background_depth_q30(w, tarn_water_background_offset(w, i, j));
+    return background_depth_q30(w, tarn__water_background_offset(w, i, j));
 }
 
-tarn_water_sample tarn_water_background(const tarn_water_context *w, int32_t i, int32_t j)
+tarn_water_sample tarn__water_background(const tarn_water_context *w, int32_t i, int32_t j)
 {
-    tarn_water_sample s = {i, j, tarn_water_depth_of(w, tarn_water_background_q30(w, i, j))};
+    tarn_water_sample s = {i, j, tarn__water_depth_of(w, tarn__water_background_q30(w, i, j))};
     return s;
 }

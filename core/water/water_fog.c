@@ -5,18 +5,18 @@
 
 #define Q16_ONE 65536u
 
-uint32_t tarn_water_fog(const tarn_water_context *w, uint32_t diff)
+uint32_t tarn__water_fog(const tarn_water_context *w, uint32_t diff)
 {
-    return tarn_water_decay(w, (uint32_t)w->water->fog_density, diff) >> 1;
+    return tarn__water_decay(w, (uint32_t)w->water->fog_density, diff) >> 1;
 }
 
-void tarn_water_absorb(const tarn_water_context *w, uint32_t diff, uint16_t loss[3])
+void tarn__water_absorb(const tarn_water_context *w, uint32_t diff, uint16_t loss[3])
 {
     const tarn_water *water = w->water;
-    const uint32_t x = water->absorption_squared ? tarn_water_mul_q16(diff, diff) : diff;
-    const uint32_t absorbed = (Q16_ONE - tarn_water_decay(w, (uint32_t)water->absorption, x)) >> 1; /* Q1.15 */
+    const uint32_t x = water->absorption_squared ? tarn__water_mul_q16(diff, diff) : diff;
+    const uint32_t absorbed = (Q16_ONE - tarn__water_decay(w, (uint32_t)water->absorption, x)) >> 1; /* Q1.15 */
     for (int c = 0; c < 3; c++) {
-        const uint32_t inverse = 65280u - tarn_water_channel_q8(water->absorb_rgb, c);
+        const uint32_t inverse = 65280u - tarn__water_channel_q8(water->absorb_rgb, c);
         loss[c] = (uint16_t)((inverse * absorbed) >> 15);
     }
 }

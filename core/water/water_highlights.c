@@ -33,7 +33,7 @@ static int adds_nothing(const tarn_water *water, uint32_t cosine)
     return specular_amount(water, power_q15(cosine, water->specular_power)) < 4u;
 }
 
-int32_t tarn_water_dark_cosine(const tarn_water *water)
+int32_t tarn__water_dark_cosine(const tarn_water *water)
 {
     if (!adds_nothing(water, 0u)) return -1;
     uint32_t dark = 0u, lit = Q15_ONE + 1u; /* dark adds nothing; lit adds, or is past the top */
@@ -72,16 +72,16 @@ static uint32_t specular_term(const tarn_water_context *w, const tarn_water_norm
     return power_q15((uint32_t)(cosine > Q15_ONE ? Q15_ONE : cosine), w->water->specular_power);
 }
 
-int tarn_water_specular(const tarn_water_context *w, tarn_water_normal *n, uint32_t highlight[3])
+int tarn__water_specular(const tarn_water_context *w, tarn_water_normal *n, uint32_t highlight[3])
 {
     if (highlight_cannot_show(w, n)) return 0;
-    tarn_water_normalise(n);
+    tarn__water_normalise(n);
     const uint32_t amount = specular_amount(w->water, specular_term(w, n)); /* Q2.14 */
     for (int c = 0; c < 3; c++) highlight[c] = (w->light_q8[c] * (amount >> 2)) >> 12;
     return 1;
 }
 
-int tarn_water_sparkles(const tarn_water_context *w, const tarn_water_normal *n)
+int tarn__water_sparkles(const tarn_water_context *w, const tarn_water_normal *n)
 {
     const uint32_t ax2 = (uint32_t)(n->a_x * n->a_x), bx2 = (uint32_t)(n->b_x * n->b_x);
     return ax2 > w->sparkle_threshold && (!n->has_b || bx2 > w->sparkle_threshold);

@@ -21,7 +21,7 @@
  * the frame's time-dependent pan offsets, the half vector in the object's tangent
  * frame, reciprocals of the material's distances, and the opaque background
  * buffers (the tile plus its apron) that refraction and fog read. Per pixel,
- * tarn_water_effects_at and tarn_water_apply use 32-bit products only (16x16-bit partial products where a
+ * tarn__water_effects_at and tarn__water_apply use 32-bit products only (16x16-bit partial products where a
  * result needs more), the table reciprocal, and no division. */
 #ifndef TARN_WATER_INTERNAL_H
 #define TARN_WATER_INTERNAL_H
@@ -47,7 +47,7 @@ typedef struct tarn_water_context {
     uint32_t inv_foam_distance; /* Q16.16 per world unit */
     uint32_t refraction_px;     /* refraction * width: pixels per unit normal, Q16.16 */
     uint32_t sparkle_threshold; /* sparkle where x^2 (Q2.30) exceeds this */
-    int32_t dark_cosine;        /* tarn_water_dark_cosine of the material */
+    int32_t dark_cosine;        /* tarn__water_dark_cosine of the material */
 
     const uint32_t *background;      /* opaque colour, 0x00RRGGBB */
     const void *background_depth;    /* opaque near/d, by depth_bits */
@@ -80,7 +80,7 @@ typedef struct tarn_still_block {
 } tarn_still_block;
 
 /* Per-frame and per-object constants; buffers are set by the caller. */
-void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
+void tarn__water_context_setup(tarn_water_context *w, const tarn_view *view,
                               const tarn_frame_config *config, const tarn_object *object);
 
 /* Interpolated inputs of one water pixel. */
@@ -93,30 +93,30 @@ typedef struct {
 
 /* Per-pixel helpers the underwater pass shares (32-bit products only). */
 /* a * b / 2^16 for unsigned Q16.16 values, saturated to INT32_MAX. */
-uint32_t tarn_water_mul_q16(uint32_t a, uint32_t b);
+uint32_t tarn__water_mul_q16(uint32_t a, uint32_t b);
 /* exp2's argument rate * x / 2^16 (both Q16.16, non-negative) with the depth x cut
  * to `bits` fraction bits (tarn_quality.fog_argument_bits; 16 keeps it whole),
- * saturated like tarn_water_mul_q16. */
-uint32_t tarn_fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits);
+ * saturated like tarn__water_mul_q16. */
+uint32_t tarn__fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits);
 /* (a * b / 2^16) modulo 2^16: the fraction of a texture repeat, for any a. Only low
  * bits matter, so 16x16-bit products suffice, and negative or wrapped inputs give
  * the right fraction too. Inline: it runs four times a water pixel. */
-static inline uint32_t tarn_water_repeat_fraction(uint32_t a, uint32_t b)
+static inline uint32_t tarn__water_repeat_fraction(uint32_t a, uint32_t b)
 {
     const uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
     return (ah * bl + al * bh + ((al * bl) >> 16)) & 0xFFFFu;
 }
 /* A texel channel as a normal component, (2c - 255) / 255 in Q1.15. */
-static inline int32_t tarn_water_normal_component(uint8_t c)
+static inline int32_t tarn__water_normal_component(uint8_t c)
 {
     return ((2 * (int32_t)c - 255) * 257) / 2;
 }
 /* The texel at a repeat fraction (Q0.16 each axis), nearest, power-of-two sides. */
-const uint8_t *tarn_water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction);
+const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction);
 /* near / (iz / 2^30) in Q16.16 world units, saturated; `far` for iz 0. */
-uint32_t tarn_water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps);
+uint32_t tarn__water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps);
 /* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.16. */
-uint16_t tarn_water_pan_offset(tarn_q16 speed, uint32_t time_ms);
+uint16_t tarn__water_pan_offset(tarn_q16 speed, uint32_t time_ms);
 
 /* What the water does to the background of one pixel: every step of tarn_water.h
  * but the background's colour, gathered so that the pixel's colour is one product
@@ -161,11 +161,11 @@ typedef struct tarn_water_block {
 #define TARN_WATER_BLOCK_DEPTH_SHIFT 6u
 
 /* The opaque background's near/d (Q1.30) at frame pixel (i, j). */
-uint32_t tarn_water_background_q30(const tarn_water_context *w, int32_t i, int32_t j);
+uint32_t tarn__water_background_q30(const tarn_water_context *w, int32_t i, int32_t j);
 
 /* The effects at water pixel (i, j), each called only when the material has it and
  * the build links it. */
-void tarn_water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
+void tarn__water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
                            tarn_water_effects *out);
 /* The features a pixel sharp, which blocks find at every pixel: step 9's foam
  * lines and step 10's sparkles. */
@@ -175,64 +175,64 @@ void tarn_water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, co
 /* The colour (0x00RRGGBB) of water pixel (i, j): its background, moved by the
  * effects' offset (found for this pixel: never shared), through the effects, with
  * the sharp features `sharp` (TARN_WATER_SHOWS_*: the effects' own, or the pixel's). */
-uint32_t tarn_water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
+uint32_t tarn__water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
                           int32_t j);
 /* The sharp features that show at a pixel sharing effects `e` (TARN_WATER_SHOWS_*),
  * of those the material has and the build links; for a pixel where one can
- * (tarn_water_sharp_possible). */
-unsigned tarn_water_sharp_features(const tarn_water_context *w, const tarn_water_input *in,
+ * (tarn__water_sharp_possible). */
+unsigned tarn__water_sharp_features(const tarn_water_context *w, const tarn_water_input *in,
                                    const tarn_water_effects *e);
 /* Whether a sharp feature could show at a pixel sharing effects `e`: sparkles, or
  * foam within its band. A pixel where none can needs no inputs of its own. */
-int tarn_water_sharp_possible(const tarn_water_context *w, const tarn_water_effects *e);
+int tarn__water_sharp_possible(const tarn_water_context *w, const tarn_water_effects *e);
 /* Both at one pixel: the colour of water pixel (i, j) with its own effects. */
-uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in);
+uint32_t tarn__water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in);
 
 /* ---- what the steps share (water_common.c) ---- */
 
 /* Whether the material has an effect and the build links it: with
  * TARN_LINK_WATER_FEATURES a constant, the calls of effects left out are removed at
  * compile time. */
-static inline int tarn_water_uses(const tarn_water_context *w, uint32_t feature)
+static inline int tarn__water_uses(const tarn_water_context *w, uint32_t feature)
 {
     return (TARN_LINK_WATER_FEATURES & feature) != 0 && (w->features & feature) != 0;
 }
 
 /* Sparkles show only from the maps' components, which the normals step reads. */
-static inline int tarn_water_sparkles_possible(const tarn_water_context *w)
+static inline int tarn__water_sparkles_possible(const tarn_water_context *w)
 {
-    return tarn_water_uses(w, TARN_WATER_SPARKLES) && tarn_water_uses(w, TARN_WATER_NORMALS);
+    return tarn__water_uses(w, TARN_WATER_SPARKLES) && tarn__water_uses(w, TARN_WATER_NORMALS);
 }
 
 /* The linear depth (Q16.16 world units) of a near/d (Q1.30) in the context's frame. */
-static inline uint32_t tarn_water_depth_of(const tarn_water_context *w, uint32_t iz_q30)
+static inline uint32_t tarn__water_depth_of(const tarn_water_context *w, uint32_t iz_q30)
 {
-    return tarn_water_linear_depth(iz_q30, w->near, w->far, w->recip_steps);
+    return tarn__water_linear_depth(iz_q30, w->near, w->far, w->recip_steps);
 }
 
 /* The index of frame pixel (i, j) in the background buffers. */
-static inline int32_t tarn_water_background_offset(const tarn_water_context *w, int32_t i, int32_t j)
+static inline int32_t tarn__water_background_offset(const tarn_water_context *w, int32_t i, int32_t j)
 {
     return (j - w->background_rect.y0) * w->background_stride + (i - w->background_rect.x0);
 }
 
 /* A 0xRRGGBB colour's channel c (0 red, 1 green, 2 blue) in Q8.8. */
-static inline uint32_t tarn_water_channel_q8(uint32_t rgb, int c)
+static inline uint32_t tarn__water_channel_q8(uint32_t rgb, int c)
 {
     return ((rgb >> (16 - 8 * c)) & 0xFFu) << 8;
 }
 
 /* The texel of a panning texture under the pixel's uv, at the frame's pan offset. */
-static inline const uint8_t *tarn_water_panned_texel(const tarn_texture *t, const tarn_panning *pan,
+static inline const uint8_t *tarn__water_panned_texel(const tarn_texture *t, const tarn_panning *pan,
                                                      const uint16_t offset[2], const tarn_water_input *in)
 {
-    uint32_t u = (tarn_water_repeat_fraction(in->u, (uint32_t)pan->scale) + offset[0]) & 0xFFFFu;
-    uint32_t v = (tarn_water_repeat_fraction(in->v, (uint32_t)pan->scale) + offset[1]) & 0xFFFFu;
-    return tarn_water_texel_at(t, u, v);
+    uint32_t u = (tarn__water_repeat_fraction(in->u, (uint32_t)pan->scale) + offset[0]) & 0xFFFFu;
+    uint32_t v = (tarn__water_repeat_fraction(in->v, (uint32_t)pan->scale) + offset[1]) & 0xFFFFu;
+    return tarn__water_texel_at(t, u, v);
 }
 
 /* 2^(-rate * x) for rate, x >= 0 (Q16.16), Q0.16, through the frame's exp2 table. */
-uint32_t tarn_water_decay(const tarn_water_context *w, uint32_t rate, uint32_t x);
+uint32_t tarn__water_decay(const tarn_water_context *w, uint32_t rate, uint32_t x);
 
 typedef struct {
     int32_t x, y;   /* the frame pixel of the background B */
@@ -240,9 +240,9 @@ typedef struct {
 } tarn_water_sample;
 
 /* The opaque background at frame pixel (i, j); its colour is read when applied. */
-tarn_water_sample tarn_water_background(const tarn_water_context *w, int32_t i, int32_t j);
+tarn_water_sample tarn__water_background(const tarn_water_context *w, int32_t i, int32_t j);
 
-/* The surface normal N, or before tarn_water_normalise its direction: normalising
+/* The surface normal N, or before tarn__water_normalise its direction: normalising
  * takes a reciprocal square root, which a pixel whose highlight cannot show (most
  * of them) is spared when nothing else needs N. */
 typedef struct {
@@ -254,21 +254,21 @@ typedef struct {
 } tarn_water_normal;
 
 /* (0, 0, 1): the surface without normal maps. */
-static inline tarn_water_normal tarn_water_flat_normal(void)
+static inline tarn_water_normal tarn__water_flat_normal(void)
 {
     const tarn_water_normal n = {0, 0, 32768, 0u, 0, 0, 0};
     return n;
 }
 
 /* N from its direction, in place; nothing when it is N already. */
-void tarn_water_normalise(tarn_water_normal *n);
+void tarn__water_normalise(tarn_water_normal *n);
 
 /* The sharp features (TARN_WATER_SHOWS_*) at a pixel at `foam_band` (as
  * tarn_water_effects') with normal `n`, of those the material has and the build
  * links; and a colour (Q8.8 a channel) with them over it, rounded to 0x00RRGGBB. */
-unsigned tarn_water_sharp_at(const tarn_water_context *w, const tarn_water_input *in, uint32_t foam_band,
+unsigned tarn__water_sharp_at(const tarn_water_context *w, const tarn_water_input *in, uint32_t foam_band,
                              const tarn_water_normal *n);
-uint32_t tarn_water_finish(const tarn_water_context *w, unsigned sharp, uint32_t colour[3]);
+uint32_t tarn__water_finish(const tarn_water_context *w, unsigned sharp, uint32_t colour[3]);
 
 /* ---- water triangles (water_span.c) ---- */
 
@@ -286,9 +286,9 @@ typedef struct {
 
 /* A triangle of a water material into the pass (a tarn_water_pass): a
  * tarn_triangle_sink. */
-void tarn_water_draw_triangle(void *pass, const tarn_screen_vertex vertex[3], const tarn_object *object);
+void tarn__water_draw_triangle(void *pass, const tarn_screen_vertex vertex[3], const tarn_object *object);
 /* The marks of an in-place pass off the pixels of its rect. */
-void tarn_water_clear_marks(const tarn_tile_target *target);
+void tarn__water_clear_marks(const tarn_tile_target *target);
 
 /* ---- over a still-water backdrop (water_still.c) ---- */
 
@@ -296,7 +296,7 @@ void tarn_water_clear_marks(const tarn_tile_target *target);
  * object `object`, over the tile's pixels in its rect that the backdrop marks
  * with it: each keeps its still colour with a highlight and the sharp features
  * over it, and loses the marks. */
-void tarn_water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop, uint32_t object,
+void tarn__water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop, uint32_t object,
                            tarn_tile_target *tile);
 
 /* ---- the effects, a file each: with TARN_LINK_WATER_FEATURES, the ones a scene
@@ -304,35 +304,35 @@ void tarn_water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop,
 
 /* Step 1 (water_normals.c, TARN_WATER_NORMALS): the direction of N, to be normalised
  * by the steps that need N. */
-tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const tarn_water_input *in);
+tarn_water_normal tarn__water_surface_normal(const tarn_water_context *w, const tarn_water_input *in);
 /* Only the maps' own x components (a_x, b_x, has_b), which sparkles read: the flat
  * normal with them. */
-tarn_water_normal tarn_water_map_x(const tarn_water_context *w, const tarn_water_input *in);
+tarn_water_normal tarn__water_map_x(const tarn_water_context *w, const tarn_water_input *in);
 /* Step 2 (water_refraction.c, TARN_WATER_REFRACTION): the refracted sample, or `own`
  * (the pixel's background) where the refracted one would lie in front of the water. */
-tarn_water_sample tarn_water_refract(const tarn_water_context *w, int32_t i, int32_t j,
+tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j,
                                      tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth);
 /* Steps 4 and 5 (water_fog.c), over `diff` (Q16.16 world units) of water: the share
  * of the background the fog keeps (Q1.15), and what absorption takes from each
  * channel (Q8.8). */
-uint32_t tarn_water_fog(const tarn_water_context *w, uint32_t diff);
-void tarn_water_absorb(const tarn_water_context *w, uint32_t diff, uint16_t loss[3]);
+uint32_t tarn__water_fog(const tarn_water_context *w, uint32_t diff);
+void tarn__water_absorb(const tarn_water_context *w, uint32_t diff, uint16_t loss[3]);
 /* Step 6's depth colour and step 7's fresnel raise of alpha (Q1.15) (water_surface.c). */
-void tarn_water_depth_colour(const tarn_water_context *w, uint32_t diff, uint32_t out[3]);
-uint32_t tarn_water_fresnel_alpha(const tarn_water_context *w, const tarn_water_input *in, uint32_t alpha);
+void tarn__water_depth_colour(const tarn_water_context *w, uint32_t diff, uint32_t out[3]);
+uint32_t tarn__water_fresnel_alpha(const tarn_water_context *w, const tarn_water_input *in, uint32_t alpha);
 /* Steps 8, 9 and 10 (water_highlights.c, water_foam.c). Colours are Q8.8. */
 /* 1 where the specular highlight shows, with what it adds to each channel (Q8.8). */
-int tarn_water_specular(const tarn_water_context *w, tarn_water_normal *n, uint32_t highlight[3]);
+int tarn__water_specular(const tarn_water_context *w, tarn_water_normal *n, uint32_t highlight[3]);
 /* The largest cosine N.h (Q1.15) whose specular adds nothing to a colour, for a
  * material; -1 when even a cosine of 0 adds something. */
-int32_t tarn_water_dark_cosine(const tarn_water *water);
+int32_t tarn__water_dark_cosine(const tarn_water *water);
 /* Where `diff` of water lies in the foam band (tarn_water_effects.foam_band); 1
- * where the foam shows at a pixel at that place of the band; tarn_water_foam_over
+ * where the foam shows at a pixel at that place of the band; tarn__water_foam_over
  * turns a colour toward the foam's by its opacity. */
-uint32_t tarn_water_foam_band(const tarn_water_context *w, uint32_t diff);
-int tarn_water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t f);
-void tarn_water_foam_over(const tarn_water_context *w, uint32_t colour[3]);
+uint32_t tarn__water_foam_band(const tarn_water_context *w, uint32_t diff);
+int tarn__water_foam(const tarn_water_context *w, const tarn_water_input *in, uint32_t f);
+void tarn__water_foam_over(const tarn_water_context *w, uint32_t colour[3]);
 /* 1 where the sparkles show. */
-int tarn_water_sparkles(const tarn_water_context *w, const tarn_water_normal *n);
+int tarn__water_sparkles(const tarn_water_context *w, const tarn_water_normal *n);
 
 #endif

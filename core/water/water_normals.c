@@ -6,7 +6,7 @@
 
 static void decode_normal(const uint8_t *texel, int32_t out[3])
 {
-    for (int k = 0; k < 3; k++) out[k] = tarn_water_normal_component(texel[k]);
+    for (int k = 0; k < 3; k++) out[k] = tarn__water_normal_component(texel[k]);
 }
 
 /* strength (Q16.16, 0..8) times a sum of two Q1.15 components (below 2^16), in
@@ -26,27 +26,27 @@ static int map_texels(const tarn_water_context *w, const tarn_water_input *in, c
 {
     const tarn_water *water = w->water;
     if (water->normal_a == NULL) return 0;
-    *a = tarn_water_panned_texel(water->normal_a, &water->pan_a, w->pan_a, in);
-    *b = water->normal_b != NULL ? tarn_water_panned_texel(water->normal_b, &water->pan_b, w->pan_b, in) : NULL;
+    *a = tarn__water_panned_texel(water->normal_a, &water->pan_a, w->pan_a, in);
+    *b = water->normal_b != NULL ? tarn__water_panned_texel(water->normal_b, &water->pan_b, w->pan_b, in) : NULL;
     return 1;
 }
 
-tarn_water_normal tarn_water_map_x(const tarn_water_context *w, const tarn_water_input *in)
+tarn_water_normal tarn__water_map_x(const tarn_water_context *w, const tarn_water_input *in)
 {
-    tarn_water_normal n = tarn_water_flat_normal();
+    tarn_water_normal n = tarn__water_flat_normal();
     const uint8_t *a, *b;
     if (!map_texels(w, in, &a, &b)) return n;
-    n.a_x = tarn_water_normal_component(a[0]);
+    n.a_x = tarn__water_normal_component(a[0]);
     n.has_b = b != NULL;
-    if (n.has_b) n.b_x = tarn_water_normal_component(b[0]);
+    if (n.has_b) n.b_x = tarn__water_normal_component(b[0]);
     return n;
 }
 
 /* Step 1's direction, strength * (a.xy + b.xy), a.z * b.z, left unnormalised. */
-tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const tarn_water_input *in)
+tarn_water_normal tarn__water_surface_normal(const tarn_water_context *w, const tarn_water_input *in)
 {
     const tarn_water *water = w->water;
-    tarn_water_normal n = tarn_water_flat_normal();
+    tarn_water_normal n = tarn__water_flat_normal();
     const uint8_t *texel_a, *texel_b;
     if (!map_texels(w, in, &texel_a, &texel_b)) return n;
     int32_t a[3], b[3] = {0, 0, Q15_ONE};
@@ -72,7 +72,7 @@ tarn_water_normal tarn_water_surface_normal(const tarn_water_context *w, const t
 }
 
 /* N = direction / |direction|, through the reciprocal square root. */
-void tarn_water_normalise(tarn_water_normal *n)
+void tarn__water_normalise(tarn_water_normal *n)
 {
     if (n->length2 == 0u) return;
     const int32_t inverse = (int32_t)tarn_rsqrt_q16(n->length2 >> 10); /* 1/|v|, Q16.16 <= 1 */

@@ -19,7 +19,7 @@ static void lit_surface(const tarn_water_input *in, const uint32_t surface[3], u
 static uint32_t surface_alpha(const tarn_water_context *w, const tarn_water_input *in)
 {
     const uint32_t alpha = (uint32_t)w->water->alpha >> 1; /* Q1.15; [0, 1] by the scene check */
-    return tarn_water_uses(w, TARN_WATER_FRESNEL) ? tarn_water_fresnel_alpha(w, in, alpha) : alpha;
+    return tarn__water_uses(w, TARN_WATER_FRESNEL) ? tarn__water_fresnel_alpha(w, in, alpha) : alpha;
 }
 
 /* Steps 4 to 8 gathered into the effects' gain, through, base and lift from the
@@ -30,9 +30,9 @@ static void gather(const tarn_water_context *w, uint32_t diff, uint32_t keep, co
 {
     const uint32_t through = 32768u - alpha;
     e->through = (uint16_t)through;
-    if (tarn_water_uses(w, TARN_WATER_ABSORPTION)) {
+    if (tarn__water_uses(w, TARN_WATER_ABSORPTION)) {
         uint16_t loss[3];
-        tarn_water_absorb(w, diff, loss);
+        tarn__water_absorb(w, diff, loss);
         e->gain = (uint16_t)keep;
         for (int c = 0; c < 3; c++) {
             e->lift[c] = (int32_t)((w->fog_q8[c] * (32768u - keep)) >> 15) - (int32_t)loss[c];
@@ -49,40 +49,40 @@ static void gather(const tarn_water_context *w, uint32_t diff, uint32_t keep, co
 }
 
 /* Sparkles from the normal's map components. */
-unsigned tarn_water_sharp_at(const tarn_water_context *w, const tarn_water_input *in, uint32_t foam_band,
+unsigned tarn__water_sharp_at(const tarn_water_context *w, const tarn_water_input *in, uint32_t foam_band,
                              const tarn_water_normal *n)
 {
     unsigned sharp = 0u;
-    if (tarn_water_uses(w, TARN_WATER_FOAM) && tarn_water_foam(w, in, foam_band)) sharp |= TARN_WATER_SHOWS_FOAM;
-    if (tarn_water_uses(w, TARN_WATER_SPARKLES) && tarn_water_sparkles(w, n)) sharp |= TARN_WATER_SHOWS_SPARKLES;
+    if (tarn__water_uses(w, TARN_WATER_FOAM) && tarn__water_foam(w, in, foam_band)) sharp |= TARN_WATER_SHOWS_FOAM;
+    if (tarn__water_uses(w, TARN_WATER_SPARKLES) && tarn__water_sparkles(w, n)) sharp |= TARN_WATER_SHOWS_SPARKLES;
     return sharp;
 }
 
-void tarn_water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
+void tarn__water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
                            tarn_water_effects *e)
 {
-    const uint32_t surface_depth = tarn_water_depth_of(w, in->inv_depth);
+    const uint32_t surface_depth = tarn__water_depth_of(w, in->inv_depth);
     tarn_water_normal n =
-        tarn_water_uses(w, TARN_WATER_NORMALS) ? tarn_water_surface_normal(w, in) : tarn_water_flat_normal();
-    tarn_water_sample below = tarn_water_background(w, i, j);
+        tarn__water_uses(w, TARN_WATER_NORMALS) ? tarn__water_surface_normal(w, in) : tarn__water_flat_normal();
+    tarn_water_sample below = tarn__water_background(w, i, j);
     /* without an apron a refracted sample may not move (offset_limit 0): it is the
      * pixel's own, and the M0's fast preset would pay a third of the water pixel for it */
-    if (TARN_LINK_APRON && tarn_water_uses(w, TARN_WATER_REFRACTION) && w->offset_limit > 0)
-        below = tarn_water_refract(w, i, j, &n, below, surface_depth);
+    if (TARN_LINK_APRON && tarn__water_uses(w, TARN_WATER_REFRACTION) && w->offset_limit > 0)
+        below = tarn__water_refract(w, i, j, &n, below, surface_depth);
     e->offset[0] = (int8_t)(below.x - i); /* within the apron, at most TARN_WATER_APRON_MAX */
     e->offset[1] = (int8_t)(below.y - j);
     const uint32_t diff = below.depth > surface_depth ? below.depth - surface_depth : 0u;
-    const uint32_t keep = tarn_water_uses(w, TARN_WATER_FOG) ? tarn_water_fog(w, diff) : 32768u;
+    const uint32_t keep = tarn__water_uses(w, TARN_WATER_FOG) ? tarn__water_fog(w, diff) : 32768u;
     uint32_t surface[3], lit[3], highlight[3] = {0, 0, 0};
-    if (tarn_water_uses(w, TARN_WATER_DEPTH_COLOUR))
-        tarn_water_depth_colour(w, diff, surface);
+    if (tarn__water_uses(w, TARN_WATER_DEPTH_COLOUR))
+        tarn__water_depth_colour(w, diff, surface);
     else
-        for (int c = 0; c < 3; c++) surface[c] = tarn_water_channel_q8(w->water->albedo_rgb, c);
+        for (int c = 0; c < 3; c++) surface[c] = tarn__water_channel_q8(w->water->albedo_rgb, c);
     lit_surface(in, surface, lit);
-    if (tarn_water_uses(w, TARN_WATER_SPECULAR)) (void)tarn_water_specular(w, &n, highlight);
+    if (tarn__water_uses(w, TARN_WATER_SPECULAR)) (void)tarn__water_specular(w, &n, highlight);
     gather(w, diff, keep, lit, surface_alpha(w, in), highlight, e);
-    e->foam_band = tarn_water_uses(w, TARN_WATER_FOAM) ? tarn_water_foam_band(w, diff) : Q16_ONE;
-    e->sharp = (uint8_t)tarn_water_sharp_at(w, in, e->foam_band, &n);
+    e->foam_band = tarn__water_uses(w, TARN_WATER_FOAM) ? tarn__water_foam_band(w, diff) : Q16_ONE;
+    e->sharp = (uint8_t)tarn__water_sharp_at(w, in, e->foam_band, &n);
 }
 
 /* The background colour under the effects' offset, 0x00RRGGBB. The offset was
@@ -94,31 +94,31 @@ static uint32_t moved_background(const tarn_water_context *w, const tarn_water_e
         i += e->offset[0];
         j += e->offset[1];
     }
-    return w->background[tarn_water_background_offset(w, i, j)];
+    return w->background[tarn__water_background_offset(w, i, j)];
 }
 
-uint32_t tarn_water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
+uint32_t tarn__water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
                           int32_t j)
 {
     const uint32_t rgb_below = moved_background(w, e, i, j);
     uint32_t colour[3];
     for (int c = 0; c < 3; c++) {
-        const uint32_t below = tarn_water_channel_q8(rgb_below, c);
-        if (tarn_water_uses(w, TARN_WATER_ABSORPTION)) {
+        const uint32_t below = tarn__water_channel_q8(rgb_below, c);
+        if (tarn__water_uses(w, TARN_WATER_ABSORPTION)) {
             const int32_t mid = (int32_t)((below * e->gain) >> 15) + e->lift[c];
             colour[c] = e->base[c] + ((uint32_t)(mid > 0 ? mid : 0) * e->through >> 15);
         } else {
             colour[c] = e->base[c] + ((below * e->gain) >> 15);
         }
     }
-    return tarn_water_finish(w, sharp, colour);
+    return tarn__water_finish(w, sharp, colour);
 }
 
-uint32_t tarn_water_finish(const tarn_water_context *w, unsigned sharp, uint32_t colour[3])
+uint32_t tarn__water_finish(const tarn_water_context *w, unsigned sharp, uint32_t colour[3])
 {
-    if (sharp & TARN_WATER_SHOWS_FOAM) tarn_water_foam_over(w, colour);
+    if (sharp & TARN_WATER_SHOWS_FOAM) tarn__water_foam_over(w, colour);
     if (sharp & TARN_WATER_SHOWS_SPARKLES)
-        for (int c = 0; c < 3; c++) colour[c] += tarn_water_channel_q8(w->water->sparkle_rgb, c);
+        for (int c = 0; c < 3; c++) colour[c] += tarn__water_channel_q8(w->water->sparkle_rgb, c);
     uint32_t rgb = 0;
     for (int c = 0; c < 3; c++) {
         uint32_t byte = (colour[c] + 128u) >> 8;
@@ -127,21 +127,21 @@ uint32_t tarn_water_finish(const tarn_water_context *w, unsigned sharp, uint32_t
     return rgb;
 }
 
-int tarn_water_sharp_possible(const tarn_water_context *w, const tarn_water_effects *e)
+int tarn__water_sharp_possible(const tarn_water_context *w, const tarn_water_effects *e)
 {
-    return tarn_water_sparkles_possible(w) || (tarn_water_uses(w, TARN_WATER_FOAM) && e->foam_band < Q16_ONE);
+    return tarn__water_sparkles_possible(w) || (tarn__water_uses(w, TARN_WATER_FOAM) && e->foam_band < Q16_ONE);
 }
 
-unsigned tarn_water_sharp_features(const tarn_water_context *w, const tarn_water_input *in,
+unsigned tarn__water_sharp_features(const tarn_water_context *w, const tarn_water_input *in,
                                    const tarn_water_effects *e)
 {
-    const tarn_water_normal n = tarn_water_sparkles_possible(w) ? tarn_water_map_x(w, in) : tarn_water_flat_normal();
-    return tarn_water_sharp_at(w, in, e->foam_band, &n);
+    const tarn_water_normal n = tarn__water_sparkles_possible(w) ? tarn__water_map_x(w, in) : tarn__water_flat_normal();
+    return tarn__water_sharp_at(w, in, e->foam_band, &n);
 }
 
-uint32_t tarn_water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in)
+uint32_t tarn__water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in)
 {
     tarn_water_effects e;
-    tarn_water_effects_at(w, i, j, in, &e);
-    return tarn_water_apply(w, &e, e.sharp, i, j);
+    tarn__water_effects_at(w, i, j, in, &e);
+    return tarn__water_apply(w, &e, e.sharp, i, j);
 }

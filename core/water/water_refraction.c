@@ -6,10 +6,10 @@
 #define Q15_ONE 32768
 
 /* Step 2: the refracted sample, or the pixel's own when it would land in front. */
-tarn_water_sample tarn_water_refract(const tarn_water_context *w, int32_t i, int32_t j,
+tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j,
                                      tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth)
 {
-    tarn_water_normalise(n);
+    tarn__water_normalise(n);
     uint32_t reach = own.depth > surface_depth ? own.depth - surface_depth : 0u;
     if (reach > Q16_ONE) reach = Q16_ONE; /* saturate(db - ds), Q0.16 */
     const int32_t normal[2] = {n->x, n->y};
@@ -24,6 +24,6 @@ tarn_water_sample tarn_water_refract(const tarn_water_context *w, int32_t i, int
     target[0] = tarn_clamp_i32(target[0], w->sample_rect.x0, w->sample_rect.x1 - 1);
     target[1] = tarn_clamp_i32(target[1], w->sample_rect.y0, w->sample_rect.y1 - 1);
     if (target[0] == i && target[1] == j) return own; /* read already */
-    tarn_water_sample shifted = tarn_water_background(w, target[0], target[1]);
+    tarn_water_sample shifted = tarn__water_background(w, target[0], target[1]);
     return shifted.depth < surface_depth ? own : shifted;
 }

@@ -7,7 +7,7 @@
 #define Q15_ONE 32768
 
 /* floor(speed * time_ms / 1000) modulo one repeat, Q0.16. */
-uint16_t tarn_water_pan_offset(tarn_q16 speed, uint32_t time_ms)
+uint16_t tarn__water_pan_offset(tarn_q16 speed, uint32_t time_ms)
 {
     int64_t travelled = (int64_t)speed * time_ms; /* |speed| <= 2^20: below 2^52 */
     const tarn_divisor thousand = tarn_divisor_of(1000);
@@ -43,7 +43,7 @@ static void half_vector(const tarn_view *view, const tarn_object *object, int32_
     }
 }
 
-void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
+void tarn__water_context_setup(tarn_water_context *w, const tarn_view *view,
                               const tarn_frame_config *config, const tarn_object *object)
 {
     const tarn_water *water = object->material->water;
@@ -61,14 +61,14 @@ void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
     const tarn_panning *pans[3] = {&water->pan_a, &water->pan_b, &water->foam_pan};
     uint16_t *offsets[3] = {w->pan_a, w->pan_b, w->foam_pan};
     for (int k = 0; k < 3; k++) {
-        offsets[k][0] = tarn_water_pan_offset(pans[k]->speed_u, config->time_ms);
-        offsets[k][1] = tarn_water_pan_offset(pans[k]->speed_v, config->time_ms);
+        offsets[k][0] = tarn__water_pan_offset(pans[k]->speed_u, config->time_ms);
+        offsets[k][1] = tarn__water_pan_offset(pans[k]->speed_v, config->time_ms);
     }
-    w->foam_phase = tarn_water_pan_offset(water->foam_line_speed, config->time_ms);
+    w->foam_phase = tarn__water_pan_offset(water->foam_line_speed, config->time_ms);
     half_vector(view, object, w->half_vector);
     for (int c = 0; c < 3; c++) {
         w->light_q8[c] = ((view->light_q16[c] * 255u + 32768u) >> 16) << 8;
-        w->fog_q8[c] = (w->features & TARN_WATER_FOG) != 0 ? tarn_water_channel_q8(water->fog_rgb, c) : 0u;
+        w->fog_q8[c] = (w->features & TARN_WATER_FOG) != 0 ? tarn__water_channel_q8(water->fog_rgb, c) : 0u;
     }
     w->inv_depth_scale = reciprocal_q16(water->depth_scale);
     w->inv_foam_distance = reciprocal_q16(water->foam_distance);
@@ -76,5 +76,5 @@ void tarn_water_context_setup(tarn_water_context *w, const tarn_view *view,
     w->refraction_px = px > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)px;
     int64_t threshold = water->sparkle_amount > 0 ? tarn_divide_once_i64((int64_t)1 << 46, (uint32_t)water->sparkle_amount) : INT64_MAX;
     w->sparkle_threshold = threshold > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)threshold;
-    w->dark_cosine = (w->features & TARN_WATER_SPECULAR) != 0 ? tarn_water_dark_cosine(water) : -1;
+    w->dark_cosine = (w->features & TARN_WATER_SPECULAR) != 0 ? tarn__water_dark_cosine(water) : -1;
 }

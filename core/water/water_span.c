@@ -59,7 +59,7 @@ static const tarn_water_effects *own_effects(const tarn_water_pass *pass, int32_
     tarn_water_block *block = block_slot(pass, i);
     const int top_left = ((i | j) & ((1 << w->block_shift) - 1)) == 0;
     tarn_water_effects *e = top_left ? &block->effects : own;
-    tarn_water_effects_at(w, i, j, in, e);
+    tarn__water_effects_at(w, i, j, in, e);
     if (top_left) {
         const int refracts = TARN_LINK_APRON && (e->offset[0] | e->offset[1]) != 0;
         block->serial = refracts ? 0u : w->triangle_serial;
@@ -82,7 +82,7 @@ static water_choice water_choice_at(const tarn_water_pass *pass, int32_t i, int3
     const tarn_water_context *w = pass->water;
     if (!TARN_LINK_WATER_BLOCKS || w->blocks == NULL) return c;
     c.block = block_slot(pass, i);
-    c.depth_q30 = tarn_water_background_q30(w, i, j);
+    c.depth_q30 = tarn__water_background_q30(w, i, j);
     c.shares = shares_block(w, c.block, j, c.depth_q30);
     return c;
 }
@@ -91,7 +91,7 @@ static water_choice water_choice_at(const tarn_water_pass *pass, int32_t i, int3
  * block's effects where no sharp feature can show, which needs no attributes. */
 static int water_needs_inputs(const tarn_water_context *w, const water_choice *c)
 {
-    return !c->shares || tarn_water_sharp_possible(w, &c->block->effects);
+    return !c->shares || tarn__water_sharp_possible(w, &c->block->effects);
 }
 
 /* The colour of water pixel (i, j) from its attributes `values` (found only where
@@ -102,15 +102,15 @@ static uint32_t water_colour(const tarn_water_pass *pass, const water_choice *c,
     tarn_water_context *w = pass->water;
     if (c->shares) {
         const tarn_water_effects *shared = &c->block->effects;
-        if (!tarn_water_sharp_possible(w, shared)) return tarn_water_apply(w, shared, 0u, i, j);
+        if (!tarn__water_sharp_possible(w, shared)) return tarn__water_apply(w, shared, 0u, i, j);
         const tarn_water_input in = water_input(set, values, inv_depth);
-        return tarn_water_apply(w, shared, tarn_water_sharp_features(w, &in, shared), i, j);
+        return tarn__water_apply(w, shared, tarn__water_sharp_features(w, &in, shared), i, j);
     }
     const tarn_water_input in = water_input(set, values, inv_depth);
-    if (c->block == NULL) return tarn_water_shade(w, i, j, &in);
+    if (c->block == NULL) return tarn__water_shade(w, i, j, &in);
     tarn_water_effects own;
     const tarn_water_effects *e = own_effects(pass, i, j, &in, c->depth_q30, &own);
-    return tarn_water_apply(w, e, e->sharp, i, j);
+    return tarn__water_apply(w, e, e->sharp, i, j);
 }
 
 /* A pass in place (mark set) marks each pixel it writes; writing a marked one
@@ -134,30 +134,30 @@ static void draw_water_span(tarn_water_pass *pass, tarn_span *s)
     const int exact_depth = s->set->depth.exact;
     tarn_exact_value depth = s->depth;
     for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
-        const uint32_t closer = tarn_closer_depth(depth_buffer, depth_bits, index, depth.quotient);
+        const uint32_t closer = tarn__closer_depth(depth_buffer, depth_bits, index, depth.quotient);
         if (closer != 0u) {
             const water_choice choice = water_choice_at(pass, i, s->j);
-            if (water_needs_inputs(pass->water, &choice)) tarn_span_attributes(s, i);
+            if (water_needs_inputs(pass->water, &choice)) tarn__span_attributes(s, i);
             write_water_pixel(pass, index, water_colour(pass, &choice, s->set, s->values, depth.quotient, i, s->j));
-            tarn_store_depth(depth_buffer, depth_bits, index, closer);
+            tarn__store_depth(depth_buffer, depth_bits, index, closer);
         }
-        tarn_step_depth(&depth, &step, exact_depth);
+        tarn__step_depth(&depth, &step, exact_depth);
     }
 }
 
-void tarn_water_draw_triangle(void *pass_ctx, const tarn_screen_vertex vertex[3], const tarn_object *object)
+void tarn__water_draw_triangle(void *pass_ctx, const tarn_screen_vertex vertex[3], const tarn_object *object)
 {
     tarn_water_pass *pass = pass_ctx;
     tarn_triangle_rows rows;
-    if (!tarn_triangle_enters_tile(&rows, &pass->target, vertex, object->material->cull)) return;
-    if (pass->water->object != object) tarn_water_context_setup(pass->water, pass->view, pass->config, object);
+    if (!tarn__triangle_enters_tile(&rows, &pass->target, vertex, object->material->cull)) return;
+    if (pass->water->object != object) tarn__water_context_setup(pass->water, pass->view, pass->config, object);
     pass->water->triangle_serial++;
     const tarn_attribute_request request = {NULL, 1, (object->material->water->features & TARN_WATER_FRESNEL) != 0};
-    tarn_triangle_rows_begin(&rows, &request);
-    for (tarn_span *s; (s = tarn_triangle_next_span(&rows)) != NULL;) draw_water_span(pass, s);
+    tarn__triangle_rows_begin(&rows, &request);
+    for (tarn_span *s; (s = tarn__triangle_next_span(&rows)) != NULL;) draw_water_span(pass, s);
 }
 
-void tarn_water_clear_marks(const tarn_tile_target *t)
+void tarn__water_clear_marks(const tarn_tile_target *t)
 {
     for (int32_t j = t->rect.y0; j < t->rect.y1; j++) {
         const int32_t row = (j - t->origin_y) * t->stride - t->origin_x;

@@ -49,9 +49,9 @@ static tarn_water_input plane_input(const tarn_still_plane *p, unsigned recip_st
 static void own_highlight(const tarn_water_context *w, const tarn_water_input *in, tarn_water_normal *n,
                           uint32_t highlight[3])
 {
-    *n = tarn_water_uses(w, TARN_WATER_NORMALS) ? tarn_water_surface_normal(w, in) : tarn_water_flat_normal();
+    *n = tarn__water_uses(w, TARN_WATER_NORMALS) ? tarn__water_surface_normal(w, in) : tarn__water_flat_normal();
     for (int c = 0; c < 3; c++) highlight[c] = 0u;
-    if (tarn_water_uses(w, TARN_WATER_SPECULAR)) (void)tarn_water_specular(w, n, highlight);
+    if (tarn__water_uses(w, TARN_WATER_SPECULAR)) (void)tarn__water_specular(w, n, highlight);
 }
 
 /* The bits of a still colour (marks included) that say a sharp feature could show
@@ -59,16 +59,16 @@ static void own_highlight(const tarn_water_context *w, const tarn_water_input *i
  * where the backdrop marks that foam can; none without either. */
 static uint32_t sharp_bits(const tarn_water_context *w)
 {
-    if (tarn_water_sparkles_possible(w)) return UINT32_MAX;
-    return tarn_water_uses(w, TARN_WATER_FOAM) ? TARN_BACKDROP_STILL_FOAM : 0u;
+    if (tarn__water_sparkles_possible(w)) return UINT32_MAX;
+    return tarn__water_uses(w, TARN_WATER_FOAM) ? TARN_BACKDROP_STILL_FOAM : 0u;
 }
 
 /* Step 9's place in the foam band at pixel (i, j), which the backdrop keeps where
  * foam can show; beyond the band (Q16_ONE) elsewhere. */
 static uint32_t foam_band(const tarn_water_context *w, const tarn_backdrop *b, uint32_t still, int32_t i, int32_t j)
 {
-    if (!tarn_water_uses(w, TARN_WATER_FOAM) || (still & TARN_BACKDROP_STILL_FOAM) == 0u) return Q16_ONE;
-    return tarn_backdrop_foam_band(b, i, j);
+    if (!tarn__water_uses(w, TARN_WATER_FOAM) || (still & TARN_BACKDROP_STILL_FOAM) == 0u) return Q16_ONE;
+    return tarn__backdrop_foam_band(b, i, j);
 }
 
 /* The sharp features at water pixel (i, j) with its inputs, `n` its normal when it
@@ -76,8 +76,8 @@ static uint32_t foam_band(const tarn_water_context *w, const tarn_backdrop *b, u
 static unsigned sharp_at(const tarn_water_context *w, const tarn_backdrop *b, const tarn_water_input *in,
                          const tarn_water_normal *n, uint32_t still, int32_t i, int32_t j)
 {
-    const tarn_water_normal maps = n == NULL && tarn_water_sparkles_possible(w) ? tarn_water_map_x(w, in) : tarn_water_flat_normal();
-    return tarn_water_sharp_at(w, in, foam_band(w, b, still, i, j), n != NULL ? n : &maps);
+    const tarn_water_normal maps = n == NULL && tarn__water_sparkles_possible(w) ? tarn__water_map_x(w, in) : tarn__water_flat_normal();
+    return tarn__water_sharp_at(w, in, foam_band(w, b, still, i, j), n != NULL ? n : &maps);
 }
 
 /* The still colour (0xRRGGBB below the marks of `still`) with a highlight and the
@@ -86,8 +86,8 @@ static uint32_t over_still(const tarn_water_context *w, uint32_t still, const ui
 {
     if ((highlight[0] | highlight[1] | highlight[2] | sharp) == 0u) return still & 0xFFFFFFu;
     uint32_t colour[3];
-    for (int c = 0; c < 3; c++) colour[c] = tarn_water_channel_q8(still, c) + highlight[c];
-    return tarn_water_finish(w, sharp, colour);
+    for (int c = 0; c < 3; c++) colour[c] = tarn__water_channel_q8(still, c) + highlight[c];
+    return tarn__water_finish(w, sharp, colour);
 }
 
 /* The slot of pixel (i, j)'s block, in a tile whose rect starts at column x0;
@@ -144,12 +144,12 @@ static uint32_t *next_marked(uint32_t *from, const uint32_t *end, uint32_t mark)
     return from;
 }
 
-void tarn_water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop, uint32_t object,
+void tarn__water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop, uint32_t object,
                            tarn_tile_target *tile)
 {
     const tarn_pixel_rect r = tile->rect;
     still_walk walk = {backdrop, &backdrop->planes[object], ++w->still_walks, sharp_bits(w),
-                       tarn_water_uses(w, TARN_WATER_SPECULAR), r.x0, 0};
+                       tarn__water_uses(w, TARN_WATER_SPECULAR), r.x0, 0};
     const uint32_t mark = (object + 1u) << TARN_BACKDROP_STILL_SHIFT;
     for (int32_t j = r.y0; j < r.y1; j++) {
         walk.block_row = j >> w->block_shift << w->block_shift;

@@ -13,18 +13,18 @@ static tarn_static_vertex static_vertex(const tarn_view *view, const tarn_object
 {
     tarn_static_vertex out = {0, 0, 0, 0, 0, 0, {0, 0, 0}, 0};
     tarn_view_vertex v;
-    tarn_vertex_position(xform, &mesh->positions[index], &v);
+    tarn__vertex_position(xform, &mesh->positions[index], &v);
     out.x = v.x;
     out.y = v.y;
     out.d = v.d;
-    if (tarn_clip_outcode(view, &v) == 0u) {
+    if (tarn__clip_outcode(view, &v) == 0u) {
         tarn_screen_vertex screen;
-        tarn_project_position(view, &v, &screen);
+        tarn__project_position(view, &v, &screen);
         out.screen_x = (int16_t)screen.x;
         out.screen_y = (int16_t)screen.y;
         out.inv_depth = screen.inv_depth;
     }
-    tarn_vertex_shade(view, xform, mesh, index, &v);
+    tarn__vertex_shade(view, xform, mesh, index, &v);
     for (int c = 0; c < 3; c++) out.lit[c] = (uint16_t)v.lit[c];
     out.fresnel = (uint16_t)v.fresnel;
     return out;
@@ -36,7 +36,7 @@ static tarn_static_vertex *object_vertices(const tarn_view *view, const tarn_obj
     tarn_static_vertex *vertices = malloc((mesh->vertex_count > 0 ? mesh->vertex_count : 1u) * sizeof *vertices);
     if (vertices == NULL) return NULL;
     tarn_object_xform xform;
-    tarn_object_xform_setup(view, object, &xform);
+    tarn__object_xform_setup(view, object, &xform);
     for (uint32_t i = 0; i < mesh->vertex_count; i++) vertices[i] = static_vertex(view, &xform, mesh, (uint16_t)i);
     return vertices;
 }
@@ -56,7 +56,7 @@ static int static_vertices_build(const tarn_scene *scene, const tarn_frame_confi
     tarn_scene plain = *scene; /* a view of its own, whatever static view it had */
     plain.static_view = NULL;
     tarn_view view;
-    tarn_view_setup(&plain, config, &view);
+    tarn__view_setup(&plain, config, &view);
     out->view.camera = scene->camera;
     out->view.light = scene->light;
     out->view.width = config->width;
@@ -76,12 +76,12 @@ static int static_vertices_build(const tarn_scene *scene, const tarn_frame_confi
 static int static_bins(tarn_static_scene *s, const tarn_frame_config *config)
 {
     tarn_static_vertices *v = &s->vertices;
-    v->bin_count = tarn_cluster_bin_count(&s->scene);
+    v->bin_count = tarn__cluster_bin_count(&s->scene);
     v->bins = malloc((v->bin_count > 0 ? v->bin_count : 1u) * sizeof *v->bins);
     if (v->bins == NULL) return -1;
     tarn_view view;
-    tarn_view_setup(&s->scene, config, &view);
-    tarn_bin_clusters(&s->scene, &view, v->bins);
+    tarn__view_setup(&s->scene, config, &view);
+    tarn__bin_clusters(&s->scene, &view, v->bins);
     v->view.bins = v->bins;
     return 0;
 }

@@ -156,7 +156,7 @@ static int find_foam_places(const tarn_scene *scene, const tarn_frame_config *co
     tarn_drawn_frame surface = {NULL, NULL, 0, 0};
     if (draw_water_alone(scene, config, &surface, err) != 0) return -1;
     tarn_view view;
-    tarn_view_setup(scene, config, &view);
+    tarn__view_setup(scene, config, &view);
     tarn_water_context context;
     memset(&context, 0, sizeof context);
     for (size_t k = 0; k < (size_t)config->width * config->height; k++) {
@@ -164,11 +164,11 @@ static int find_foam_places(const tarn_scene *scene, const tarn_frame_config *co
         band[k] = 0;
         if (!water[k]) continue;
         const tarn_object *object = water_object(scene, (still->rgb[k] & TARN_BACKDROP_STILL_OBJECT) >> TARN_BACKDROP_STILL_SHIFT);
-        if (context.object != object) tarn_water_context_setup(&context, &view, config, object);
-        if (!tarn_water_uses(&context, TARN_WATER_FOAM)) continue;
-        const uint32_t below = tarn_water_linear_depth(depth_q30(opaque, k), context.near, context.far, context.recip_steps);
-        const uint32_t at = tarn_water_linear_depth(depth_q30(&surface, k), context.near, context.far, context.recip_steps);
-        const uint32_t f = tarn_water_foam_band(&context, below > at ? below - at : 0u);
+        if (context.object != object) tarn__water_context_setup(&context, &view, config, object);
+        if (!tarn__water_uses(&context, TARN_WATER_FOAM)) continue;
+        const uint32_t below = tarn__water_linear_depth(depth_q30(opaque, k), context.near, context.far, context.recip_steps);
+        const uint32_t at = tarn__water_linear_depth(depth_q30(&surface, k), context.near, context.far, context.recip_steps);
+        const uint32_t f = tarn__water_foam_band(&context, below > at ? below - at : 0u);
         if (f >= 65536u) continue;
         places[k] = (uint16_t)f;
         band[k] = 1;

@@ -59,7 +59,7 @@ static int may_draw(const frame_water *f, const view_point v[3])
 static view_point view_position(const tarn_object_xform *xform, const tarn_vec3 *p)
 {
     tarn_view_vertex v;
-    tarn_vertex_position(xform, p, &v);
+    tarn__vertex_position(xform, p, &v);
     return (view_point){v.x / 65536.0, v.y / 65536.0, v.d / 65536.0};
 }
 
@@ -107,7 +107,7 @@ static int cull_object(const frame_water *f, const tarn_view *view, tarn_object 
     c->clusters[i] = malloc((m->cluster_count + 1u) * sizeof *c->clusters[i]);
     if (c->indices[i] == NULL || c->clusters[i] == NULL) return -1;
     tarn_object_xform xform;
-    tarn_object_xform_setup(view, object, &xform);
+    tarn__object_xform_setup(view, object, &xform);
     c->meshes[i] = *m;
     c->meshes[i].indices = c->indices[i];
     c->meshes[i].clusters = m->clusters != NULL ? c->clusters[i] : NULL;
@@ -131,7 +131,7 @@ int tarn_water_cull_make(tarn_scene *scene, tarn_object *objects, const tarn_fra
     tarn_scene plain = *scene;
     plain.static_view = NULL;
     tarn_view view;
-    tarn_view_setup(&plain, config, &view);
+    tarn__view_setup(&plain, config, &view);
     const frame_water f = {water, config->width, config->height, view.focal_q12 / 4096.0, view.near / 65536.0};
     for (uint32_t i = 0; !failed && i < scene->object_count; i++)
         if (objects[i].material->water != NULL && objects[i].mesh->positions != NULL)

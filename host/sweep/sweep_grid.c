@@ -49,7 +49,7 @@ static tarn_quality with_option(tarn_quality q, const char *option, const char *
     tarn_error err;
     if (tarn_cli_parse_quality_option(option, value, &q, &err) != 0) {
         fprintf(stderr, "tarn: sweep grid: %s %s: %s\n", option, value, err.message);
-        q.tile_size = 0; /* invalid: tarn_config_check refuses it */
+        q.tile_size = 0; /* invalid: tarn__config_check refuses it */
     }
     return q;
 }
