@@ -59,7 +59,8 @@ demo: deps
 # by tests/test_firmware.c), one sweep of several qualities on qemu-m0
 # (tests/check_firmware_sweep.sh), tarn sweep's quick grid and the published
 # presets re-measured (tests/check_sweep.sh), a plain build, then the same tests under ASan + UBSan,
-# then the check that core/ stays integer-only on a Cortex-M0, then the firmware's
+# then the check that core/ stays integer-only on a Cortex-M0, then the core as a
+# package (make install, CMake, PlatformIO: tests/check_packages.sh), then the firmware's
 # sizes, stack and counter, then the fuzz targets' seed corpora and a short run of
 # each (tests/fuzz/fuzz.mk).
 test: deps-test
@@ -70,6 +71,7 @@ test: deps-test
 	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
 	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
 	@$(MAKE) --no-print-directory core-purity
+	@tests/check_packages.sh
 	@TARN_BIN=build/release/tarn tests/check_water_cost.sh
 	@$(MAKE) --no-print-directory firmware-check BOARD=
 	@tests/check_firmware_link.sh
