@@ -45,7 +45,7 @@ case $version in
 [0-9]*.[0-9]*.[0-9]*) ;;
 *) fail "TARN_VERSION_STRING reads as '$version', not MAJOR.MINOR.PATCH"; exit 1 ;;
 esac
-public_headers=$(cd core/include/tarn && ls ./*.h | sed 's|^\./||' | sort)
+public_headers=$(for h in core/include/tarn/*.h; do basename "$h"; done | sort)
 header_count=$(printf '%s\n' "$public_headers" | wc -l)
 line_re="^consumer version=$(printf '%s' "$version" | sed 's/\./\\./g') checksum=[0-9a-f]{8}$"
 
@@ -77,9 +77,9 @@ if quiet install make -s --no-print-directory install DESTDIR="$dest" PREFIX=/us
     pc_version=$(pc --modversion tarn 2> /dev/null)
     if [ "$pc_version" = "$version" ]; then ok "tarn.pc's version is TARN_VERSION_STRING, $version"; else
         fail "tarn.pc's version is '$pc_version', TARN_VERSION_STRING is $version"; fi
-    cflags=$(pc --cflags tarn 2> /dev/null)
+    cflags=$(pc --cflags tarn 2> /dev/null | sed 's/ *$//')
     libs=$(pc --libs tarn 2> /dev/null)
-    if [ "$(echo $cflags)" = "-I$dest/usr/include" ]; then ok "pkg-config --cflags tarn gives the include directory alone"; else
+    if [ "$cflags" = "-I$dest/usr/include" ]; then ok "pkg-config --cflags tarn gives the include directory alone"; else
         fail "pkg-config --cflags tarn gives '$cflags', expected -I$dest/usr/include"; fi
     # shellcheck disable=SC2086 # the flags are words
     if quiet cc-pc gcc -std=c99 -pedantic -Wall -Wextra -Werror tests/consumer/consumer.c $cflags $libs -o "$tmp/consumer-pc"; then
@@ -125,13 +125,13 @@ if cmake_consumer host -DCMAKE_BUILD_TYPE=Release; then
     run_same host "CMake, add_subdirectory(core) and tarn::core"
     switches=$(sed -n 's/^#ifndef \(TARN_LINK_[A-Z0-9_]*\)$/\1/p' core/include/tarn/tarn_config.h | grep -vx TARN_LINK_WATER_FEATURES)
     cache=$(cmake -LA -N "$tmp/host")
-    missing=$(for s in $switches; do printf '%s\n' "$cache" | grep -qx "$s:BOOL=ON" || echo "$s"; done)
-    printf '%s\n' "$cache" | grep -q '^TARN_LINK_WATER_FEATURES:STRING=' || missing="$missing TARN_LINK_WATER_FEATURES"
-    printf '%s\n' "$cache" | grep -q '^TARN_LINK_HEADER:FILEPATH=' || missing="$missing TARN_LINK_HEADER"
-    if [ -z "$(echo $missing)" ]; then
-        ok "CMake has the $(echo $switches | wc -w) TARN_LINK_* switches of tarn_config.h as options, ON, and TARN_LINK_WATER_FEATURES, TARN_LINK_HEADER"
+    missing=$(for s in $switches; do printf '%s\n' "$cache" | grep -qx "$s:BOOL=ON" || printf '%s ' "$s"; done)
+    printf '%s\n' "$cache" | grep -q '^TARN_LINK_WATER_FEATURES:STRING=' || missing="${missing}TARN_LINK_WATER_FEATURES "
+    printf '%s\n' "$cache" | grep -q '^TARN_LINK_HEADER:FILEPATH=' || missing="${missing}TARN_LINK_HEADER "
+    if [ -z "$missing" ]; then
+        ok "CMake has the $(printf '%s\n' "$switches" | wc -l) TARN_LINK_* switches of tarn_config.h as options, ON, and TARN_LINK_WATER_FEATURES, TARN_LINK_HEADER"
     else
-        fail "CMake's cache lacks: $(echo $missing)"
+        fail "CMake's cache lacks: $missing"
     fi
     if [ -n "$(underwater_tile host)" ]; then ok "with every switch on, the consumer links $(underwater_tile host)"; else
         fail "with every switch on, the consumer links no tarn_underwater_tile or tarn__underwater_tile: the switch checks below prove nothing"; fi
@@ -161,13 +161,13 @@ fi
 prefix=$tmp/cmake-prefix
 if quiet core-configure cmake -S core -B "$tmp/core" -DCMAKE_BUILD_TYPE=Release &&
     quiet core-build cmake --build "$tmp/core" $jobs && quiet core-install cmake --install "$tmp/core" --prefix "$prefix"; then
-    headers=$(cd "$prefix/include/tarn" && ls | sort)
+    headers=$(for h in "$prefix"/include/tarn/*; do basename "$h"; done | sort)
     pc_version=$(sed -n 's/^Version: //p' "$prefix/lib/pkgconfig/tarn.pc")
     if [ "$headers" = "$public_headers" ] && [ -f "$prefix/lib/libtarn.a" ] && [ "$pc_version" = "$version" ] &&
         [ -z "$(find "$prefix" -name '*internal*')" ]; then
         ok "cmake --install of core/ puts libtarn.a, the public headers alone and tarn.pc (version $pc_version)"
     else
-        fail "cmake --install of core/: headers '$(echo $headers)', tarn.pc version '$pc_version'"
+        fail "cmake --install of core/: headers '$(printf '%s\n' "$headers" | tr '\n' ' ')', tarn.pc version '$pc_version'"
     fi
     if cmake_consumer find-package -DCMAKE_BUILD_TYPE=Release -DCONSUMER_FIND_PACKAGE=ON -DCMAKE_PREFIX_PATH="$prefix"; then
         run_same find-package "CMake, find_package(tarn) of the installed core"
@@ -207,7 +207,8 @@ else
 fi
 
 # ---- (d) the public headers alone -------------------------------------------------
-c_bad= cxx_bad=
+c_bad=''
+cxx_bad=''
 for h in $public_headers; do
     # a declaration after it: a header of macros alone would leave ISO C an empty unit
     printf '#include "tarn/%s"\ntypedef int tarn_header_alone;\n' "$h" > "$tmp/alone.c"
