@@ -34,6 +34,9 @@ quiet() {
     sed 's/^/    /' "$quiet_log" | tail -n 20
     return 1
 }
+# The builds below are builds of their own: none takes a calling make's flags,
+# variables or jobserver (make test runs this script), each is given its jobs.
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 jobs=--parallel=2
 for tool in make gcc g++ pkg-config cmake python3 arm-none-eabi-gcc arm-none-eabi-nm arm-none-eabi-readelf; do
     command -v $tool > /dev/null 2>&1 || { fail "$tool is not installed (make deps-test installs it)"; exit 1; }
@@ -55,7 +58,7 @@ consumer_checksum() { printf '%s\n' "$1" | sed -n 's/^consumer version=.* checks
 # ---- (a) make install, pkg-config -------------------------------------------------
 dest=$tmp/dest
 checksum=
-if quiet install make -s --no-print-directory install DESTDIR="$dest" PREFIX=/usr; then
+if quiet install make -s -j2 --no-print-directory install DESTDIR="$dest" PREFIX=/usr; then
     expected=$( (echo usr/lib/libtarn.a; echo usr/lib/pkgconfig/tarn.pc
         printf '%s\n' "$public_headers" | sed 's|^|usr/include/tarn/|') | sort)
     installed=$(cd "$dest" && find . -type f | sed 's|^\./||' | sort)
