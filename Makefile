@@ -41,7 +41,7 @@ TEST_SUPPORT_OBJ := $(TEST_SUPPORT_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TARN := $(BUILD)/tarn
 
-.PHONY: all demo test check deps deps-test core-purity bench-panels sweep-docs golden clean
+.PHONY: all demo test check deps deps-test core-purity bench-panels sweep-docs golden clean lib libtarn install
 .DELETE_ON_ERROR:
 .SECONDARY:
 
@@ -62,7 +62,8 @@ demo: deps
 # by tests/test_firmware.c), one sweep of several qualities on qemu-m0
 # (tests/check_firmware_sweep.sh), tarn sweep's quick grid and the published
 # presets re-measured (tests/check_sweep.sh), a plain build, then the same tests under ASan + UBSan,
-# then the check that core/ stays integer-only on a Cortex-M0, then the firmware's
+# then the check that core/ stays integer-only on a Cortex-M0, then the core as a
+# package (make install, CMake, PlatformIO: tests/check_packages.sh), then the firmware's
 # sizes, stack and counter, then the fuzz targets' seed corpora and a short run of
 # each (tests/fuzz/fuzz.mk).
 test: deps-test
@@ -73,6 +74,7 @@ test: deps-test
 	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
 	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
 	@$(MAKE) --no-print-directory core-purity
+	@tests/check_packages.sh
 	@TARN_BIN=build/release/tarn tests/check_water_cost.sh
 	@$(MAKE) --no-print-directory firmware-check BOARD=
 	@tests/check_firmware_link.sh
@@ -127,6 +129,40 @@ $(BUILD)/tests/%.o: tests/%.c
 
 clean:
 	rm -rf build pond.png
+
+# ---- The core as an installed library: make lib, make install -------------------
+# make lib (or make libtarn) archives the core's objects, and nothing else, into
+# build/release/libtarn.a: the CORE rules above compile them in the release build
+# (BUILD=build/release SAN=0), whatever BUILD and SAN this make was given.
+# make install [PREFIX=/usr/local] [DESTDIR=] puts that library in $(PREFIX)/lib, the
+# public headers (core/include/tarn/*.h, never an *_internal.h) in
+# $(PREFIX)/include/tarn/, and $(PREFIX)/lib/pkgconfig/tarn.pc, made from
+# core/tarn.pc.in with the prefix and the version tarn_version.h holds (the one place
+# it is written). Programs then `#include "tarn/tarn.h"` and build with
+# `pkg-config --cflags --libs tarn`. docs/packages.md has the other ways in: CMake
+# (core/CMakeLists.txt) and PlatformIO (core/library.json).
+PREFIX ?= /usr/local
+TARN_LIB := build/release/libtarn.a
+TARN_PUBLIC_HEADERS := $(wildcard core/include/tarn/*.h)
+# TARN_VERSION_MAJOR and the others' values, read only when a recipe needs them
+tarn_version_part = $(shell awk '$$2 == "TARN_VERSION_$(1)" {print $$3}' core/include/tarn/tarn_version.h)
+TARN_VERSION = $(call tarn_version_part,MAJOR).$(call tarn_version_part,MINOR).$(call tarn_version_part,PATCH)
+
+lib libtarn:
+	@$(MAKE) --no-print-directory BUILD=build/release SAN=0 $(TARN_LIB)
+
+# q, not r: members are appended by name as given, so two stages may hold files of
+# the same name; the archive is made anew each time so a removed file leaves it.
+$(BUILD)/libtarn.a: $(CORE_OBJ)
+	@rm -f $@
+	$(AR) qcs $@ $^
+
+install: lib
+	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include/tarn
+	install -m 644 $(TARN_LIB) $(DESTDIR)$(PREFIX)/lib/libtarn.a
+	install -m 644 $(TARN_PUBLIC_HEADERS) $(DESTDIR)$(PREFIX)/include/tarn/
+	sed -e 's|@TARN_PC_PREFIX@|$(PREFIX)|' -e 's|@TARN_VERSION@|$(TARN_VERSION)|' \
+		core/tarn.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/tarn.pc
 
 -include $(shell find build -name '*.d' 2>/dev/null)
 

@@ -18,6 +18,9 @@ want valgrind test -e /usr/include/valgrind/callgrind.h # tarn sweep: host instr
 want gnuplot-nox command -v gnuplot                  # tarn sweep: the plot
 if [ "${1:-demo}" = test ]; then
     want libcmocka-dev pkg-config --exists cmocka
+    want cmake command -v cmake                          # tests/check_packages.sh: core/CMakeLists.txt
+    want g++ command -v g++                              # tests/check_packages.sh: the headers as C++
+    want python3 command -v python3                      # tests/check_packages.sh: core/library.json
     want gcc-arm-none-eabi command -v arm-none-eabi-gcc
     want libnewlib-arm-none-eabi test -e /usr/lib/arm-none-eabi/newlib
     want binutils-arm-none-eabi command -v arm-none-eabi-nm
