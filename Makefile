@@ -79,6 +79,7 @@ test: deps-test
 	@$(MAKE) --no-print-directory firmware-check BOARD=
 	@tests/check_firmware_link.sh
 	@BUILD=build/release tests/check_layering.sh
+	@tests/check_doc_paths.sh
 	@$(MAKE) --no-print-directory fuzz-replay
 	@cat build/release/summary build/san/summary | \
 		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'

@@ -204,8 +204,8 @@ $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-d
 # backdrop's, the view and water setup, the presets, the report), is compiled for
 # size (on top of the scene_link.h switches): it is far below 0.1% of the
 # instructions, and -Os takes about 700 bytes off the M0's 32 KB. On a board with a
-# code budget (BOARD_CODE_BYTES_MAX) so are the tile loop (core/frame.c), once a
-# tile, and the vertices' transform and clipping (core/vertex.c, core/clip.c),
+# code budget (BOARD_CODE_BYTES_MAX) so are the tile loop (core/frame/frame.c), once a
+# tile, and the vertices' transform and clipping (core/geometry/vertex.c, core/geometry/clip.c),
 # which a static view mostly spares: -Os takes about 1,240 bytes more off for 4
 # instructions a pixel of the M0's pond.
 FW_SIZE_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,$(basename $(wildcard core/scene/*.c)) core/geometry/view \

@@ -1,6 +1,6 @@
 /* main.c: the measured run of the emulated boards. Renders the baked scene with the
  * integer core and sends every tile to an ST7789 through the panel drivers of
- * core/panel.c, whose transport (stream_transport.c) writes the byte stream of
+ * core/panel/panel.c, whose transport (stream_transport.c) writes the byte stream of
  * tarn_panel.h through the board. The real boards run display_main.c instead.
  *
  * One run: panel init, frame at FW_TIME_0 ms, frame at FW_TIME_1 ms (both into the

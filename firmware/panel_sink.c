@@ -1,4 +1,4 @@
-/* panel_sink.c: tiles to the panel through core/panel.c, one or two RGB565 buffers
+/* panel_sink.c: tiles to the panel through core/panel/panel.c, one or two RGB565 buffers
  * (panel_sink.h says why two). */
 #include "panel_sink.h"
 

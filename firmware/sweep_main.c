@@ -1,13 +1,13 @@
 /* sweep_main.c: one boot measures many qualities ("points") of the baked scene, for
  * a speed/accuracy sweep (`make firmware-sweep`, docs/firmware.md). The build bakes
  * with `tarn bake ... --points FILE`, whose scene.h declares scene_points[] and
- * SCENE_POINT_COUNT (host/bake_points.h); firmware.mk picks this file for main.c
+ * SCENE_POINT_COUNT (host/bake/bake_points.h); firmware.mk picks this file for main.c
  * with FW_MAIN=sweep.
  *
  * For each point i, the frame at FW_TIME_1 ms, with the bake's size and
  * config.quality = scene_points[i], renders into the static buffer of
  * SCENE_MEMORY_BYTES (the largest any point needs) through a sink that adds each
- * tile to the frame checksum (core/tarn_checksum.h) and converts it to RGB565 twice
+ * tile to the frame checksum (core/include/tarn/tarn_checksum.h) and converts it to RGB565 twice
  * with tarn_rgb565, the panel path's conversion: without dither, then with the
  * ordered dither, a row at a time into a line buffer. The counter is read at the
  * sink's entry and exit, so the render's instructions exclude the sink's, and

@@ -12,7 +12,7 @@
 #
 # Builds the qemu-m0 firmware for several scenes (each in its own directory under
 # build/firmware-link/, the board's own build untouched) and reads the images' symbols
-# with arm-none-eabi-nm: each effect's function (core/water_*.c, core/underwater.c)
+# with arm-none-eabi-nm: each effect's function (core/water/water_*.c, core/water/underwater.c)
 # must be in the image exactly when the scene uses that effect. The expectations are
 # written out here, not read from the baked scene_link.h, so that a bake that links
 # too much (or too little) fails. Prints the code bytes of each image (flash minus

@@ -1,4 +1,4 @@
-/* test_checksum.c: the frame checksum of core/tarn_checksum.h does not depend on the
+/* test_checksum.c: the frame checksum of core/include/tarn/tarn_checksum.h does not depend on the
  * tile size, equals the host's sum over a whole image, and notices one flipped bit. */
 #include <setjmp.h>
 #include <stdarg.h>

@@ -4,7 +4,7 @@
  * meant to move pixels re-records the file (`make golden`) and says so in its
  * commit; any other change, a refactoring above all, must leave every line as it is.
  *
- * The checksum is core/tarn_checksum.h's, the number the boards report: a frame
+ * The checksum is core/include/tarn/tarn_checksum.h's, the number the boards report: a frame
  * differs from the recorded one when any pixel's RGB888 value does. */
 #include <setjmp.h>
 #include <stdarg.h>

@@ -1,4 +1,4 @@
-/* test_fixed_limits.c: every helper of core/tarn_fixed.h, and the public functions
+/* test_fixed_limits.c: every helper of core/include/tarn/tarn_fixed.h, and the public functions
  * of core/ that no other suite drives to their limits, at zero, one, the largest and
  * smallest values of their types and the values just past each boundary they draw.
  * `make test` runs this file under UndefinedBehaviorSanitizer too, so an overflow at

@@ -1,7 +1,7 @@
 /* test_math.c: core/'s fixed-point math against libm, over each whole input range.
  *
  * The sweeps are host/compare/accuracy_math.c's (the same numbers `tarn accuracy --math`
- * prints); this file asserts the error bounds documented in core/tarn_math.h, the
+ * prints); this file asserts the error bounds documented in core/include/tarn/tarn_math.h, the
  * exact values at the limits, and that invalid knob values stay in bounds. Running
  * it under ASan + UBSan also checks every swept input for undefined behaviour and
  * out-of-bounds table reads. */

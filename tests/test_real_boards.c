@@ -12,7 +12,7 @@
  * - A board with a .boot2 section (the RP2040): boot2 is the first 256 bytes of
  *   flash and its last 4 bytes are the CRC-32 of the first 252 as the bootrom
  *   computes it (recomputed here, with its own table, independently of
- *   firmware/tools/boot2_crc); firmware.uf2 is well formed: whole 512-byte blocks,
+ *   firmware/tools/boot2_crc.c); firmware.uf2 is well formed: whole 512-byte blocks,
  *   the three magic numbers, the family-ID flag and the RP2040 family, 256-byte
  *   payloads, block numbers 0..n-1 of n, addresses contiguous from the start of
  *   flash, and payloads equal to the ELF's loaded bytes (zeros after them).

@@ -1,4 +1,4 @@
-/* test_reference_water.c: the float reference's water (core/tarn_water.h) and
+/* test_reference_water.c: the float reference's water (core/include/tarn/tarn_water.h) and
  * underwater view, on a pond whose every pixel can be worked out on paper.
  *
  * The camera hangs at (0, 10, 0) looking straight down (-y), 90 degree field of view,

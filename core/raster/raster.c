@@ -198,60 +198,63 @@ void tarn__span_attributes(tarn_span *s, int32_t i)
         attributes_at(s, i, TARN_PERSPECTIVE_PIXEL);
 }
 
-/* The covered pixels of a span of an opaque material whose colour is the same at
- * every pixel: untextured, lit alike at its three vertices. */
-static void draw_constant_span(tarn_span *s, uint32_t rgb)
+/* An opaque pixel whose colour is the triangle's, `rgb`: untextured, lit alike at
+ * its three vertices. */
+static TARN_ALWAYS_INLINE uint32_t constant_pixel(void *rgb, tarn_span *s, int32_t i, int32_t index,
+                                                 uint32_t inv_depth)
 {
-    uint32_t *const colour = s->target->colour;
-    void *const depth_buffer = s->target->depth;
-    const int depth_bits = s->target->quality->depth_bits;
-    const tarn_exact_step_value step = s->set->depth.step_x;
-    const int exact_depth = s->set->depth.exact;
-    tarn_exact_value depth = s->depth;
-    for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
-        const uint32_t closer = tarn__closer_depth(depth_buffer, depth_bits, index, depth.quotient);
-        if (closer != 0u) {
-            colour[index] = rgb;
-            tarn__store_depth(depth_buffer, depth_bits, index, closer);
-        }
-        tarn__step_depth(&depth, &step, exact_depth);
-    }
+    (void)s, (void)i, (void)index, (void)inv_depth;
+    return *(const uint32_t *)rgb;
 }
 
-/* The covered pixels of a span of any other opaque material, in perspective mode
- * `mode`: its colour interpolated and, with a texture, times the texel. */
-static TARN_ALWAYS_INLINE void draw_interpolated(tarn_span *s, const tarn_texture *texture, int mode)
+/* Any other opaque pixel, in perspective mode `mode`: its colour interpolated and,
+ * with a texture, times the texel. */
+static TARN_ALWAYS_INLINE uint32_t interpolated_pixel(const tarn_texture *texture, tarn_span *s, int32_t i, int mode)
 {
-    uint32_t *const colour = s->target->colour;
-    void *const depth_buffer = s->target->depth;
-    const int depth_bits = s->target->quality->depth_bits;
-    const tarn_exact_step_value step = s->set->depth.step_x;
-    const int exact_depth = s->set->depth.exact;
-    tarn_exact_value depth = s->depth;
-    for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
-        const uint32_t closer = tarn__closer_depth(depth_buffer, depth_bits, index, depth.quotient);
-        if (closer != 0u) {
-            attributes_at(s, i, mode);
-            colour[index] = shade_pixel(s->set, texture, s->values);
-            tarn__store_depth(depth_buffer, depth_bits, index, closer);
-        }
-        tarn__step_depth(&depth, &step, exact_depth);
-    }
+    attributes_at(s, i, mode);
+    return shade_pixel(s->set, texture, s->values);
+}
+
+static TARN_ALWAYS_INLINE uint32_t affine_pixel(void *texture, tarn_span *s, int32_t i, int32_t index,
+                                               uint32_t inv_depth)
+{
+    (void)index, (void)inv_depth;
+    return interpolated_pixel(texture, s, i, TARN_PERSPECTIVE_AFFINE);
+}
+
+static TARN_ALWAYS_INLINE uint32_t spanned_pixel(void *texture, tarn_span *s, int32_t i, int32_t index,
+                                                uint32_t inv_depth)
+{
+    (void)index, (void)inv_depth;
+    return interpolated_pixel(texture, s, i, TARN_PERSPECTIVE_SPAN);
+}
+
+static TARN_ALWAYS_INLINE uint32_t perspective_pixel(void *texture, tarn_span *s, int32_t i, int32_t index,
+                                                    uint32_t inv_depth)
+{
+    (void)index, (void)inv_depth;
+    return interpolated_pixel(texture, s, i, TARN_PERSPECTIVE_PIXEL);
+}
+
+/* The spans of an opaque triangle, a loop each, chosen once a triangle. */
+static void draw_constant_span(tarn_span *s, uint32_t rgb)
+{
+    tarn__span_draw(s, constant_pixel, &rgb);
 }
 
 static void draw_affine_span(tarn_span *s, const tarn_texture *texture)
 {
-    draw_interpolated(s, texture, TARN_PERSPECTIVE_AFFINE);
+    tarn__span_draw(s, affine_pixel, (void *)texture);
 }
 
 static void draw_spanned_span(tarn_span *s, const tarn_texture *texture)
 {
-    draw_interpolated(s, texture, TARN_PERSPECTIVE_SPAN);
+    tarn__span_draw(s, spanned_pixel, (void *)texture);
 }
 
 static void draw_perspective_span(tarn_span *s, const tarn_texture *texture)
 {
-    draw_interpolated(s, texture, TARN_PERSPECTIVE_PIXEL);
+    tarn__span_draw(s, perspective_pixel, (void *)texture);
 }
 
 static void row_edges_at(const tarn_triangle_setup *t, int32_t i, int32_t j, tarn_row_edges *r)

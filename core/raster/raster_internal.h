@@ -205,8 +205,7 @@ void tarn__span_attributes(tarn_span *span, int32_t i);
 
 /* The depth at buffer index `index` as the buffer holds it (a tarn_depth16 code or
  * Q1.30, by `depth_bits`), or 0 when inv_depth is not closer than the stored one.
- * Both forms are at least 1. The loops take the buffer and its bits into locals:
- * read through the span, they would be read again after every store to the tile. */
+ * Both forms are at least 1. */
 static inline uint32_t tarn__closer_depth(const void *depth, int depth_bits, int32_t index, uint32_t inv_depth)
 {
     if ((int32_t)inv_depth < 1) inv_depth = 1;
@@ -226,6 +225,33 @@ static inline void tarn__store_depth(void *depth, int depth_bits, int32_t index,
         ((uint16_t *)depth)[index] = (uint16_t)value;
     else
         ((uint32_t *)depth)[index] = value;
+}
+
+/* The colour of pixel i of a span (at buffer index `index`, its near/d inv_depth),
+ * which has passed the depth test. */
+typedef uint32_t (*tarn_span_pixel)(void *ctx, tarn_span *span, int32_t i, int32_t index, uint32_t inv_depth);
+
+/* Each pixel of the span that passes the depth test takes the colour `pixel` gives
+ * it, then its depth. The loop of every span, written once and compiled into each
+ * caller with its own pixel function: a constant there, so inlined, and no pixel
+ * pays a call. The buffers and the depth's steps are held in locals: read through
+ * the span, they would be read again after every store to the tile. */
+static TARN_ALWAYS_INLINE void tarn__span_draw(tarn_span *s, tarn_span_pixel pixel, void *ctx)
+{
+    uint32_t *const colour = s->target->colour;
+    void *const depth_buffer = s->target->depth;
+    const int depth_bits = s->target->quality->depth_bits;
+    const tarn_exact_step_value step = s->set->depth.step_x;
+    const int exact_depth = s->set->depth.exact;
+    tarn_exact_value depth = s->depth;
+    for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
+        const uint32_t closer = tarn__closer_depth(depth_buffer, depth_bits, index, depth.quotient);
+        if (closer != 0u) {
+            colour[index] = pixel(ctx, s, i, index, depth.quotient);
+            tarn__store_depth(depth_buffer, depth_bits, index, closer);
+        }
+        tarn__step_depth(&depth, &step, exact_depth);
+    }
 }
 
 /* ---- a triangle into a tile, row by row ---------------------------------------

@@ -113,36 +113,20 @@ static uint32_t water_colour(const tarn_water_pass *pass, const water_choice *c,
     return tarn__water_apply(w, e, e->sharp, i, j);
 }
 
-/* A pass in place (mark set) marks each pixel it writes; writing a marked one
- * again means this pixel read the other water pixel as its background, not the
- * opaque pass's, and the frame draws the tile's water again from a copy. */
-static void write_water_pixel(tarn_water_pass *pass, int32_t offset, uint32_t rgb)
+/* A water pixel's colour, found or shared, and its mark: a pass in place (mark set)
+ * marks each pixel it writes, and writing a marked one again means this pixel read
+ * the other water pixel as its background, not the opaque pass's; the frame then
+ * draws the tile's water again from a copy. Skipping a pixel's attributes is safe
+ * in every perspective mode: a span is filled for whichever pixel first reaches it. */
+static TARN_ALWAYS_INLINE uint32_t water_pixel(void *pass_ctx, tarn_span *s, int32_t i, int32_t index,
+                                              uint32_t inv_depth)
 {
-    uint32_t *colour = pass->target.colour;
-    pass->overlap |= colour[offset] & pass->mark;
-    colour[offset] = rgb | pass->mark;
-}
-
-/* The covered pixels of a span of a water triangle. Skipping a pixel's attributes
- * is safe in every perspective mode: a span is filled for whichever pixel first
- * reaches it. */
-static void draw_water_span(tarn_water_pass *pass, tarn_span *s)
-{
-    void *const depth_buffer = s->target->depth;
-    const int depth_bits = s->target->quality->depth_bits;
-    const tarn_exact_step_value step = s->set->depth.step_x;
-    const int exact_depth = s->set->depth.exact;
-    tarn_exact_value depth = s->depth;
-    for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
-        const uint32_t closer = tarn__closer_depth(depth_buffer, depth_bits, index, depth.quotient);
-        if (closer != 0u) {
-            const water_choice choice = water_choice_at(pass, i, s->j);
-            if (water_needs_inputs(pass->water, &choice)) tarn__span_attributes(s, i);
-            write_water_pixel(pass, index, water_colour(pass, &choice, s->set, s->values, depth.quotient, i, s->j));
-            tarn__store_depth(depth_buffer, depth_bits, index, closer);
-        }
-        tarn__step_depth(&depth, &step, exact_depth);
-    }
+    tarn_water_pass *pass = pass_ctx;
+    const water_choice choice = water_choice_at(pass, i, s->j);
+    if (water_needs_inputs(pass->water, &choice)) tarn__span_attributes(s, i);
+    const uint32_t rgb = water_colour(pass, &choice, s->set, s->values, inv_depth, i, s->j);
+    pass->overlap |= pass->target.colour[index] & pass->mark;
+    return rgb | pass->mark;
 }
 
 void tarn__water_draw_triangle(void *pass_ctx, const tarn_screen_vertex vertex[3], const tarn_object *object)
@@ -154,7 +138,7 @@ void tarn__water_draw_triangle(void *pass_ctx, const tarn_screen_vertex vertex[3
     pass->water->triangle_serial++;
     const tarn_attribute_request request = {NULL, 1, (object->material->water->features & TARN_WATER_FRESNEL) != 0};
     tarn__triangle_rows_begin(&rows, &request);
-    for (tarn_span *s; (s = tarn__triangle_next_span(&rows)) != NULL;) draw_water_span(pass, s);
+    for (tarn_span *s; (s = tarn__triangle_next_span(&rows)) != NULL;) tarn__span_draw(s, water_pixel, pass);
 }
 
 void tarn__water_clear_marks(const tarn_tile_target *t)

@@ -1,5 +1,5 @@
 /* bake.c: the scene as C source. Three steps:
- *  1. types:  a table per struct of core/tarn_scene.h and tarn_water.h says what each
+ *  1. types:  a table per struct of core/include/tarn/tarn_scene.h and tarn_water.h says what each
  *             member is (one STRUCT_TYPE each, an entry a member), so that one
  *             printer writes any of them, and one layout rule sizes them for a
  *             32-bit target (checked against this host's own layout before every

@@ -1,7 +1,7 @@
 /* bake.h: a loaded scene written out as const C data for firmware.
  *
  * `tarn bake scenes/pond.json -o out/pond.c` writes three files:
- *   out/pond.c  one self-contained C99 source, needing only core/tarn_render.h:
+ *   out/pond.c  one self-contained C99 source, needing only core/include/tarn/tarn_render.h:
  *               every mesh, texture, material, water block and object the scene
  *               uses, as `static const` arrays and structs, and two objects
  *                 const tarn_scene pond_scene;

@@ -13,7 +13,7 @@
  *   --depth 16|32  --depth-interpolation exact|plane  --recip-steps N (0..2)
  *   --exp2 N[:nearest|:linear] (8..256)
  *   --apron on|off|N  --bins on|off  --fog-bits N (4..16)  --water-block 1|2|4
- *   --quality fast|balanced|exact   a preset (core/quality.c) as the base of the others
+ *   --quality fast|balanced|exact   a preset (core/scene/presets.c) as the base of the others
  * (parsed by quality_options.h) */
 #ifndef TARN_HOST_CLI_OPTIONS_H
 #define TARN_HOST_CLI_OPTIONS_H

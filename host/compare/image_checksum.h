@@ -1,4 +1,4 @@
-/* image_checksum.h: core/tarn_checksum.h's frame checksum of a whole RGB888 image,
+/* image_checksum.h: core/include/tarn/tarn_checksum.h's frame checksum of a whole RGB888 image,
  * the number a board's sweep reports for the same frame. */
 #ifndef TARN_HOST_IMAGE_CHECKSUM_H
 #define TARN_HOST_IMAGE_CHECKSUM_H

@@ -110,7 +110,7 @@ static int parse_apron(const char *value, tarn_quality *q, tarn_error *err)
     return 0;
 }
 
-/* The presets by the names core/quality.c gives them. */
+/* The presets by the names core/scene/presets.c gives them. */
 static int parse_preset(const char *value, tarn_quality *q, tarn_error *err)
 {
     tarn_option_choice presets[TARN_PRESET_COUNT];

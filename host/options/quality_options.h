@@ -1,7 +1,7 @@
 /* quality_options.h: the QUALITY options every rendering command takes (tarn render,
  * compare, memory, bake and show), a points file's lines (bake_points.h) and the
  * sweep's grid (sweep_grid.h):
- *   --quality fast|balanced|exact   a preset (core/quality.c) as the base of the others
+ *   --quality fast|balanced|exact   a preset (core/scene/presets.c) as the base of the others
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
  *   --depth 16|32  --depth-interpolation exact|plane  --recip-steps N (0..2)
  *   --exp2 N[:nearest|:linear] (8..256)

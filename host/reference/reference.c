@@ -1,6 +1,6 @@
 /* reference.c: the float reference renderer (see reference.h).
  *
- * Written from the pixel rules in core/tarn_render.h, in doubles, on purpose with
+ * Written from the pixel rules in core/include/tarn/tarn_render.h, in doubles, on purpose with
  * none of the core's arithmetic: a bug shared by both would be invisible. */
 #include "reference.h"
 

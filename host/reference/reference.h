@@ -1,7 +1,7 @@
 /* reference.h: the float reference renderer, the truth the integer core is measured
  * against.
  *
- * It follows the pixel rules written at the top of core/tarn_render.h, in double
+ * It follows the pixel rules written at the top of core/include/tarn/tarn_render.h, in double
  * precision with libm, and shares no arithmetic with core/ (only the struct
  * definitions, and in snapped mode the core's own screen triangles).
  *
@@ -13,7 +13,7 @@
  *    (tarn_visit_screen_triangles), so only rasterization and shading differ; the
  *    coverage must then match the core's pixel for pixel.
  *
- * A frame is drawn as core/tarn_water.h describes: opaque materials first, then
+ * A frame is drawn as core/include/tarn/tarn_water.h describes: opaque materials first, then
  * water materials over them (depth-tested against both, reading only the opaque
  * colour and depth), then the underwater view when the camera is below its level.
  * The reference has no tiles: refraction reads the whole frame. */

@@ -1,5 +1,5 @@
 /* reference_water.c: the float reference's water pixel and underwater view (see
- * reference_water.h), written from the rules in core/tarn_water.h in doubles with
+ * reference_water.h), written from the rules in core/include/tarn/tarn_water.h in doubles with
  * libm and none of the core's arithmetic. Step numbers below are the header's. */
 #include "reference_water.h"
 

@@ -1,6 +1,6 @@
 /* reference_water.h: the float reference's water, private to host/reference/.
  *
- * reference_water.c shades one water pixel by the rules of core/tarn_water.h and
+ * reference_water.c shades one water pixel by the rules of core/include/tarn/tarn_water.h and
  * applies the underwater view, in doubles with libm; reference.c rasterizes, keeps
  * the buffers and calls it. Both sample textures and round through ref_texel.h,
  * so by one definition; reference_water.c calls nothing of reference.c. */

@@ -51,7 +51,7 @@ static inline int32_t tarn_max3_i32(int32_t a, int32_t b, int32_t c)
 /* Arithmetic shift right of a signed 64-bit value, rounding to nearest (ties up),
  * for shift < 64, over the whole int64_t range. Written with division-free
  * operations so the result does not depend on how a compiler treats >> of negative
- * values. A function of its own (core/fixed.c) rather than inline: it runs per
+ * values. A function of its own (core/math/fixed.c) rather than inline: it runs per
  * vertex, not per pixel, and inlined into every caller it cost the Cortex-M0 image
  * half a kilobyte. */
 int64_t tarn_round_shift_i64(int64_t v, unsigned shift);
@@ -88,7 +88,7 @@ static inline int tarn_is_power_of_two(uint32_t v)
     return v != 0u && (v & (v - 1u)) == 0u;
 }
 
-/* Leading zero bits of each byte value, 8 for 0 (core/math_tables.c). */
+/* Leading zero bits of each byte value, 8 for 0 (core/math/math_tables.c). */
 extern const uint8_t tarn_clz8[256];
 
 /* Number of leading zero bits of a 32-bit value (32 for 0). Portable: the
@@ -133,7 +133,7 @@ static inline uint64_t tarn_mul_u32_wide(uint32_t a, uint32_t b)
 
 /* The whole 64-bit product of two signed 32-bit values, for the per-vertex and
  * per-triangle code whose operands fit 32 bits: on the Cortex-M0 a function of its
- * own (core/fixed.c) from tarn_mul_u32_wide, about half of libgcc's 64x64 multiply
+ * own (core/math/fixed.c) from tarn_mul_u32_wide, about half of libgcc's 64x64 multiply
  * and small enough to call from everywhere; elsewhere the native product. */
 #if defined(__ARM_ARCH_6M__)
 int64_t tarn_mul_i32_wide(int32_t a, int32_t b);

@@ -69,7 +69,7 @@ typedef enum {
 typedef enum {
     TARN_DEPTH_EXACT = 0, /* near/d rounded exactly at every pixel: a quotient and its
                            * remainder step across the triangle, so where two surfaces
-                           * meet the depth test agrees with host/reference.c */
+                           * meet the depth test agrees with host/reference/reference.c */
     TARN_DEPTH_PLANE = 1  /* near/d on a plane set up like the attributes' (one
                            * rounded product per step, no exact division): within
                            * 128 units of 2^-30 (tests/test_raster.c), and three
