@@ -70,3 +70,14 @@ tarn_frame_config firmware_bake_config(const char *scene_path, const char *bake_
     if (backdrop != NULL) *backdrop = options.backdrop;
     return config;
 }
+
+void firmware_sort_board_names(char names[][64], size_t n)
+{
+    for (size_t i = 1; i < n; i++)
+        for (size_t j = i; j > 0 && strcmp(names[j - 1], names[j]) > 0; j--) {
+            char t[64];
+            memcpy(t, names[j], 64);
+            memcpy(names[j], names[j - 1], 64);
+            memcpy(names[j - 1], t, 64);
+        }
+}

@@ -1,5 +1,5 @@
 /* firmware_conf.h: what a firmware build records for the tests that check it
- * (tests/test_firmware.c, tests/test_firmware_sweep.c): its files as text, the
+ * (tests/test_firmware.c, tests/test_firmware_sweep.c, tests/test_real_boards.c): its files as text, the
  * KEY=VALUE lines of firmware.conf, and the frame config its bake flags make. */
 #ifndef TARN_TESTS_FIRMWARE_CONF_H
 #define TARN_TESTS_FIRMWARE_CONF_H
@@ -15,6 +15,9 @@ char *firmware_read_file(const char *path, size_t *size);
 
 /* KEY=VALUE's value among `text`'s lines into `out`, cut to `size`; "" if absent. */
 void firmware_conf_value(char *out, size_t size, const char *text, const char *key);
+
+/* The n board names in alphabetical order. */
+void firmware_sort_board_names(char names[][64], size_t n);
 
 /* The frame config `tarn bake SCENE BAKE_FLAGS` bakes: the scene's own size unless
  * the flags give one, the flags parsed as tarn parses them, at `time_ms`; and the

@@ -29,6 +29,8 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include "firmware_conf.h"
+
 #define FIRMWARE_DIR "build/firmware"
 #define BOARDS_MAX 16
 #define REGIONS_MAX 8
@@ -366,13 +368,7 @@ static size_t find_real_boards(char names[][64], size_t max)
         if (real) memcpy(names[n++], e->d_name, strlen(e->d_name) + 1);
     }
     closedir(dir);
-    for (size_t i = 1; i < n; i++) /* a stable order */
-        for (size_t j = i; j > 0 && strcmp(names[j - 1], names[j]) > 0; j--) {
-            char t[64];
-            memcpy(t, names[j], 64);
-            memcpy(names[j], names[j - 1], 64);
-            memcpy(names[j - 1], t, 64);
-        }
+    firmware_sort_board_names(names, n); /* a stable order */
     return n;
 }
 
