@@ -9,6 +9,7 @@
 set -eu
 flags=${1:-$(sed -n 's/^BOARD_BAKE_FLAGS := //p' boards/qemu-m0/board.mk)}
 base=
+mkdir -p build/bench-effects
 for scene in none fog absorption depth_colour ramp fresnel foam sparkles normals refraction underwater; do
     dir=build/bench-effects/$scene
     extra=

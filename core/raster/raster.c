@@ -159,7 +159,8 @@ static uint32_t shade_pixel(const tarn_attribute_set *set, const tarn_texture *t
     return rgb;
 }
 
-
+/* A row's interpolation state before its first covered pixel: the affine origin,
+ * or a span cache that holds no span yet. */
 static void row_attributes_start(tarn_row_attributes *row, const tarn_tile_target *tile, const tarn_attribute_set *set,
                                  const tarn_triangle_setup *t, int32_t j)
 {
