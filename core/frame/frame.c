@@ -102,6 +102,13 @@ static void begin_water(frame_state *f)
     c->sample_rect = f->opaque.rect; /* binds at the frame's edges only (opaque_rect) */
 }
 
+/* The water triangles of `rect` into the water pass's target. */
+static void draw_water_triangles(frame_state *f, const tarn_pixel_rect *rect)
+{
+    if (WATER_TRIANGLES)
+        tarn__walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, rect, tarn__water_draw_triangle, &f->water);
+}
+
 /* The water pass over `rect` into its own buffers, whose index 0 is frame pixel
  * (origin_x, origin_y), `stride` wide: it starts from a copy of the opaque pixels. */
 static void draw_water_copy(frame_state *f, const tarn_pixel_rect *rect, int32_t origin_x, int32_t origin_y,
@@ -116,8 +123,7 @@ static void draw_water_copy(frame_state *f, const tarn_pixel_rect *rect, int32_t
     w->depth = f->water_depth;
     f->water.mark = 0u;
     copy_pixels(&f->opaque, w, f->layout.depth_bytes);
-    if (WATER_TRIANGLES)
-        tarn__walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, rect, tarn__water_draw_triangle, &f->water);
+    draw_water_triangles(f, rect);
 }
 
 /* The water pass over the tile and the underwater apron, from a copy. */
@@ -140,8 +146,7 @@ static int draw_water_in_place(frame_state *f, const tarn_pixel_rect *tile_rect)
     w->mark = TARN_WATER_MARK;
     w->overlap = 0u;
     begin_water(f);
-    if (WATER_TRIANGLES)
-        tarn__walk_triangles(f->scene, f->view, TARN_WALK_WATER, f->bins, tile_rect, tarn__water_draw_triangle, w);
+    draw_water_triangles(f, tile_rect);
     tarn__water_clear_marks(&w->target);
     return w->overlap == 0u;
 }

@@ -5,16 +5,16 @@
  *                     box, the attribute and depth planes (64-bit products and exact
  *                     divisions are allowed here)
  *   raster.c          per row: the covered run of pixels, found with the edge
- *                     functions and handed to the triangle's span shader; per pixel
- *                     of an opaque material: depth test, attributes, texel, colour
+ *                     functions (tarn_span); per pixel of an opaque material:
+ *                     depth test, attributes, texel, colour
  *
  * It takes the screen triangles of core/tile/'s walk and draws them into a
- * tarn_tile_target. A triangle is set up once (tarn_triangle_in_tile), then drawn
- * by the span shader chosen for it once: the rasterizer's own for an opaque
- * material (a constant colour, or interpolated colour and texels), or one a later
- * stage gives (core/water/). The split is the numeric contract made visible: setup
- * may divide; nothing a span runs may, and tests/check_core_purity.sh proves it on
- * the Cortex-M0 build. */
+ * tarn_tile_target. A triangle is set up once for a tile (tarn_triangle_rows),
+ * then its rows are handed out one at a time to the stage that owns its material:
+ * raster.c itself for an opaque one (a loop chosen once a triangle: a constant
+ * colour, or interpolated colour and texels), core/water/ for water. The split is
+ * the numeric contract made visible: setup may divide; nothing a span runs may,
+ * and tests/check_core_purity.sh proves it on the Cortex-M0 build. */
 #ifndef TARN_RASTER_INTERNAL_H
 #define TARN_RASTER_INTERNAL_H
 
@@ -163,7 +163,7 @@ static inline tarn_exact_value tarn__depth_at(const tarn_triangle_setup *t, cons
     return v;
 }
 
-/* ---- spans: the covered pixels of one row, handed to the triangle's shader ---- */
+/* ---- spans: the covered pixels of one row ----------------------------------------- */
 
 /* The span perspective mode's interpolation (raster.c): exact values every
  * `span` pixels on a grid fixed to the frame, linear between. */

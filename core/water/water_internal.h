@@ -2,8 +2,8 @@
  * the water pixel of tarn_water.h, in integers.
  *
  *   water_setup.c      per water object per tile: the context below
- *   water_span.c       the span shader of water triangles (core/raster/ draws their
- *                      rows), and the 2x2 or 4x4 blocks that share effects
+ *   water_span.c       water triangles, row by row as core/raster/ hands them
+ *                      out, and the 2x2 or 4x4 blocks that share effects
  *   water_pixel.c      one water pixel: its effects gathered, then applied
  *   water_normals.c, water_refraction.c, water_fog.c, water_surface.c,
  *   water_highlights.c, water_foam.c   the effects, a file each

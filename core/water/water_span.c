@@ -1,7 +1,7 @@
 /* water_span.c: water triangles. The rasterizer (core/raster/) sets each one up
- * and finds its covered pixels row by row; this is the span shader it hands them
- * to, and where the quality's water_block 2 or 4 lets a block of pixels share the
- * effects its top-left pixel found (tarn_water_block). */
+ * and hands out its covered pixels row by row; this draws them, and is where the
+ * quality's water_block 2 or 4 lets a block of pixels share the effects its
+ * top-left pixel found (tarn_water_block). */
 #include "water/water_internal.h"
 
 /* T / 2^shift rounded to nearest: the water's panned maps multiply u and v by

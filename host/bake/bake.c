@@ -1003,13 +1003,42 @@ static int has_opaque_objects(const tarn_scene *scene)
     return 0;
 }
 
-/* 1 if a frame of the bake at quality `q` finds its own cluster bins: the bins
- * are on, and the static view holds none for its subpixel grid. */
-static int finds_bins(const tarn_scene *scene, const tarn_quality *q)
+/* The link switches a baked quality decides, as bits: a build links a part when
+ * some quality it bakes (the main one or a point) uses it. */
+enum {
+    USES_PERSPECTIVE_AFFINE = 1u << 0, /* affine, and span for its narrow triangles */
+    USES_PERSPECTIVE_SPAN = 1u << 1,
+    USES_PERSPECTIVE_PIXEL = 1u << 2,
+    USES_APRON = 1u << 3,
+    USES_WATER_BLOCKS = 1u << 4,
+    USES_DEPTH16 = 1u << 5,
+    USES_DEPTH32 = 1u << 6,
+    USES_EXACT_DEPTH = 1u << 7,
+    USES_FOUND_BINS = 1u << 8 /* bins on, and the static view holds none for its grid */
+};
+
+static const struct {
+    const char *name; /* TARN_LINK_NAME */
+    unsigned bit;
+} quality_switches[] = {
+    {"PERSPECTIVE_AFFINE", USES_PERSPECTIVE_AFFINE}, {"PERSPECTIVE_SPAN", USES_PERSPECTIVE_SPAN},
+    {"PERSPECTIVE_PIXEL", USES_PERSPECTIVE_PIXEL},   {"APRON", USES_APRON},
+    {"WATER_BLOCKS", USES_WATER_BLOCKS},             {"DEPTH16", USES_DEPTH16},
+    {"DEPTH32", USES_DEPTH32},                       {"EXACT_DEPTH", USES_EXACT_DEPTH},
+    {"FOUND_BINS", USES_FOUND_BINS}};
+
+static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
 {
     const tarn_static_view *view = scene->static_view;
-    return q->cluster_bins &&
-           (view == NULL || view->bins == NULL || view->subpixel_bits != q->subpixel_bits);
+    const int finds_bins =
+        q->cluster_bins && (view == NULL || view->bins == NULL || view->subpixel_bits != q->subpixel_bits);
+    return (q->perspective != TARN_PERSPECTIVE_PIXEL ? USES_PERSPECTIVE_AFFINE : 0u) |
+           (q->perspective == TARN_PERSPECTIVE_SPAN ? USES_PERSPECTIVE_SPAN : 0u) |
+           (q->perspective == TARN_PERSPECTIVE_PIXEL ? USES_PERSPECTIVE_PIXEL : 0u) |
+           (q->refraction_apron != 0 ? USES_APRON : 0u) | (q->water_block > 1 ? USES_WATER_BLOCKS : 0u) |
+           (q->depth_bits == 16 ? USES_DEPTH16 : 0u) | (q->depth_bits == 32 ? USES_DEPTH32 : 0u) |
+           (q->depth_interpolation == TARN_DEPTH_EXACT ? USES_EXACT_DEPTH : 0u) |
+           (finds_bins ? USES_FOUND_BINS : 0u);
 }
 
 static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,
@@ -1030,34 +1059,10 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     fprintf(out, "#define TARN_LINK_WATER %d\n", water);
     fprintf(out, "#define TARN_LINK_WATER_FEATURES (%s)\n", names.text);
     fprintf(out, "#define TARN_LINK_UNDERWATER %d\n", p->scene->scene.underwater != NULL);
-    int span = p->config.quality.perspective == TARN_PERSPECTIVE_SPAN;
-    int pixel = p->config.quality.perspective == TARN_PERSPECTIVE_PIXEL;
-    int affine = !pixel;
-    int apron = p->config.quality.refraction_apron != 0;
-    int blocks = p->config.quality.water_block > 1;
-    int exact_depth = p->config.quality.depth_interpolation == TARN_DEPTH_EXACT;
-    int found_bins = finds_bins(&p->scene->scene, &p->config.quality);
-    int depth16 = p->config.quality.depth_bits == 16, depth32 = p->config.quality.depth_bits == 32;
-    for (size_t i = 0; i < p->points->count; i++) {
-        span |= p->points->qualities[i].perspective == TARN_PERSPECTIVE_SPAN;
-        pixel |= p->points->qualities[i].perspective == TARN_PERSPECTIVE_PIXEL;
-        affine |= p->points->qualities[i].perspective != TARN_PERSPECTIVE_PIXEL;
-        apron |= p->points->qualities[i].refraction_apron != 0;
-        blocks |= p->points->qualities[i].water_block > 1;
-        exact_depth |= p->points->qualities[i].depth_interpolation == TARN_DEPTH_EXACT;
-        found_bins |= finds_bins(&p->scene->scene, &p->points->qualities[i]);
-        depth16 |= p->points->qualities[i].depth_bits == 16;
-        depth32 |= p->points->qualities[i].depth_bits == 32;
-    }
-    fprintf(out, "#define TARN_LINK_PERSPECTIVE_AFFINE %d\n", affine);
-    fprintf(out, "#define TARN_LINK_PERSPECTIVE_SPAN %d\n", span);
-    fprintf(out, "#define TARN_LINK_PERSPECTIVE_PIXEL %d\n", pixel);
-    fprintf(out, "#define TARN_LINK_APRON %d\n", apron);
-    fprintf(out, "#define TARN_LINK_WATER_BLOCKS %d\n", blocks);
-    fprintf(out, "#define TARN_LINK_DEPTH16 %d\n", depth16);
-    fprintf(out, "#define TARN_LINK_DEPTH32 %d\n", depth32);
-    fprintf(out, "#define TARN_LINK_EXACT_DEPTH %d\n", exact_depth);
-    fprintf(out, "#define TARN_LINK_FOUND_BINS %d\n", found_bins);
+    unsigned uses = quality_uses(&p->scene->scene, &p->config.quality);
+    for (size_t i = 0; i < p->points->count; i++) uses |= quality_uses(&p->scene->scene, &p->points->qualities[i]);
+    for (size_t k = 0; k < sizeof quality_switches / sizeof quality_switches[0]; k++)
+        fprintf(out, "#define TARN_LINK_%s %d\n", quality_switches[k].name, (uses & quality_switches[k].bit) != 0);
     fprintf(out, "#define TARN_LINK_OPAQUE_OBJECTS %d\n", has_opaque_objects(&p->scene->scene));
     fprintf(out, "#define TARN_LINK_COMPUTED_VERTICES %d\n", p->scene->scene.static_view == NULL);
     fprintf(out, "#define TARN_LINK_STATIC_VERTICES %d\n", p->scene->scene.static_view != NULL);
