@@ -63,9 +63,9 @@ static void test_good_lines_parse(void **state)
     assert_int_equal(o.quality.exp2.entries, 32);
     assert_int_equal(o.quality.exp2.interpolate, 0);
 
-    assert_int_equal(parse("compare s.json --snapped --diff heat.png", &o, &err), 0);
+    assert_int_equal(parse("compare s.json --backdrop still --diff heat.png", &o, &err), 0);
     assert_int_equal(o.command, TARN_CMD_COMPARE);
-    assert_true(o.snapped);
+    assert_int_equal(o.backdrop, TARN_BACKDROP_STILL);
     assert_string_equal(o.diff_path, "heat.png");
     assert_int_equal(parse("accuracy --math", &o, &err), 0);
     assert_true(o.math);
@@ -194,7 +194,7 @@ static void test_backdrop_option(void **state)
     assert_rejected("bake s.json -o x.c --backdrop yes", "--backdrop: expected on, off or still, got 'yes'");
     assert_rejected("render s.json -o x.png --backdrop", "--backdrop: expected on, off or still, got ''");
     assert_rejected("render s.json -o x.png --reference --backdrop still", "it excludes --reference");
-    assert_rejected("compare s.json --backdrop on", "--backdrop applies to render and bake");
+    assert_rejected("memory s.json --backdrop on", "--backdrop applies to render, compare and bake");
     assert_rejected("render s.json -o x.png --reference --backdrop on", "it excludes --reference");
     assert_rejected("bake s.json -o x.c --backdrop on --points p.txt", "it excludes --points");
     assert_rejected("bake s.json -o x.c --backdrop on --static-view off", "it excludes --static-view off");
@@ -263,7 +263,8 @@ static void test_bad_lines_name_what_was_expected(void **state)
     assert_rejected("render s.json -o x.png --exp2 300", "--exp2");
     assert_rejected("render s.json -o x.png --exp2 48", "--exp2");
     assert_rejected("render s.json -o x.png --exp2 64:cubic", "--exp2");
-    assert_rejected("render s.json -o x.png --snapped", "--snapped applies to the reference");
+    assert_rejected("render s.json -o x.png --snapped", "--snapped applies to render --reference");
+    assert_rejected("compare s.json --snapped", "--snapped applies to render --reference");
     assert_rejected("render s.json -o x.png --bogus 1", "unknown option '--bogus'");
     assert_rejected("accuracy", "accuracy: expected --math");
     assert_rejected("render s.json -o x.png --frames 0",

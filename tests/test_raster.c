@@ -215,7 +215,7 @@ static tarn_compare_metrics compare_snapped(const tarn_scene *scene, const tarn_
     frame_buffers core = frame_new(config->width, config->height);
     frame_buffers ref = frame_new(config->width, config->height);
     render_core(scene, config, &core);
-    tarn_reference_options options = {.snapped = 1, .subpixel_bits = config->quality.subpixel_bits};
+    tarn_reference_options options = {.geometry = TARN_REF_CORE_TRIANGLES, .subpixel_bits = config->quality.subpixel_bits};
     assert_int_equal(tarn_reference_render(scene, config->width, config->height, &options, ref.rgb,
                                            ref.covered), 0);
     tarn_compare_metrics m;
@@ -433,7 +433,7 @@ static void test_unsnapped_mismatches_lie_on_edges(void **state)
     tarn_frame_config config = config_of(240, 240);
     frame_buffers core = frame_new(240, 240), ref = frame_new(240, 240);
     render_core(&pond->scene, &config, &core);
-    tarn_reference_options options = {.snapped = 0, .subpixel_bits = config.quality.subpixel_bits};
+    tarn_reference_options options = {.geometry = TARN_REF_CONTINUOUS, .subpixel_bits = config.quality.subpixel_bits};
     assert_int_equal(tarn_reference_render(&pond->scene, 240, 240, &options, ref.rgb, ref.covered), 0);
     edge_list edges = {NULL, 0, 0, config.quality.subpixel_bits};
     assert_int_equal(tarn_visit_screen_triangles(&pond->scene, &config, collect_edges, &edges), TARN_OK);

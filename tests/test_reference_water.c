@@ -138,7 +138,7 @@ static void new_pond(double floor_depth)
 
 static int render_timed(int snapped, uint32_t time_ms)
 {
-    tarn_reference_options opt = { .snapped = snapped, .subpixel_bits = SUBPIXEL_BITS,
+    tarn_reference_options opt = { .geometry = snapped ? TARN_REF_CORE_TRIANGLES : TARN_REF_CONTINUOUS, .subpixel_bits = SUBPIXEL_BITS,
                                    .time_ms = time_ms };
     return tarn_reference_render(&pond.scene, W, H, &opt, rgb, covered);
 }
@@ -733,7 +733,7 @@ static void test_underwater_map_edges_take_the_texel_above(void **state)
     dive(Q(CAMERA_Y + 10), 0x000000, 0);
     pond.underwater.normal_map = &stripe_map;
     pond.underwater.pan.scale = Q(3);
-    tarn_reference_options opt = { .snapped = 0, .subpixel_bits = SUBPIXEL_BITS };
+    tarn_reference_options opt = { .geometry = TARN_REF_CONTINUOUS, .subpixel_bits = SUBPIXEL_BITS };
     assert_int_equal(tarn_reference_render(&pond.scene, SIZE, SIZE, &opt, base, NULL), TARN_OK);
     pond.underwater.distortion = Q(2.0 / SIZE);
     assert_int_equal(tarn_reference_render(&pond.scene, SIZE, SIZE, &opt, shifted, NULL), TARN_OK);

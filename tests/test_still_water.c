@@ -103,7 +103,8 @@ static double psnr_against_reference(const tarn_scene *scene, const tarn_frame_c
     const size_t bytes = 3u * config->width * config->height;
     uint8_t *reference = malloc(bytes);
     assert_non_null(reference);
-    const tarn_reference_options options = {0, TARN_SUBPIXEL_BITS_MAX, config->time_ms}; /* its finest grid */
+    const tarn_reference_options options = {.geometry = TARN_REF_CONTINUOUS, .subpixel_bits = TARN_SUBPIXEL_BITS_MAX,
+                                            .time_ms = config->time_ms};
     assert_int_equal(tarn_reference_render(scene, config->width, config->height, &options, reference, NULL), 0);
     tarn_compare_metrics m;
     tarn_compare_images(rgb, reference, NULL, NULL, config->width, config->height, &m);

@@ -12,6 +12,7 @@
 #include "scene_load.h"
 #include "backdrop.h"
 #include "static_view.h"
+#include "yardstick.h"
 
 /* Room for a sequence frame's file name: -o's name plus "-0000.png". */
 #define FRAME_PATH_MAX 4096
@@ -58,9 +59,9 @@ static void frame_free(frame_image *f)
 static int render_reference(const tarn_loaded_scene *scene, const tarn_frame_config *config,
                             int snapped, frame_image *f, tarn_error *err)
 {
-    tarn_reference_options options = {.snapped = snapped,
+    tarn_reference_options options = {.geometry = snapped ? TARN_REF_CORE_TRIANGLES : TARN_REF_CONTINUOUS,
                                       .subpixel_bits = config->quality.subpixel_bits,
-                                      .time_ms = config->time_ms};
+                                      .time_ms = config->time_ms, .quality = &config->quality};
     if (tarn_reference_render(&scene->scene, config->width, config->height, &options, f->rgb,
                               f->covered) != 0)
         return tarn_fail(err, "%s: the reference cannot render this scene at %ux%u",
@@ -173,38 +174,62 @@ int tarn_command_render(const tarn_cli_options *o)
     return run_on_scene(o, render_to_png);
 }
 
+/* The core's frame as the options draw it: with --backdrop, the water over the
+ * picture the bake would hold in flash (the same image, or within 1 for still). */
+static int render_core_frame(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+                             const tarn_frame_config *config, uint8_t *rgb, tarn_error *err)
+{
+    if (o->backdrop == TARN_BACKDROP_NONE) return tarn_core_render(&scene->scene, config, rgb, NULL, err);
+    tarn_backdrop_scene backdrop;
+    if (tarn_backdrop_scene_make(&scene->scene, config, (tarn_backdrop_kind)o->backdrop, 0, &backdrop, err) != 0)
+        return tarn_fail_in(err, o->scene_path);
+    int failed = tarn_core_render(&backdrop.water.scene, config, rgb, NULL, err);
+    tarn_backdrop_scene_free(&backdrop);
+    return failed;
+}
+
+static int write_heatmap(const char *path, const uint8_t *rgb, const tarn_continuous_reference *reference,
+                         const uint8_t *surface_differs, tarn_error *err)
+{
+    uint8_t *heat = malloc(3u * (size_t)reference->width * (size_t)reference->height);
+    if (heat == NULL) return tarn_fail(err, "out of memory for the heat-map");
+    tarn_compare_heatmap(rgb, reference->rgb, surface_differs, reference->width, reference->height, heat);
+    int written = tarn_png_write_rgb(path, heat, reference->width, reference->height, err);
+    free(heat);
+    return written;
+}
+
+/* The frame against the continuous reference and the core's own triangles
+ * (yardstick.h); --diff maps the whole error, magenta where the surface differs
+ * (`core->covered` holds that mark: compare needs no coverage of its own). The
+ * references draw the scene itself, --backdrop or not. */
 static int compare_frames(const tarn_cli_options *o, const tarn_loaded_scene *scene,
                           const tarn_frame_config *config, frame_image *core,
-                          frame_image *reference, tarn_error *err)
+                          tarn_continuous_reference *reference, tarn_error *err)
 {
+    tarn_yardstick y;
+    uint8_t *surface_differs = NULL;
     if (frame_alloc(core, config->width, config->height, err) ||
-        frame_alloc(reference, config->width, config->height, err) ||
-        tarn_core_render(&scene->scene, config, core->rgb, core->covered, err) ||
-        render_reference(scene, config, o->snapped, reference, err))
+        render_core_frame(o, scene, config, core->rgb, err) ||
+        tarn_continuous_reference_render(&scene->scene, scene->name, config->width, config->height,
+                                         config->time_ms, reference, err))
         return -1;
-    tarn_compare_metrics metrics;
-    tarn_compare_images(core->rgb, reference->rgb, core->covered, reference->covered,
-                        config->width, config->height, &metrics);
-    if (o->diff_path) {
-        uint8_t *heat = malloc(3u * (size_t)config->width * config->height);
-        if (heat == NULL) return tarn_fail(err, "out of memory for the heat-map");
-        tarn_compare_heatmap_with_coverage(core->rgb, reference->rgb, core->covered, reference->covered,
-                                           config->width, config->height, heat);
-        int written = tarn_png_write_rgb(o->diff_path, heat, config->width, config->height, err);
-        free(heat);
-        if (written != 0) return -1;
-    }
-    tarn_compare_print(stdout, scene->name, config->width, config->height, &metrics);
+    surface_differs = core->covered;
+    if (tarn_yardstick_measure(&scene->scene, scene->name, config, core->rgb, reference, &y, surface_differs, err) ||
+        (o->diff_path && write_heatmap(o->diff_path, core->rgb, reference, surface_differs, err) != 0))
+        return -1;
+    tarn_yardstick_print(stdout, scene->name, config, &y);
     return 0;
 }
 
 static int compare_with_reference(const tarn_cli_options *o, const tarn_loaded_scene *scene,
                                   const tarn_frame_config *config, tarn_error *err)
 {
-    frame_image core = {0, 0, NULL, NULL}, reference = {0, 0, NULL, NULL};
+    frame_image core = {0, 0, NULL, NULL};
+    tarn_continuous_reference reference = {NULL, NULL, 0, 0, 0};
     int failed = compare_frames(o, scene, config, &core, &reference, err);
     frame_free(&core);
-    frame_free(&reference);
+    tarn_continuous_reference_free(&reference);
     return failed ? -1 : 0;
 }
 

@@ -89,36 +89,17 @@ static void heat_colour(int error, uint8_t out[3])
         out[c] = (uint8_t)lround(lo->rgb[c] + (hi->rgb[c] - lo->rgb[c]) * s);
 }
 
-void tarn_compare_heatmap_with_coverage(const uint8_t *a, const uint8_t *b, const uint8_t *cov_a,
-                                        const uint8_t *cov_b, int w, int h, uint8_t *rgb_out)
+void tarn_compare_heatmap(const uint8_t *a, const uint8_t *b, const uint8_t *marked, int w, int h,
+                          uint8_t *rgb_out)
 {
     static const uint8_t magenta[3] = { 255, 0, 255 };
     size_t pixels = (size_t)w * h;
     for (size_t p = 0; p < pixels; p++) {
         uint8_t *out = rgb_out + 3 * p;
-        if (coverage_differs(cov_a, cov_b, p)) {
+        if (marked != NULL && marked[p] != 0) {
             for (int c = 0; c < 3; c++) out[c] = magenta[c];
         } else {
             heat_colour(pixel_error(a, b, p), out);
         }
     }
-}
-
-void tarn_compare_heatmap(const uint8_t *a, const uint8_t *b, int w, int h, uint8_t *rgb_out)
-{
-    tarn_compare_heatmap_with_coverage(a, b, NULL, NULL, w, h, rgb_out);
-}
-
-void tarn_compare_print(FILE *out, const char *scene_name, int w, int h,
-                        const tarn_compare_metrics *m)
-{
-    const char *psnr_note = m->max_channel_error == 0 ? " (identical)" : "";
-    fprintf(out,
-            "%s %dx%d: PSNR %.2f dB%s, max channel error %d, %.3f%% of pixels off by >2,"
-            " %.3f%% by >8, %ld of %ld pixels with different coverage\n",
-            scene_name, w, h, m->psnr_db, psnr_note, m->max_channel_error,
-            100.0 * m->share_over2, 100.0 * m->share_over8, m->coverage_mismatches, m->pixels);
-    fprintf(out, "compare scene=%s size=%dx%d psnr=%.2f maxerr=%d over2=%.3f%% over8=%.3f%%\n",
-            scene_name, w, h, m->psnr_db, m->max_channel_error, 100.0 * m->share_over2,
-            100.0 * m->share_over8);
 }

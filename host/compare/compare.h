@@ -26,16 +26,10 @@ void tarn_compare_images(const uint8_t *a, const uint8_t *b, const uint8_t *cov_
 
 /* Writes a width*height*3 RGB heat-map of |a - b| into rgb_out: black where equal,
  * then with the pixel's largest channel error a ramp (log scale) dark blue (1),
- * blue (2), red (8), yellow (32), white (128 and up). Pixels whose coverage differs
- * are magenta; the coverage arrays may be NULL (tarn_compare_heatmap passes NULL). */
-void tarn_compare_heatmap_with_coverage(const uint8_t *a, const uint8_t *b, const uint8_t *cov_a,
-                                        const uint8_t *cov_b, int w, int h, uint8_t *rgb_out);
-void tarn_compare_heatmap(const uint8_t *a, const uint8_t *b, int w, int h, uint8_t *rgb_out);
-
-/* Prints a human summary line, then the machine-readable line
- *   compare scene=NAME size=WxH psnr=NN.NN maxerr=N over2=P% over8=P%
- * with P a percentage to 3 decimals. */
-void tarn_compare_print(FILE *out, const char *scene_name, int w, int h,
-                        const tarn_compare_metrics *m);
+ * blue (2), red (8), yellow (32), white (128 and up). Pixels where `marked` (width*
+ * height bytes, or NULL) is non-zero are magenta: tarn compare marks those whose
+ * surface differs. */
+void tarn_compare_heatmap(const uint8_t *a, const uint8_t *b, const uint8_t *marked, int w, int h,
+                          uint8_t *rgb_out);
 
 #endif

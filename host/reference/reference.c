@@ -18,19 +18,20 @@
 #define Q8_8_SCALE 256.0
 #define FRESNEL_SCALE 32768.0 /* Q1.15 */
 
-/* Snapped positions are integers in subpixel units. Beyond 2^51 the difference of
- * two of them would stop being exact in a double. Only extreme scenes get there (a
- * vertex ~10^13 pixels off-screen: huge coordinates just past a near plane of a few
- * 1/65536); such positions are clamped, which bends those triangles' edges, so the
- * reference is not the truth for them. */
-#define SUBPIXEL_COORD_LIMIT 2251799813685248.0 /* 2^51 */
+/* The continuous geometry clips every triangle to a frustum this many pixels wider
+ * than the frame on each side: what lies beyond is never drawn, and what remains
+ * projects within 2^17 pixels, 2^25 units of the finest grid, so no vertex of a
+ * huge triangle seen through a tiny near plane lands where doubles lose the
+ * differences between points (the core's triangles are held by its guard band). */
+#define GUARD_BAND_PIXELS 65536.0
 /* Below 2^26 every edge-function product fits the 53-bit mantissa: plain double
  * arithmetic is exact and the slower accurate form is not needed. */
 #define EXACT_PRODUCT_LIMIT 67108864.0 /* 2^26 */
 
 /* A vertex as the rasterizer sees it: everything interpolated across a triangle. */
 typedef struct {
-    double x, y;      /* snapped screen position, subpixel units (integer-valued) */
+    double x, y;      /* screen position, subpixel units (integer-valued but in the
+                         continuous geometry) */
     double inv_depth; /* near/d: linear in screen space, the perspective weight */
     double lit[3];    /* lit colour per channel, 0..255 */
     double uv[2];     /* texture coordinates, 1.0 = one texture width / height */
@@ -49,8 +50,10 @@ typedef struct {
 typedef struct {
     int width, height;
     double subpixel_unit; /* 2^subpixel_bits: subpixel units per pixel */
+    int continuous;       /* positions off the grid: no edge value is exact in doubles */
     uint8_t *rgb;
-    uint8_t *covered; /* may be NULL */
+    uint32_t *surface; /* 0, or 1 + the object's index: what each pixel shows */
+    const tarn_object *objects; /* the scene's, to name a pixel's surface */
     double *depth;    /* near/d per pixel in Q1.30 units, rounded; 0 = nothing drawn */
     double *inv_depth; /* near/d per pixel as interpolated, unrounded; 0 = nothing drawn */
     double near, far;  /* the camera's, world units */
@@ -252,7 +255,7 @@ static void draw_pixel(ref_target *t, int i, int j, const ref_screen_vertex v[3]
         shade_water(t, obj, i, j, &px, t->rgb + 3 * p);
     else
         shade_opaque(&px, obj->material->texture, t->rgb + 3 * p);
-    if (t->covered != NULL) t->covered[p] = 1;
+    t->surface[p] = (uint32_t)(obj - t->objects) + 1u;
 }
 
 /* Draws one triangle with the top-left rule, perspective-correct attributes and
@@ -261,7 +264,7 @@ static void rasterize_triangle(ref_target *t, const ref_screen_vertex in[3],
                                const tarn_object *obj)
 {
     ref_edge first = make_edge(&in[0], &in[1]);
-    int exact = within_exact_range(in, t);
+    int exact = !t->continuous && within_exact_range(in, t);
     double signed_area = edge_value(&first, in[2].x, in[2].y, exact);
     int area_sign = (signed_area > 0) - (signed_area < 0);
     if (area_sign == 0 || !is_drawn_side(area_sign, obj->material->cull)) return;
@@ -361,30 +364,60 @@ static ref_view_vertex lerp_view_vertex(const ref_view_vertex *a, const ref_view
     return r;
 }
 
-#define CLIP_MAX_VERTICES 5 /* a triangle cut by two parallel planes */
+/* A clipping plane in view space: a point is kept where n . view + offset >= 0. */
+typedef struct {
+    double n[3], offset;
+} ref_clip_plane;
 
-/* Sutherland-Hodgman against one depth plane: keeps side * (d - plane) >= 0, where
- * side is +1 for the near plane and -1 for the far plane. Returns the new count. */
-static int clip_polygon_at_depth(const ref_view_vertex *in, int count, double plane, double side,
-                                 ref_view_vertex *out)
+#define CLIP_PLANES 6
+#define CLIP_MAX_VERTICES (3 + CLIP_PLANES) /* each plane adds at most one vertex */
+
+static double plane_distance(const ref_clip_plane *plane, const ref_view_vertex *v)
 {
+    return plane->n[0] * v->view[0] + plane->n[1] * v->view[1] + plane->n[2] * v->view[2] + plane->offset;
+}
+
+/* Sutherland-Hodgman against one plane. Returns the new count. A vertex cut on the
+ * near or far plane gets that depth exactly, whatever the rounding. */
+static int clip_polygon(const ref_view_vertex *in, int count, const ref_clip_plane *plane,
+                        ref_view_vertex *out)
+{
+    int depth_plane = plane->n[0] == 0 && plane->n[1] == 0;
     int n = 0;
     for (int i = 0; i < count; i++) {
         const ref_view_vertex *a = &in[i], *b = &in[(i + 1) % count];
-        double da = side * (a->view[2] - plane), db = side * (b->view[2] - plane);
+        double da = plane_distance(plane, a), db = plane_distance(plane, b);
         if (da >= 0) out[n++] = *a;
         if ((da >= 0) != (db >= 0)) {
             out[n] = lerp_view_vertex(a, b, da / (da - db));
-            out[n++].view[2] = plane; /* exactly on the plane, whatever the rounding */
+            if (depth_plane) out[n].view[2] = -plane->offset / plane->n[2];
+            n++;
         }
     }
     return n;
 }
 
-static double snap_to_subpixels(double pixels, double unit)
+/* Near and far, then the guard frustum: screen x = width/2 + x focal / d within
+ * [-G, width + G] is x focal + (width/2 + G) d >= 0 and -x focal + (width/2 + G) d
+ * >= 0, and the same for y. */
+static void clip_planes_make(const tarn_ref_camera *cam, const ref_target *t, ref_clip_plane planes[CLIP_PLANES])
 {
-    double s = round(pixels * unit); /* nearest, ties away from zero */
-    return fmax(-SUBPIXEL_COORD_LIMIT, fmin(SUBPIXEL_COORD_LIMIT, s));
+    double reach_x = t->width / 2.0 + GUARD_BAND_PIXELS, reach_y = t->height / 2.0 + GUARD_BAND_PIXELS;
+    const ref_clip_plane all[CLIP_PLANES] = {
+        { { 0, 0, 1 }, -cam->near },
+        { { 0, 0, -1 }, cam->far },
+        { { cam->focal, 0, reach_x }, 0 },
+        { { -cam->focal, 0, reach_x }, 0 },
+        { { 0, cam->focal, reach_y }, 0 },
+        { { 0, -cam->focal, reach_y }, 0 },
+    };
+    memcpy(planes, all, sizeof all);
+}
+
+/* Off any grid: the position as it falls, in units of the finest grid. */
+static double screen_coordinate(double pixels, const ref_target *t)
+{
+    return pixels * t->subpixel_unit;
 }
 
 static ref_screen_vertex project(const ref_view_vertex *v, const tarn_ref_camera *cam,
@@ -392,8 +425,8 @@ static ref_screen_vertex project(const ref_view_vertex *v, const tarn_ref_camera
 {
     ref_screen_vertex s;
     double d = v->view[2];
-    s.x = snap_to_subpixels(t->width / 2.0 + v->view[0] * cam->focal / d, t->subpixel_unit);
-    s.y = snap_to_subpixels(t->height / 2.0 - v->view[1] * cam->focal / d, t->subpixel_unit);
+    s.x = screen_coordinate(t->width / 2.0 + v->view[0] * cam->focal / d, t);
+    s.y = screen_coordinate(t->height / 2.0 - v->view[1] * cam->focal / d, t);
     s.inv_depth = cam->near / d;
     memcpy(s.lit, v->lit, sizeof s.lit);
     memcpy(s.uv, v->uv, sizeof s.uv);
@@ -404,9 +437,13 @@ static ref_screen_vertex project(const ref_view_vertex *v, const tarn_ref_camera
 static void draw_view_triangle(ref_target *t, const tarn_ref_camera *cam, const ref_view_vertex tri[3],
                                const tarn_object *obj)
 {
-    ref_view_vertex near_clipped[CLIP_MAX_VERTICES], clipped[CLIP_MAX_VERTICES];
-    int n = clip_polygon_at_depth(tri, 3, cam->near, 1.0, near_clipped);
-    n = clip_polygon_at_depth(near_clipped, n, cam->far, -1.0, clipped);
+    ref_clip_plane planes[CLIP_PLANES];
+    clip_planes_make(cam, t, planes);
+    ref_view_vertex polygon[2][CLIP_MAX_VERTICES];
+    memcpy(polygon[0], tri, 3 * sizeof *tri);
+    int n = 3;
+    for (int k = 0; k < CLIP_PLANES && n > 0; k++) n = clip_polygon(polygon[k & 1], n, &planes[k], polygon[(k + 1) & 1]);
+    const ref_view_vertex *clipped = polygon[CLIP_PLANES & 1];
     ref_screen_vertex screen[CLIP_MAX_VERTICES];
     for (int i = 0; i < n; i++) screen[i] = project(&clipped[i], cam, t);
     for (int i = 1; i + 1 < n; i++) {
@@ -467,15 +504,15 @@ static void visit_core_triangle(void *user, const tarn_screen_vertex vertex[3],
 
 /* The visitor is walked once per pass and keeps that pass's objects, so the
  * passes hold whatever order the core visits them in. */
-static int render_snapped(const tarn_scene *scene, ref_target *t, int subpixel_bits,
+static int render_snapped(const tarn_scene *scene, ref_target *t, const tarn_reference_options *opt,
                           int water_pass)
 {
     tarn_frame_config config = {
         .width = (uint16_t)t->width,
         .height = (uint16_t)t->height,
-        .quality = tarn_quality_default(),
+        .quality = opt->quality != NULL ? *opt->quality : tarn_quality_default(),
     };
-    config.quality.subpixel_bits = (uint8_t)subpixel_bits;
+    config.quality.subpixel_bits = (uint8_t)opt->subpixel_bits;
     snapped_pass pass = { t, water_pass };
     return (int)tarn_visit_screen_triangles(scene, &config, visit_core_triangle, &pass);
 }
@@ -483,7 +520,7 @@ static int render_snapped(const tarn_scene *scene, ref_target *t, int subpixel_b
 static int render_pass(const tarn_scene *scene, ref_target *t, const tarn_reference_options *opt,
                        int water_pass)
 {
-    if (opt->snapped) return render_snapped(scene, t, opt->subpixel_bits, water_pass);
+    if (opt->geometry == TARN_REF_CORE_TRIANGLES) return render_snapped(scene, t, opt, water_pass);
     render_unsnapped(scene, t, water_pass);
     return TARN_OK;
 }
@@ -572,7 +609,7 @@ static void clear_target(ref_target *t, uint32_t background)
         t->depth[p] = 0.0;
         t->inv_depth[p] = 0.0;
     }
-    if (t->covered != NULL) memset(t->covered, 0, pixels);
+    memset(t->surface, 0, pixels * sizeof *t->surface);
 }
 
 /* Opaque objects, then water over them, then the underwater view. */
@@ -585,19 +622,29 @@ static int render_frame(const tarn_scene *scene, ref_target *t, const tarn_refer
     return status;
 }
 
-int tarn_reference_render(const tarn_scene *scene, int width, int height,
-                          const tarn_reference_options *opt, uint8_t *rgb, uint8_t *covered)
+static int options_are_valid(const tarn_reference_options *opt, int width, int height)
 {
-    if (opt == NULL || rgb == NULL || width < 1 || height < 1 || width > (int)TARN_FRAME_SIZE_MAX
-        || height > (int)TARN_FRAME_SIZE_MAX || opt->subpixel_bits < (int)TARN_SUBPIXEL_BITS_MIN
-        || opt->subpixel_bits > (int)TARN_SUBPIXEL_BITS_MAX)
-        return TARN_ERR_CONFIG;
+    return opt != NULL && width >= 1 && height >= 1 && width <= (int)TARN_FRAME_SIZE_MAX
+           && height <= (int)TARN_FRAME_SIZE_MAX && opt->subpixel_bits >= (int)TARN_SUBPIXEL_BITS_MIN
+           && opt->subpixel_bits <= (int)TARN_SUBPIXEL_BITS_MAX
+           && (opt->geometry == TARN_REF_CONTINUOUS || opt->geometry == TARN_REF_CORE_TRIANGLES);
+}
+
+/* The continuous geometry keeps positions in subpixel units of the finest grid
+ * only so that the rasterizer reads one unit; nothing is rounded to it. */
+int tarn_reference_render_surfaces(const tarn_scene *scene, int width, int height,
+                                   const tarn_reference_options *opt, uint8_t *rgb,
+                                   uint32_t *surface)
+{
+    if (rgb == NULL || surface == NULL || !options_are_valid(opt, width, height)) return TARN_ERR_CONFIG;
     if (!scene_is_valid(scene)) return TARN_ERR_SCENE;
 
     size_t pixels = (size_t)width * height;
+    int continuous = opt->geometry == TARN_REF_CONTINUOUS;
     ref_target t = {
-        .width = width, .height = height, .subpixel_unit = ldexp(1.0, opt->subpixel_bits),
-        .rgb = rgb, .covered = covered,
+        .width = width, .height = height,
+        .subpixel_unit = ldexp(1.0, continuous ? (int)TARN_SUBPIXEL_BITS_MAX : opt->subpixel_bits),
+        .continuous = continuous, .rgb = rgb, .surface = surface, .objects = scene->objects,
         .depth = malloc(pixels * sizeof *t.depth),
         .inv_depth = malloc(pixels * sizeof *t.inv_depth),
         .near = scene->camera.near / Q16_SCALE, .far = scene->camera.far / Q16_SCALE,
@@ -606,5 +653,20 @@ int tarn_reference_render(const tarn_scene *scene, int width, int height,
     if (t.depth != NULL && t.inv_depth != NULL) status = render_frame(scene, &t, opt);
     free(t.depth);
     free(t.inv_depth);
+    return status;
+}
+
+int tarn_reference_render(const tarn_scene *scene, int width, int height,
+                          const tarn_reference_options *opt, uint8_t *rgb, uint8_t *covered)
+{
+    if (width < 1 || height < 1 || width > (int)TARN_FRAME_SIZE_MAX || height > (int)TARN_FRAME_SIZE_MAX)
+        return TARN_ERR_CONFIG;
+    size_t pixels = (size_t)width * height;
+    uint32_t *surface = malloc(pixels * sizeof *surface);
+    if (surface == NULL) return TARN_ERR_MEMORY;
+    int status = tarn_reference_render_surfaces(scene, width, height, opt, rgb, surface);
+    if (status == TARN_OK && covered != NULL)
+        for (size_t p = 0; p < pixels; p++) covered[p] = surface[p] != 0;
+    free(surface);
     return status;
 }

@@ -158,9 +158,11 @@ static void print_presets(const tarn_sweep_scene *scene, const tarn_sweep_source
     for (size_t i = 0; i < scene->count; i++) {
         const tarn_sweep_point *p = &scene->points[i];
         if (p->preset == NULL) continue;
-        printf("preset scene=%s name=%s psnr=%.2f maxerr=%d over2=%.3f%% over8=%.3f%%", scene->name, p->preset,
-               p->error.psnr_db, p->error.max_channel_error, 100.0 * p->error.share_over2,
-               100.0 * p->error.share_over8);
+        printf("preset scene=%s name=%s psnr=%.2f maxerr=%d over2=%.3f%% over8=%.3f%% shading_psnr=%.2f "
+               "shading_over2=%.3f%% panel_psnr=%.2f coverage=%.3f%%", scene->name, p->preset,
+               p->error.whole.psnr_db, p->error.whole.max_channel_error, 100.0 * p->error.whole.share_over2,
+               100.0 * p->error.whole.share_over8, p->error.shading.psnr_db, 100.0 * p->error.shading.share_over2,
+               p->error.panel_psnr_db, 100.0 * p->error.coverage_share);
         for (size_t s = 0; s < sources->count; s++)
             if (p->cost[s] >= 0) printf(" %s=%.0f", sources->names[s], p->cost[s]);
         printf("\n");

@@ -19,7 +19,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include "compare.h"
+#include "yardstick.h"
 #include "error.h"
 #include "tarn/tarn_render.h"
 
@@ -29,9 +29,7 @@
 typedef struct {
     tarn_quality quality;
     const char *preset;            /* "fast", "balanced", "exact", or NULL */
-    tarn_compare_metrics error;    /* against the float reference */
-    tarn_compare_metrics panel[2]; /* the frame as an RGB565 panel shows it, without and
-                                      with ordered dither, against the same reference */
+    tarn_yardstick error;          /* whole, shading and panel errors (yardstick.h) */
     uint32_t checksum;             /* tarn_checksum of the host's frame */
     double exp2_max_lsb;           /* the exp2 knob's own largest error (tarn_math) */
     double recip_max_rel;          /* the reciprocal's largest relative error */

@@ -16,7 +16,7 @@ static int by_cost_then_error(const void *a, const void *b)
     const tarn_sweep_point *q = &order.scene->points[*(const size_t *)b];
     const double cp = p->cost[order.source], cq = q->cost[order.source];
     if (cp != cq) return cp < cq ? -1 : 1;
-    if (p->error.psnr_db != q->error.psnr_db) return p->error.psnr_db > q->error.psnr_db ? -1 : 1;
+    if (p->error.whole.psnr_db != q->error.whole.psnr_db) return p->error.whole.psnr_db > q->error.whole.psnr_db ? -1 : 1;
     return 0;
 }
 
@@ -31,7 +31,7 @@ size_t tarn_sweep_front(const tarn_sweep_scene *scene, size_t source, size_t *fr
     size_t kept = 0;
     double best = -1.0;
     for (size_t k = 0; k < measured; k++) {
-        const double psnr = scene->points[front[k]].error.psnr_db;
+        const double psnr = scene->points[front[k]].error.whole.psnr_db;
         if (psnr > best) {
             best = psnr;
             front[kept++] = front[k];

@@ -30,8 +30,8 @@ static int close_written(FILE *f, const char *path, tarn_error *err)
 static void csv_header(FILE *f, const tarn_sweep_sources *sources)
 {
     fprintf(f, "scene,preset,perspective,recip_steps,depth_bits,apron,exp2_entries,exp2_mode,fog_bits,"
-               "subpixel_bits,tile,bins,water_block,depth_interpolation,psnr_db,max_error,over2_pct,over8_pct,coverage_mismatches,"
-               "exp2_max_lsb,recip_max_rel,rgb565_psnr_db,rgb565_dither_psnr_db");
+               "subpixel_bits,tile,bins,water_block,depth_interpolation,psnr_db,max_error,over2_pct,over8_pct,"
+               "shading_psnr_db,shading_over2_pct,panel_psnr_db,coverage_pct,exp2_max_lsb,recip_max_rel");
     for (size_t s = 0; s < sources->count; s++)
         fprintf(f, ",%s_insn_per_pixel,%s_tile", sources->names[s], sources->names[s]);
     for (size_t s = 1; s < sources->count; s++)
@@ -44,15 +44,15 @@ static void csv_row(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_poi
 {
     const tarn_quality *q = &p->quality;
     char span[16], apron[16], options[TARN_SWEEP_OPTIONS_MAX];
-    fprintf(f, "%s,%s,%s,%u,%u,%s,%u,%s,%u,%u,%u,%s,%u,%s,%.2f,%d,%.3f,%.3f,%ld,%.2f,%.3g", scene->name,
+    fprintf(f, "%s,%s,%s,%u,%u,%s,%u,%s,%u,%u,%u,%s,%u,%s,%.2f,%d,%.3f,%.3f,%.2f,%.3f,%.2f,%.3f,%.2f,%.3g", scene->name,
             p->preset ? p->preset : "", tarn_sweep_perspective_text(q, span, sizeof span),
             (unsigned)q->recip_newton_steps, (unsigned)q->depth_bits, tarn_sweep_apron_text(q, apron, sizeof apron),
             (unsigned)q->exp2.entries, q->exp2.interpolate ? "linear" : "nearest", (unsigned)q->fog_argument_bits,
             (unsigned)q->subpixel_bits, (unsigned)q->tile_size, q->cluster_bins ? "on" : "off",
-            (unsigned)q->water_block, tarn_sweep_depth_text(q), p->error.psnr_db,
-            p->error.max_channel_error, 100.0 * p->error.share_over2, 100.0 * p->error.share_over8,
-            p->error.coverage_mismatches, p->exp2_max_lsb, p->recip_max_rel);
-    fprintf(f, ",%.2f,%.2f", p->panel[0].psnr_db, p->panel[1].psnr_db);
+            (unsigned)q->water_block, tarn_sweep_depth_text(q), p->error.whole.psnr_db,
+            p->error.whole.max_channel_error, 100.0 * p->error.whole.share_over2, 100.0 * p->error.whole.share_over8,
+            p->error.shading.psnr_db, 100.0 * p->error.shading.share_over2, p->error.panel_psnr_db,
+            100.0 * p->error.coverage_share, p->exp2_max_lsb, p->recip_max_rel);
     for (size_t s = 0; s < sources->count; s++) {
         if (p->cost[s] < 0) fprintf(f, ",,");
         else fprintf(f, ",%.0f,%u", p->cost[s], (unsigned)(s == 0 ? q->tile_size : p->tile[s]));
@@ -82,10 +82,15 @@ static void cost_cell(FILE *f, const tarn_sweep_point *p, size_t source)
     else fprintf(f, " %.0f (tile %u) |", p->cost[source], (unsigned)p->tile[source]);
 }
 
-static void error_cells(FILE *f, const tarn_compare_metrics *m)
+#define ERROR_COLUMNS "| PSNR dB | max error | >2 | >8 | shading dB | shading >2 | panel dB | coverage |"
+#define ERROR_RULE "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+
+/* The yardstick's numbers, in ERROR_COLUMNS order. */
+static void error_cells(FILE *f, const tarn_yardstick *y)
 {
-    fprintf(f, " %.2f | %d | %.3f%% | %.3f%% |", m->psnr_db, m->max_channel_error, 100.0 * m->share_over2,
-            100.0 * m->share_over8);
+    fprintf(f, " %.2f | %d | %.3f%% | %.3f%% | %.2f | %.3f%% | %.2f | %.3f%% |", y->whole.psnr_db,
+            y->whole.max_channel_error, 100.0 * y->whole.share_over2, 100.0 * y->whole.share_over8,
+            y->shading.psnr_db, 100.0 * y->shading.share_over2, y->panel_psnr_db, 100.0 * y->coverage_share);
 }
 
 /* A table's header: its own columns, then one a source from `first` on. */
@@ -101,8 +106,7 @@ static void header_with_sources(FILE *f, const char *columns, const char *rule, 
 
 static void preset_table(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_sources *sources)
 {
-    header_with_sources(f, "| preset | PSNR dB | max error | >2 | >8 |", "| --- | ---: | ---: | ---: | ---: |", sources,
-                        0, "insn/px");
+    header_with_sources(f, "| preset " ERROR_COLUMNS, "| --- " ERROR_RULE, sources, 0, "insn/px");
     for (size_t i = 0; i < scene->count; i++) {
         const tarn_sweep_point *p = &scene->points[i];
         if (p->preset == NULL) continue;
@@ -113,18 +117,16 @@ static void preset_table(FILE *f, const tarn_sweep_scene *scene, const tarn_swee
     }
 }
 
-/* What the panel shows of each preset: RGB565 without and with ordered dither,
- * and what the conversion costs each board. */
+/* What each board spends converting a frame to the panel's RGB565. */
 static void panel_table(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_sources *sources)
 {
-    fprintf(f, "\nOn an RGB565 panel (`tarn_rgb565`, as the firmware sends it):\n\n");
-    header_with_sources(f, "| preset | dither | PSNR dB | max error | >2 | >8 |", "| --- | --- | ---: | ---: | ---: | ---: |",
-                        sources, 1, "conversion insn/px");
+    if (sources->count < 2) return;
+    fprintf(f, "\nThe RGB565 conversion (`tarn_rgb565`, as the firmware sends it):\n\n");
+    header_with_sources(f, "| preset | dither |", "| --- | --- |", sources, 1, "conversion insn/px");
     for (size_t i = 0; i < scene->count; i++) {
         const tarn_sweep_point *p = &scene->points[i];
         for (int dither = 0; dither < 2 && p->preset != NULL; dither++) {
             fprintf(f, "| `%s` | %s |", p->preset, dither ? "ordered 4x4" : "none");
-            error_cells(f, &p->panel[dither]);
             for (size_t s = 1; s < sources->count; s++) {
                 if (p->convert[s][dither] < 0) fprintf(f, " does not fit |");
                 else fprintf(f, " %.0f |", p->convert[s][dither]);
@@ -143,8 +145,7 @@ static void front_table(FILE *f, const tarn_sweep_scene *scene, size_t source, c
     const size_t n = tarn_sweep_front(scene, source, front);
     fprintf(f, "\n### %s on %s: %zu of %zu points measured, %zu on the front\n\n", scene->name, name, measured,
             scene->count, n);
-    fprintf(f, "| insn/px | PSNR dB | max error | >2 | >8 | knobs | preset |\n"
-               "| ---: | ---: | ---: | ---: | ---: | --- | --- |\n");
+    fprintf(f, "| insn/px " ERROR_COLUMNS " knobs | preset |\n| ---: " ERROR_RULE " --- | --- |\n");
     for (size_t k = 0; k < n; k++) {
         const tarn_sweep_point *p = &scene->points[front[k]];
         char options[TARN_SWEEP_OPTIONS_MAX];
@@ -176,15 +177,15 @@ void tarn_sweep_write_fronts(FILE *f, const tarn_sweep_scene *scenes, size_t sce
  * step of the plot's PSNR range apart, so that neighbours do not overwrite. */
 static double label_height(const tarn_sweep_scene *scene, size_t source, const tarn_sweep_point *p)
 {
-    double low = p->error.psnr_db, high = p->error.psnr_db;
+    double low = p->error.whole.psnr_db, high = p->error.whole.psnr_db;
     for (size_t i = 0; i < scene->count; i++) {
         if (scene->points[i].cost[source] < 0) continue;
-        if (scene->points[i].error.psnr_db < low) low = scene->points[i].error.psnr_db;
-        if (scene->points[i].error.psnr_db > high) high = scene->points[i].error.psnr_db;
+        if (scene->points[i].error.whole.psnr_db < low) low = scene->points[i].error.whole.psnr_db;
+        if (scene->points[i].error.whole.psnr_db > high) high = scene->points[i].error.whole.psnr_db;
     }
     const double step = (high - low) * 0.06 + 0.3;
     const int place = strcmp(p->preset, "fast") == 0 ? -1 : (strcmp(p->preset, "balanced") == 0 ? 1 : 2);
-    return p->error.psnr_db + place * step;
+    return p->error.whole.psnr_db + place * step;
 }
 
 /* Three data files a source: every point, the front, the presets (with their
@@ -210,10 +211,10 @@ static int write_plot_data(const char *work_dir, const tarn_sweep_scene *scene, 
             const tarn_sweep_point *p = &scene->points[kind == 1 ? front[r] : r];
             if (p->cost[source] < 0 || (kind == 2 && p->preset == NULL)) continue;
             if (kind == 2)
-                fprintf(f, "%.1f %.2f %s %.2f\n", p->cost[source], p->error.psnr_db, p->preset,
+                fprintf(f, "%.1f %.2f %s %.2f\n", p->cost[source], p->error.whole.psnr_db, p->preset,
                         label_height(scene, source, p));
             else
-                fprintf(f, "%.1f %.2f\n", p->cost[source], p->error.psnr_db);
+                fprintf(f, "%.1f %.2f\n", p->cost[source], p->error.whole.psnr_db);
         }
         failed = close_written(f, path, err);
     }
