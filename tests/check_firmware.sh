@@ -5,13 +5,14 @@
 #   tests/check_firmware.sh --bench BOARD...  one line per board (make bench-target):
 #     target board=B scene=S size=WxH insn_per_pixel=N ram_bytes=N flash_bytes=N
 #            stack_bytes=N render_insn_per_pixel=N scene_bytes=N code_bytes=N
-#            stack_peak_bytes=N stack_reserved_bytes=N
+#            stack_peak_bytes=N stack_reserved_bytes=N panel_psnr=NN.NN
 #
 # ram_bytes: .data + .bss + the stack reserved by the linker script; flash_bytes:
 # .text + .data (the image); scene_bytes: the baked scene's const data (symbols
 # scene_*), code_bytes the rest of the image; stack_bytes: the deepest call chain
 # GCC's call graphs allow (firmware/stack_bound.sh), stack_peak_bytes what the run
-# really used (startup paints the stack).
+# really used (startup paints the stack); panel_psnr the board's frame on the
+# yardstick (tarn compare: the panel error, RGB565 with the ordered dither).
 #
 # Checks, per board: the run finished and reported; the board's counter measured a
 # loop of known length within 0.01%; the stack bound and the measured peak fit the
@@ -33,6 +34,16 @@ field() { # field NAME TEXT: the value of NAME=value in a line of words
     printf '%s\n' "$2" | tr ' ' '\n' | sed -n "s/^$1=//p" | head -1
 }
 conf() { sed -n "s/^$1=//p" "$dir/firmware.conf"; }
+# The board's own frame (its scene and bake's quality, at its second frame's time:
+# the panel stream is the host's frame byte for byte, tests/test_firmware.c) on the
+# yardstick's panel error: what the board's user sees of the arithmetic.
+board_panel_psnr() {
+    flags=$(conf bake_flags | sed 's/--static-view [a-z]*//')
+    second=$(conf times | cut -d, -f2)
+    # shellcheck disable=SC2086
+    line=$("${TARN_BIN:-build/release/tarn}" compare "$(conf scene)" $flags --time "$second") || { echo none; return; }
+    field panel_psnr "$line"
+}
 
 for board in "$@"; do
     dir=build/firmware/$board
@@ -78,7 +89,8 @@ for board in "$@"; do
         echo "target board=$board scene=$(field scene "$report") size=$(field size "$report")" \
             "insn_per_pixel=$(field insn_per_pixel "$report") ram_bytes=$ram flash_bytes=$flash" \
             "stack_bytes=$stack render_insn_per_pixel=$(field render_insn_per_pixel "$report")" \
-            "scene_bytes=$scene_bytes code_bytes=$code stack_peak_bytes=$peak stack_reserved_bytes=$reserved"
+            "scene_bytes=$scene_bytes code_bytes=$code stack_peak_bytes=$peak stack_reserved_bytes=$reserved" \
+            "panel_psnr=$(board_panel_psnr)"
         continue
     fi
 
