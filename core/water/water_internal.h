@@ -38,7 +38,7 @@ typedef struct tarn_water_context {
     unsigned fog_argument_bits;
     unsigned recip_steps;
 
-    uint16_t pan_a[2], pan_b[2], foam_pan[2]; /* Q0.16 offsets of the panning textures */
+    uint32_t pan_a[2], pan_b[2], foam_pan[2]; /* Q0.32 offsets of the panning textures */
     uint16_t foam_phase;        /* time * foam_line_speed, Q0.16 turns of the band */
     int32_t half_vector[3];     /* Q1.15, in the object's tangent frame (u, v, up) */
     uint32_t light_q8[3];       /* light colour, Q8.8 per channel */
@@ -87,7 +87,12 @@ void tarn__water_context_setup(tarn_water_context *w, const tarn_view *view,
 typedef struct {
     uint32_t inv_depth; /* the water surface's near/d, Q1.30 */
     uint32_t lit[3];    /* material colour times shade, Q8.8 */
-    uint32_t u, v;      /* texture coordinates, Q16.16 modulo 2^16 repeats */
+    uint32_t u, v;      /* texture coordinates, Q16.16 modulo 2^16 repeats, floored */
+    uint32_t u_fine, v_fine; /* their next 8 fraction bits (0..255): u + u_fine / 2^8 is
+                          Q16.24. The panned maps multiply u by their scale and then by
+                          their size in texels, so a Q16.16 step would be up to a
+                          hundredth of a texel there, and flip the texel of whole rows
+                          of pixels that lie near a texel edge */
     uint32_t fresnel;   /* saturate(1 - n.v)^2, Q1.15 */
 } tarn_water_input;
 
@@ -98,13 +103,15 @@ uint32_t tarn__water_mul_q16(uint32_t a, uint32_t b);
  * to `bits` fraction bits (tarn_quality.fog_argument_bits; 16 keeps it whole),
  * saturated like tarn__water_mul_q16. */
 uint32_t tarn__fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits);
-/* (a * b / 2^16) modulo 2^16: the fraction of a texture repeat, for any a. Only low
- * bits matter, so 16x16-bit products suffice, and negative or wrapped inputs give
- * the right fraction too. Inline: it runs four times a water pixel. */
-static inline uint32_t tarn__water_repeat_fraction(uint32_t a, uint32_t b)
+/* The fraction of a texture repeat at u * scale, Q0.32: u Q16.16 with `fine` its
+ * next 8 fraction bits, scale Q16.16. The product of two Q16.16 numbers is Q32.32,
+ * and its low 32 bits, all a 32-bit product keeps, are exactly its fraction: whole
+ * repeats drop out, and negative or wrapped inputs give the right fraction too. The
+ * fine bits add fine * scale / 2^8, split so that no product passes 32 bits.
+ * Inline: it runs up to six times a water pixel. */
+static inline uint32_t tarn__water_repeat_fraction(uint32_t u, uint32_t fine, uint32_t scale)
 {
-    const uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
-    return (ah * bl + al * bh + ((al * bl) >> 16)) & 0xFFFFu;
+    return u * scale + fine * (scale >> 8) + ((fine * (scale & 0xFFu)) >> 8);
 }
 /* A texel channel as a normal component, (2c - 255) / 255 in Q1.15. */
 static inline int32_t tarn__water_normal_component(uint8_t c)
@@ -115,8 +122,8 @@ static inline int32_t tarn__water_normal_component(uint8_t c)
 const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction);
 /* near / (iz / 2^30) in Q16.16 world units, saturated; `far` for iz 0. */
 uint32_t tarn__water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps);
-/* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.16. */
-uint16_t tarn__water_pan_offset(tarn_q16 speed, uint32_t time_ms);
+/* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.32, floored. */
+uint32_t tarn__water_pan_offset(tarn_q16 speed, uint32_t time_ms);
 
 /* What the water does to the background of one pixel: every step of tarn_water.h
  * but the background's colour, gathered so that the pixel's colour is one product
@@ -224,11 +231,11 @@ static inline uint32_t tarn__water_channel_q8(uint32_t rgb, int c)
 
 /* The texel of a panning texture under the pixel's uv, at the frame's pan offset. */
 static inline const uint8_t *tarn__water_panned_texel(const tarn_texture *t, const tarn_panning *pan,
-                                                     const uint16_t offset[2], const tarn_water_input *in)
+                                                     const uint32_t offset[2], const tarn_water_input *in)
 {
-    uint32_t u = (tarn__water_repeat_fraction(in->u, (uint32_t)pan->scale) + offset[0]) & 0xFFFFu;
-    uint32_t v = (tarn__water_repeat_fraction(in->v, (uint32_t)pan->scale) + offset[1]) & 0xFFFFu;
-    return tarn__water_texel_at(t, u, v);
+    const uint32_t u = tarn__water_repeat_fraction(in->u, in->u_fine, (uint32_t)pan->scale) + offset[0];
+    const uint32_t v = tarn__water_repeat_fraction(in->v, in->v_fine, (uint32_t)pan->scale) + offset[1];
+    return tarn__water_texel_at(t, u >> 16, v >> 16); /* the texel's floor needs no more */
 }
 
 /* 2^(-rate * x) for rate, x >= 0 (Q16.16), Q0.16, through the frame's exp2 table. */

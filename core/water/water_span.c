@@ -4,11 +4,12 @@
  * top-left pixel found (tarn_water_block). */
 #include "water/water_internal.h"
 
-/* T / 2^shift rounded to nearest: the water's panned maps multiply u and v by
- * their scale, which would multiply a truncation's bias too. */
-static uint32_t rounded_shift(uint32_t t, unsigned shift)
+/* A texture coordinate's T value (Q16.16 times 2^shift, less whole repeats) as
+ * Q16.16 and its next 8 fraction bits. */
+static void coordinate_of(uint32_t t, unsigned shift, uint32_t base, uint32_t *q16, uint32_t *fine)
 {
-    return shift == 0u ? t : (t + (1u << (shift - 1u))) >> shift;
+    *q16 = (t >> shift) + base;
+    *fine = (shift >= 8u ? t >> (shift - 8u) : t << (8u - shift)) & 0xFFu;
 }
 
 /* The water pixel's inputs from the interpolated attributes. */
@@ -18,8 +19,8 @@ static tarn_water_input water_input(const tarn_attribute_set *set, const uint32_
     tarn_water_input in;
     in.inv_depth = inv_depth;
     for (int c = 0; c < 3; c++) in.lit[c] = values[c] >> set->t_shift[c];
-    in.u = rounded_shift(values[TARN_ATTRIBUTE_U], set->t_shift[TARN_ATTRIBUTE_U]) + set->u_base;
-    in.v = rounded_shift(values[TARN_ATTRIBUTE_V], set->t_shift[TARN_ATTRIBUTE_V]) + set->v_base;
+    coordinate_of(values[TARN_ATTRIBUTE_U], set->t_shift[TARN_ATTRIBUTE_U], set->u_base, &in.u, &in.u_fine);
+    coordinate_of(values[TARN_ATTRIBUTE_V], set->t_shift[TARN_ATTRIBUTE_V], set->v_base, &in.v, &in.v_fine);
     in.fresnel = set->count > TARN_ATTRIBUTE_FRESNEL ? values[TARN_ATTRIBUTE_FRESNEL] >> set->t_shift[TARN_ATTRIBUTE_FRESNEL] : 0u;
     return in;
 }
