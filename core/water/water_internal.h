@@ -267,6 +267,11 @@ static inline tarn_water_normal tarn__water_flat_normal(void)
     return n;
 }
 
+/* Step 1's direction at the pixel from the maps' texel codes, in units of
+ * 1 / (2^16 * 255): strength * (a.xy + b.xy) exactly, a.z * b.z to half a unit,
+ * each below 2^28; (0, 0, 2^16 * 255) without maps. Refraction scales N by tens of
+ * pixels and rounds, so it normalises this, not tarn_water_normal's 14 bits. */
+void tarn__water_exact_direction(const tarn_water_context *w, const tarn_water_input *in, int32_t out[3]);
 /* N from its direction, in place; nothing when it is N already. */
 void tarn__water_normalise(tarn_water_normal *n);
 
@@ -316,9 +321,12 @@ tarn_water_normal tarn__water_surface_normal(const tarn_water_context *w, const 
  * normal with them. */
 tarn_water_normal tarn__water_map_x(const tarn_water_context *w, const tarn_water_input *in);
 /* Step 2 (water_refraction.c, TARN_WATER_REFRACTION): the refracted sample, or `own`
- * (the pixel's background) where the refracted one would lie in front of the water. */
+ * (the pixel's background) where the refracted one would lie in front of the water.
+ * `n` (the direction step 1 found) is normalised for the steps after; the shift is
+ * found from the maps' texels again, exactly (tarn__water_exact_direction). */
 tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j,
-                                     tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth);
+                                     const tarn_water_input *in, tarn_water_normal *n, tarn_water_sample own,
+                                     uint32_t surface_depth);
 /* Steps 4 and 5 (water_fog.c), over `diff` (Q16.16 world units) of water: the share
  * of the background the fog keeps (Q1.15), and what absorption takes from each
  * channel (Q8.8). */

@@ -9,6 +9,13 @@ static void decode_normal(const uint8_t *texel, int32_t out[3])
     for (int k = 0; k < 3; k++) out[k] = tarn__water_normal_component(texel[k]);
 }
 
+/* A texel channel's code 2c - 255: the component times 255, exactly. */
+static int32_t code_of(uint8_t c)
+{
+    return 2 * (int32_t)c - 255;
+}
+
+
 /* strength (Q16.16, 0..8) times a sum of two Q1.15 components (below 2^16), in
  * Q2.14 with all of the strength's bits: floor(sum * strength / 2^17), from the
  * strength's top and bottom bits in two 32-bit products (the floor of a floor is
@@ -29,6 +36,26 @@ static int map_texels(const tarn_water_context *w, const tarn_water_input *in, c
     *a = tarn__water_panned_texel(water->normal_a, &water->pan_a, w->pan_a, in);
     *b = water->normal_b != NULL ? tarn__water_panned_texel(water->normal_b, &water->pan_b, w->pan_b, in) : NULL;
     return 1;
+}
+
+/* x and y are strength (Q16.16, 0..8) times a sum of codes (|sum| <= 510), below
+ * 2^28; z = a.z * b.z = P / 255^2 for the codes' product P is P * 2^16 / 255, which
+ * is P * 257 + P / 255, the last rounded through P * 257 / 2^16 (1/255 less 1/2^24). */
+void tarn__water_exact_direction(const tarn_water_context *w, const tarn_water_input *in, int32_t out[3])
+{
+    const uint8_t *a, *b;
+    if (!tarn__water_uses(w, TARN_WATER_NORMALS) || !map_texels(w, in, &a, &b)) {
+        out[0] = out[1] = 0;
+        out[2] = 65536 * 255;
+        return;
+    }
+    const int32_t strength = w->water->normal_strength;
+    const int32_t bx = b != NULL ? code_of(b[0]) : 0, by = b != NULL ? code_of(b[1]) : 0;
+    const int32_t bz = b != NULL ? code_of(b[2]) : 255;
+    out[0] = strength * (code_of(a[0]) + bx);
+    out[1] = strength * (code_of(a[1]) + by);
+    const int32_t product = code_of(a[2]) * bz * 257;
+    out[2] = product + tarn_floor_shift(product + 32768, 16);
 }
 
 tarn_water_normal tarn__water_map_x(const tarn_water_context *w, const tarn_water_input *in)

@@ -68,7 +68,7 @@ void tarn__water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, c
     /* without an apron a refracted sample may not move (offset_limit 0): it is the
      * pixel's own, and the M0's fast preset would pay a third of the water pixel for it */
     if (TARN_LINK_APRON && tarn__water_uses(w, TARN_WATER_REFRACTION) && w->offset_limit > 0)
-        below = tarn__water_refract(w, i, j, &n, below, surface_depth);
+        below = tarn__water_refract(w, i, j, in, &n, below, surface_depth);
     e->offset[0] = (int8_t)(below.x - i); /* within the apron, at most TARN_WATER_APRON_MAX */
     e->offset[1] = (int8_t)(below.y - j);
     const uint32_t diff = below.depth > surface_depth ? below.depth - surface_depth : 0u;
