@@ -308,8 +308,14 @@ tarn_water_normal tarn__water_surface_normal(const tarn_water_context *w, const 
 /* Only the maps' own x components (a_x, b_x, has_b), which sparkles read: the flat
  * normal with them. */
 tarn_water_normal tarn__water_map_x(const tarn_water_context *w, const tarn_water_input *in);
-/* Step 2 (water_refraction.c, TARN_WATER_REFRACTION): the refracted sample, or `own`
- * (the pixel's background) where the refracted one would lie in front of the water. */
+/* Step 2 (water_refraction.c, TARN_WATER_REFRACTION): the pixel a refracted sample
+ * at (i, j) reads, `target`: moved by N.xy (normalised here) times the material's
+ * pixels per unit normal and `reach` (saturate(db - ds), Q0.16), snapped to a whole
+ * pixel, at most the context's offset_limit each axis and inside its sample_rect. */
+void tarn__water_refracted_pixel(const tarn_water_context *w, int32_t i, int32_t j, tarn_water_normal *n,
+                                 uint32_t reach, int32_t target[2]);
+/* The refracted sample, or `own` (the pixel's background) where the refracted one
+ * would lie in front of the water. */
 tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j,
                                      tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth);
 /* Steps 4 and 5 (water_fog.c), over `diff` (Q16.16 world units) of water: the share

@@ -5,15 +5,13 @@
 #define Q16_ONE 65536u
 #define Q15_ONE 32768
 
-/* Step 2: the refracted sample, or the pixel's own when it would land in front. */
-tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j,
-                                     tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth)
+void tarn__water_refracted_pixel(const tarn_water_context *w, int32_t i, int32_t j, tarn_water_normal *n,
+                                 uint32_t reach, int32_t target[2])
 {
     tarn__water_normalise(n);
-    uint32_t reach = own.depth > surface_depth ? own.depth - surface_depth : 0u;
-    if (reach > Q16_ONE) reach = Q16_ONE; /* saturate(db - ds), Q0.16 */
     const int32_t normal[2] = {n->x, n->y};
-    int32_t target[2] = {i, j};
+    target[0] = i;
+    target[1] = j;
     for (int k = 0; k < 2; k++) {
         /* N (Q1.15) * pixels per unit normal (Q16.16) / 2^23 -> pixels, Q24.8 */
         int32_t offset_q8 = tarn_mul_hi_s32_u32(normal[k] * 512, w->refraction_px);
@@ -23,6 +21,16 @@ tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, in
     }
     target[0] = tarn_clamp_i32(target[0], w->sample_rect.x0, w->sample_rect.x1 - 1);
     target[1] = tarn_clamp_i32(target[1], w->sample_rect.y0, w->sample_rect.y1 - 1);
+}
+
+/* Step 2: the refracted sample, or the pixel's own when it would land in front. */
+tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j,
+                                     tarn_water_normal *n, tarn_water_sample own, uint32_t surface_depth)
+{
+    uint32_t reach = own.depth > surface_depth ? own.depth - surface_depth : 0u;
+    if (reach > Q16_ONE) reach = Q16_ONE; /* saturate(db - ds), Q0.16 */
+    int32_t target[2];
+    tarn__water_refracted_pixel(w, i, j, n, reach, target);
     if (target[0] == i && target[1] == j) return own; /* read already */
     tarn_water_sample shifted = tarn__water_background(w, target[0], target[1]);
     return shifted.depth < surface_depth ? own : shifted;
