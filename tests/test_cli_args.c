@@ -194,7 +194,9 @@ static void test_backdrop_option(void **state)
     assert_rejected("bake s.json -o x.c --backdrop yes", "--backdrop: expected on, off or still, got 'yes'");
     assert_rejected("render s.json -o x.png --backdrop", "--backdrop: expected on, off or still, got ''");
     assert_rejected("render s.json -o x.png --reference --backdrop still", "it excludes --reference");
-    assert_rejected("compare s.json --backdrop on", "--backdrop applies to render and bake");
+    assert_int_equal(parse("compare s.json --backdrop still", &o, &err), 0);
+    assert_int_equal(o.backdrop, TARN_BACKDROP_STILL);
+    assert_rejected("memory s.json --backdrop on", "--backdrop applies to render, compare and bake");
     assert_rejected("render s.json -o x.png --reference --backdrop on", "it excludes --reference");
     assert_rejected("bake s.json -o x.c --backdrop on --points p.txt", "it excludes --points");
     assert_rejected("bake s.json -o x.c --backdrop on --static-view off", "it excludes --static-view off");

@@ -9,7 +9,8 @@
 const char tarn_cli_usage[] =
     "usage: tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]\n"
     "                   [--reference [--snapped]] [--backdrop on|off|still] [QUALITY]\n"
-    "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]\n"
+    "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped]\n"
+    "                    [--backdrop on|off|still] [QUALITY]\n"
     "       tarn accuracy --math\n"
     "       tarn memory SCENE [--size WxH] [QUALITY]\n"
     "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]\n"
@@ -172,8 +173,8 @@ static int check_combination(tarn_cli_options *o, tarn_error *err)
     if (o->name && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--name applies to bake");
     if (o->points_path && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--points applies to bake");
     if (o->static_view_given && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--static-view applies to bake");
-    if (o->backdrop && o->command != TARN_CMD_RENDER && o->command != TARN_CMD_BAKE)
-        return tarn_fail(err, "--backdrop applies to render and bake");
+    if (o->backdrop && o->command != TARN_CMD_RENDER && o->command != TARN_CMD_BAKE && o->command != TARN_CMD_COMPARE)
+        return tarn_fail(err, "--backdrop applies to render, compare and bake");
     if (o->backdrop && (o->reference || o->points_path || o->no_static_view))
         return tarn_fail(err, "--backdrop: draws one quality of the core with static vertices; "
                          "it excludes %s", o->reference ? "--reference" : o->points_path ? "--points" : "--static-view off");

@@ -173,13 +173,15 @@ int tarn_command_render(const tarn_cli_options *o)
     return run_on_scene(o, render_to_png);
 }
 
-static int compare_frames(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+/* The core's frame of `drawn` (the scene, or its water over a backdrop) against
+ * the reference's of the scene. */
+static int compare_frames(const tarn_cli_options *o, const tarn_loaded_scene *scene, const tarn_scene *drawn,
                           const tarn_frame_config *config, frame_image *core,
                           frame_image *reference, tarn_error *err)
 {
     if (frame_alloc(core, config->width, config->height, err) ||
         frame_alloc(reference, config->width, config->height, err) ||
-        tarn_core_render(&scene->scene, config, core->rgb, core->covered, err) ||
+        tarn_core_render(drawn, config, core->rgb, core->covered, err) ||
         render_reference(scene, config, o->snapped, reference, err))
         return -1;
     tarn_compare_metrics metrics;
@@ -198,13 +200,21 @@ static int compare_frames(const tarn_cli_options *o, const tarn_loaded_scene *sc
     return 0;
 }
 
+/* --backdrop on|still: the core draws through the backdrop, as firmware baked with
+ * the option does; the reference draws the scene. */
 static int compare_with_reference(const tarn_cli_options *o, const tarn_loaded_scene *scene,
                                   const tarn_frame_config *config, tarn_error *err)
 {
+    tarn_backdrop_scene backdrop;
+    if (o->backdrop != TARN_BACKDROP_NONE &&
+        tarn_backdrop_scene_make(&scene->scene, config, (tarn_backdrop_kind)o->backdrop, 0, &backdrop, err) != 0)
+        return tarn_fail_in(err, o->scene_path);
     frame_image core = {0, 0, NULL, NULL}, reference = {0, 0, NULL, NULL};
-    int failed = compare_frames(o, scene, config, &core, &reference, err);
+    const tarn_scene *drawn = o->backdrop != TARN_BACKDROP_NONE ? &backdrop.water.scene : &scene->scene;
+    int failed = compare_frames(o, scene, drawn, config, &core, &reference, err);
     frame_free(&core);
     frame_free(&reference);
+    if (o->backdrop != TARN_BACKDROP_NONE) tarn_backdrop_scene_free(&backdrop);
     return failed ? -1 : 0;
 }
 
