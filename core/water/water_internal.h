@@ -8,7 +8,8 @@
  *   water_normals.c, water_refraction.c, water_fog.c, water_surface.c,
  *   water_highlights.c, water_foam.c   the effects, a file each
  *   water_common.c     what the effects share: products, texels, depths
- *   water_still.c      the moving terms over a still-water backdrop, no triangle drawn
+ *   water_still.c      the moving terms over a still-water backdrop, no triangle drawn,
+ *                      and refracted samples read from its picture
  *   underwater.c       the underwater view (underwater_internal.h), its constants
  *                      in underwater_setup.c
  *
@@ -291,6 +292,14 @@ void tarn__water_draw_triangle(void *pass, const tarn_screen_vertex vertex[3], c
 void tarn__water_clear_marks(const tarn_tile_target *target);
 
 /* ---- over a still-water backdrop (water_still.c) ---- */
+
+/* What a still-water backdrop keeps at the water pixels of a material whose
+ * refracted samples move or not (`refracts`: refraction with an apron): 1 for the
+ * depth of water beneath, db - ds in Q0.16 world units, where it is less than one
+ * unit; 0 for the place in the foam band (step 9's f, Q0.16) where that is less
+ * than 1, which also gives saturate(db - ds) when the band is one unit deep or
+ * deeper. tarn bake keeps what this says, and the frame reads it so. */
+int tarn__still_keeps_depth(const tarn_water *water, int refracts);
 
 /* The moving terms (TARN_WATER_MOVING) of the context's water object, the scene's
  * object `object`, over the tile's pixels in its rect that the backdrop marks
