@@ -16,17 +16,18 @@
  *    table and fog argument cost nothing visible once refraction is gone.
  *    An apron that fits 16 KB needs small tiles, each drawing the opaque scene
  *    around itself again. On the M0 (tarn compare scenes/pond.json, make
- *    bench-target with the flags in BAKE_FLAGS) the pond measures 21.47 dB for
- *    1286 instructions a pixel without one; with apron 4 and 24-pixel tiles 23.07
- *    dB for 2601, 16 and 8 30.79 dB for 17548; without water blocks, 8 and 20
- *    25.69 dB for 3501, 12 and 16 29.19 dB for 5421 (the qemu-m0 board's bake);
- *    the full apron (32 pixels here) fits no tile. So the preset keeps none, and a
- *    board that can pay the instructions opts in with --apron N --tile T. Over a
- *    still-water backdrop an apron takes no RAM at all, refracted samples being
- *    read from the picture: qemu-m0-still bakes --apron on (32.57 dB for 702).
+ *    firmware-run BOARD=qemu-m0 with the flags in BAKE_FLAGS; docs/firmware.md,
+ *    "Refraction in 16 KB") the pond measures 21.47 dB for 1286 instructions a
+ *    pixel without one; without water blocks, with apron 4 and 24-pixel tiles
+ *    23.22 dB for 2566, 8 and 20 25.69 dB for 3488, 12 and 16 29.19 dB for 5408
+ *    (the qemu-m0 board's bake), 16 and 8 32.87 dB for 17534; the full apron (32
+ *    pixels here) fits no tile. So the preset keeps none, and a board that can pay
+ *    the instructions opts in with --apron N --tile T. Over a still-water backdrop
+ *    an apron takes no RAM at all, refracted samples being read from the picture:
+ *    qemu-m0-still bakes --apron on (32.57 dB for 698).
  *    Without refraction, water blocks cost the pond 0.14 dB for 20% of the M0's
  *    instructions (1319 against 1648); with it they save next to nothing
- *    (refracted effects are never shared: 3512 against 3501 at apron 8) and cost
+ *    (refracted effects are never shared: 3499 against 3488 at apron 8) and cost
  *    up to 2.6 dB, so only fast takes them. 4x4 blocks cost the M0 more from the
  *    meshes (1378), since fewer pixels share a block with one triangle over one
  *    depth; over still water, where a block shares only its highlight, they are
