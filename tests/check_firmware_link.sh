@@ -8,7 +8,9 @@
 # nor the backdrop's reader (tarn__backdrop_fill) unless the scene is baked with one,
 # nor the water over still water (tarn__water_still_tile) unless that backdrop is baked
 # with still water, and then none of the shading it holds (tarn__water_shade, fog) and,
-# since no triangle is drawn at all, no depth interpolation (tarn__exact_depth_at).
+# since no triangle is drawn at all, no depth interpolation (tarn__exact_depth_at);
+# refraction over still water (an apron) finds the normal and reads the picture, but
+# links no refracted read of the opaque pass (tarn__water_refract).
 #
 # Builds the qemu-m0 firmware for several scenes (each in its own directory under
 # build/firmware-link/, the board's own build untouched) and reads the images' symbols
@@ -81,5 +83,7 @@ check scenes/effects/fog.json tarn__water_shade tarn__water_fog tarn__exact_dept
 extra_name=-still extra_flags=" --backdrop still"
 check scenes/effects/fog.json tarn__backdrop_fill tarn__water_still_tile
 check scenes/effects/foam.json tarn__water_foam tarn__backdrop_fill tarn__water_still_tile
+extra_name=-still-apron extra_flags=" --backdrop still --apron 4"
+check scenes/effects/refraction.json tarn__water_surface_normal tarn__backdrop_fill tarn__water_still_tile
 echo "firmware-link: $passed passed, $failed failed"
 [ $failed -eq 0 ]

@@ -63,6 +63,10 @@ static void test_good_lines_parse(void **state)
     assert_int_equal(o.quality.exp2.entries, 32);
     assert_int_equal(o.quality.exp2.interpolate, 0);
 
+    assert_int_equal(parse("render s.json -o x.png --quality fast --refraction-normal exact", &o, &err), 0);
+    assert_int_equal(o.quality.refraction_normal, TARN_REFRACTION_NORMAL_EXACT);
+    assert_int_equal(parse("render s.json -o x.png --refraction-normal shared", &o, &err), 0);
+    assert_int_equal(o.quality.refraction_normal, TARN_REFRACTION_NORMAL_SHARED);
     assert_int_equal(parse("compare s.json --backdrop still --diff heat.png", &o, &err), 0);
     assert_int_equal(o.command, TARN_CMD_COMPARE);
     assert_int_equal(o.backdrop, TARN_BACKDROP_STILL);

@@ -131,6 +131,16 @@ static void add_knobs(frame_list *l, const char *path)
     tarn_scene_free(&s);
 }
 
+/* The scene drawn at one quality, named as the golden file names it. */
+static void add_quality(frame_list *l, const char *path, const char *quality_name, tarn_quality quality)
+{
+    tarn_loaded_scene s;
+    load(path, &s);
+    const tarn_frame_config config = {s.width, s.height, quality, 1500};
+    add_line(l, path, quality_name, config.time_ms, frame_checksum(&s.scene, &config, path));
+    tarn_scene_free(&s);
+}
+
 /* The scene drawn over a backdrop of `kind`, as tarn render --backdrop draws it. */
 static void add_backdrop(frame_list *l, const char *path, tarn_backdrop_kind kind, const char *quality_name,
                          tarn_quality quality)
@@ -156,6 +166,16 @@ static void measure_all(frame_list *l)
     add_backdrop(l, "scenes/pond.json", TARN_BACKDROP_OPAQUE, "fast+backdrop-on", tarn_quality_preset(TARN_PRESET_FAST));
     add_backdrop(l, "scenes/pond.json", TARN_BACKDROP_STILL, "fast+block4+backdrop-still", fast_still);
     add_backdrop(l, "scenes/beach.json", TARN_BACKDROP_OPAQUE, "balanced+backdrop-on", tarn_quality_default());
+    /* refraction on the 16 KB boards: read from the still picture, and from a
+     * narrow apron around small tiles (the qemu-m0 boards' board.mk) */
+    tarn_quality refracting = fast_still;
+    refracting.refraction_apron = TARN_APRON_FULL;
+    add_backdrop(l, "scenes/pond.json", TARN_BACKDROP_STILL, "fast+block4+apron-on+backdrop-still", refracting);
+    refracting = tarn_quality_preset(TARN_PRESET_FAST);
+    refracting.refraction_apron = 12;
+    refracting.tile_size = 16;
+    refracting.water_block = 1;
+    add_quality(l, "scenes/pond.json", "fast+apron12+tile16+block1", refracting);
 }
 
 static void free_list(frame_list *l)

@@ -4,8 +4,10 @@
  * scene's, byte for byte; where it has some, it is as close to the float reference
  * as the whole scene drawn, one water object or two that overlap. The backdrop
  * marks each water pixel with its object and where foam can show, keeping the
- * depth there only; no mark reaches a tile; what it does not apply to (moving
- * samples, water that is not flat, another quality) is refused. */
+ * depth there only, or with refraction wherever the water is shallow; refracted
+ * samples are read from the picture; no mark reaches a tile; what it does not
+ * apply to (the underwater view, water that is not flat, another quality) is
+ * refused. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -292,18 +294,51 @@ static void assert_refused(const tarn_scene *scene, const tarn_frame_config *con
     if (strstr(err.message, expected) == NULL) fail_msg("expected \"%s\" in: %s", expected, err.message);
 }
 
-/* A refracting quality and the underwater view move samples with the clock. */
-static void test_moving_samples_are_refused_at_bake(void **state)
+/* The underwater view moves every pixel with the clock. */
+static void test_underwater_is_refused_at_bake(void **state)
+{
+    (void)state;
+    tarn_loaded_scene loaded;
+    load("scenes/effects/underwater.json", &loaded);
+    const tarn_frame_config config = fast_config(&loaded, 2);
+    assert_refused(&loaded.scene, &config, "--backdrop still: the scene's underwater view moves every pixel");
+    tarn_scene_free(&loaded);
+}
+
+/* With an apron, the pond's refracted samples are read from the still picture:
+ * against the float reference the frame gains as much as the scene drawn whole
+ * gains from its apron, within 2 dB, whatever the water block; it is the same at
+ * any tile size; and the backdrop keeps the depth of water wherever it is under
+ * one unit, for refraction's reach, more pixels than the foam band alone. */
+static void test_refraction_reads_the_picture(void **state)
 {
     (void)state;
     tarn_loaded_scene loaded;
     load("scenes/pond.json", &loaded);
-    tarn_frame_config config = {loaded.width, loaded.height, tarn_quality_preset(TARN_PRESET_BALANCED), 0};
-    assert_refused(&loaded.scene, &config, "--backdrop still: the water refracts up to 32 pixels at this quality");
-    tarn_scene_free(&loaded);
-    load("scenes/effects/underwater.json", &loaded);
-    config = fast_config(&loaded, 2);
-    assert_refused(&loaded.scene, &config, "--backdrop still: the scene's underwater view moves every pixel");
+    for (uint8_t block = 1; block <= 4; block *= 2) {
+        tarn_frame_config config = fast_config(&loaded, block);
+        config.time_ms = 1750;
+        double whole_db, flat_db, refracted_db;
+        (void)still_and_reference(&loaded.scene, &config, &whole_db, &flat_db);
+        config.quality.refraction_apron = TARN_APRON_FULL;
+        (void)still_and_reference(&loaded.scene, &config, &whole_db, &refracted_db);
+        print_message("pond, water block %u: %.2f dB over still water without refraction, %.2f with; %.2f whole\n",
+                      block, flat_db, refracted_db, whole_db);
+        assert_true(refracted_db > flat_db + 8.0);
+        assert_true(refracted_db > whole_db - 2.0);
+    }
+    tarn_frame_config config = fast_config(&loaded, 2);
+    config.quality.refraction_apron = TARN_APRON_FULL;
+    tarn_backdrop_scene b;
+    still_make(&loaded.scene, &config, &b);
+    assert_true(b.image.backdrop.depth_count > 5000u);
+    uint8_t *at_40 = test_render_rgb(&b.water.scene, &config, "tiles of 40");
+    config.quality.tile_size = 8;
+    uint8_t *at_8 = test_render_rgb(&b.water.scene, &config, "tiles of 8");
+    assert_memory_equal(at_40, at_8, 3u * config.width * config.height);
+    free(at_40);
+    free(at_8);
+    tarn_backdrop_scene_free(&b);
     tarn_scene_free(&loaded);
 }
 
@@ -340,8 +375,8 @@ static void test_water_still_water_cannot_draw_is_refused(void **state)
     tarn_scene_free(&loaded);
 }
 
-/* A frame whose knobs shape the still terms otherwise, or that refracts, is
- * refused; the tile size changes nothing. */
+/* A frame whose knobs shape the still terms otherwise is refused; the tile size
+ * and the apron change nothing of them. */
 static void test_another_quality_is_refused(void **state)
 {
     (void)state;
@@ -362,9 +397,9 @@ static void test_another_quality_is_refused(void **state)
     other = config;
     other.quality.exp2.interpolate = 1;
     assert_int_equal(test_render_status(&b->water.scene, &other), TARN_ERR_SCENE);
-    other = config;
+    other = config; /* the apron shapes no still term: refraction reads the picture */
     other.quality.refraction_apron = 4;
-    assert_int_equal(test_render_status(&b->water.scene, &other), TARN_ERR_SCENE);
+    assert_int_equal(test_render_status(&b->water.scene, &other), TARN_OK);
     other = config;
     other.quality.tile_size = 16;
     assert_int_equal(test_render_status(&b->water.scene, &other), TARN_OK);
@@ -388,7 +423,8 @@ int main(void)
         cmocka_unit_test(test_pond_is_as_close_to_the_reference),
         cmocka_unit_test(test_overlapping_water_objects_are_told_apart),
         cmocka_unit_test(test_backdrop_keeps_the_still_water),
-        cmocka_unit_test(test_moving_samples_are_refused_at_bake),
+        cmocka_unit_test(test_underwater_is_refused_at_bake),
+        cmocka_unit_test(test_refraction_reads_the_picture),
         cmocka_unit_test(test_water_still_water_cannot_draw_is_refused),
         cmocka_unit_test(test_another_quality_is_refused),
     };

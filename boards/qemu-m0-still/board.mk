@@ -1,12 +1,16 @@
 # qemu-m0-still: the qemu-m0 board (the same chip, startup, memory and stack) with
 # the pond baked --backdrop still: tarn bake draws the opaque objects and the
 # water's still terms (fog, depth colour, fresnel, the lit surface) once, for this
-# frame and quality, into a palette picture in flash (14-bit indices into 14,590
+# frame and quality, into a palette picture in flash (14-bit indices into 14,524
 # colours padded to 16,384, each water pixel marked with its object and where foam
-# can show, and the place in the foam band there: 172,142 bytes; the image takes
-# 248,588 of the 262,144), and each frame finds only the water's moving terms over
-# it: the highlights, once a 4x4 block (--water-block 4), and the foam lines
-# (docs/bake.md, "Still water"). The panel stream equals the host's render through
-# the same backdrop (tarn render --backdrop still), byte for byte.
+# can show, and the depth of water where it is under one unit: 180,432 bytes; the
+# image takes 252,656 of the 262,144), and each frame finds only the water's moving
+# terms over it: the highlights, once a 4x4 block (--water-block 4), the foam lines
+# (docs/bake.md, "Still water") and, with an apron (--apron on), each water pixel's
+# refracted sample, read from the picture wherever it lands, so the apron takes no
+# RAM. The panel stream equals the host's render through the same backdrop (tarn
+# render --backdrop still), byte for byte. Per-pixel perspective and 32-bit depth
+# shape only the picture, drawn on the host: they cost the board nothing and bring
+# the pond 1.2 dB nearer the reference (docs/firmware.md, "Still water").
 include boards/qemu-m0/board.mk
-BOARD_BAKE_FLAGS := --quality fast --backdrop still --water-block 4
+BOARD_BAKE_FLAGS := --quality fast --backdrop still --water-block 4 --apron on --perspective pixel --depth 32

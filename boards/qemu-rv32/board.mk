@@ -1,7 +1,7 @@
 # qemu-rv32: RISC-V rv32imac on QEMU's sifive_e (16 KB of RAM at 0x80000000, the
 # image in the XIP flash window, as the HiFive1's 16 MB SPI flash would hold it). The
-# full pond fits the flash; RAM takes the quality qemu-m0 uses, the fast preset:
-# refraction apron off, 40-pixel tiles, 16-bit depth, cluster bins and a 4 KB stack
+# full pond fits the flash; RAM takes the fast preset (qemu-m0's quality without
+# its refraction apron): 40-pixel tiles, 16-bit depth, cluster bins and a 4 KB stack
 # (15,776 of 16,384 bytes). Variables read by
 # firmware/firmware.mk.
 BOARD_ARCH := riscv

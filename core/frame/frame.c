@@ -263,6 +263,9 @@ static void draw_still_water(frame_state *f)
     const tarn_backdrop *b = f->layout.backdrop;
     tarn_water_context *c = &f->water_context;
     begin_water(f);
+    /* refracted samples read the backdrop's picture, anywhere in the frame */
+    const tarn_pixel_rect frame = {0, 0, f->config->width, f->config->height};
+    c->sample_rect = frame;
     for (uint32_t k = 0; k < f->scene->object_count && k < TARN_BACKDROP_STILL_OBJECTS_MAX; k++) {
         const tarn_object *object = &f->scene->objects[k];
         if (object->material->water == NULL) continue;

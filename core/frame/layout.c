@@ -14,17 +14,18 @@ tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const t
         ? tarn__apron_limit(tarn__underwater_reach_pixels(scene->underwater, config->width), &config->quality)
         : 0;
     l.refraction_apron = l.water ? tarn_frame_apron_pixels(scene, config) : 0;
-    l.apron = l.refraction_apron + l.under_apron;
+    l.backdrop = tarn__backdrop_for(scene, config);
+    /* over still water, no water triangle is drawn: no water pass, no copy, and no
+     * depth but the backdrop's own; refracted samples read the backdrop's picture
+     * wherever they land, so no apron is drawn for them */
+    l.still = TARN_LINK_STILL_WATER && l.backdrop != NULL && l.backdrop->still_water;
+    l.apron = l.still ? 0 : l.refraction_apron + l.under_apron;
     /* Without an apron a water pixel reads the opaque pass at itself only, and the
      * water pass can draw over it; the underwater view reads the water pass's
      * output displaced, so keeps it apart. */
     l.in_place = l.water && !l.underwater && l.apron == 0;
     l.region = l.tile + 2 * l.apron;
     l.water_region = l.tile + 2 * l.under_apron;
-    l.backdrop = tarn__backdrop_for(scene, config);
-    /* over still water, no water triangle is drawn: no water pass, no copy, and no
-     * depth but the backdrop's own */
-    l.still = TARN_LINK_STILL_WATER && l.backdrop != NULL && l.backdrop->still_water;
     l.depth_bytes = l.still ? 0u : config->quality.depth_bits / 8u;
     /* the underwater pass reads displaced water pixels over an apron that need not
      * hold whole blocks */

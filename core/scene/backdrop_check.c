@@ -12,14 +12,15 @@ static int same_opaque_quality(const tarn_backdrop *b, const tarn_quality *q)
            b->depth_interpolation == q->depth_interpolation;
 }
 
-/* And those that shape the water's still terms, with nothing that moves a sample:
- * no apron for refraction to use, no underwater view. */
+/* And those that shape the water's still terms, without the underwater view,
+ * which moves every pixel. Refraction's apron shapes no still term: its samples
+ * are read from the picture as the clock moves them. */
 static int still_water_applies(const tarn_backdrop *b, const tarn_scene *scene, const tarn_frame_config *config)
 {
     const tarn_quality *q = &config->quality;
     return TARN_LINK_STILL_WATER && b->water_block == q->water_block && b->fog_argument_bits == q->fog_argument_bits &&
            b->exp2_entries == q->exp2.entries && b->exp2_interpolate == q->exp2.interpolate &&
-           tarn_frame_apron_pixels(scene, config) == 0 && !tarn__underwater_active(scene);
+           !tarn__underwater_active(scene);
 }
 
 const tarn_backdrop *tarn__backdrop_for(const tarn_scene *scene, const tarn_frame_config *config)

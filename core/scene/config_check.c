@@ -29,7 +29,9 @@ static int quality_in_range(const tarn_quality *q)
            q->cluster_bins <= 1 &&
            q->fog_argument_bits >= TARN_FOG_ARGUMENT_BITS_MIN && q->fog_argument_bits <= TARN_FOG_ARGUMENT_BITS_MAX &&
            (q->water_block == 1 ||
-            (TARN_LINK_WATER_BLOCKS && (q->water_block == 2 || q->water_block == 4) && q->tile_size % q->water_block == 0));
+            (TARN_LINK_WATER_BLOCKS && (q->water_block == 2 || q->water_block == 4) && q->tile_size % q->water_block == 0)) &&
+           (q->refraction_normal == TARN_REFRACTION_NORMAL_SHARED ||
+            (TARN_LINK_REFRACTION_EXACT && q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT));
 }
 
 tarn_status tarn__config_check(const tarn_frame_config *config)

@@ -1,4 +1,4 @@
-/* quality.c: the named presets. Their values come from the pond's sweep
+/* presets.c: the named presets. Their values come from the pond's sweep
  * (docs/sweep.md, `make sweep-docs`), measured against the float reference on its
  * finest subpixel grid:
  *  - subpixel bits are the largest knob of error and cost nothing, but each bit
@@ -8,22 +8,35 @@
  *  - balanced: one Newton step and an 8-bit fog argument measure within 0.01 dB
  *    of two steps and 16 bits, here and on the extreme scenes, for less cost;
  *  - exact: every knob at its most accurate;
- *  - fast: the Cortex-M0's choice. Its 16 KB hold no refraction apron; without one
- *    the water pass draws in place, so 16-bit depth and 40-pixel tiles fit (the
- *    baked pond's 11,040 bytes of the board's ~11,800: bigger tiles walk each
- *    cluster fewer times, and 42 no longer fits), span perspective and one
- *    Newton step are on the M0's front, and
- *    the smallest exp2 table and fog argument cost nothing visible once refraction
- *    is gone. Without refraction, water blocks cost the pond 0.14 dB for 20% of
- *    the M0's instructions (1319 against 1648); with it they save next to nothing
- *    (refracted effects are never shared) and cost 2.6 dB, so only fast takes
- *    them. 4x4 blocks cost the M0 more from the meshes (1378), since fewer pixels
- *    share a block with one triangle over one depth; over still water, where a
- *    block shares only its highlight, they are the board's choice (docs/bake.md).
+ *  - fast: the Cortex-M0's choice, from its meshes. Its 16 KB hold no full
+ *    refraction apron; without one the water pass draws in place, so 16-bit depth
+ *    and 40-pixel tiles fit (the baked pond's 11,040 bytes of the board's ~11,800:
+ *    bigger tiles walk each cluster fewer times, and 42 no longer fits), span
+ *    perspective and one Newton step are on the M0's front, and the smallest exp2
+ *    table and fog argument cost nothing visible once refraction is gone.
+ *    An apron that fits 16 KB needs small tiles, each drawing the opaque scene
+ *    around itself again. On the M0 (tarn compare scenes/pond.json, make
+ *    firmware-run BOARD=qemu-m0 with the flags in BAKE_FLAGS; docs/firmware.md,
+ *    "Refraction in 16 KB") the pond measures 21.47 dB for 1286 instructions a
+ *    pixel without one; without water blocks, with apron 4 and 24-pixel tiles
+ *    23.22 dB for 2566, 8 and 20 25.69 dB for 3488, 12 and 16 29.19 dB for 5408
+ *    (the qemu-m0 board's bake), 16 and 8 32.87 dB for 17534; the full apron (32
+ *    pixels here) fits no tile. So the preset keeps none, and a board that can pay
+ *    the instructions opts in with --apron N --tile T. Over a still-water backdrop
+ *    an apron takes no RAM at all, refracted samples being read from the picture:
+ *    qemu-m0-still bakes --apron on (32.57 dB for 698).
+ *    Without refraction, water blocks cost the pond 0.14 dB for 20% of the M0's
+ *    instructions (1319 against 1648); with it they save next to nothing
+ *    (refracted effects are never shared: 3499 against 3488 at apron 8) and cost
+ *    up to 2.6 dB, so only fast takes them. 4x4 blocks cost the M0 more from the
+ *    meshes (1378), since fewer pixels share a block with one triangle over one
+ *    depth; over still water, where a block shares only its highlight, they are
+ *    the board's choice (docs/bake.md).
  *    Fast also steps depth on a plane (TARN_DEPTH_PLANE): three exact divisions
  *    less a triangle and a plain add a pixel, 6% of the M0's instructions (1319
  *    against 1399), the pond the same to 0.01 dB; its images differ from exact
- *    depth's in a few pixels where surfaces meet. */
+ *    depth's in a few pixels where surfaces meet. Fast stays below balanced (the
+ *    pond: 21.47 dB against 43.60, tarn compare --quality). */
 #include "tarn/tarn_render.h"
 
 static tarn_quality preset_exact(void)
@@ -42,6 +55,7 @@ static tarn_quality preset_exact(void)
     q.cluster_bins = 1;
     q.fog_argument_bits = 16;
     q.water_block = 1;
+    q.refraction_normal = TARN_REFRACTION_NORMAL_EXACT;
     return q;
 }
 
@@ -64,6 +78,7 @@ tarn_quality tarn_quality_preset(tarn_preset preset)
         q.refraction_apron = 0;
         q.fog_argument_bits = 6;
         q.water_block = 2;
+        q.refraction_normal = TARN_REFRACTION_NORMAL_SHARED;
     }
     return q;
 }

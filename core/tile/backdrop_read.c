@@ -1,7 +1,8 @@
-/* backdrop.c: a tile's opaque pass read from the scene's backdrop (tarn_scene.h)
+/* backdrop_read.c: a tile's opaque pass read from the scene's backdrop (tarn_scene.h)
  * instead of drawn: palette colours at every pixel, and depth where the backdrop
  * keeps it, which is wherever water draws or samples; and over still water, the
- * place in the foam band it keeps instead. backdrop_check.c says which backdrop
+ * colour at any pixel, where a refracted sample lands, and the depth of water or
+ * place in the foam band it keeps instead of depth. backdrop_check.c says which backdrop
  * applies and whether it is well formed. */
 #include "tile/tile_internal.h"
 
@@ -26,6 +27,17 @@ static void fill_depth_row(const tarn_backdrop *b, int32_t j, int32_t x0, int32_
         filled = kept1;
     }
     memset(to + (size_t)(filled - x0) * bytes, IN_FRONT_OF_ALL, (size_t)(x1 - filled) * bytes);
+}
+
+uint32_t tarn__backdrop_colour_at(const tarn_backdrop *b, uint16_t frame_width, int32_t i, int32_t j)
+{
+    const uint32_t first = ((uint32_t)j * frame_width + (uint32_t)i) * b->index_bits;
+    const uint16_t *word = b->colour + (first >> 4);
+    /* an index of at most 16 bits spans two words at most; the second is read only
+     * when it does, so no read passes the picture's last word */
+    uint32_t bits = (uint32_t)word[0] >> (first & 15u);
+    if ((first & 15u) + b->index_bits > 16u) bits |= (uint32_t)word[1] << (16u - (first & 15u));
+    return b->palette[bits & ((1u << b->index_bits) - 1u)];
 }
 
 /* Row j's colours over [x0, x1) into `to`. */
@@ -61,7 +73,7 @@ void tarn__backdrop_fill(const tarn_backdrop *b, uint16_t frame_width, tarn_tile
     }
 }
 
-uint32_t tarn__backdrop_foam_band(const tarn_backdrop *b, int32_t i, int32_t j)
+uint32_t tarn__backdrop_kept(const tarn_backdrop *b, int32_t i, int32_t j)
 {
     for (uint32_t k = b->row_spans[j]; k < b->row_spans[j + 1] && i >= b->spans[k].x0; k++)
         if (i < b->spans[k].x1) return ((const uint16_t *)b->depth)[b->spans[k].first + (uint32_t)(i - b->spans[k].x0)];

@@ -82,8 +82,13 @@ int tarn__cluster_bin_is_whole(const tarn_cluster_bin *bin);
  * opaque pass would draw it; the colours alone with depth_bytes 0. */
 void tarn__backdrop_fill(const tarn_backdrop *backdrop, uint16_t frame_width, tarn_tile_target *target,
                         size_t depth_bytes);
-/* A still-water backdrop's place in the foam band of frame pixel (i, j), Q0.16;
- * 65536, beyond the band, where it keeps none. */
-uint32_t tarn__backdrop_foam_band(const tarn_backdrop *backdrop, int32_t i, int32_t j);
+/* What a still-water backdrop keeps at frame pixel (i, j) (tarn_scene.h: the depth
+ * of water beneath, or the place in the foam band, Q0.16); 65536 where it keeps
+ * nothing. */
+uint32_t tarn__backdrop_kept(const tarn_backdrop *backdrop, int32_t i, int32_t j);
+/* The backdrop's colour at frame pixel (i, j) of a frame `frame_width` pixels wide,
+ * marks and all: a read anywhere in the picture, as a refracted sample over still
+ * water makes. */
+uint32_t tarn__backdrop_colour_at(const tarn_backdrop *backdrop, uint16_t frame_width, int32_t i, int32_t j);
 
 #endif

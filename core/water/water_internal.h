@@ -8,7 +8,8 @@
  *   water_normals.c, water_refraction.c, water_fog.c, water_surface.c,
  *   water_highlights.c, water_foam.c   the effects, a file each
  *   water_common.c     what the effects share: products, texels, depths
- *   water_still.c      the moving terms over a still-water backdrop, no triangle drawn
+ *   water_still.c      the moving terms over a still-water backdrop, no triangle drawn,
+ *                      and refracted samples read from its picture
  *   underwater.c       the underwater view (underwater_internal.h), its constants
  *                      in underwater_setup.c
  *
@@ -61,6 +62,7 @@ typedef struct tarn_water_context {
        found at its top-left pixel, a slot per block column; NULL with water_block 1 */
     struct tarn_water_block *blocks;
     uint8_t block_shift;   /* log2 of the quality's water_block */
+    uint8_t refraction_exact; /* the quality's refraction_normal is EXACT */
     uint32_t triangle_serial; /* water triangles drawn this frame, 0 before the first */
     /* over a still-water backdrop with the quality's water_block 2 or 4: each
        block's highlight, a slot per block column (tarn_still_block); NULL otherwise */
@@ -304,6 +306,14 @@ void tarn__water_clear_marks(const tarn_tile_target *target);
 
 /* ---- over a still-water backdrop (water_still.c) ---- */
 
+/* What a still-water backdrop keeps at the water pixels of a material whose
+ * refracted samples move or not (`refracts`: refraction with an apron): 1 for the
+ * depth of water beneath, db - ds in Q0.16 world units, where it is less than one
+ * unit; 0 for the place in the foam band (step 9's f, Q0.16) where that is less
+ * than 1, which also gives saturate(db - ds) when the band is one unit deep or
+ * deeper. tarn bake keeps what this says, and the frame reads it so. */
+int tarn__still_keeps_depth(const tarn_water *water, int refracts);
+
 /* The moving terms (TARN_WATER_MOVING) of the context's water object, the scene's
  * object `object`, over the tile's pixels in its rect that the backdrop marks
  * with it: each keeps its still colour with a highlight and the sharp features
@@ -320,10 +330,16 @@ tarn_water_normal tarn__water_surface_normal(const tarn_water_context *w, const 
 /* Only the maps' own x components (a_x, b_x, has_b), which sparkles read: the flat
  * normal with them. */
 tarn_water_normal tarn__water_map_x(const tarn_water_context *w, const tarn_water_input *in);
-/* Step 2 (water_refraction.c, TARN_WATER_REFRACTION): the refracted sample, or `own`
- * (the pixel's background) where the refracted one would lie in front of the water.
- * `n` (the direction step 1 found) is normalised for the steps after; the shift is
- * found from the maps' texels again, exactly (tarn__water_exact_direction). */
+/* Step 2 (water_refraction.c, TARN_WATER_REFRACTION): the pixel a refracted sample
+ * at (i, j) reads, `target`: moved by N.xy times the material's pixels per unit
+ * normal and `reach` (saturate(db - ds), Q0.16), snapped to a whole pixel, at most
+ * the context's offset_limit each axis and inside its sample_rect. N.xy is found
+ * from the maps' texels again, exactly (tarn__water_exact_direction); `n` (the
+ * direction step 1 found) is normalised for the steps after. */
+void tarn__water_refracted_pixel(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
+                                 tarn_water_normal *n, uint32_t reach, int32_t target[2]);
+/* The refracted sample, or `own` (the pixel's background) where the refracted one
+ * would lie in front of the water. */
 tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j,
                                      const tarn_water_input *in, tarn_water_normal *n, tarn_water_sample own,
                                      uint32_t surface_depth);

@@ -51,23 +51,40 @@ static int32_t refracted_shift_q14(const tarn_water_context *w, int32_t normal_q
     return reach >= Q16_ONE ? shift : tarn_mul_hi_s32_u32(shift, reach << 16);
 }
 
-/* Step 2: the refracted sample, or the pixel's own when it would land in front. */
-tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j,
-                                     const tarn_water_input *in, tarn_water_normal *n, tarn_water_sample own,
-                                     uint32_t surface_depth)
+/* tarn__water_refracted_pixel's body, inline in tarn__water_refract: a call there
+ * cost the M3's balanced pond 9 instructions a pixel. */
+static TARN_ALWAYS_INLINE void refracted_pixel(const tarn_water_context *w, int32_t i, int32_t j,
+                                              const tarn_water_input *in, tarn_water_normal *n, uint32_t reach,
+                                              int32_t target[2])
 {
     tarn__water_normalise(n); /* for the steps after this one */
-    uint32_t reach = own.depth > surface_depth ? own.depth - surface_depth : 0u;
-    if (reach > Q16_ONE) reach = Q16_ONE; /* saturate(db - ds), Q0.16 */
-    int32_t normal[2];
-    exact_normal_xy(w, in, normal);
-    int32_t target[2] = {i, j};
+    int32_t normal[2] = {n->x * 32768, n->y * 32768}; /* Q1.15 to Q1.30 */
+    if (TARN_LINK_REFRACTION_EXACT && w->refraction_exact) exact_normal_xy(w, in, normal);
+    target[0] = i;
+    target[1] = j;
     for (int k = 0; k < 2; k++) {
         const int32_t shift = refracted_shift_q14(w, normal[k], reach); /* rounded: floor(o + 1/2) */
         target[k] += tarn_clamp_i32(tarn_floor_shift(shift + (1 << 13), 14), -w->offset_limit, w->offset_limit);
     }
     target[0] = tarn_clamp_i32(target[0], w->sample_rect.x0, w->sample_rect.x1 - 1);
     target[1] = tarn_clamp_i32(target[1], w->sample_rect.y0, w->sample_rect.y1 - 1);
+}
+
+void tarn__water_refracted_pixel(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
+                                 tarn_water_normal *n, uint32_t reach, int32_t target[2])
+{
+    refracted_pixel(w, i, j, in, n, reach, target);
+}
+
+/* Step 2: the refracted sample, or the pixel's own when it would land in front. */
+tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j,
+                                     const tarn_water_input *in, tarn_water_normal *n, tarn_water_sample own,
+                                     uint32_t surface_depth)
+{
+    uint32_t reach = own.depth > surface_depth ? own.depth - surface_depth : 0u;
+    if (reach > Q16_ONE) reach = Q16_ONE; /* saturate(db - ds), Q0.16 */
+    int32_t target[2];
+    refracted_pixel(w, i, j, in, n, reach, target);
     if (target[0] == i && target[1] == j) return own; /* read already */
     tarn_water_sample shifted = tarn__water_background(w, target[0], target[1]);
     return shifted.depth < surface_depth ? own : shifted;

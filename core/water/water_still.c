@@ -2,11 +2,19 @@
  * water"), which holds steps 3 to 7 of tarn_water.h drawn. No triangle is drawn:
  * the pixels of a tile marked with a water object are walked, and only the terms
  * that move with the clock are found there, from texture coordinates its plane
- * gives: step 1's normal, step 8's highlight, step 9's foam lines and step 10's
- * sparkles. */
+ * gives: step 1's normal, step 2's refracted sample (read from the picture itself),
+ * step 8's highlight, step 9's foam lines and step 10's sparkles. */
 #include "water/water_internal.h"
+#include "tile/tile_internal.h"
 
 #define Q16_ONE 65536u
+
+int tarn__still_keeps_depth(const tarn_water *water, int refracts)
+{
+    /* a foam band one unit deep or deeper holds every pixel whose refraction is
+     * cut by saturate(db - ds), so its places serve both */
+    return refracts && !((water->features & TARN_WATER_FOAM) != 0u && water->foam_distance >= (tarn_q16)Q16_ONE);
+}
 
 /* An affine function of the plane at pixel (i, j), modulo 2^32. */
 static uint32_t affine_at(const int32_t f[3], int32_t i, int32_t j)
@@ -30,15 +38,23 @@ static uint32_t texture_coordinate(uint32_t numerator, uint32_t recip, unsigned 
     return (uint32_t)tarn_floor_shift(high, down);
 }
 
+/* The surface's near/d at pixel (i, j), within the depth buffer's [1, 2^30]. */
+static uint32_t plane_inv_depth(const tarn_still_plane *p, int32_t i, int32_t j)
+{
+    return (uint32_t)tarn_clamp_i32((int32_t)affine_at(p->depth, i, j), 1, 1 << 30);
+}
+
 /* What a water pixel's moving terms read, from the plane at pixel (i, j): the
- * surface's near/d, within the depth buffer's [1, 2^30], and the texture
- * coordinates through one reciprocal of it. */
-static tarn_water_input plane_input(const tarn_still_plane *p, unsigned recip_steps, int32_t i, int32_t j)
+ * surface's near/d, and the texture coordinates through one reciprocal of it.
+ * Inline in both kinds of water pixel: called, it cost the beach 15 instructions a
+ * pixel on the M0 (this and sharp_at). */
+static TARN_ALWAYS_INLINE tarn_water_input plane_input(const tarn_still_plane *p, unsigned recip_steps, int32_t i,
+                                                      int32_t j)
 {
     tarn_water_input in;
     in.lit[0] = in.lit[1] = in.lit[2] = 0u; /* drawn into the still colour */
     in.fresnel = 0u;
-    in.inv_depth = (uint32_t)tarn_clamp_i32((int32_t)affine_at(p->depth, i, j), 1, 1 << 30);
+    in.inv_depth = plane_inv_depth(p, i, j);
     const unsigned lz = tarn_clz32(in.inv_depth);
     const uint32_t recip = tarn_recip_q30(in.inv_depth << lz, recip_steps);
     in.u = texture_coordinate(affine_at(p->u, i, j), recip, lz, p->uv_shift, &in.u_fine);
@@ -46,12 +62,15 @@ static tarn_water_input plane_input(const tarn_still_plane *p, unsigned recip_st
     return in;
 }
 
-/* Step 8's highlight at a pixel (Q8.8 a channel) from its own normal, which `n`
- * returns for the sparkles. */
-static void own_highlight(const tarn_water_context *w, const tarn_water_input *in, tarn_water_normal *n,
-                          uint32_t highlight[3])
+/* Step 1's normal at a pixel, or the flat one without normal maps. */
+static tarn_water_normal surface_normal(const tarn_water_context *w, const tarn_water_input *in)
 {
-    *n = tarn__water_uses(w, TARN_WATER_NORMALS) ? tarn__water_surface_normal(w, in) : tarn__water_flat_normal();
+    return tarn__water_uses(w, TARN_WATER_NORMALS) ? tarn__water_surface_normal(w, in) : tarn__water_flat_normal();
+}
+
+/* Step 8's highlight (Q8.8 a channel) from a pixel's normal. */
+static void highlight_of(const tarn_water_context *w, tarn_water_normal *n, uint32_t highlight[3])
+{
     for (int c = 0; c < 3; c++) highlight[c] = 0u;
     if (tarn__water_uses(w, TARN_WATER_SPECULAR)) (void)tarn__water_specular(w, n, highlight);
 }
@@ -65,21 +84,101 @@ static uint32_t sharp_bits(const tarn_water_context *w)
     return tarn__water_uses(w, TARN_WATER_FOAM) ? TARN_BACKDROP_STILL_FOAM : 0u;
 }
 
-/* Step 9's place in the foam band at pixel (i, j), which the backdrop keeps where
- * foam can show; beyond the band (Q16_ONE) elsewhere. */
-static uint32_t foam_band(const tarn_water_context *w, const tarn_backdrop *b, uint32_t still, int32_t i, int32_t j)
+/* What one walk reads: the backdrop, the object's plane, the walk's number, and
+ * where it is. */
+typedef struct {
+    const tarn_backdrop *backdrop;
+    const tarn_still_plane *plane;
+    uint32_t number;
+    uint32_t mark;       /* the object's TARN_BACKDROP_STILL_OBJECT bits */
+    uint32_t sharp_bits; /* sharp_bits() */
+    int specular;        /* the object has a highlight: without, only sharp features move */
+    int refracts;        /* its refracted samples move (an apron to move in) */
+    int keeps_depth;     /* tarn__still_keeps_depth */
+    int32_t x0;          /* the tile's first column */
+    int32_t block_row;   /* the top row of the blocks of the row walked */
+} still_walk;
+
+/* Step 9's place in the foam band at pixel (i, j), from what the backdrop keeps
+ * where foam can show; beyond the band (Q16_ONE) elsewhere. */
+static uint32_t foam_band(const tarn_water_context *w, const still_walk *walk, uint32_t still, int32_t i, int32_t j)
 {
     if (!tarn__water_uses(w, TARN_WATER_FOAM) || (still & TARN_BACKDROP_STILL_FOAM) == 0u) return Q16_ONE;
-    return tarn__backdrop_foam_band(b, i, j);
+    const uint32_t kept = tarn__backdrop_kept(walk->backdrop, i, j);
+    return walk->keeps_depth ? tarn__water_foam_band(w, kept) : kept;
+}
+
+/* The depth of water db - ds beneath water pixel (x, y), Q16.16, where the
+ * backdrop keeps it (the depth itself, or from the place in a foam band at least
+ * one unit deep); DEEP where it keeps none (between kept pixels, all ones), the
+ * water there being deeper than that. */
+#define DEEP UINT32_MAX
+static uint32_t kept_depth(const tarn_water_context *w, const still_walk *walk, int32_t x, int32_t y)
+{
+    const uint32_t kept = tarn__backdrop_kept(walk->backdrop, x, y);
+    if (kept >= 0xFFFFu) return DEEP;
+    return walk->keeps_depth ? kept : tarn__water_mul_q16(kept, (uint32_t)w->water->foam_distance);
+}
+
+/* Where a pixel's refracted sample reads the still picture: its colour there,
+ * marks and all, and step 9's place in the foam band over the depth of water the
+ * sample lies under, seen from the pixel. */
+typedef struct {
+    uint32_t colour;
+    uint32_t band;
+} still_sample;
+
+/* The sample that lands at water pixel (x, y) of the walk's object for water pixel
+ * `in`: step 3's diff is db there less ds here, its own depth of water plus the
+ * depth of its surface less this one's. Where that is below 0 the opaque surface
+ * there lies in front of this pixel's water, and the sample is not taken (0
+ * returned). Where the backdrop keeps no depth of water there, it is deep: behind,
+ * and beyond any foam band. */
+static int moved_sample(const tarn_water_context *w, const still_walk *walk, int32_t x, int32_t y,
+                        const tarn_water_input *in, still_sample *s)
+{
+    const uint32_t below = kept_depth(w, walk, x, y);
+    s->band = Q16_ONE;
+    if (below == DEEP) return 1;
+    const uint32_t surface = tarn__water_depth_of(w, in->inv_depth);
+    const uint32_t opaque = tarn__water_depth_of(w, plane_inv_depth(walk->plane, x, y)) + below;
+    if (opaque < surface) return 0;
+    if (tarn__water_uses(w, TARN_WATER_FOAM)) s->band = tarn__water_foam_band(w, opaque - surface);
+    return 1;
+}
+
+/* Step 2 over still water: the sample of water pixel (i, j), with inputs `in` and
+ * normal `n`: the still picture where its refracted sample lands, when the walk's
+ * object's water draws there too and the opaque surface there lies behind this
+ * pixel's water; else the pixel's own (`still`), as the scene drawn whole keeps a
+ * sample that lands in front. The still terms read there are that pixel's, found
+ * over its own depth of water where the scene drawn whole finds them over the
+ * sample's depth seen from here: they change slowly across the water. */
+static still_sample refracted_sample(const tarn_water_context *w, const still_walk *walk, const tarn_water_input *in,
+                                     tarn_water_normal *n, uint32_t still, int32_t i, int32_t j)
+{
+    const uint32_t below = kept_depth(w, walk, i, j);
+    const uint32_t reach = below < Q16_ONE ? below : Q16_ONE; /* saturate(db - ds) */
+    int32_t target[2];
+    tarn__water_refracted_pixel(w, i, j, in, n, reach, target);
+    still_sample moved = {0u, Q16_ONE};
+    if (target[0] != i || target[1] != j) {
+        moved.colour = tarn__backdrop_colour_at(walk->backdrop, w->width, target[0], target[1]);
+        const int same_water = (moved.colour & TARN_BACKDROP_STILL_OBJECT) == walk->mark;
+        if (same_water && moved_sample(w, walk, target[0], target[1], in, &moved)) return moved;
+    }
+    const still_sample own = {still, foam_band(w, walk, still, i, j)};
+    return own;
 }
 
 /* The sharp features at water pixel (i, j) with its inputs, `n` its normal when it
  * found one, else NULL. */
-static unsigned sharp_at(const tarn_water_context *w, const tarn_backdrop *b, const tarn_water_input *in,
-                         const tarn_water_normal *n, uint32_t still, int32_t i, int32_t j)
+static TARN_ALWAYS_INLINE unsigned sharp_at(const tarn_water_context *w, const still_walk *walk,
+                                            const tarn_water_input *in, const tarn_water_normal *n, uint32_t still,
+                                            int32_t i, int32_t j)
 {
     const tarn_water_normal maps = n == NULL && tarn__water_sparkles_possible(w) ? tarn__water_map_x(w, in) : tarn__water_flat_normal();
-    return tarn__water_sharp_at(w, in, foam_band(w, b, still, i, j), n != NULL ? n : &maps);
+    return tarn__water_sharp_at(w, in, foam_band(w, walk, still, i, j), n != NULL ? n : &maps);
 }
 
 /* The still colour (0xRRGGBB below the marks of `still`) with a highlight and the
@@ -99,17 +198,38 @@ static tarn_still_block *block_at(const tarn_water_context *w, int32_t i, int32_
     return w->still_blocks != NULL ? &w->still_blocks[(i - x0) >> w->block_shift] : NULL;
 }
 
-/* What one walk reads: the backdrop, the object's plane, the walk's number, and
- * where it is. */
-typedef struct {
-    const tarn_backdrop *backdrop;
-    const tarn_still_plane *plane;
-    uint32_t number;
-    uint32_t sharp_bits; /* sharp_bits() */
-    int specular;        /* the object has a highlight: without, only sharp features move */
-    int32_t x0;          /* the tile's first column */
-    int32_t block_row;   /* the top row of the blocks of the row walked */
-} still_walk;
+/* Step 8's highlight at water pixel (i, j) with normal `n`: its block's when it
+ * shares it, else its own, kept for the block when it is the block's top-left
+ * pixel. */
+static void pixel_highlight(const tarn_water_context *w, const still_walk *walk, tarn_still_block *block, int shared,
+                            tarn_water_normal *n, int32_t i, int32_t j, uint32_t highlight[3])
+{
+    if (shared) {
+        for (int c = 0; c < 3; c++) highlight[c] = block->highlight[c];
+        return;
+    }
+    highlight_of(w, n, highlight);
+    if (!walk->specular || block == NULL || ((i | j) & ((1 << w->block_shift) - 1)) != 0) return;
+    for (int c = 0; c < 3; c++) block->highlight[c] = highlight[c];
+    block->lit = highlight[0] | highlight[1] | highlight[2];
+    block->walk = walk->number;
+    block->row = j;
+}
+
+/* Water pixel (i, j) of a walk that refracts: every pixel finds its own normal,
+ * since its refracted sample moves with it, and takes the still colour where that
+ * sample lands and the place in the foam band over it. */
+static uint32_t refracting_pixel(const tarn_water_context *w, const still_walk *walk, tarn_still_block *block,
+                                 int shared, uint32_t still, int32_t i, int32_t j)
+{
+    const tarn_water_input in = plane_input(walk->plane, w->recip_steps, i, j);
+    tarn_water_normal n = surface_normal(w, &in);
+    uint32_t highlight[3];
+    pixel_highlight(w, walk, block, shared, &n, i, j, highlight);
+    const still_sample s = refracted_sample(w, walk, &in, &n, still, i, j);
+    const int sharp = tarn__water_sparkles_possible(w) || s.band < Q16_ONE;
+    return over_still(w, s.colour, highlight, sharp ? tarn__water_sharp_at(w, &in, s.band, &n) : 0u);
+}
 
 /* Water pixel (i, j) of a walk: its block's highlight when this walk found it at
  * the block's top-left pixel, else its own, kept for the block when it is that
@@ -118,24 +238,19 @@ static uint32_t water_pixel(tarn_water_context *w, const still_walk *walk, uint3
 {
     tarn_still_block *block = block_at(w, i, walk->x0);
     const int shared = block != NULL && block->walk == walk->number && block->row == walk->block_row;
+    if (walk->refracts) return refracting_pixel(w, walk, block, shared, still, i, j);
     const int sharp = (still & walk->sharp_bits) != 0u;
     if (shared && !sharp) return block->lit ? over_still(w, still, block->highlight, 0u) : still & 0xFFFFFFu;
     if (!walk->specular && !sharp) return still & 0xFFFFFFu; /* nothing moves here */
     const tarn_water_input in = plane_input(walk->plane, w->recip_steps, i, j);
     if (shared || !walk->specular) {
         static const uint32_t dark[3] = {0u, 0u, 0u};
-        return over_still(w, still, shared ? block->highlight : dark, sharp_at(w, walk->backdrop, &in, NULL, still, i, j));
+        return over_still(w, still, shared ? block->highlight : dark, sharp_at(w, walk, &in, NULL, still, i, j));
     }
-    tarn_water_normal n;
+    tarn_water_normal n = surface_normal(w, &in);
     uint32_t highlight[3];
-    own_highlight(w, &in, &n, highlight);
-    if (block != NULL && ((i | j) & ((1 << w->block_shift) - 1)) == 0) {
-        for (int c = 0; c < 3; c++) block->highlight[c] = highlight[c];
-        block->lit = highlight[0] | highlight[1] | highlight[2];
-        block->walk = walk->number;
-        block->row = j;
-    }
-    return over_still(w, still, highlight, sharp ? sharp_at(w, walk->backdrop, &in, &n, still, i, j) : 0u);
+    pixel_highlight(w, walk, block, 0, &n, i, j, highlight);
+    return over_still(w, still, highlight, sharp ? sharp_at(w, walk, &in, &n, still, i, j) : 0u);
 }
 
 /* The first pixel of [from, end) that carries `mark`, or `end`: the walk's own
@@ -150,9 +265,11 @@ void tarn__water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop
                            tarn_tile_target *tile)
 {
     const tarn_pixel_rect r = tile->rect;
-    still_walk walk = {backdrop, &backdrop->planes[object], ++w->still_walks, sharp_bits(w),
-                       tarn__water_uses(w, TARN_WATER_SPECULAR), r.x0, 0};
     const uint32_t mark = (object + 1u) << TARN_BACKDROP_STILL_SHIFT;
+    const int refracts = TARN_LINK_APRON && tarn__water_uses(w, TARN_WATER_REFRACTION) && w->offset_limit > 0;
+    still_walk walk = {backdrop, &backdrop->planes[object], ++w->still_walks, mark, sharp_bits(w),
+                       tarn__water_uses(w, TARN_WATER_SPECULAR), refracts,
+                       tarn__still_keeps_depth(w->water, refracts), r.x0, 0};
     for (int32_t j = r.y0; j < r.y1; j++) {
         walk.block_row = j >> w->block_shift << w->block_shift;
         uint32_t *first = &tile->colour[(j - tile->origin_y) * tile->stride + (r.x0 - tile->origin_x)];

@@ -186,7 +186,8 @@ STRUCT_TYPE(T_QUALITY, tarn_quality, BLOCK,
             FIELD(tarn_quality, depth_bits, T_U8),         FIELD(tarn_quality, depth_interpolation, T_U8),
             FIELD(tarn_quality, tile_size, T_U8),
             FIELD(tarn_quality, refraction_apron, T_U8),   FIELD(tarn_quality, cluster_bins, T_U8),
-            FIELD(tarn_quality, fog_argument_bits, T_U8),  FIELD(tarn_quality, water_block, T_U8));
+            FIELD(tarn_quality, fog_argument_bits, T_U8),  FIELD(tarn_quality, water_block, T_U8),
+            FIELD(tarn_quality, refraction_normal, T_U8));
 STRUCT_TYPE(T_CONFIG, tarn_frame_config, BLOCK,
             FIELD(tarn_frame_config, width, T_U16), FIELD(tarn_frame_config, height, T_U16),
             FIELD(tarn_frame_config, quality, T_QUALITY), FIELD(tarn_frame_config, time_ms, T_U32));
@@ -1014,7 +1015,8 @@ enum {
     USES_DEPTH16 = 1u << 5,
     USES_DEPTH32 = 1u << 6,
     USES_EXACT_DEPTH = 1u << 7,
-    USES_FOUND_BINS = 1u << 8 /* bins on, and the static view holds none for its grid */
+    USES_FOUND_BINS = 1u << 8, /* bins on, and the static view holds none for its grid */
+    USES_REFRACTION_EXACT = 1u << 9
 };
 
 static const struct {
@@ -1025,7 +1027,7 @@ static const struct {
     {"PERSPECTIVE_PIXEL", USES_PERSPECTIVE_PIXEL},   {"APRON", USES_APRON},
     {"WATER_BLOCKS", USES_WATER_BLOCKS},             {"DEPTH16", USES_DEPTH16},
     {"DEPTH32", USES_DEPTH32},                       {"EXACT_DEPTH", USES_EXACT_DEPTH},
-    {"FOUND_BINS", USES_FOUND_BINS}};
+    {"FOUND_BINS", USES_FOUND_BINS},                 {"REFRACTION_EXACT", USES_REFRACTION_EXACT}};
 
 static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
 {
@@ -1038,7 +1040,8 @@ static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
            (q->refraction_apron != 0 ? USES_APRON : 0u) | (q->water_block > 1 ? USES_WATER_BLOCKS : 0u) |
            (q->depth_bits == 16 ? USES_DEPTH16 : 0u) | (q->depth_bits == 32 ? USES_DEPTH32 : 0u) |
            (q->depth_interpolation == TARN_DEPTH_EXACT ? USES_EXACT_DEPTH : 0u) |
-           (finds_bins ? USES_FOUND_BINS : 0u);
+           (finds_bins ? USES_FOUND_BINS : 0u) |
+           (q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT ? USES_REFRACTION_EXACT : 0u);
 }
 
 static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,

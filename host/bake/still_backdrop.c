@@ -1,7 +1,8 @@
 /* still_backdrop.c: the still-water backdrop (backdrop.h, tarn_scene.h "Still
  * water"): the scene drawn with its water's still terms alone, each water pixel
- * marked with its object and where foam can show, the foam band's places, and
- * each water object's plane (still_planes.h). */
+ * marked with its object and where foam can show, the depth of water or the foam
+ * band's places where they are shallow, and each water object's plane
+ * (still_planes.h). */
 #include "still_backdrop.h"
 #include "backdrop_frames.h"
 #include "tarn_internal.h"
@@ -77,11 +78,6 @@ static int still_water_planes(const tarn_scene *scene, const tarn_frame_config *
     if (scene->underwater != NULL)
         return tarn_fail(err, "--backdrop still: the scene's underwater view moves every pixel with the clock; "
                               "use --backdrop on");
-    const int32_t apron = tarn_frame_apron_pixels(scene, config);
-    if (apron > 0)
-        return tarn_fail(err, "--backdrop still: the water refracts up to %d pixels at this quality, and a "
-                              "refracted sample moves with the clock; use --apron off (as --quality fast does) "
-                              "or --backdrop on", (int)apron);
     uint32_t water_objects = 0;
     for (uint32_t i = 0; i < scene->object_count; i++) water_objects += (uint32_t)tarn_object_is_water(&scene->objects[i]);
     if (water_objects > TARN_BACKDROP_STILL_OBJECTS_MAX)
@@ -145,12 +141,26 @@ static uint32_t depth_q30(const tarn_drawn_frame *f, size_t k)
     return q30;
 }
 
-/* Each water pixel's place in its object's foam band (step 9's f, Q0.16) as the
- * scene drawn whole finds it with a pixel's own effects, by the core's own steps:
- * from the opaque depth beneath and the water's own near/d. Where it is in the band
- * (f < 1), `band` is 1 and the pixel's colour takes TARN_BACKDROP_STILL_FOAM. */
-static int find_foam_places(const tarn_scene *scene, const tarn_frame_config *config, const tarn_drawn_frame *opaque,
-                            tarn_drawn_frame *still, const uint8_t *water, uint16_t *places, uint8_t *band,
+/* What the backdrop keeps at a water pixel over `diff` of water (Q16.16 world
+ * units), for its object's context (tarn__still_keeps_depth): the depth of water
+ * below 0xFFFF, which marks the pixels between kept ones, or the place in the foam
+ * band below 1; 65536 where it keeps nothing. */
+static uint32_t kept_value(const tarn_water_context *context, int refracts, uint32_t diff)
+{
+    const int foam = tarn__water_uses(context, TARN_WATER_FOAM);
+    if (!foam && !refracts) return 65536u;
+    if (tarn__still_keeps_depth(context->water, refracts)) return diff < 0xFFFFu ? diff : 65536u;
+    return tarn__water_foam_band(context, diff);
+}
+
+/* At each water pixel, what the frame reads of the depth of water beneath it
+ * (tarn__still_keeps_depth: the depth itself, or the place in the foam band, Q0.16),
+ * found as the scene drawn whole finds it with a pixel's own effects, by the core's
+ * own steps: from the opaque depth beneath and the water's own near/d. Where it is
+ * kept, `kept` is 1; where foam can show (step 9's f < 1), the pixel's colour takes
+ * TARN_BACKDROP_STILL_FOAM. */
+static int find_kept_values(const tarn_scene *scene, const tarn_frame_config *config, const tarn_drawn_frame *opaque,
+                            tarn_drawn_frame *still, const uint8_t *water, uint16_t *values, uint8_t *kept,
                             tarn_error *err)
 {
     tarn_drawn_frame surface = {NULL, NULL, 0, 0};
@@ -159,20 +169,23 @@ static int find_foam_places(const tarn_scene *scene, const tarn_frame_config *co
     tarn__view_setup(scene, config, &view);
     tarn_water_context context;
     memset(&context, 0, sizeof context);
+    const int apron = tarn_frame_apron_pixels(scene, config) > 0;
     for (size_t k = 0; k < (size_t)config->width * config->height; k++) {
-        places[k] = 0xFFFFu;
-        band[k] = 0;
+        values[k] = 0xFFFFu;
+        kept[k] = 0;
         if (!water[k]) continue;
         const tarn_object *object = water_object(scene, (still->rgb[k] & TARN_BACKDROP_STILL_OBJECT) >> TARN_BACKDROP_STILL_SHIFT);
         if (context.object != object) tarn__water_context_setup(&context, &view, config, object);
-        if (!tarn__water_uses(&context, TARN_WATER_FOAM)) continue;
+        const int refracts = apron && tarn__water_uses(&context, TARN_WATER_REFRACTION);
         const uint32_t below = tarn__water_linear_depth(depth_q30(opaque, k), context.near, context.far, context.recip_steps);
         const uint32_t at = tarn__water_linear_depth(depth_q30(&surface, k), context.near, context.far, context.recip_steps);
-        const uint32_t f = tarn__water_foam_band(&context, below > at ? below - at : 0u);
-        if (f >= 65536u) continue;
-        places[k] = (uint16_t)f;
-        band[k] = 1;
-        still->rgb[k] |= TARN_BACKDROP_STILL_FOAM;
+        const uint32_t diff = below > at ? below - at : 0u;
+        const uint32_t value = kept_value(&context, refracts, diff);
+        if (value >= 65536u) continue;
+        values[k] = (uint16_t)value;
+        kept[k] = 1;
+        if (tarn__water_uses(&context, TARN_WATER_FOAM) && tarn__water_foam_band(&context, diff) < 65536u)
+            still->rgb[k] |= TARN_BACKDROP_STILL_FOAM;
     }
     tarn_drawn_free(&surface);
     return 0;
@@ -203,20 +216,21 @@ int tarn_still_image_make(const tarn_scene *scene, const tarn_frame_config *conf
     tarn_backdrop_set_quality(&b->backdrop, &config->quality, 1);
     const size_t pixels = (size_t)config->width * config->height;
     *water = malloc(pixels);
-    uint8_t *band = malloc(pixels);
-    uint16_t *places = malloc(pixels * sizeof *places);
+    uint8_t *kept = malloc(pixels);
+    uint16_t *values = malloc(pixels * sizeof *values);
     tarn_drawn_frame opaque = {NULL, NULL, 0, 0}, still = {NULL, NULL, 0, 0};
-    /* the places in the band are kept as a frame's depth is */
-    const tarn_drawn_frame kept = {NULL, (uint8_t *)places, sizeof *places, config->width};
-    const int failed = *water == NULL || band == NULL || places == NULL
+    /* the values are kept as a frame's depth is */
+    const tarn_drawn_frame kept_frame = {NULL, (uint8_t *)values, sizeof *values, config->width};
+    const int failed = *water == NULL || kept == NULL || values == NULL
         ? tarn_fail(err, "backdrop: out of memory drawing the still water")
         : draw_still_frames(scene, config, &opaque, &still, *water, err) ||
-              find_foam_places(scene, config, &opaque, &still, *water, places, band, err) ||
-              tarn_backdrop_index_colours(still.rgb, pixels, b, err) || tarn_backdrop_keep_depth(&kept, band, config->height, b, err);
+              find_kept_values(scene, config, &opaque, &still, *water, values, kept, err) ||
+              tarn_backdrop_index_colours(still.rgb, pixels, b, err) ||
+              tarn_backdrop_keep_depth(&kept_frame, kept, config->height, b, err);
     tarn_drawn_free(&opaque);
     tarn_drawn_free(&still);
-    free(band);
-    free(places);
+    free(kept);
+    free(values);
     return failed;
 }
 

@@ -32,7 +32,9 @@ const char tarn_cli_usage[] =
     "         each tile renders around its water: as far as it reaches, not at all, or N pixels 0..32)\n"
     "         --bins on|off (find each cluster's screen box once a frame, 4 bytes a cluster)\n"
     "         --water-block 1|2|4 (water effects found at every pixel, or once per 2x2 or 4x4 block:\n"
-    "         tiles a multiple of the block only)\n";
+    "         tiles a multiple of the block only)\n"
+    "         --refraction-normal shared|exact (the normal refraction moves by: the highlight's\n"
+    "         14 bits, or found again from the maps' texels to 2^-15)\n";
 
 static int parse_size(const char *text, tarn_cli_options *o, tarn_error *err)
 {

@@ -2,7 +2,9 @@
  *
  *   tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]
  *               [--reference [--snapped]] [--backdrop on|off|still] [QUALITY]
- *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--snapped] [QUALITY]
+ *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png]
+ *                [--backdrop on|off|still] [QUALITY]   (the core, through a backdrop with
+ *                                              --backdrop, on the yardstick: yardstick.h)
  *   tarn accuracy --math
  *   tarn memory SCENE [--size WxH] [QUALITY]   (the working memory a frame needs)
  *   tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]

@@ -11,6 +11,9 @@ static const tarn_option_choice depth_bits_values[] = {{"16", 16, NULL}, {"32", 
 static const tarn_option_choice bins_values[] = {
     {"on", 1, "find each cluster's screen box once a frame"},
     {"off", 0, "each tile tests every cluster's sphere: least memory"}};
+static const tarn_option_choice refraction_normal_values[] = {
+    {"shared", TARN_REFRACTION_NORMAL_SHARED, "the highlight's 14-bit normal"},
+    {"exact", TARN_REFRACTION_NORMAL_EXACT, "found again from the maps' texels, to 2^-15"}};
 static const tarn_option_choice depth_interpolation_values[] = {
     {"exact", TARN_DEPTH_EXACT, "near/d rounded exactly at each pixel"},
     {"plane", TARN_DEPTH_PLANE, "stepped on a plane, a division less a triangle"}};
@@ -37,7 +40,8 @@ static const byte_knob byte_knobs[] = {
     CHOICE_KNOB("--water-block", water_block, water_block_values),
     CHOICE_KNOB("--depth", depth_bits, depth_bits_values),
     CHOICE_KNOB("--bins", cluster_bins, bins_values),
-    CHOICE_KNOB("--depth-interpolation", depth_interpolation, depth_interpolation_values)};
+    CHOICE_KNOB("--depth-interpolation", depth_interpolation, depth_interpolation_values),
+    CHOICE_KNOB("--refraction-normal", refraction_normal, refraction_normal_values)};
 
 static int parse_byte_knob(const byte_knob *knob, const char *text, tarn_quality *q, tarn_error *err)
 {

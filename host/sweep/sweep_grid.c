@@ -32,6 +32,7 @@ static const sweep_knob knobs[] = {
     {"--bins", {"on", "off"}, {NULL}, {NULL}, {NULL}},
     {"--water-block", {"1", "2"}, {NULL}, {NULL}, {NULL}},
     {"--depth-interpolation", {"exact", "plane"}, {NULL}, {NULL}, {NULL}},
+    {"--refraction-normal", {"shared", "exact"}, {NULL}, {NULL}, {NULL}},
 };
 
 #define KNOB_COUNT (sizeof knobs / sizeof knobs[0])
@@ -176,12 +177,13 @@ void tarn_sweep_quality_text(const tarn_quality *q, char *out, size_t size)
     char span[16], apron[16];
     snprintf(out, size,
              "--perspective %s --recip-steps %u --depth %u --apron %s --exp2 %u:%s --fog-bits %u "
-             "--subpixel %u --tile %u --bins %s --water-block %u --depth-interpolation %s",
+             "--subpixel %u --tile %u --bins %s --water-block %u --depth-interpolation %s --refraction-normal %s",
              tarn_sweep_perspective_text(q, span, sizeof span), (unsigned)q->recip_newton_steps,
              (unsigned)q->depth_bits, tarn_sweep_apron_text(q, apron, sizeof apron), (unsigned)q->exp2.entries,
              q->exp2.interpolate ? "linear" : "nearest", (unsigned)q->fog_argument_bits,
              (unsigned)q->subpixel_bits, (unsigned)q->tile_size, q->cluster_bins ? "on" : "off",
-             (unsigned)q->water_block, tarn_sweep_depth_text(q));
+             (unsigned)q->water_block, tarn_sweep_depth_text(q),
+             q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT ? "exact" : "shared");
 }
 
 int tarn_sweep_write_points(const char *path, const tarn_quality *qualities, size_t count, tarn_error *err)

@@ -113,6 +113,12 @@
 #define TARN_LINK_APRON 1
 #endif
 
+/* The exact normal for refraction: the quality's refraction_normal
+ * TARN_REFRACTION_NORMAL_EXACT. */
+#ifndef TARN_LINK_REFRACTION_EXACT
+#define TARN_LINK_REFRACTION_EXACT 1
+#endif
+
 /* Water effects shared by 2x2 or 4x4 blocks: the quality's water_block 2 or 4. */
 #ifndef TARN_LINK_WATER_BLOCKS
 #define TARN_LINK_WATER_BLOCKS 1

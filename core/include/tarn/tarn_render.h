@@ -122,7 +122,21 @@ typedef struct {
                                    (tarn_scene.h), the block shares its highlight. The
                                    tile size must then be a multiple of it. Ignored
                                    under the underwater view. */
+    uint8_t refraction_normal;  /* tarn_refraction_normal: the normal a refracted sample
+                                   moves by, where it moves (a refraction apron, or
+                                   still water's picture) */
 } tarn_quality;
+
+/* Refraction moves a sample by N.xy times tens of pixels, then rounds to a pixel:
+ * N's last bits decide which pixel near half-way points. */
+typedef enum {
+    TARN_REFRACTION_NORMAL_SHARED = 0, /* the normal the highlight uses: a 14-bit
+                                          direction normalised to Q1.15 */
+    TARN_REFRACTION_NORMAL_EXACT = 1   /* found again from the maps' texel codes and
+                                          normalised to 2^-15 of its length: about
+                                          ten times nearer, for two more texel reads
+                                          and a reciprocal square root a pixel */
+} tarn_refraction_normal;
 
 #define TARN_FOG_ARGUMENT_BITS_MIN 4u
 #define TARN_FOG_ARGUMENT_BITS_MAX 16u

@@ -149,8 +149,11 @@ typedef struct {
  * images differ from the scene drawn whole by the rounding of the still terms, by
  * the texture coordinates (exact on the plane, where triangles interpolate them)
  * and, with water blocks, by the highlights the blocks share; docs/bake.md gives
- * the error. It applies to a frame without refraction's moves (no apron, or no
- * refraction) and without the underwater view. */
+ * the error. A refracted sample (with the quality's apron) is read from the
+ * picture itself wherever it lands: the still colour there, whose still terms are
+ * that pixel's rather than the refracting one's, and the pixel's own where it
+ * lands off the object's water or in front of it. It applies to a frame without
+ * the underwater view. */
 #define TARN_BACKDROP_STILL_OBJECT 0x7E000000u
 #define TARN_BACKDROP_STILL_SHIFT 25u
 #define TARN_BACKDROP_STILL_OBJECTS_MAX 63u
@@ -203,8 +206,13 @@ typedef struct {
                                   it by depth_bits (a uint16_t tarn_depth16 code or a
                                   uint32_t Q1.30), 0 where no triangle drew, all ones
                                   where the backdrop keeps none (between close spans);
-                                  with still_water, whatever depth_bits, the place in
-                                  the foam band (step 9's f, Q0.16) as a uint16_t */
+                                  with still_water, whatever depth_bits, a uint16_t:
+                                  where the frame refracts (an apron) and the water's
+                                  foam band, if any, is less than one unit deep, the
+                                  depth of water beneath, db - ds in Q0.16 world
+                                  units, where that is less than one unit; else the
+                                  place in the foam band (step 9's f, Q0.16) where
+                                  that is less than 1 */
     uint32_t depth_count;      /* entries of depth */
 } tarn_backdrop;
 
