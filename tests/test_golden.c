@@ -29,7 +29,7 @@ static const char *const scenes[] = {
     "scenes/effects/normals.json", "scenes/effects/ramp.json", "scenes/effects/refraction.json",
     "scenes/effects/sparkles.json", "scenes/effects/underwater.json", "scenes/extremes/dense.json",
     "scenes/extremes/far.json", "scenes/extremes/grazing.json", "scenes/extremes/huge.json",
-    "scenes/extremes/steep.json", "scenes/extremes/tiny.json",
+    "scenes/extremes/steep.json", "scenes/extremes/tiny.json", "scenes/extremes/deep-squared.json",
 };
 
 /* The scenes whose water reaches every knob: refraction, foam, sparkles, the

@@ -98,6 +98,12 @@ uint32_t tarn__water_mul_q16(uint32_t a, uint32_t b);
  * to `bits` fraction bits (tarn_quality.fog_argument_bits; 16 keeps it whole),
  * saturated like tarn__water_mul_q16. */
 uint32_t tarn__fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits);
+/* The squared absorption's exp2 argument rate * x^2 (rate per unit^2 and x, Q16.16,
+ * non-negative; the result Q16.16), within 2^-27 of the product relative, saturated
+ * only where the product passes INT32_MAX (where exp2 is 0 long before). The depth is
+ * not cut to fog_argument_bits: the cut buys fog one multiply, which this has not to
+ * save, and cut before squaring it would cost a shallow depth most of its bits. */
+uint32_t tarn__squared_argument_q16(uint32_t rate, uint32_t x);
 /* (a * b / 2^16) modulo 2^16: the fraction of a texture repeat, for any a. Only low
  * bits matter, so 16x16-bit products suffice, and negative or wrapped inputs give
  * the right fraction too. Inline: it runs four times a water pixel. */
