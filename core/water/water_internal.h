@@ -88,6 +88,10 @@ typedef struct {
     uint32_t inv_depth; /* the water surface's near/d, Q1.30 */
     uint32_t lit[3];    /* material colour times shade, Q8.8 */
     uint32_t u, v;      /* texture coordinates, Q16.16 modulo 2^16 repeats */
+    uint16_t u_low, v_low; /* their next 16 fraction bits, as far as the triangle's
+                              interpolation holds them: a map's scale multiplies the
+                              coordinate's rounding, and at a scale of 12 the last
+                              bit of Q16.16 alone was 1/85 of a texel */
     uint32_t fresnel;   /* saturate(1 - n.v)^2, Q1.15 */
 } tarn_water_input;
 
@@ -111,6 +115,15 @@ static inline uint32_t tarn__water_repeat_fraction(uint32_t a, uint32_t b)
 {
     const uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
     return (ah * bl + al * bh + ((al * bl) >> 16)) & 0xFFFFu;
+}
+/* A map coordinate's fraction of a repeat, Q0.16: (u + low / 2^16) * scale, u and
+ * scale Q16.16, low the coordinate's next 16 bits; modulo 2^16 like
+ * tarn__water_repeat_fraction, and within two units below the exact value. The low
+ * bits' share is low * scale / 2^32, of which the scale's fraction adds less than
+ * one unit: one product more. */
+static inline uint32_t tarn__water_map_fraction(uint32_t u, uint32_t low, uint32_t scale)
+{
+    return (tarn__water_repeat_fraction(u, scale) + ((low * (scale >> 16)) >> 16)) & 0xFFFFu;
 }
 /* A texel channel as a normal component, (2c - 255) / 255 in Q1.15. */
 static inline int32_t tarn__water_normal_component(uint8_t c)
@@ -232,8 +245,8 @@ static inline uint32_t tarn__water_channel_q8(uint32_t rgb, int c)
 static inline const uint8_t *tarn__water_panned_texel(const tarn_texture *t, const tarn_panning *pan,
                                                      const uint16_t offset[2], const tarn_water_input *in)
 {
-    uint32_t u = (tarn__water_repeat_fraction(in->u, (uint32_t)pan->scale) + offset[0]) & 0xFFFFu;
-    uint32_t v = (tarn__water_repeat_fraction(in->v, (uint32_t)pan->scale) + offset[1]) & 0xFFFFu;
+    uint32_t u = (tarn__water_map_fraction(in->u, in->u_low, (uint32_t)pan->scale) + offset[0]) & 0xFFFFu;
+    uint32_t v = (tarn__water_map_fraction(in->v, in->v_low, (uint32_t)pan->scale) + offset[1]) & 0xFFFFu;
     return tarn__water_texel_at(t, u, v);
 }
 

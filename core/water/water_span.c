@@ -4,11 +4,13 @@
  * top-left pixel found (tarn_water_block). */
 #include "water/water_internal.h"
 
-/* T / 2^shift rounded to nearest: the water's panned maps multiply u and v by
- * their scale, which would multiply a truncation's bias too. */
-static uint32_t rounded_shift(uint32_t t, unsigned shift)
+/* A texture coordinate's T value (Q16.16 shifted up by `shift`, at most 30) as
+ * Q16.16, added to the triangle's whole repeats, and the 16 fraction bits below
+ * (zero past T's own). */
+static uint32_t coordinate_q16(uint32_t t, unsigned shift, uint32_t base, uint16_t *low)
 {
-    return shift == 0u ? t : (t + (1u << (shift - 1u))) >> shift;
+    *low = (uint16_t)(shift >= 16u ? t >> (shift - 16u) : t << (16u - shift));
+    return (t >> shift) + base;
 }
 
 /* The water pixel's inputs from the interpolated attributes. */
@@ -18,8 +20,8 @@ static tarn_water_input water_input(const tarn_attribute_set *set, const uint32_
     tarn_water_input in;
     in.inv_depth = inv_depth;
     for (int c = 0; c < 3; c++) in.lit[c] = values[c] >> set->t_shift[c];
-    in.u = rounded_shift(values[TARN_ATTRIBUTE_U], set->t_shift[TARN_ATTRIBUTE_U]) + set->u_base;
-    in.v = rounded_shift(values[TARN_ATTRIBUTE_V], set->t_shift[TARN_ATTRIBUTE_V]) + set->v_base;
+    in.u = coordinate_q16(values[TARN_ATTRIBUTE_U], set->t_shift[TARN_ATTRIBUTE_U], set->u_base, &in.u_low);
+    in.v = coordinate_q16(values[TARN_ATTRIBUTE_V], set->t_shift[TARN_ATTRIBUTE_V], set->v_base, &in.v_low);
     in.fresnel = set->count > TARN_ATTRIBUTE_FRESNEL ? values[TARN_ATTRIBUTE_FRESNEL] >> set->t_shift[TARN_ATTRIBUTE_FRESNEL] : 0u;
     return in;
 }

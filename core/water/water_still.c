@@ -16,16 +16,20 @@ static uint32_t affine_at(const int32_t f[3], int32_t i, int32_t j)
 
 /* numerator * 2^shift / depth in Q16.16, modulo 2^32, from depth's reciprocal
  * recip = 2^62 / (depth << lz): numerator * recip / 2^32 * 2^(shift + lz - 30),
- * rounded to nearest as the rasterizer rounds its coordinates: the panned maps
- * multiply them by their scale, which would multiply a truncation's bias too. */
-static uint32_t texture_coordinate(uint32_t numerator, uint32_t recip, unsigned lz, unsigned shift)
+ * and in `low` the 16 fraction bits below, as the rasterizer hands them on
+ * (tarn_water_input): the panned maps multiply the coordinate by their scale. */
+static uint32_t texture_coordinate(uint32_t numerator, uint32_t recip, unsigned lz, unsigned shift, uint16_t *low)
 {
     const int32_t high = tarn_mul_hi_s32_u32((int32_t)numerator, recip);
     const int up = (int)(shift + lz) - 30; /* -29..32: lz 1..31, shift 0..31 */
+    *low = 0u;
     if (up >= 32) return 0u;
     if (up >= 0) return (uint32_t)high << up;
     const unsigned down = (unsigned)-up;
-    return (uint32_t)tarn_floor_shift((int32_t)((uint32_t)high + (1u << (down - 1u))), down);
+    /* past 16 bits below Q16.16, rounded to nearest there */
+    const int32_t rounded = down > 16u ? (int32_t)((uint32_t)high + (1u << (down - 17u))) : high;
+    *low = (uint16_t)(((uint32_t)rounded << (32u - down)) >> 16);
+    return (uint32_t)tarn_floor_shift(rounded, down);
 }
 
 /* What a water pixel's moving terms read, from the plane at pixel (i, j): the
@@ -39,8 +43,8 @@ static tarn_water_input plane_input(const tarn_still_plane *p, unsigned recip_st
     in.inv_depth = (uint32_t)tarn_clamp_i32((int32_t)affine_at(p->depth, i, j), 1, 1 << 30);
     const unsigned lz = tarn_clz32(in.inv_depth);
     const uint32_t recip = tarn_recip_q30(in.inv_depth << lz, recip_steps);
-    in.u = texture_coordinate(affine_at(p->u, i, j), recip, lz, p->uv_shift);
-    in.v = texture_coordinate(affine_at(p->v, i, j), recip, lz, p->uv_shift);
+    in.u = texture_coordinate(affine_at(p->u, i, j), recip, lz, p->uv_shift, &in.u_low);
+    in.v = texture_coordinate(affine_at(p->v, i, j), recip, lz, p->uv_shift, &in.v_low);
     return in;
 }
 
