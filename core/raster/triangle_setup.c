@@ -72,17 +72,34 @@ tarn_pixel_box tarn__triangle_pixels(const tarn_triangle_setup *t)
     return tarn__bounds_pixels(&bounds, t->subpixel_bits);
 }
 
-/* Edges 1 and 2 at the centre of the pixel every plane is anchored at, (box.x0,
- * box.y0): the same for all of a triangle's planes, so taken once. */
+/* Where every plane of a triangle is found: the pixel nearest its farthest vertex
+ * (the least near/d), from that vertex's value and the edge values there that
+ * weigh the other two. A plane's rounding grows with the distance from where it
+ * is found, and perspective divides by the plane of q, which is least at that
+ * vertex: found there, the rounding is least where a unit of it weighs the most.
+ * Found at the box's corner instead, a triangle cut by the near plane, its q a
+ * thousand times smaller at the far end, moved texels there by a third of a texel
+ * at a few thousand texels a triangle. The plane is then carried to the box's
+ * corner, modulo 2^32, so each pixel's value is the same number. */
 typedef struct {
-    int32_t e1, e2;
+    int far;             /* the vertex the planes start from */
+    int32_t i, j;        /* the pixel they are found at */
+    int32_t e_next, e_after; /* the edge values there weighing vertices far + 1 and far + 2 */
 } plane_anchor;
 
 static plane_anchor anchor_of(const tarn_triangle_setup *t)
 {
     const unsigned s = t->subpixel_bits;
-    const int32_t px = tarn__pixel_centre(t->box.x0, s), py = tarn__pixel_centre(t->box.y0, s);
-    const plane_anchor anchor = {edge_unbiased_at(&t->edges[1], px, py), edge_unbiased_at(&t->edges[2], px, py)};
+    plane_anchor anchor;
+    anchor.far = 0;
+    for (int k = 1; k < 3; k++)
+        if (t->v[k]->inv_depth < t->v[anchor.far]->inv_depth) anchor.far = k;
+    const tarn_screen_vertex *far = t->v[anchor.far];
+    anchor.i = tarn_floor_shift(far->x, s); /* the pixel whose square holds it */
+    anchor.j = tarn_floor_shift(far->y, s);
+    const int32_t px = tarn__pixel_centre(anchor.i, s), py = tarn__pixel_centre(anchor.j, s);
+    anchor.e_next = edge_unbiased_at(&t->edges[(anchor.far + 1) % 3], px, py);
+    anchor.e_after = edge_unbiased_at(&t->edges[(anchor.far + 2) % 3], px, py);
     return anchor;
 }
 
@@ -108,16 +125,21 @@ static tarn_plane make_plane(const tarn_triangle_setup *t, const tarn_divisor *a
                         const uint32_t value[3])
 {
     const unsigned s = t->subpixel_bits;
-    const tarn_edge *e1 = &t->edges[1], *e2 = &t->edges[2];
-    const int32_t d1 = (int32_t)(value[1] - value[0]), d2 = (int32_t)(value[2] - value[0]);
+    const int far = anchor->far, next = (far + 1) % 3, after = (far + 2) % 3;
+    const tarn_edge *e1 = &t->edges[next], *e2 = &t->edges[after];
+    const int32_t d1 = (int32_t)(value[next] - value[far]), d2 = (int32_t)(value[after] - value[far]);
     if (d1 == 0 && d2 == 0) { /* a flat plane: every quotient below would be 0 */
-        const tarn_plane flat = {value[0], 0u, 0u};
+        const tarn_plane flat = {value[far], 0u, 0u};
         return flat;
     }
-    int64_t at_anchor = value[0] + tarn_divide_round_approx_i64(weighted_sum(anchor->e1, d1, anchor->e2, d2), area2);
+    int64_t at_anchor =
+        value[far] + tarn_divide_round_approx_i64(weighted_sum(anchor->e_next, d1, anchor->e_after, d2), area2);
     int64_t step_x = tarn_divide_round_approx_i64(coefficient_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
     int64_t step_y = tarn_divide_round_approx_i64(coefficient_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
-    tarn_plane p = {(uint32_t)at_anchor, (uint32_t)step_x, (uint32_t)step_y};
+    /* carried to the box's corner, where tarn__plane_at counts from */
+    tarn_plane p = {(uint32_t)at_anchor + (uint32_t)step_x * (uint32_t)(t->box.x0 - anchor->i) +
+                        (uint32_t)step_y * (uint32_t)(t->box.y0 - anchor->j),
+                    (uint32_t)step_x, (uint32_t)step_y};
     return p;
 }
 
