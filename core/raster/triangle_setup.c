@@ -182,15 +182,21 @@ static int lit_alike(const tarn_triangle_setup *t)
     return 1;
 }
 
-/* Texture coordinates less their whole repeats (which do not move a texel). */
-static void texture_coordinates(const tarn_triangle_setup *t, int axis, uint32_t out[3], uint32_t *base)
+/* Texture coordinates less a base the pixels add back: for a texture, their whole
+ * repeats, which do not move a texel, so a pixel finds its texel in T alone; for
+ * water, whose maps add the base to each pixel's coordinate, their least value.
+ * The perspective divide's error is a share of T, and a water map's scale
+ * multiplies it: T holding a whole repeat of the mesh's coordinates, a map at
+ * scale 8192 on a triangle 1/128 of it across was off by a texel at one Newton
+ * step (2^-18); holding only the triangle's own span, by 1/64 of one. */
+static void texture_coordinates(const tarn_triangle_setup *t, int axis, int whole_repeats, uint32_t out[3],
+                                uint32_t *base)
 {
     int32_t c[3], low;
     for (int n = 0; n < 3; n++) c[n] = axis == 0 ? t->v[n]->uv.u : t->v[n]->uv.v;
     low = c[0] < c[1] ? c[0] : c[1];
     low = low < c[2] ? low : c[2];
-    int32_t whole = tarn_floor_shift(low, 16);
-    *base = (uint32_t)whole << 16;
+    *base = whole_repeats ? (uint32_t)tarn_floor_shift(low, 16) << 16 : (uint32_t)low;
     for (int n = 0; n < 3; n++) out[n] = (uint32_t)c[n] - *base;
 }
 
@@ -291,9 +297,10 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
     set->lit_full = (uint8_t)(set->first_varying == 3 && lit_is_full(set));
     if (request->uv) {
         uint32_t coordinate[3];
-        texture_coordinates(t, 0, coordinate, &set->u_base);
+        const int whole_repeats = request->texture != NULL;
+        texture_coordinates(t, 0, whole_repeats, coordinate, &set->u_base);
         add_attribute(set, t, &anchor, coordinate, q);
-        texture_coordinates(t, 1, coordinate, &set->v_base);
+        texture_coordinates(t, 1, whole_repeats, coordinate, &set->v_base);
         add_attribute(set, t, &anchor, coordinate, q);
         if (request->texture != NULL) set_texel_lookup(set, request->texture);
     }
