@@ -30,7 +30,8 @@ static const char *const scenes[] = {
     "scenes/effects/sparkles.json", "scenes/effects/underwater.json", "scenes/extremes/dense.json",
     "scenes/extremes/far.json", "scenes/extremes/grazing.json", "scenes/extremes/huge.json",
     "scenes/extremes/steep.json", "scenes/extremes/tiny.json", "scenes/extremes/deep-squared.json",
-    "scenes/extremes/huge-near.json", "scenes/extremes/uv-scale.json",
+    "scenes/extremes/huge-near.json", "scenes/extremes/uv-scale.json", "scenes/extremes/skim-above.json",
+    "scenes/extremes/skim-below.json",
 };
 
 /* The scenes whose water reaches every knob: refraction, foam, sparkles, the

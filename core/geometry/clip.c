@@ -60,16 +60,41 @@ static int32_t lerp_q30(int32_t from, int32_t to, int64_t t_q30)
     return (int32_t)(from + tarn_round_shift_i64(((int64_t)to - from) * t_q30, 30));
 }
 
+/* A coordinate with its 16 bits below Q16.16, as one Q16.32 number. */
+static int64_t fine(tarn_q16 v, uint16_t low)
+{
+    return (int64_t)v * 65536 + low;
+}
+
+/* A Q16.32 number's 16 bits below Q16.16, and its Q16.16 part (floor): exact, as
+ * the number less those bits is a multiple of 2^16. */
+static int64_t split_fine(int64_t v, uint16_t *low)
+{
+    *low = (uint16_t)((uint64_t)v & 0xFFFFu);
+    return tarn_round_shift_i64(v - *low, 16);
+}
+
+/* from + (to - from) * t in Q16.32 (t Q1.30), into its Q16.16 part and the 16 bits
+ * below. The difference reaches 2^48: taken in two parts, each product below 2^63. */
+static tarn_q16 lerp_fine_q30(int64_t from, int64_t to, int64_t t_q30, uint16_t *low)
+{
+    uint16_t delta_low;
+    const int64_t delta_high = split_fine(to - from, &delta_low);
+    const int64_t v = from + tarn_round_shift_i64(delta_high * t_q30, 14) + tarn_round_shift_i64(delta_low * t_q30, 30);
+    return (tarn_q16)split_fine(v, low); /* between from and to */
+}
+
 /* The crossing point, always measured from the inside vertex so that the two
- * triangles sharing a clipped edge get bit-identical new vertices. */
+ * triangles sharing a clipped edge get bit-identical new vertices. Its position
+ * keeps 16 bits below Q16.16 (the projection reads them); its attributes do not. */
 static tarn_view_vertex crossing(const tarn_view_vertex *inside, int64_t dist_inside,
                                  const tarn_view_vertex *outside, int64_t dist_outside)
 {
     int64_t t = ratio_q30(dist_inside, dist_inside - dist_outside);
     tarn_view_vertex v;
-    v.x = lerp_q30(inside->x, outside->x, t);
-    v.y = lerp_q30(inside->y, outside->y, t);
-    v.d = lerp_q30(inside->d, outside->d, t);
+    v.x = lerp_fine_q30(fine(inside->x, inside->x_low), fine(outside->x, outside->x_low), t, &v.x_low);
+    v.y = lerp_fine_q30(fine(inside->y, inside->y_low), fine(outside->y, outside->y_low), t, &v.y_low);
+    v.d = lerp_fine_q30(fine(inside->d, inside->d_low), fine(outside->d, outside->d_low), t, &v.d_low);
     v.uv.u = lerp_q30(inside->uv.u, outside->uv.u, t);
     v.uv.v = lerp_q30(inside->uv.v, outside->uv.v, t);
     for (int c = 0; c < 3; c++) v.lit[c] = lerp_q30(inside->lit[c], outside->lit[c], t);
@@ -98,8 +123,14 @@ static int clip_against(const tarn_view *view, int plane,
     }
     /* Rounding must not leave a new vertex a hair outside the depth range. */
     for (int i = 0; i < out; i++) {
-        if (plane == PLANE_NEAR && polygon[i].d < view->near) polygon[i].d = view->near;
-        if (plane == PLANE_FAR && polygon[i].d > view->far) polygon[i].d = view->far;
+        if (plane == PLANE_NEAR && polygon[i].d < view->near) {
+            polygon[i].d = view->near;
+            polygon[i].d_low = 0u;
+        }
+        if (plane == PLANE_FAR && (polygon[i].d > view->far || (polygon[i].d == view->far && polygon[i].d_low))) {
+            polygon[i].d = view->far;
+            polygon[i].d_low = 0u;
+        }
     }
     return out;
 }

@@ -15,12 +15,23 @@ typedef struct {
     unsigned shift;
 } normalised;
 
-static normalised normalise(uint32_t v) /* v > 0 */
+/* A positive Q16.32 number (a view coordinate with the 16 bits below its Q16.16
+ * that a clipped vertex keeps), below 2^48, as mantissa * 2^-shift in Q16.16 units:
+ * the mantissa's top bit set, the shift up to 47. */
+static normalised normalise_fine(uint64_t v) /* v > 0 */
 {
+    const uint32_t high = (uint32_t)(v >> 32), low = (uint32_t)v;
+    const unsigned lz = high != 0u ? tarn_clz32(high) : 32u + tarn_clz32(low);
     normalised n;
-    n.shift = tarn_clz32(v);
-    n.mantissa = v << n.shift;
+    n.mantissa = (uint32_t)((v << lz) >> 32);
+    n.shift = lz - 16u;
     return n;
+}
+
+/* A view coordinate with its bits below Q16.16, as one signed Q16.32 number. */
+static int64_t fine_coordinate(tarn_q16 v, uint16_t low)
+{
+    return (int64_t)v * 65536 + low;
 }
 
 /* round(m * 2^exponent) for the projection's ranges, saturated to INT32_MAX. */
@@ -34,14 +45,14 @@ static int32_t scale_rounded(uint32_t m, int exponent)
     return whole > (uint32_t)INT32_MAX - 1u ? INT32_MAX : (int32_t)(whole + half_bit);
 }
 
-/* offset * focal / depth in subpixels, rounded: `offset` view units (Q16.16), the
+/* offset * focal / depth in subpixels, rounded: `offset` view units (Q16.32), the
  * depth given by its normalised reciprocal `recip` (2^62 / mantissa). */
-static int32_t subpixels_from_centre(const tarn_view *view, int32_t offset, normalised depth,
+static int32_t subpixels_from_centre(const tarn_view *view, int64_t offset, normalised depth,
                                      uint32_t recip)
 {
     if (offset == 0) return 0;
-    const uint32_t magnitude = offset < 0 ? (uint32_t)0 - (uint32_t)offset : (uint32_t)offset;
-    const normalised x = normalise(magnitude);
+    const uint64_t magnitude = offset < 0 ? (uint64_t)0 - (uint64_t)offset : (uint64_t)offset;
+    const normalised x = normalise_fine(magnitude);
     /* |offset| / depth = mul_hi(x, recip) * 2^(depth.shift - x.shift - 30) */
     const uint32_t ratio = tarn_mul_hi_u32(x.mantissa, recip);
     /* times focal (Q20.12) and 2^subpixel_bits, back from Q12 */
@@ -65,10 +76,9 @@ static int32_t screen_coordinate(const tarn_view *view, int32_t along, int32_t f
 }
 
 /* near / depth in Q1.30 (1 << 30 on the near plane), at least 1. */
-static uint32_t inverse_depth_q30(const tarn_view *view, tarn_q16 depth_q16, normalised depth,
-                                  uint32_t recip)
+static uint32_t inverse_depth_q30(const tarn_view *view, int64_t depth_fine, normalised depth, uint32_t recip)
 {
-    if (depth_q16 <= view->near) return (uint32_t)1 << 30;
+    if (depth_fine <= (int64_t)view->near * 65536) return (uint32_t)1 << 30;
     /* near / depth = mul_hi(near, recip) * 2^(depth.shift - near_shift - 30) */
     const uint32_t ratio_q30 = tarn_mul_hi_u32(view->near_mantissa, recip);
     const unsigned down = view->near_shift - depth.shift; /* depth > near */
@@ -78,13 +88,15 @@ static uint32_t inverse_depth_q30(const tarn_view *view, tarn_q16 depth_q16, nor
 
 void tarn__project_position(const tarn_view *view, const tarn_view_vertex *in, tarn_screen_vertex *out)
 {
-    const tarn_q16 depth_q16 = in->d >= view->near ? in->d : view->near;
-    const normalised depth = normalise((uint32_t)depth_q16);
+    const int64_t near = (int64_t)view->near * 65536, d = fine_coordinate(in->d, in->d_low);
+    const int64_t depth_fine = d >= near ? d : near;
+    const normalised depth = normalise_fine((uint64_t)depth_fine);
     const uint32_t recip = tarn_recip_q30(depth.mantissa, TARN_RECIP_STEPS_MAX);
-    out->x = screen_coordinate(view, subpixels_from_centre(view, in->x, depth, recip), view->width);
+    const int64_t x = fine_coordinate(in->x, in->x_low), y = fine_coordinate(in->y, in->y_low);
+    out->x = screen_coordinate(view, subpixels_from_centre(view, x, depth, recip), view->width);
     /* screen y runs down; |along| <= INT32_MAX, so negating it is safe */
-    out->y = screen_coordinate(view, -subpixels_from_centre(view, in->y, depth, recip), view->height);
-    out->inv_depth = inverse_depth_q30(view, depth_q16, depth, recip);
+    out->y = screen_coordinate(view, -subpixels_from_centre(view, y, depth, recip), view->height);
+    out->inv_depth = inverse_depth_q30(view, depth_fine, depth, recip);
 }
 
 void tarn__project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out)

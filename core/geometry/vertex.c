@@ -138,6 +138,7 @@ void tarn__vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,
     const uint32_t half[6] = {x & 0xFFFFu, x >> 16, y & 0xFFFFu, y >> 16, z & 0xFFFFu, z >> 16};
     const unsigned f = xform->to_view_frac_bits;
     tarn_q16 *dest[3] = {&out->x, &out->y, &out->d};
+    out->x_low = out->y_low = out->d_low = 0u;
     for (int i = 0; i < 3; i++) {
         uint32_t low = xform->row_start_low[i], middle = xform->row_start_middle[i],
                  high = xform->row_start_high[i];

@@ -137,6 +137,7 @@ static void set_view_position(tarn_view_vertex *v, const tarn_cached_vertex *ver
     v->x = vertex->x;
     v->y = vertex->y;
     v->d = vertex->d;
+    v->x_low = v->y_low = v->d_low = 0u;
 }
 
 /* The slot that still holds the vertex, or NULL once another took it over. */
