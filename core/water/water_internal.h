@@ -38,7 +38,7 @@ typedef struct tarn_water_context {
     unsigned fog_argument_bits;
     unsigned recip_steps;
 
-    uint16_t pan_a[2], pan_b[2], foam_pan[2]; /* Q0.16 offsets of the panning textures */
+    uint32_t pan_a[2], pan_b[2], foam_pan[2]; /* Q0.32 offsets of the panning textures */
     uint16_t foam_phase;        /* time * foam_line_speed, Q0.16 turns of the band */
     int32_t half_vector[3];     /* Q1.15, in the object's tangent frame (u, v, up) */
     uint32_t light_q8[3];       /* light colour, Q8.8 per channel */
@@ -116,14 +116,18 @@ static inline uint32_t tarn__water_repeat_fraction(uint32_t a, uint32_t b)
     const uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
     return (ah * bl + al * bh + ((al * bl) >> 16)) & 0xFFFFu;
 }
-/* A map coordinate's fraction of a repeat, Q0.16: (u + low / 2^16) * scale, u and
- * scale Q16.16, low the coordinate's next 16 bits; modulo 2^16 like
- * tarn__water_repeat_fraction, and within two units below the exact value. The low
- * bits' share is low * scale / 2^32, of which the scale's fraction adds less than
- * one unit: one product more. */
+/* A map coordinate's fraction of a repeat, Q0.32: (u + low / 2^16) * scale modulo
+ * one repeat, u and scale Q16.16, low the coordinate's next 16 bits; within two
+ * units below the exact value. u * scale is Q32.32 and its low word the fraction,
+ * which 16x16-bit products give (negative or wrapped u too); the low bits' share
+ * is low * scale / 2^16. Five products, where the Q0.16 fraction took four: at
+ * Q0.16 a 64-texel map's texel edges fell at 1/1024 of a texel, and a whole row of
+ * pixels level with one tipped with the pan offset's rounding. */
 static inline uint32_t tarn__water_map_fraction(uint32_t u, uint32_t low, uint32_t scale)
 {
-    return (tarn__water_repeat_fraction(u, scale) + ((low * (scale >> 16)) >> 16)) & 0xFFFFu;
+    const uint32_t uh = u >> 16, ul = u & 0xFFFFu, sh = scale >> 16, sl = scale & 0xFFFFu;
+    const uint32_t whole = ul * sl + ((uh * sl + ul * sh) << 16);
+    return whole + low * sh + ((low * sl) >> 16);
 }
 /* A texel channel as a normal component, (2c - 255) / 255 in Q1.15. */
 static inline int32_t tarn__water_normal_component(uint8_t c)
@@ -136,6 +140,9 @@ const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, 
 uint32_t tarn__water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps);
 /* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.16. */
 uint16_t tarn__water_pan_offset(tarn_q16 speed, uint32_t time_ms);
+/* The same in Q0.32, for the maps' Q0.32 fractions: floor(speed * time_ms * 2^16 /
+ * 1000) modulo 2^32. */
+uint32_t tarn__water_pan_offset_q32(tarn_q16 speed, uint32_t time_ms);
 
 /* What the water does to the background of one pixel: every step of tarn_water.h
  * but the background's colour, gathered so that the pixel's colour is one product
@@ -243,11 +250,12 @@ static inline uint32_t tarn__water_channel_q8(uint32_t rgb, int c)
 
 /* The texel of a panning texture under the pixel's uv, at the frame's pan offset. */
 static inline const uint8_t *tarn__water_panned_texel(const tarn_texture *t, const tarn_panning *pan,
-                                                     const uint16_t offset[2], const tarn_water_input *in)
+                                                     const uint32_t offset[2], const tarn_water_input *in)
 {
-    uint32_t u = (tarn__water_map_fraction(in->u, in->u_low, (uint32_t)pan->scale) + offset[0]) & 0xFFFFu;
-    uint32_t v = (tarn__water_map_fraction(in->v, in->v_low, (uint32_t)pan->scale) + offset[1]) & 0xFFFFu;
-    return tarn__water_texel_at(t, u, v);
+    const uint32_t u = tarn__water_map_fraction(in->u, in->u_low, (uint32_t)pan->scale) + offset[0];
+    const uint32_t v = tarn__water_map_fraction(in->v, in->v_low, (uint32_t)pan->scale) + offset[1];
+    /* a power-of-two side's texel is the Q0.32 fraction's top bits: its top 16 do */
+    return tarn__water_texel_at(t, u >> 16, v >> 16);
 }
 
 /* 2^(-rate * x) for rate, x >= 0 (Q16.16), Q0.16, through the frame's exp2 table. */
