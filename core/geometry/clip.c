@@ -85,8 +85,9 @@ static tarn_q16 lerp_fine_q30(int64_t from, int64_t to, int64_t t_q30, uint16_t 
 }
 
 /* The crossing point, always measured from the inside vertex so that the two
- * triangles sharing a clipped edge get bit-identical new vertices. Its position
- * keeps 16 bits below Q16.16 (the projection reads them); its attributes do not. */
+ * triangles sharing a clipped edge get bit-identical new vertices. Its position and
+ * texture coordinates keep 16 bits below Q16.16 (the projection and the raster read
+ * them): at the near plane a bit of Q16.16 is many pixels. */
 static tarn_view_vertex crossing(const tarn_view_vertex *inside, int64_t dist_inside,
                                  const tarn_view_vertex *outside, int64_t dist_outside)
 {
@@ -95,8 +96,10 @@ static tarn_view_vertex crossing(const tarn_view_vertex *inside, int64_t dist_in
     v.x = lerp_fine_q30(fine(inside->x, inside->x_low), fine(outside->x, outside->x_low), t, &v.x_low);
     v.y = lerp_fine_q30(fine(inside->y, inside->y_low), fine(outside->y, outside->y_low), t, &v.y_low);
     v.d = lerp_fine_q30(fine(inside->d, inside->d_low), fine(outside->d, outside->d_low), t, &v.d_low);
-    v.uv.u = lerp_q30(inside->uv.u, outside->uv.u, t);
-    v.uv.v = lerp_q30(inside->uv.v, outside->uv.v, t);
+    v.uv.u = lerp_fine_q30(fine(inside->uv.u, inside->uv_low[0]), fine(outside->uv.u, outside->uv_low[0]), t,
+                           &v.uv_low[0]);
+    v.uv.v = lerp_fine_q30(fine(inside->uv.v, inside->uv_low[1]), fine(outside->uv.v, outside->uv_low[1]), t,
+                           &v.uv_low[1]);
     for (int c = 0; c < 3; c++) v.lit[c] = lerp_q30(inside->lit[c], outside->lit[c], t);
     v.fresnel = lerp_q30(inside->fresnel, outside->fresnel, t);
     return v;

@@ -47,6 +47,7 @@ typedef struct {
      * last bit of Q16.16 is 0.4 pixels of a 128-pixel frame */
     uint16_t x_low, y_low, d_low;
     tarn_uv uv;        /* Q16.16 */
+    uint16_t uv_low[2]; /* the 16 bits below u and v, as x_low: a clipped vertex's own */
     int32_t lit[3];    /* lit colour, Q8.8 per channel */
     int32_t fresnel;   /* (1 - n.v)^2, Q1.15; water materials only */
 } tarn_view_vertex;

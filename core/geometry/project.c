@@ -102,6 +102,8 @@ void tarn__project_position(const tarn_view *view, const tarn_view_vertex *in, t
 void tarn__project_attributes(const tarn_view_vertex *in, tarn_screen_vertex *out)
 {
     out->uv = in->uv;
+    out->uv_low[0] = in->uv_low[0];
+    out->uv_low[1] = in->uv_low[1];
     for (int c = 0; c < 3; c++)
         out->lit[c] = (uint16_t)tarn_clamp_i32(in->lit[c], 0, 65280);
     out->fresnel = (uint16_t)tarn_clamp_i32(in->fresnel, 0, 32768);

@@ -238,6 +238,7 @@ void tarn__vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
         out->lit[c] = (int32_t)((vertex_channel * factor + 128u) >> 8); /* Q8.8 */
     }
     out->uv = tarn__vertex_uv(mesh, index);
+    out->uv_low[0] = out->uv_low[1] = 0u;
     out->fresnel = xform->fresnel ? fresnel_q15(xform, n, out) : 0;
 }
 

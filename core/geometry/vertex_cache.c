@@ -178,6 +178,7 @@ void tarn__cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, 
     for (int c = 0; c < 3; c++) v->lit[c] = vertex->lit[c];
     v->fresnel = vertex->fresnel;
     v->uv = tarn__vertex_uv(mesh, vertex->index);
+    v->uv_low[0] = v->uv_low[1] = 0u;
 }
 
 void tarn__cached_attributes(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_screen_vertex *screen)
@@ -190,4 +191,5 @@ void tarn__cached_attributes(tarn_vertex_cache *cache, tarn_cached_vertex *verte
     for (int c = 0; c < 3; c++) screen->lit[c] = vertex->lit[c];
     screen->fresnel = vertex->fresnel;
     screen->uv = tarn__vertex_uv(cache->mesh, vertex->index);
+    screen->uv_low[0] = screen->uv_low[1] = 0u;
 }

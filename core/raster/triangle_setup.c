@@ -143,19 +143,13 @@ static tarn_plane make_plane(const tarn_triangle_setup *t, const tarn_divisor *a
     return p;
 }
 
-/* Scales one attribute's three values toward 2^30 and premultiplies by q; an
- * attribute below set->first_varying is constant and gets no plane. */
-static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_anchor *anchor,
-                          const uint32_t value[3], const uint32_t q[3])
+/* An attribute's three T values (each at most 2^30), with the shift that makes
+ * them the attribute (attribute = T >> shift): their range and, with q, their plane;
+ * an attribute below set->first_varying is constant and gets no plane. */
+static void add_scaled_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_anchor *anchor,
+                                 uint32_t scaled[3], unsigned shift, const uint32_t q[3])
 {
     const int k = set->count++;
-    const unsigned length = bit_length_u32(value[0] | value[1] | value[2]);
-    const unsigned shift = 30u - (length > 30u ? 30u : length);
-    uint32_t scaled[3];
-    for (int n = 0; n < 3; n++) {
-        const uint32_t v = (value[n] > TARN_T_ONE ? TARN_T_ONE : value[n]) << shift;
-        scaled[n] = v > TARN_T_ONE ? TARN_T_ONE : v;
-    }
     /* at most T_ONE: the signed least and largest are the same numbers */
     set->t_min[k] = (uint32_t)tarn_min3_i32((int32_t)scaled[0], (int32_t)scaled[1], (int32_t)scaled[2]);
     set->t_max[k] = (uint32_t)tarn_max3_i32((int32_t)scaled[0], (int32_t)scaled[1], (int32_t)scaled[2]);
@@ -164,6 +158,20 @@ static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t,
     if (set->perspective != TARN_PERSPECTIVE_AFFINE)
         for (int n = 0; n < 3; n++) scaled[n] = (uint32_t)(tarn_mul_u32_wide(scaled[n], q[n]) >> 30);
     set->premultiplied[k] = make_plane(t, &set->depth.den, anchor, scaled);
+}
+
+/* Scales one attribute's three values (each at most 2^30) toward 2^30. */
+static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_anchor *anchor,
+                          const uint32_t value[3], const uint32_t q[3])
+{
+    const unsigned length = bit_length_u32(value[0] | value[1] | value[2]);
+    const unsigned shift = 30u - (length > 30u ? 30u : length);
+    uint32_t scaled[3];
+    for (int n = 0; n < 3; n++) {
+        const uint32_t v = (value[n] > TARN_T_ONE ? TARN_T_ONE : value[n]) << shift;
+        scaled[n] = v > TARN_T_ONE ? TARN_T_ONE : v;
+    }
+    add_scaled_attribute(set, t, anchor, scaled, shift, q);
 }
 
 /* Whether the lit colour's three channels are all 255.0 (65280 in Q8.8). */
@@ -198,6 +206,34 @@ static void texture_coordinates(const tarn_triangle_setup *t, int axis, int whol
     low = low < c[2] ? low : c[2];
     *base = whole_repeats ? (uint32_t)tarn_floor_shift(low, 16) << 16 : (uint32_t)low;
     for (int n = 0; n < 3; n++) out[n] = (uint32_t)c[n] - *base;
+}
+
+/* One texture coordinate axis as an attribute: the coordinates less their base,
+ * with the 16 bits below Q16.16 a clipped vertex keeps (uv_low), scaled toward
+ * 2^30. Those bits count for as much as T holds: a triangle across less than a
+ * repeat keeps most of them, and near the eye, where one bit of Q16.16 spans
+ * hundreds of pixels, such a triangle is all that is drawn. */
+static void add_texture_coordinate(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_anchor *anchor,
+                                   int axis, int whole_repeats, uint32_t *base, const uint32_t q[3])
+{
+    uint32_t value[3];
+    texture_coordinates(t, axis, whole_repeats, value, base);
+    uint64_t fine[3], all = 0; /* Q16.32, below 2^48 */
+    for (int n = 0; n < 3; n++) {
+        fine[n] = ((uint64_t)value[n] << 16) | t->v[n]->uv_low[axis];
+        all |= fine[n];
+    }
+    const unsigned length = (all >> 32) != 0u ? 64u - tarn_clz32((uint32_t)(all >> 32)) : bit_length_u32((uint32_t)all);
+    /* T = fine * 2^up / 2^down, at most 2^30; past 2^14 repeats (down > 16) the
+       values saturate as a plain attribute's would */
+    const unsigned down = length > 30u ? (length - 30u > 16u ? 16u : length - 30u) : 0u;
+    const unsigned up = length < 30u ? 30u - length : 0u;
+    uint32_t scaled[3];
+    for (int n = 0; n < 3; n++) {
+        const uint64_t v = (fine[n] >> down) << up;
+        scaled[n] = v > TARN_T_ONE ? TARN_T_ONE : (uint32_t)v;
+    }
+    add_scaled_attribute(set, t, anchor, scaled, 16u + up - down, q);
 }
 
 /* Vertex k's inverse depth less vertex 0's: both within [1, 2^30]. */
@@ -296,12 +332,9 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
     }
     set->lit_full = (uint8_t)(set->first_varying == 3 && lit_is_full(set));
     if (request->uv) {
-        uint32_t coordinate[3];
         const int whole_repeats = request->texture != NULL;
-        texture_coordinates(t, 0, whole_repeats, coordinate, &set->u_base);
-        add_attribute(set, t, &anchor, coordinate, q);
-        texture_coordinates(t, 1, whole_repeats, coordinate, &set->v_base);
-        add_attribute(set, t, &anchor, coordinate, q);
+        add_texture_coordinate(set, t, &anchor, 0, whole_repeats, &set->u_base, q);
+        add_texture_coordinate(set, t, &anchor, 1, whole_repeats, &set->v_base, q);
         if (request->texture != NULL) set_texel_lookup(set, request->texture);
     }
     if (request->fresnel) {

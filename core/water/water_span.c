@@ -4,13 +4,13 @@
  * top-left pixel found (tarn_water_block). */
 #include "water/water_internal.h"
 
-/* A texture coordinate's T value (Q16.16 shifted up by `shift`, at most 30) as
- * Q16.16, added to the triangle's whole repeats, and the 16 fraction bits below
- * (zero past T's own). */
+/* A texture coordinate's T value (below 2^31; Q16.16 shifted up by `shift`, at most
+ * 46) as Q16.16, added to the triangle's base, and the 16 fraction bits below (zero
+ * past T's own). */
 static uint32_t coordinate_q16(uint32_t t, unsigned shift, uint32_t base, uint16_t *low)
 {
     *low = (uint16_t)(shift >= 16u ? t >> (shift - 16u) : t << (16u - shift));
-    return (t >> shift) + base;
+    return (shift >= 31u ? 0u : t >> shift) + base;
 }
 
 /* The water pixel's inputs from the interpolated attributes. */

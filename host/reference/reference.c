@@ -463,8 +463,9 @@ static void visit_core_triangle(void *user, const tarn_screen_vertex vertex[3],
         v[k].y = vertex[k].y;
         v[k].inv_depth = vertex[k].inv_depth / INV_DEPTH_SCALE;
         for (int c = 0; c < 3; c++) v[k].lit[c] = vertex[k].lit[c] / Q8_8_SCALE;
-        v[k].uv[0] = vertex[k].uv.u / Q16_SCALE;
-        v[k].uv[1] = vertex[k].uv.v / Q16_SCALE;
+        /* a clipped vertex's coordinates carry 16 bits below Q16.16 */
+        v[k].uv[0] = (vertex[k].uv.u + vertex[k].uv_low[0] / Q16_SCALE) / Q16_SCALE;
+        v[k].uv[1] = (vertex[k].uv.v + vertex[k].uv_low[1] / Q16_SCALE) / Q16_SCALE;
         v[k].fresnel = vertex[k].fresnel / FRESNEL_SCALE;
     }
     /* The core hands triangles over in their original winding and culls them only in
