@@ -60,28 +60,23 @@ static int32_t lerp_q30(int32_t from, int32_t to, int64_t t_q30)
     return (int32_t)(from + tarn_round_shift_i64(((int64_t)to - from) * t_q30, 30));
 }
 
-/* A coordinate with its 16 bits below Q16.16, as one Q16.32 number. */
-static int64_t fine(tarn_q16 v, uint16_t low)
+/* A coordinate of the crossing: *value, with its 16 bits below Q16.16 in *low, at t
+ * (Q1.30) from the inside vertex's (value, low) toward the outside's, in Q16.32. The
+ * difference reaches 2^48: taken as its part above the 16 low bits (below 2^32 but
+ * for coordinates 32768 units apart, which take the 64-bit product) and those bits. */
+static void lerp_fine_q30(tarn_q16 *value, uint16_t *low, tarn_q16 to_value, uint16_t to_low, int64_t t_q30)
 {
-    return (int64_t)v * 65536 + low;
-}
-
-/* A Q16.32 number's 16 bits below Q16.16, and its Q16.16 part (floor): exact, as
- * the number less those bits is a multiple of 2^16. */
-static int64_t split_fine(int64_t v, uint16_t *low)
-{
+    const int64_t from = (int64_t)*value * 65536 + *low, to = (int64_t)to_value * 65536 + to_low;
+    const int64_t delta = to - from;
+    const uint32_t delta_low = (uint32_t)((uint64_t)delta & 0xFFFFu);
+    const int64_t delta_high = tarn_round_shift_i64(delta - delta_low, 16); /* exact: a multiple of 2^16 */
+    const int64_t high = delta_high == (int32_t)delta_high ? tarn_mul_i32_wide((int32_t)delta_high, (int32_t)t_q30)
+                                                            : delta_high * t_q30;
+    const int64_t v = from + tarn_round_shift_i64(high, 14) +
+                      tarn_round_shift_i64((int64_t)tarn_mul_u32_wide(delta_low, (uint32_t)t_q30), 30);
+    /* between from and to, so its Q16.16 part fits: the low word of v / 2^16 */
     *low = (uint16_t)((uint64_t)v & 0xFFFFu);
-    return tarn_round_shift_i64(v - *low, 16);
-}
-
-/* from + (to - from) * t in Q16.32 (t Q1.30), into its Q16.16 part and the 16 bits
- * below. The difference reaches 2^48: taken in two parts, each product below 2^63. */
-static tarn_q16 lerp_fine_q30(int64_t from, int64_t to, int64_t t_q30, uint16_t *low)
-{
-    uint16_t delta_low;
-    const int64_t delta_high = split_fine(to - from, &delta_low);
-    const int64_t v = from + tarn_round_shift_i64(delta_high * t_q30, 14) + tarn_round_shift_i64(delta_low * t_q30, 30);
-    return (tarn_q16)split_fine(v, low); /* between from and to */
+    *value = (tarn_q16)(uint32_t)((uint64_t)v >> 16);
 }
 
 /* The crossing point, always measured from the inside vertex so that the two
@@ -92,16 +87,15 @@ static tarn_view_vertex crossing(const tarn_view_vertex *inside, int64_t dist_in
                                  const tarn_view_vertex *outside, int64_t dist_outside)
 {
     int64_t t = ratio_q30(dist_inside, dist_inside - dist_outside);
-    tarn_view_vertex v;
-    v.x = lerp_fine_q30(fine(inside->x, inside->x_low), fine(outside->x, outside->x_low), t, &v.x_low);
-    v.y = lerp_fine_q30(fine(inside->y, inside->y_low), fine(outside->y, outside->y_low), t, &v.y_low);
-    v.d = lerp_fine_q30(fine(inside->d, inside->d_low), fine(outside->d, outside->d_low), t, &v.d_low);
-    v.uv.u = lerp_fine_q30(fine(inside->uv.u, inside->uv_low[0]), fine(outside->uv.u, outside->uv_low[0]), t,
-                           &v.uv_low[0]);
-    v.uv.v = lerp_fine_q30(fine(inside->uv.v, inside->uv_low[1]), fine(outside->uv.v, outside->uv_low[1]), t,
-                           &v.uv_low[1]);
-    for (int c = 0; c < 3; c++) v.lit[c] = lerp_q30(inside->lit[c], outside->lit[c], t);
-    v.fresnel = lerp_q30(inside->fresnel, outside->fresnel, t);
+    tarn_view_vertex v = *inside;
+    lerp_fine_q30(&v.x, &v.x_low, outside->x, outside->x_low, t);
+    lerp_fine_q30(&v.y, &v.y_low, outside->y, outside->y_low, t);
+    lerp_fine_q30(&v.d, &v.d_low, outside->d, outside->d_low, t);
+    lerp_fine_q30(&v.uv.u, &v.uv_low[0], outside->uv.u, outside->uv_low[0], t);
+    lerp_fine_q30(&v.uv.v, &v.uv_low[1], outside->uv.v, outside->uv_low[1], t);
+    /* between two values in range, so in range */
+    for (int c = 0; c < 3; c++) v.lit[c] = (uint16_t)lerp_q30(inside->lit[c], outside->lit[c], t);
+    v.fresnel = (uint16_t)lerp_q30(inside->fresnel, outside->fresnel, t);
     return v;
 }
 

@@ -20,11 +20,17 @@ typedef struct {
  * the mantissa's top bit set, the shift up to 47. */
 static normalised normalise_fine(uint64_t v) /* v > 0 */
 {
-    const uint32_t high = (uint32_t)(v >> 32), low = (uint32_t)v;
-    const unsigned lz = high != 0u ? tarn_clz32(high) : 32u + tarn_clz32(low);
+    const uint32_t high = (uint32_t)(v >> 32), low = (uint32_t)v; /* in words: the M0 has no 64-bit shifts */
     normalised n;
-    n.mantissa = (uint32_t)((v << lz) >> 32);
-    n.shift = lz - 16u;
+    if (high == 0u) {
+        const unsigned lz = tarn_clz32(low);
+        n.mantissa = low << lz;
+        n.shift = lz + 16u;
+    } else {
+        const unsigned lz = tarn_clz32(high);
+        n.mantissa = lz == 0u ? high : (high << lz) | (low >> (32u - lz));
+        n.shift = lz - 16u;
+    }
     return n;
 }
 

@@ -235,11 +235,11 @@ void tarn__vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
         uint32_t shade = xform->unlit ? 65536u : shade_q16(view, c, n_dot_l);
         uint32_t factor = mul_q16_rounded(xform->tint_q16[c], shade);
         uint32_t vertex_channel = (vertex_rgb >> (16 - 8 * c)) & 0xFFu;
-        out->lit[c] = (int32_t)((vertex_channel * factor + 128u) >> 8); /* Q8.8 */
+        out->lit[c] = (uint16_t)((vertex_channel * factor + 128u) >> 8); /* Q8.8, at most 65280 */
     }
     out->uv = tarn__vertex_uv(mesh, index);
     out->uv_low[0] = out->uv_low[1] = 0u;
-    out->fresnel = xform->fresnel ? fresnel_q15(xform, n, out) : 0;
+    out->fresnel = (uint16_t)(xform->fresnel ? fresnel_q15(xform, n, out) : 0);
 }
 
 tarn_uv tarn__vertex_uv(const tarn_mesh *mesh, uint16_t index)

@@ -82,9 +82,9 @@ tarn_pixel_box tarn__triangle_pixels(const tarn_triangle_setup *t)
  * at a few thousand texels a triangle. The plane is then carried to the box's
  * corner, modulo 2^32, so each pixel's value is the same number. */
 typedef struct {
-    int far;             /* the vertex the planes start from */
-    int32_t i, j;        /* the pixel they are found at */
-    int32_t e_next, e_after; /* the edge values there weighing vertices far + 1 and far + 2 */
+    uint8_t far, next, after; /* the vertex the planes start from, and the two others */
+    int32_t i, j;         /* the pixel they are found at */
+    int32_t e_next, e_after; /* the edge values there weighing vertices next and after */
 } plane_anchor;
 
 static plane_anchor anchor_of(const tarn_triangle_setup *t)
@@ -93,13 +93,15 @@ static plane_anchor anchor_of(const tarn_triangle_setup *t)
     plane_anchor anchor;
     anchor.far = 0;
     for (int k = 1; k < 3; k++)
-        if (t->v[k]->inv_depth < t->v[anchor.far]->inv_depth) anchor.far = k;
+        if (t->v[k]->inv_depth < t->v[anchor.far]->inv_depth) anchor.far = (uint8_t)k;
+    anchor.next = (uint8_t)(anchor.far == 2 ? 0 : anchor.far + 1); /* no % 3: the M0 would call a divider */
+    anchor.after = (uint8_t)(anchor.far == 0 ? 2 : anchor.far - 1);
     const tarn_screen_vertex *far = t->v[anchor.far];
     anchor.i = tarn_floor_shift(far->x, s); /* the pixel whose square holds it */
     anchor.j = tarn_floor_shift(far->y, s);
     const int32_t px = tarn__pixel_centre(anchor.i, s), py = tarn__pixel_centre(anchor.j, s);
-    anchor.e_next = edge_unbiased_at(&t->edges[(anchor.far + 1) % 3], px, py);
-    anchor.e_after = edge_unbiased_at(&t->edges[(anchor.far + 2) % 3], px, py);
+    anchor.e_next = edge_unbiased_at(&t->edges[anchor.next], px, py);
+    anchor.e_after = edge_unbiased_at(&t->edges[anchor.after], px, py);
     return anchor;
 }
 
@@ -125,29 +127,27 @@ static tarn_plane make_plane(const tarn_triangle_setup *t, const tarn_divisor *a
                         const uint32_t value[3])
 {
     const unsigned s = t->subpixel_bits;
-    const int far = anchor->far, next = (far + 1) % 3, after = (far + 2) % 3;
-    const tarn_edge *e1 = &t->edges[next], *e2 = &t->edges[after];
-    const int32_t d1 = (int32_t)(value[next] - value[far]), d2 = (int32_t)(value[after] - value[far]);
+    const tarn_edge *e1 = &t->edges[anchor->next], *e2 = &t->edges[anchor->after];
+    const uint32_t from = value[anchor->far];
+    const int32_t d1 = (int32_t)(value[anchor->next] - from), d2 = (int32_t)(value[anchor->after] - from);
     if (d1 == 0 && d2 == 0) { /* a flat plane: every quotient below would be 0 */
-        const tarn_plane flat = {value[far], 0u, 0u};
+        const tarn_plane flat = {from, 0u, 0u};
         return flat;
     }
-    int64_t at_anchor =
-        value[far] + tarn_divide_round_approx_i64(weighted_sum(anchor->e_next, d1, anchor->e_after, d2), area2);
-    int64_t step_x = tarn_divide_round_approx_i64(coefficient_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
-    int64_t step_y = tarn_divide_round_approx_i64(coefficient_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
-    /* carried to the box's corner, where tarn__plane_at counts from */
-    tarn_plane p = {(uint32_t)at_anchor + (uint32_t)step_x * (uint32_t)(t->box.x0 - anchor->i) +
-                        (uint32_t)step_y * (uint32_t)(t->box.y0 - anchor->j),
-                    (uint32_t)step_x, (uint32_t)step_y};
+    tarn_plane p;
+    p.step_x = (uint32_t)tarn_divide_round_approx_i64(coefficient_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
+    p.step_y = (uint32_t)tarn_divide_round_approx_i64(coefficient_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
+    /* found at the anchor pixel, carried to the box's corner, where tarn__plane_at counts from */
+    p.anchor = from + (uint32_t)tarn_divide_round_approx_i64(weighted_sum(anchor->e_next, d1, anchor->e_after, d2), area2) +
+               p.step_x * (uint32_t)(t->box.x0 - anchor->i) + p.step_y * (uint32_t)(t->box.y0 - anchor->j);
     return p;
 }
 
 /* An attribute's three T values (each at most 2^30), with the shift that makes
  * them the attribute (attribute = T >> shift): their range and, with q, their plane;
  * an attribute below set->first_varying is constant and gets no plane. */
-static void add_scaled_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_anchor *anchor,
-                                 uint32_t scaled[3], unsigned shift, const uint32_t q[3])
+static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_anchor *anchor,
+                          uint32_t scaled[3], unsigned shift, const uint32_t q[3])
 {
     const int k = set->count++;
     /* at most T_ONE: the signed least and largest are the same numbers */
@@ -160,18 +160,18 @@ static void add_scaled_attribute(tarn_attribute_set *set, const tarn_triangle_se
     set->premultiplied[k] = make_plane(t, &set->depth.den, anchor, scaled);
 }
 
-/* Scales one attribute's three values (each at most 2^30) toward 2^30. */
-static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_anchor *anchor,
-                          const uint32_t value[3], const uint32_t q[3])
+/* Three values (each at most 2^30) scaled toward 2^30 as T values; returns the
+ * shift. (Found before add_attribute is called, not inside it: the Cortex-M0's
+ * deepest stack runs through the plane it makes.) */
+static unsigned attribute_t(const uint32_t value[3], uint32_t scaled[3])
 {
     const unsigned length = bit_length_u32(value[0] | value[1] | value[2]);
     const unsigned shift = 30u - (length > 30u ? 30u : length);
-    uint32_t scaled[3];
     for (int n = 0; n < 3; n++) {
         const uint32_t v = (value[n] > TARN_T_ONE ? TARN_T_ONE : value[n]) << shift;
         scaled[n] = v > TARN_T_ONE ? TARN_T_ONE : v;
     }
-    add_scaled_attribute(set, t, anchor, scaled, shift, q);
+    return shift;
 }
 
 /* Whether the lit colour's three channels are all 255.0 (65280 in Q8.8). */
@@ -208,32 +208,35 @@ static void texture_coordinates(const tarn_triangle_setup *t, int axis, int whol
     for (int n = 0; n < 3; n++) out[n] = (uint32_t)c[n] - *base;
 }
 
-/* One texture coordinate axis as an attribute: the coordinates less their base,
- * with the 16 bits below Q16.16 a clipped vertex keeps (uv_low), scaled toward
- * 2^30. Those bits count for as much as T holds: a triangle across less than a
- * repeat keeps most of them, and near the eye, where one bit of Q16.16 spans
- * hundreds of pixels, such a triangle is all that is drawn. */
-static void add_texture_coordinate(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_anchor *anchor,
-                                   int axis, int whole_repeats, uint32_t *base, const uint32_t q[3])
+/* One texture coordinate axis as T values, as attribute_t: the coordinates less
+ * their base, with the 16 bits below Q16.16 a clipped vertex keeps, scaled toward
+ * 2^30; returns the shift (up to 46). Those bits count for as much as T holds: a
+ * triangle across less than a repeat keeps most of them, and near the eye, where
+ * one bit of Q16.16 spans hundreds of pixels, such a triangle is all that draws. */
+static unsigned texture_coordinate_t(const tarn_triangle_setup *t, int axis, int whole_repeats, uint32_t *base,
+                                     uint32_t scaled[3])
 {
-    uint32_t value[3];
+    uint32_t value[3], whole = 0u, below = 0u;
     texture_coordinates(t, axis, whole_repeats, value, base);
-    uint64_t fine[3], all = 0; /* Q16.32, below 2^48 */
     for (int n = 0; n < 3; n++) {
-        fine[n] = ((uint64_t)value[n] << 16) | t->v[n]->uv_low[axis];
-        all |= fine[n];
+        whole |= value[n];
+        below |= t->v[n]->uv_low[axis];
     }
-    const unsigned length = (all >> 32) != 0u ? 64u - tarn_clz32((uint32_t)(all >> 32)) : bit_length_u32((uint32_t)all);
-    /* T = fine * 2^up / 2^down, at most 2^30; past 2^14 repeats (down > 16) the
-       values saturate as a plain attribute's would */
+    if (below == 0u) return attribute_t(value, scaled); /* no clipped vertex: the same numbers */
+    /* the values with their low bits are value * 2^16 + low (Q16.32, below 2^48): T
+       is that times 2^up / 2^down, at most 2^30, taken in 32-bit words; past 2^14
+       repeats (down > 16) the values saturate as a plain attribute's would */
+    const unsigned length = whole != 0u ? 16u + bit_length_u32(whole) : bit_length_u32(below);
     const unsigned down = length > 30u ? (length - 30u > 16u ? 16u : length - 30u) : 0u;
     const unsigned up = length < 30u ? 30u - length : 0u;
-    uint32_t scaled[3];
+    const unsigned shift = 16u + up - down; /* at most 29 where a value is not 0 */
     for (int n = 0; n < 3; n++) {
-        const uint64_t v = (fine[n] >> down) << up;
-        scaled[n] = v > TARN_T_ONE ? TARN_T_ONE : (uint32_t)v;
+        /* the two parts share no bit: the low bits land below `shift` */
+        const uint32_t high = value[n] == 0u ? 0u : (value[n] > (TARN_T_ONE >> shift) ? TARN_T_ONE : value[n] << shift);
+        const uint32_t v = high | (((uint32_t)t->v[n]->uv_low[axis] << up) >> down);
+        scaled[n] = v > TARN_T_ONE ? TARN_T_ONE : v;
     }
-    add_scaled_attribute(set, t, anchor, scaled, 16u + up - down, q);
+    return shift;
 }
 
 /* Vertex k's inverse depth less vertex 0's: both within [1, 2^30]. */
@@ -326,19 +329,25 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
                                                                                    : make_depth_plane(t, &anchor);
     if (perspective != TARN_PERSPECTIVE_AFFINE) /* affine interpolation never reads q */
         set->q = make_plane(t, &set->depth.den, &anchor, q);
+    uint32_t scaled[3];
+    unsigned shift;
     for (int c = 0; c < 3; c++) {
-        uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
-        add_attribute(set, t, &anchor, lit, q);
+        const uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
+        shift = attribute_t(lit, scaled);
+        add_attribute(set, t, &anchor, scaled, shift, q);
     }
     set->lit_full = (uint8_t)(set->first_varying == 3 && lit_is_full(set));
     if (request->uv) {
         const int whole_repeats = request->texture != NULL;
-        add_texture_coordinate(set, t, &anchor, 0, whole_repeats, &set->u_base, q);
-        add_texture_coordinate(set, t, &anchor, 1, whole_repeats, &set->v_base, q);
+        shift = texture_coordinate_t(t, 0, whole_repeats, &set->u_base, scaled);
+        add_attribute(set, t, &anchor, scaled, shift, q);
+        shift = texture_coordinate_t(t, 1, whole_repeats, &set->v_base, scaled);
+        add_attribute(set, t, &anchor, scaled, shift, q);
         if (request->texture != NULL) set_texel_lookup(set, request->texture);
     }
     if (request->fresnel) {
-        uint32_t fresnel[3] = {t->v[0]->fresnel, t->v[1]->fresnel, t->v[2]->fresnel};
-        add_attribute(set, t, &anchor, fresnel, q);
+        const uint32_t fresnel[3] = {t->v[0]->fresnel, t->v[1]->fresnel, t->v[2]->fresnel};
+        shift = attribute_t(fresnel, scaled);
+        add_attribute(set, t, &anchor, scaled, shift, q);
     }
 }
