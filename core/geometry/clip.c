@@ -67,13 +67,17 @@ static int32_t lerp_q30(int32_t from, int32_t to, int64_t t_q30)
 static void lerp_fine_q30(tarn_q16 *value, uint16_t *low, tarn_q16 to_value, uint16_t to_low, int64_t t_q30)
 {
     const int64_t from = (int64_t)*value * 65536 + *low, to = (int64_t)to_value * 65536 + to_low;
-    const int64_t delta = to - from;
+    const int64_t delta = to - from; /* within 2^48 */
     const uint32_t delta_low = (uint32_t)((uint64_t)delta & 0xFFFFu);
-    const int64_t delta_high = tarn_round_shift_i64(delta - delta_low, 16); /* exact: a multiple of 2^16 */
+    /* floor(delta / 2^16): the bits shifted down, where the sign (bit 47 of the
+       shifted pattern, the bits above it zero) is extended by flipping it and taking
+       it away; delta reaches 2^48, so this may pass 32 bits */
+    const int64_t delta_high = (int64_t)(((uint64_t)delta >> 16) ^ 0x800000000000ull) - 0x800000000000ll;
     const int64_t high = delta_high == (int32_t)delta_high ? tarn_mul_i32_wide((int32_t)delta_high, (int32_t)t_q30)
                                                             : delta_high * t_q30;
-    const int64_t v = from + tarn_round_shift_i64(high, 14) +
-                      tarn_round_shift_i64((int64_t)tarn_mul_u32_wide(delta_low, (uint32_t)t_q30), 30);
+    /* the low part's product is not negative: rounded with a half and a shift */
+    const uint64_t below = (tarn_mul_u32_wide(delta_low, (uint32_t)t_q30) + ((uint64_t)1 << 29)) >> 30;
+    const int64_t v = from + tarn_round_shift_i64(high, 14) + (int64_t)below;
     /* between from and to, so its Q16.16 part fits: the low word of v / 2^16 */
     *low = (uint16_t)((uint64_t)v & 0xFFFFu);
     *value = (tarn_q16)(uint32_t)((uint64_t)v >> 16);
