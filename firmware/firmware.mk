@@ -205,12 +205,14 @@ $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-d
 # size (on top of the scene_link.h switches): it is far below 0.1% of the
 # instructions, and -Os takes about 700 bytes off the M0's 32 KB. On a board with a
 # code budget (BOARD_CODE_BYTES_MAX) so are the tile loop (core/frame/frame.c), once a
-# tile, and the vertices' transform and clipping (core/geometry/vertex.c, core/geometry/clip.c),
-# which a static view mostly spares: -Os takes about 1,240 bytes more off for 4
-# instructions a pixel of the M0's pond.
+# tile, and the vertices' transform, clipping and projection (core/geometry/vertex.c,
+# core/geometry/clip.c, core/geometry/project.c), which a static view mostly spares:
+# -Os takes about 1,240 bytes more off for 4 instructions a pixel of the M0's pond;
+# and the triangle setup (core/raster/triangle_setup.c), where -Os took 520 bytes
+# and 6 instructions a pixel off, and 48 bytes off the deepest stack.
 FW_SIZE_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,$(basename $(wildcard core/scene/*.c)) core/geometry/view \
 	core/water/water_setup core/water/underwater_setup core/frame/layout core/frame/status firmware/report \
-	$(if $(BOARD_CODE_BYTES_MAX),core/frame/frame core/geometry/vertex core/geometry/clip))
+	$(if $(BOARD_CODE_BYTES_MAX),core/frame/frame core/geometry/vertex core/geometry/clip core/geometry/project core/raster/triangle_setup))
 $(FW_SIZE_OBJ): FW_DEFINES += -Os
 
 $(FW_DIR)/obj/%.o: %.c | fw-toolchain

@@ -183,6 +183,19 @@ static const bad_scene_case BAD_SCENE_CASES[] = {
     { "heightfield over the triangle limit", BAD_HEIGHTFIELD_SCENE,
       { { "pit.png", BAD_PNG, NULL, 200, 200 } }, "pit.png",
       ": needs 79202 triangles; a tarn mesh holds at most 65535" },
+    /* a triangle spanning more texels than the core interpolates precisely enough */
+    { "texture spanned too far",
+      "{" BAD_CAMERA ", \"materials\": {\"m\": {\"texture\": \"tex.png\"}}, \"objects\": ["
+      BAD_OBJECT("\"type\": \"plane\", \"size\": [4, 4], \"uv_scale\": [65, 1]") "]}",
+      { { "tex.png", BAD_PNG, NULL, 64, 64 } }, "bad.json",
+      ": objects[0].uv_scale: a triangle of objects[0] spans 4160 texels of its texture; the core interpolates "
+      "at most 4096 precisely enough (use smaller triangles or a smaller scale)" },
+    { "normal map scaled too far",
+      "{" BAD_CAMERA ", \"materials\": {\"m\": {\"water\": {\"normal_maps\": [{\"image\": \"n.png\", "
+      "\"scale\": 1025}]}}}, \"objects\": [" BAD_OBJECT("\"type\": \"plane\", \"size\": [4, 4]") "]}",
+      BAD_NORMAL_PNG, "bad.json",
+      BAD_WATER ".normal_maps[0].scale: a triangle of objects[0] spans 4100 texels of the map; the core "
+      "interpolates at most 4096 precisely enough (use smaller triangles or a smaller scale)" },
     /* water: each feature's block, its ranges and its files */
     { "water not an object",
       "{" BAD_CAMERA ", \"materials\": {\"m\": {\"water\": 3}}, \"objects\": []}", { { 0 } },

@@ -14,7 +14,9 @@ const char *const test_frame_scenes[TEST_FRAME_SCENE_COUNT] = {
     "scenes/underwater.json", "scenes/effects/refraction.json", "scenes/effects/fresnel.json",
     "scenes/effects/foam.json", "scenes/effects/sparkles.json", "scenes/extremes/dense.json",
     "scenes/extremes/far.json", "scenes/extremes/grazing.json", "scenes/extremes/huge.json",
-    "scenes/extremes/steep.json", "scenes/extremes/tiny.json",
+    "scenes/extremes/steep.json", "scenes/extremes/tiny.json", "scenes/extremes/deep-squared.json",
+    "scenes/extremes/huge-near.json", "scenes/extremes/uv-scale.json", "scenes/extremes/skim-above.json",
+    "scenes/extremes/skim-below.json", "scenes/extremes/late.json",
 };
 
 uint8_t *test_render_rgb(const tarn_scene *scene, const tarn_frame_config *config, const char *what)

@@ -10,7 +10,7 @@
  * water, and the extremes: the scenes a test that two ways of drawing give the
  * same frame walks. */
 extern const char *const test_frame_scenes[];
-#define TEST_FRAME_SCENE_COUNT 15u
+#define TEST_FRAME_SCENE_COUNT 21u
 
 /* The frame as width * height * 3 bytes, R G B, which the caller frees; a render
  * that fails fails the test, naming `what`. */

@@ -29,7 +29,9 @@ static const char *const scenes[] = {
     "scenes/effects/normals.json", "scenes/effects/ramp.json", "scenes/effects/refraction.json",
     "scenes/effects/sparkles.json", "scenes/effects/underwater.json", "scenes/extremes/dense.json",
     "scenes/extremes/far.json", "scenes/extremes/grazing.json", "scenes/extremes/huge.json",
-    "scenes/extremes/steep.json", "scenes/extremes/tiny.json",
+    "scenes/extremes/steep.json", "scenes/extremes/tiny.json", "scenes/extremes/deep-squared.json",
+    "scenes/extremes/huge-near.json", "scenes/extremes/uv-scale.json", "scenes/extremes/skim-above.json",
+    "scenes/extremes/skim-below.json",
 };
 
 /* The scenes whose water reaches every knob: refraction, foam, sparkles, the
@@ -70,6 +72,10 @@ static const knob knobs[] = {
 };
 
 static const uint32_t times_ms[] = {0, 1500};
+/* scenes/extremes/late.json also at 2^31 ms and at the last millisecond before the
+ * clock wraps (its maps and foam pan at the loader's fastest speeds) */
+static const char late_scene[] = "scenes/extremes/late.json";
+static const uint32_t late_times_ms[] = {0, 1500, 2147483648u, UINT32_MAX};
 
 /* The frames this suite checks, as lines of the golden file, and their checksums. */
 typedef struct {
@@ -105,14 +111,14 @@ static void load(const char *path, tarn_loaded_scene *s)
     if (tarn_scene_load(path, s, &err) != 0) fail_msg("%s", err.message);
 }
 
-static void add_presets(frame_list *l, const char *path)
+static void add_presets(frame_list *l, const char *path, const uint32_t *times, size_t time_count)
 {
     tarn_loaded_scene s;
     load(path, &s);
     for (int p = 0; p < TARN_PRESET_COUNT; p++)
-        for (size_t t = 0; t < sizeof times_ms / sizeof times_ms[0]; t++) {
-            const tarn_frame_config config = {s.width, s.height, tarn_quality_preset((tarn_preset)p), times_ms[t]};
-            add_line(l, path, tarn_preset_name((tarn_preset)p), times_ms[t], frame_checksum(&s.scene, &config, path));
+        for (size_t t = 0; t < time_count; t++) {
+            const tarn_frame_config config = {s.width, s.height, tarn_quality_preset((tarn_preset)p), times[t]};
+            add_line(l, path, tarn_preset_name((tarn_preset)p), times[t], frame_checksum(&s.scene, &config, path));
         }
     tarn_scene_free(&s);
 }
@@ -159,7 +165,9 @@ static void add_backdrop(frame_list *l, const char *path, tarn_backdrop_kind kin
 
 static void measure_all(frame_list *l)
 {
-    for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++) add_presets(l, scenes[k]);
+    for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++)
+        add_presets(l, scenes[k], times_ms, sizeof times_ms / sizeof times_ms[0]);
+    add_presets(l, late_scene, late_times_ms, sizeof late_times_ms / sizeof late_times_ms[0]);
     for (size_t k = 0; k < sizeof knob_scenes / sizeof knob_scenes[0]; k++) add_knobs(l, knob_scenes[k]);
     tarn_quality fast_still = tarn_quality_preset(TARN_PRESET_FAST);
     fast_still.water_block = 4;

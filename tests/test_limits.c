@@ -191,6 +191,35 @@ static void fog_argument(void **state)
     assert_int_equal(tarn__fog_argument_q16(9830, (3u << 16) + 2000u, 4), 9830u * 3u);
 }
 
+/* rate * x^2 / 2^32, exactly in 128 bits, saturated. */
+static uint32_t squared_product(uint32_t rate, uint32_t x)
+{
+    const unsigned __int128 wide_x = x;
+    const unsigned __int128 product = (rate * wide_x * wide_x) >> 32;
+    return product > INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)product;
+}
+
+/* Squared absorption's exp2 argument: within 2^-27 of the exact product (and one
+ * unit for the truncation) over the whole range of depths and rates, saturated only
+ * where the product passes INT32_MAX; a weak rate keeps growing past x = 181, where
+ * x^2 alone leaves Q16.16. */
+static void squared_argument(void **state)
+{
+    (void)state;
+    const uint32_t values[] = {0, 1, 255, 256, 7, 9830, 65535, 65536, 181u << 16, 182u << 16, 1u << 20,
+                               16777215, 16777216, 600u << 16, (uint32_t)INT32_MAX, 4194304};
+    const size_t n = sizeof values / sizeof values[0];
+    for (size_t a = 0; a < n; a++)
+        for (size_t b = 0; b < n; b++) {
+            const uint32_t exact = squared_product(values[a], values[b]);
+            const uint32_t got = tarn__squared_argument_q16(values[a], values[b]);
+            assert_true(got <= exact && exact - got <= (exact >> 27) + 1u);
+        }
+    /* strength 0.0001 (7) at 400 units: 7 * 400^2 / 65536 = 17.09, where x^2 alone saturates */
+    assert_int_equal(tarn__squared_argument_q16(7, 400u << 16) >> 8, (7u * 160000u * 256u) >> 16);
+    assert_int_equal(tarn__squared_argument_q16(4194304, (uint32_t)INT32_MAX), INT32_MAX);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -203,6 +232,7 @@ int main(void)
         cmocka_unit_test(frame_helpers),
         cmocka_unit_test(refraction_reach),
         cmocka_unit_test(fog_argument),
+        cmocka_unit_test(squared_argument),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -298,6 +298,20 @@ static void test_far_off_screen_edges_keep_their_place(void **state)
                  centre_drawn_by[0], centre_drawn_by[1]);
 }
 
+/* A wall 4000 wide at depth 2 fills the frame: its corners land far off-screen,
+ * where whole Q1.30 depths (2^29) once took the exact depth's sum of edge values
+ * times depths past 64 bits. Every pixel is covered. */
+static void test_huge_triangles_near_the_eye_cover_every_pixel(void **state)
+{
+    (void)state;
+    static const tarn_vec3 wall[] = { VEC(-2000, -2000, -2), VEC(2000, -2000, -2), VEC(-2000, 2000, -2),
+                                      VEC(2000, 2000, -2) };
+    static const uint16_t quad[6] = { 0, 1, 2, 2, 1, 3 };
+    tarn_mesh mesh = { wall, facing, NULL, NULL, quad, 4, 2, NULL, 0 };
+    render_mesh(&mesh, &white_two_sided);
+    for (int p = 0; p < W * H; p++) assert_int_equal(covered[p], 1);
+}
+
 /* ---- depth test and culling ------------------------------------------------------ */
 
 /* Two big overlapping triangles: 0-2 near (depth 2) red, 3-5 far (depth 4) green,
@@ -787,6 +801,7 @@ int main(void)
         cmocka_unit_test(test_quad_split_either_way_covers_the_same),
         cmocka_unit_test(test_zero_area_triangle_draws_nothing),
         cmocka_unit_test(test_far_off_screen_edges_keep_their_place),
+        cmocka_unit_test(test_huge_triangles_near_the_eye_cover_every_pixel),
         cmocka_unit_test(test_nearer_triangle_wins_in_either_order),
         cmocka_unit_test(test_equal_depth_keeps_the_earlier_triangle),
         cmocka_unit_test(test_cull_modes_pick_the_drawn_side),

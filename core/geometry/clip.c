@@ -60,20 +60,46 @@ static int32_t lerp_q30(int32_t from, int32_t to, int64_t t_q30)
     return (int32_t)(from + tarn_round_shift_i64(((int64_t)to - from) * t_q30, 30));
 }
 
+/* A coordinate of the crossing: *value, with its 16 bits below Q16.16 in *low, at t
+ * (Q1.30) from the inside vertex's (value, low) toward the outside's, in Q16.32. The
+ * difference reaches 2^48: taken as its part above the 16 low bits (below 2^32 but
+ * for coordinates 32768 units apart, which take the 64-bit product) and those bits. */
+static void lerp_fine_q30(tarn_q16 *value, uint16_t *low, tarn_q16 to_value, uint16_t to_low, int64_t t_q30)
+{
+    const int64_t from = (int64_t)*value * 65536 + *low, to = (int64_t)to_value * 65536 + to_low;
+    const int64_t delta = to - from; /* within 2^48 */
+    const uint32_t delta_low = (uint32_t)((uint64_t)delta & 0xFFFFu);
+    /* floor(delta / 2^16): the bits shifted down, where the sign (bit 47 of the
+       shifted pattern, the bits above it zero) is extended by flipping it and taking
+       it away; delta reaches 2^48, so this may pass 32 bits */
+    const int64_t delta_high = (int64_t)(((uint64_t)delta >> 16) ^ 0x800000000000ull) - 0x800000000000ll;
+    const int64_t high = delta_high == (int32_t)delta_high ? tarn_mul_i32_wide((int32_t)delta_high, (int32_t)t_q30)
+                                                            : delta_high * t_q30;
+    /* the low part's product is not negative: rounded with a half and a shift */
+    const uint64_t below = (tarn_mul_u32_wide(delta_low, (uint32_t)t_q30) + ((uint64_t)1 << 29)) >> 30;
+    const int64_t v = from + tarn_round_shift_i64(high, 14) + (int64_t)below;
+    /* between from and to, so its Q16.16 part fits: the low word of v / 2^16 */
+    *low = (uint16_t)((uint64_t)v & 0xFFFFu);
+    *value = (tarn_q16)(uint32_t)((uint64_t)v >> 16);
+}
+
 /* The crossing point, always measured from the inside vertex so that the two
- * triangles sharing a clipped edge get bit-identical new vertices. */
+ * triangles sharing a clipped edge get bit-identical new vertices. Its position and
+ * texture coordinates keep 16 bits below Q16.16 (the projection and the raster read
+ * them): at the near plane a bit of Q16.16 is many pixels. */
 static tarn_view_vertex crossing(const tarn_view_vertex *inside, int64_t dist_inside,
                                  const tarn_view_vertex *outside, int64_t dist_outside)
 {
     int64_t t = ratio_q30(dist_inside, dist_inside - dist_outside);
-    tarn_view_vertex v;
-    v.x = lerp_q30(inside->x, outside->x, t);
-    v.y = lerp_q30(inside->y, outside->y, t);
-    v.d = lerp_q30(inside->d, outside->d, t);
-    v.uv.u = lerp_q30(inside->uv.u, outside->uv.u, t);
-    v.uv.v = lerp_q30(inside->uv.v, outside->uv.v, t);
-    for (int c = 0; c < 3; c++) v.lit[c] = lerp_q30(inside->lit[c], outside->lit[c], t);
-    v.fresnel = lerp_q30(inside->fresnel, outside->fresnel, t);
+    tarn_view_vertex v = *inside;
+    lerp_fine_q30(&v.x, &v.x_low, outside->x, outside->x_low, t);
+    lerp_fine_q30(&v.y, &v.y_low, outside->y, outside->y_low, t);
+    lerp_fine_q30(&v.d, &v.d_low, outside->d, outside->d_low, t);
+    lerp_fine_q30(&v.uv.u, &v.uv_low[0], outside->uv.u, outside->uv_low[0], t);
+    lerp_fine_q30(&v.uv.v, &v.uv_low[1], outside->uv.v, outside->uv_low[1], t);
+    /* between two values in range, so in range */
+    for (int c = 0; c < 3; c++) v.lit[c] = (uint16_t)lerp_q30(inside->lit[c], outside->lit[c], t);
+    v.fresnel = (uint16_t)lerp_q30(inside->fresnel, outside->fresnel, t);
     return v;
 }
 
@@ -98,8 +124,14 @@ static int clip_against(const tarn_view *view, int plane,
     }
     /* Rounding must not leave a new vertex a hair outside the depth range. */
     for (int i = 0; i < out; i++) {
-        if (plane == PLANE_NEAR && polygon[i].d < view->near) polygon[i].d = view->near;
-        if (plane == PLANE_FAR && polygon[i].d > view->far) polygon[i].d = view->far;
+        if (plane == PLANE_NEAR && polygon[i].d < view->near) {
+            polygon[i].d = view->near;
+            polygon[i].d_low = 0u;
+        }
+        if (plane == PLANE_FAR && (polygon[i].d > view->far || (polygon[i].d == view->far && polygon[i].d_low))) {
+            polygon[i].d = view->far;
+            polygon[i].d_low = 0u;
+        }
     }
     return out;
 }

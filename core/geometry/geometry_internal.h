@@ -39,12 +39,19 @@ typedef struct {
     uint8_t static_screen;   /* and so do their screen positions: the frame is theirs */
 } tarn_view;
 
-/* A vertex in view space with its shading inputs, before projection. */
+/* A vertex in view space with its shading inputs, before projection. The clipper
+ * keeps nine on the stack, under every triangle its sink draws: 40 bytes each, the
+ * colour and fresnel in 16 bits (their ranges). */
 typedef struct {
     tarn_q16 x, y, d;  /* view space, Q16.16: right, up, depth along the view axis */
+    /* the 16 bits below x, y and d: a clipped vertex's own, 0 for a mesh's. A vertex
+     * cut at a near plane of 0.002 projects 1/500 of a unit from the eye, where the
+     * last bit of Q16.16 is 0.4 pixels of a 128-pixel frame */
+    uint16_t x_low, y_low, d_low;
+    uint16_t uv_low[2]; /* the 16 bits below u and v, as x_low: a clipped vertex's own */
+    uint16_t lit[3];   /* lit colour, Q8.8 per channel, at most 65280 */
+    uint16_t fresnel;  /* (1 - n.v)^2, Q1.15, at most 32768; water materials only */
     tarn_uv uv;        /* Q16.16 */
-    int32_t lit[3];    /* lit colour, Q8.8 per channel */
-    int32_t fresnel;   /* (1 - n.v)^2, Q1.15; water materials only */
 } tarn_view_vertex;
 
 /* Per-object constants for one frame. */

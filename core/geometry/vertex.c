@@ -138,6 +138,7 @@ void tarn__vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,
     const uint32_t half[6] = {x & 0xFFFFu, x >> 16, y & 0xFFFFu, y >> 16, z & 0xFFFFu, z >> 16};
     const unsigned f = xform->to_view_frac_bits;
     tarn_q16 *dest[3] = {&out->x, &out->y, &out->d};
+    out->x_low = out->y_low = out->d_low = 0u;
     for (int i = 0; i < 3; i++) {
         uint32_t low = xform->row_start_low[i], middle = xform->row_start_middle[i],
                  high = xform->row_start_high[i];
@@ -234,10 +235,11 @@ void tarn__vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
         uint32_t shade = xform->unlit ? 65536u : shade_q16(view, c, n_dot_l);
         uint32_t factor = mul_q16_rounded(xform->tint_q16[c], shade);
         uint32_t vertex_channel = (vertex_rgb >> (16 - 8 * c)) & 0xFFu;
-        out->lit[c] = (int32_t)((vertex_channel * factor + 128u) >> 8); /* Q8.8 */
+        out->lit[c] = (uint16_t)((vertex_channel * factor + 128u) >> 8); /* Q8.8, at most 65280 */
     }
     out->uv = tarn__vertex_uv(mesh, index);
-    out->fresnel = xform->fresnel ? fresnel_q15(xform, n, out) : 0;
+    out->uv_low[0] = out->uv_low[1] = 0u;
+    out->fresnel = (uint16_t)(xform->fresnel ? fresnel_q15(xform, n, out) : 0);
 }
 
 tarn_uv tarn__vertex_uv(const tarn_mesh *mesh, uint16_t index)

@@ -137,6 +137,7 @@ static void set_view_position(tarn_view_vertex *v, const tarn_cached_vertex *ver
     v->x = vertex->x;
     v->y = vertex->y;
     v->d = vertex->d;
+    v->x_low = v->y_low = v->d_low = 0u;
 }
 
 /* The slot that still holds the vertex, or NULL once another took it over. */
@@ -177,6 +178,7 @@ void tarn__cached_shading(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, 
     for (int c = 0; c < 3; c++) v->lit[c] = vertex->lit[c];
     v->fresnel = vertex->fresnel;
     v->uv = tarn__vertex_uv(mesh, vertex->index);
+    v->uv_low[0] = v->uv_low[1] = 0u;
 }
 
 void tarn__cached_attributes(tarn_vertex_cache *cache, tarn_cached_vertex *vertex, tarn_screen_vertex *screen)
@@ -189,4 +191,5 @@ void tarn__cached_attributes(tarn_vertex_cache *cache, tarn_cached_vertex *verte
     for (int c = 0; c < 3; c++) screen->lit[c] = vertex->lit[c];
     screen->fresnel = vertex->fresnel;
     screen->uv = tarn__vertex_uv(cache->mesh, vertex->index);
+    screen->uv_low[0] = screen->uv_low[1] = 0u;
 }

@@ -90,8 +90,10 @@ typedef struct {
     uint32_t q_min, q_max;
     tarn_plane premultiplied[TARN_ATTRIBUTES_MAX]; /* T * q / 2^30, or T when affine */
     uint32_t t_min[TARN_ATTRIBUTES_MAX], t_max[TARN_ATTRIBUTES_MAX];
-    unsigned t_shift[TARN_ATTRIBUTES_MAX];    /* attribute = T >> t_shift */
-    uint32_t u_base, v_base;             /* whole texture repeats removed from u, v (Q16.16) */
+    unsigned t_shift[TARN_ATTRIBUTES_MAX];    /* attribute = T >> t_shift (for u and v, up to
+                                                 46: Q16.16 from T's 30 bits and more) */
+    uint32_t u_base, v_base;             /* removed from u, v (Q16.16): a texture's whole
+                                            repeats, water's least coordinates */
     /* when textured: texel column (T_u >> texel_shift[0]) & texel_mask[0], row
      * likewise from T_v, at index (row << log2_width) + column */
     uint8_t texel_shift[2];

@@ -72,17 +72,36 @@ tarn_pixel_box tarn__triangle_pixels(const tarn_triangle_setup *t)
     return tarn__bounds_pixels(&bounds, t->subpixel_bits);
 }
 
-/* Edges 1 and 2 at the centre of the pixel every plane is anchored at, (box.x0,
- * box.y0): the same for all of a triangle's planes, so taken once. */
+/* Where every plane of a triangle is found: the pixel nearest its farthest vertex
+ * (the least near/d), from that vertex's value and the edge values there that
+ * weigh the other two. A plane's rounding grows with the distance from where it
+ * is found, and perspective divides by the plane of q, which is least at that
+ * vertex: found there, the rounding is least where a unit of it weighs the most.
+ * Found at the box's corner instead, a triangle cut by the near plane, its q a
+ * thousand times smaller at the far end, moved texels there by a third of a texel
+ * at a few thousand texels a triangle. The plane is then carried to the box's
+ * corner, modulo 2^32, so each pixel's value is the same number. */
 typedef struct {
-    int32_t e1, e2;
+    uint8_t far, next, after; /* the vertex the planes start from, and the two others */
+    int32_t i, j;         /* the pixel they are found at */
+    int32_t e_next, e_after; /* the edge values there weighing vertices next and after */
 } plane_anchor;
 
 static plane_anchor anchor_of(const tarn_triangle_setup *t)
 {
     const unsigned s = t->subpixel_bits;
-    const int32_t px = tarn__pixel_centre(t->box.x0, s), py = tarn__pixel_centre(t->box.y0, s);
-    const plane_anchor anchor = {edge_unbiased_at(&t->edges[1], px, py), edge_unbiased_at(&t->edges[2], px, py)};
+    plane_anchor anchor;
+    anchor.far = 0;
+    for (int k = 1; k < 3; k++)
+        if (t->v[k]->inv_depth < t->v[anchor.far]->inv_depth) anchor.far = (uint8_t)k;
+    anchor.next = (uint8_t)(anchor.far == 2 ? 0 : anchor.far + 1); /* no % 3: the M0 would call a divider */
+    anchor.after = (uint8_t)(anchor.far == 0 ? 2 : anchor.far - 1);
+    const tarn_screen_vertex *far = t->v[anchor.far];
+    anchor.i = tarn_floor_shift(far->x, s); /* the pixel whose square holds it */
+    anchor.j = tarn_floor_shift(far->y, s);
+    const int32_t px = tarn__pixel_centre(anchor.i, s), py = tarn__pixel_centre(anchor.j, s);
+    anchor.e_next = edge_unbiased_at(&t->edges[anchor.next], px, py);
+    anchor.e_after = edge_unbiased_at(&t->edges[anchor.after], px, py);
     return anchor;
 }
 
@@ -108,32 +127,29 @@ static tarn_plane make_plane(const tarn_triangle_setup *t, const tarn_divisor *a
                         const uint32_t value[3])
 {
     const unsigned s = t->subpixel_bits;
-    const tarn_edge *e1 = &t->edges[1], *e2 = &t->edges[2];
-    const int32_t d1 = (int32_t)(value[1] - value[0]), d2 = (int32_t)(value[2] - value[0]);
+    const tarn_edge *e1 = &t->edges[anchor->next], *e2 = &t->edges[anchor->after];
+    const uint32_t from = value[anchor->far];
+    const int32_t d1 = (int32_t)(value[anchor->next] - from), d2 = (int32_t)(value[anchor->after] - from);
     if (d1 == 0 && d2 == 0) { /* a flat plane: every quotient below would be 0 */
-        const tarn_plane flat = {value[0], 0u, 0u};
+        const tarn_plane flat = {from, 0u, 0u};
         return flat;
     }
-    int64_t at_anchor = value[0] + tarn_divide_round_approx_i64(weighted_sum(anchor->e1, d1, anchor->e2, d2), area2);
-    int64_t step_x = tarn_divide_round_approx_i64(coefficient_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
-    int64_t step_y = tarn_divide_round_approx_i64(coefficient_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
-    tarn_plane p = {(uint32_t)at_anchor, (uint32_t)step_x, (uint32_t)step_y};
+    tarn_plane p;
+    p.step_x = (uint32_t)tarn_divide_round_approx_i64(coefficient_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
+    p.step_y = (uint32_t)tarn_divide_round_approx_i64(coefficient_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
+    /* found at the anchor pixel, carried to the box's corner, where tarn__plane_at counts from */
+    p.anchor = from + (uint32_t)tarn_divide_round_approx_i64(weighted_sum(anchor->e_next, d1, anchor->e_after, d2), area2) +
+               p.step_x * (uint32_t)(t->box.x0 - anchor->i) + p.step_y * (uint32_t)(t->box.y0 - anchor->j);
     return p;
 }
 
-/* Scales one attribute's three values toward 2^30 and premultiplies by q; an
- * attribute below set->first_varying is constant and gets no plane. */
+/* An attribute's three T values (each at most 2^30), with the shift that makes
+ * them the attribute (attribute = T >> shift): their range and, with q, their plane;
+ * an attribute below set->first_varying is constant and gets no plane. */
 static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_anchor *anchor,
-                          const uint32_t value[3], const uint32_t q[3])
+                          uint32_t scaled[3], unsigned shift, const uint32_t q[3])
 {
     const int k = set->count++;
-    const unsigned length = bit_length_u32(value[0] | value[1] | value[2]);
-    const unsigned shift = 30u - (length > 30u ? 30u : length);
-    uint32_t scaled[3];
-    for (int n = 0; n < 3; n++) {
-        const uint32_t v = (value[n] > TARN_T_ONE ? TARN_T_ONE : value[n]) << shift;
-        scaled[n] = v > TARN_T_ONE ? TARN_T_ONE : v;
-    }
     /* at most T_ONE: the signed least and largest are the same numbers */
     set->t_min[k] = (uint32_t)tarn_min3_i32((int32_t)scaled[0], (int32_t)scaled[1], (int32_t)scaled[2]);
     set->t_max[k] = (uint32_t)tarn_max3_i32((int32_t)scaled[0], (int32_t)scaled[1], (int32_t)scaled[2]);
@@ -142,6 +158,20 @@ static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t,
     if (set->perspective != TARN_PERSPECTIVE_AFFINE)
         for (int n = 0; n < 3; n++) scaled[n] = (uint32_t)(tarn_mul_u32_wide(scaled[n], q[n]) >> 30);
     set->premultiplied[k] = make_plane(t, &set->depth.den, anchor, scaled);
+}
+
+/* Three values (each at most 2^30) scaled toward 2^30 as T values; returns the
+ * shift. (Found before add_attribute is called, not inside it: the Cortex-M0's
+ * deepest stack runs through the plane it makes.) */
+static unsigned attribute_t(const uint32_t value[3], uint32_t scaled[3])
+{
+    const unsigned length = bit_length_u32(value[0] | value[1] | value[2]);
+    const unsigned shift = 30u - (length > 30u ? 30u : length);
+    for (int n = 0; n < 3; n++) {
+        const uint32_t v = (value[n] > TARN_T_ONE ? TARN_T_ONE : value[n]) << shift;
+        scaled[n] = v > TARN_T_ONE ? TARN_T_ONE : v;
+    }
+    return shift;
 }
 
 /* Whether the lit colour's three channels are all 255.0 (65280 in Q8.8). */
@@ -160,16 +190,53 @@ static int lit_alike(const tarn_triangle_setup *t)
     return 1;
 }
 
-/* Texture coordinates less their whole repeats (which do not move a texel). */
-static void texture_coordinates(const tarn_triangle_setup *t, int axis, uint32_t out[3], uint32_t *base)
+/* Texture coordinates less a base the pixels add back: for a texture, their whole
+ * repeats, which do not move a texel, so a pixel finds its texel in T alone; for
+ * water, whose maps add the base to each pixel's coordinate, their least value.
+ * The perspective divide's error is a share of T, and a water map's scale
+ * multiplies it: T holding a whole repeat of the mesh's coordinates, a map at
+ * scale 8192 on a triangle 1/128 of it across was off by a texel at one Newton
+ * step (2^-18); holding only the triangle's own span, by 1/64 of one. */
+static void texture_coordinates(const tarn_triangle_setup *t, int axis, int whole_repeats, uint32_t out[3],
+                                uint32_t *base)
 {
     int32_t c[3], low;
     for (int n = 0; n < 3; n++) c[n] = axis == 0 ? t->v[n]->uv.u : t->v[n]->uv.v;
     low = c[0] < c[1] ? c[0] : c[1];
     low = low < c[2] ? low : c[2];
-    int32_t whole = tarn_floor_shift(low, 16);
-    *base = (uint32_t)whole << 16;
+    *base = whole_repeats ? (uint32_t)tarn_floor_shift(low, 16) << 16 : (uint32_t)low;
     for (int n = 0; n < 3; n++) out[n] = (uint32_t)c[n] - *base;
+}
+
+/* One texture coordinate axis as T values, as attribute_t: the coordinates less
+ * their base, with the 16 bits below Q16.16 a clipped vertex keeps, scaled toward
+ * 2^30; returns the shift (up to 46). Those bits count for as much as T holds: a
+ * triangle across less than a repeat keeps most of them, and near the eye, where
+ * one bit of Q16.16 spans hundreds of pixels, such a triangle is all that draws. */
+static unsigned texture_coordinate_t(const tarn_triangle_setup *t, int axis, int whole_repeats, uint32_t *base,
+                                     uint32_t scaled[3])
+{
+    uint32_t value[3], whole = 0u, below = 0u;
+    texture_coordinates(t, axis, whole_repeats, value, base);
+    for (int n = 0; n < 3; n++) {
+        whole |= value[n];
+        below |= t->v[n]->uv_low[axis];
+    }
+    if (below == 0u) return attribute_t(value, scaled); /* no clipped vertex: the same numbers */
+    /* the values with their low bits are value * 2^16 + low (Q16.32, below 2^48): T
+       is that times 2^up / 2^down, at most 2^30, taken in 32-bit words; past 2^14
+       repeats (down > 16) the values saturate as a plain attribute's would */
+    const unsigned length = whole != 0u ? 16u + bit_length_u32(whole) : bit_length_u32(below);
+    const unsigned down = length > 30u ? (length - 30u > 16u ? 16u : length - 30u) : 0u;
+    const unsigned up = length < 30u ? 30u - length : 0u;
+    const unsigned shift = 16u + up - down; /* at most 29 where a value is not 0 */
+    for (int n = 0; n < 3; n++) {
+        /* the two parts share no bit: the low bits land below `shift` */
+        const uint32_t high = value[n] == 0u ? 0u : (value[n] > (TARN_T_ONE >> shift) ? TARN_T_ONE : value[n] << shift);
+        const uint32_t v = high | (((uint32_t)t->v[n]->uv_low[axis] << up) >> down);
+        scaled[n] = v > TARN_T_ONE ? TARN_T_ONE : v;
+    }
+    return shift;
 }
 
 /* Vertex k's inverse depth less vertex 0's: both within [1, 2^30]. */
@@ -262,21 +329,25 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
                                                                                    : make_depth_plane(t, &anchor);
     if (perspective != TARN_PERSPECTIVE_AFFINE) /* affine interpolation never reads q */
         set->q = make_plane(t, &set->depth.den, &anchor, q);
+    uint32_t scaled[3];
+    unsigned shift;
     for (int c = 0; c < 3; c++) {
-        uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
-        add_attribute(set, t, &anchor, lit, q);
+        const uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
+        shift = attribute_t(lit, scaled);
+        add_attribute(set, t, &anchor, scaled, shift, q);
     }
     set->lit_full = (uint8_t)(set->first_varying == 3 && lit_is_full(set));
     if (request->uv) {
-        uint32_t coordinate[3];
-        texture_coordinates(t, 0, coordinate, &set->u_base);
-        add_attribute(set, t, &anchor, coordinate, q);
-        texture_coordinates(t, 1, coordinate, &set->v_base);
-        add_attribute(set, t, &anchor, coordinate, q);
+        const int whole_repeats = request->texture != NULL;
+        shift = texture_coordinate_t(t, 0, whole_repeats, &set->u_base, scaled);
+        add_attribute(set, t, &anchor, scaled, shift, q);
+        shift = texture_coordinate_t(t, 1, whole_repeats, &set->v_base, scaled);
+        add_attribute(set, t, &anchor, scaled, shift, q);
         if (request->texture != NULL) set_texel_lookup(set, request->texture);
     }
     if (request->fresnel) {
-        uint32_t fresnel[3] = {t->v[0]->fresnel, t->v[1]->fresnel, t->v[2]->fresnel};
-        add_attribute(set, t, &anchor, fresnel, q);
+        const uint32_t fresnel[3] = {t->v[0]->fresnel, t->v[1]->fresnel, t->v[2]->fresnel};
+        shift = attribute_t(fresnel, scaled);
+        add_attribute(set, t, &anchor, scaled, shift, q);
     }
 }

@@ -107,6 +107,7 @@ static void static_screen_attributes(const tarn_static_vertex *baked, const tarn
         for (int c = 0; c < 3; c++) screen[k].lit[c] = v->lit[c];
         screen[k].fresnel = v->fresnel;
         screen[k].uv = tarn__vertex_uv(mesh, index[k]);
+        screen[k].uv_low[0] = screen[k].uv_low[1] = 0u;
     }
 }
 

@@ -14,8 +14,8 @@ static int32_t displaced_offset(const tarn_underwater_context *u, int32_t i, int
     /* screen (x / width, y / width) at the pixel centre, Q0.16, then panned */
     const uint32_t sx = tarn_mul_hi_u32((uint32_t)(2 * i + 1) << 16, u->screen_u_per_half);
     const uint32_t sy = tarn_mul_hi_u32((uint32_t)(2 * j + 1) << 16, u->screen_u_per_half);
-    const uint32_t fu = tarn__water_repeat_fraction(sx, 0u, (uint32_t)under->pan.scale) + u->pan[0];
-    const uint32_t fv = tarn__water_repeat_fraction(sy, 0u, (uint32_t)under->pan.scale) + u->pan[1];
+    const uint32_t fu = tarn__water_map_fraction(sx, 0u, (uint32_t)under->pan.scale) + u->pan[0];
+    const uint32_t fv = tarn__water_map_fraction(sy, 0u, (uint32_t)under->pan.scale) + u->pan[1];
     const uint8_t *texel = tarn__water_texel_at(under->normal_map, fu >> 16, fv >> 16);
     int32_t target[2] = {i, j};
     for (int k = 0; k < 2; k++) {

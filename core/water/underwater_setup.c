@@ -13,8 +13,8 @@ void tarn__underwater_setup(tarn_underwater_context *u, const tarn_view *view,
     u->exp2 = config->quality.exp2;
     u->fog_argument_bits = config->quality.fog_argument_bits;
     u->recip_steps = config->quality.recip_newton_steps;
-    u->pan[0] = tarn__water_pan_offset(under->pan.speed_u, config->time_ms);
-    u->pan[1] = tarn__water_pan_offset(under->pan.speed_v, config->time_ms);
+    u->pan[0] = tarn__water_pan_offset_q32(under->pan.speed_u, config->time_ms);
+    u->pan[1] = tarn__water_pan_offset_q32(under->pan.speed_v, config->time_ms);
     /* rounded up: a pixel centre exactly on a texel edge must land on the texel
      * above it, as floor() puts it, not a hair below */
     u->screen_u_per_half = (uint32_t)tarn_divide_once_i64(((int64_t)1 << 32) + 2 * config->width - 1,

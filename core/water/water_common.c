@@ -21,6 +21,26 @@ uint32_t tarn__fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits)
     return tarn__water_mul_q16(rate, depth << (16u - bits));
 }
 
+uint32_t tarn__squared_argument_q16(uint32_t rate, uint32_t x)
+{
+    if (rate == 0u || x == 0u) return 0u;
+    /* x^2 would saturate Q16.16 from x = 181 while a weak rate keeps the product
+     * small: each factor is kept as a mantissa (top bit set) and a power of two, like
+     * a small float, so nothing saturates before the whole product does. */
+    const unsigned x_shift = tarn_clz32(x), rate_shift = tarn_clz32(rate);
+    const uint32_t x_mantissa = x << x_shift;
+    const uint32_t square = tarn_mul_hi_u32(x_mantissa, x_mantissa); /* x^2 ~ square * 2^(32 - 2 x_shift) */
+    const uint32_t product = tarn_mul_hi_u32(square, rate << rate_shift); /* at least 2^29 */
+    /* rate * x^2 / 2^32, the Q16.16 product, = product * 2^(32 - 2 x_shift - rate_shift) */
+    const int up = 32 - 2 * (int)x_shift - (int)rate_shift;
+    if (up <= -32) return 0u;
+    if (up <= 0) {
+        const uint32_t down = product >> -up;
+        return down > (uint32_t)INT32_MAX ? (uint32_t)INT32_MAX : down;
+    }
+    return up >= 31 || product > ((uint32_t)INT32_MAX >> up) ? (uint32_t)INT32_MAX : product << up;
+}
+
 const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction)
 {
     /* For a power-of-two side, fraction * side / 2^16 is the shift by 16 - log2(side)

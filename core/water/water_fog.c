@@ -13,8 +13,11 @@ uint32_t tarn__water_fog(const tarn_water_context *w, uint32_t diff)
 void tarn__water_absorb(const tarn_water_context *w, uint32_t diff, uint16_t loss[3])
 {
     const tarn_water *water = w->water;
-    const uint32_t x = water->absorption_squared ? tarn__water_mul_q16(diff, diff) : diff;
-    const uint32_t absorbed = (Q16_ONE - tarn__water_decay(w, (uint32_t)water->absorption, x)) >> 1; /* Q1.15 */
+    const uint32_t rate = (uint32_t)water->absorption;
+    const uint32_t decay = water->absorption_squared
+        ? tarn_exp2_neg_q16(-(tarn_q16)tarn__squared_argument_q16(rate, diff), w->exp2)
+        : tarn__water_decay(w, rate, diff);
+    const uint32_t absorbed = (Q16_ONE - decay) >> 1; /* Q1.15 */
     for (int c = 0; c < 3; c++) {
         const uint32_t inverse = 65280u - tarn__water_channel_q8(water->absorb_rgb, c);
         loss[c] = (uint16_t)((inverse * absorbed) >> 15);

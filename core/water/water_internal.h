@@ -89,12 +89,11 @@ void tarn__water_context_setup(tarn_water_context *w, const tarn_view *view,
 typedef struct {
     uint32_t inv_depth; /* the water surface's near/d, Q1.30 */
     uint32_t lit[3];    /* material colour times shade, Q8.8 */
-    uint32_t u, v;      /* texture coordinates, Q16.16 modulo 2^16 repeats, floored */
-    uint32_t u_fine, v_fine; /* their next 8 fraction bits (0..255): u + u_fine / 2^8 is
-                          Q16.24. The panned maps multiply u by their scale and then by
-                          their size in texels, so a Q16.16 step would be up to a
-                          hundredth of a texel there, and flip the texel of whole rows
-                          of pixels that lie near a texel edge */
+    uint32_t u, v;      /* texture coordinates, Q16.16 modulo 2^16 repeats */
+    uint16_t u_low, v_low; /* their next 16 fraction bits, as far as the triangle's
+                              interpolation holds them: a map's scale multiplies the
+                              coordinate's rounding, and at a scale of 12 the last
+                              bit of Q16.16 alone was 1/85 of a texel */
     uint32_t fresnel;   /* saturate(1 - n.v)^2, Q1.15 */
 } tarn_water_input;
 
@@ -105,15 +104,22 @@ uint32_t tarn__water_mul_q16(uint32_t a, uint32_t b);
  * to `bits` fraction bits (tarn_quality.fog_argument_bits; 16 keeps it whole),
  * saturated like tarn__water_mul_q16. */
 uint32_t tarn__fog_argument_q16(uint32_t rate, uint32_t x, unsigned bits);
-/* The fraction of a texture repeat at u * scale, Q0.32: u Q16.16 with `fine` its
- * next 8 fraction bits, scale Q16.16. The product of two Q16.16 numbers is Q32.32,
- * and its low 32 bits, all a 32-bit product keeps, are exactly its fraction: whole
- * repeats drop out, and negative or wrapped inputs give the right fraction too. The
- * fine bits add fine * scale / 2^8, split so that no product passes 32 bits.
- * Inline: it runs up to six times a water pixel. */
-static inline uint32_t tarn__water_repeat_fraction(uint32_t u, uint32_t fine, uint32_t scale)
+/* The squared absorption's exp2 argument rate * x^2 (rate per unit^2 and x, Q16.16,
+ * non-negative; the result Q16.16), within 2^-27 of the product relative, saturated
+ * only where the product passes INT32_MAX (where exp2 is 0 long before). The depth is
+ * not cut to fog_argument_bits: the cut buys fog one multiply, which this has not to
+ * save, and cut before squaring it would cost a shallow depth most of its bits. */
+uint32_t tarn__squared_argument_q16(uint32_t rate, uint32_t x);
+/* A map coordinate's fraction of a repeat, Q0.32: (u + low / 2^16) * scale modulo
+ * one repeat, u and scale Q16.16, low the coordinate's next 16 bits; within two
+ * units below the exact value. u * scale is Q32.32, and its low word, all a 32-bit
+ * product keeps, is exactly its fraction (negative or wrapped u too); the low bits'
+ * share is low * scale / 2^16, split so no product passes 32 bits. At Q0.16 a
+ * 64-texel map's texel edges fell at 1/1024 of a texel, and a whole row of pixels
+ * level with one tipped with the pan offset's rounding. */
+static inline uint32_t tarn__water_map_fraction(uint32_t u, uint32_t low, uint32_t scale)
 {
-    return u * scale + fine * (scale >> 8) + ((fine * (scale & 0xFFu)) >> 8);
+    return u * scale + low * (scale >> 16) + ((low * (scale & 0xFFFFu)) >> 16);
 }
 /* A texel channel as a normal component, (2c - 255) / 255 in Q1.15. */
 static inline int32_t tarn__water_normal_component(uint8_t c)
@@ -124,8 +130,11 @@ static inline int32_t tarn__water_normal_component(uint8_t c)
 const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction);
 /* near / (iz / 2^30) in Q16.16 world units, saturated; `far` for iz 0. */
 uint32_t tarn__water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps);
-/* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.32, floored. */
-uint32_t tarn__water_pan_offset(tarn_q16 speed, uint32_t time_ms);
+/* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.16. */
+uint16_t tarn__water_pan_offset(tarn_q16 speed, uint32_t time_ms);
+/* The same in Q0.32, for the maps' Q0.32 fractions: floor(speed * time_ms * 2^16 /
+ * 1000) modulo 2^32. */
+uint32_t tarn__water_pan_offset_q32(tarn_q16 speed, uint32_t time_ms);
 
 /* What the water does to the background of one pixel: every step of tarn_water.h
  * but the background's colour, gathered so that the pixel's colour is one product
@@ -235,9 +244,10 @@ static inline uint32_t tarn__water_channel_q8(uint32_t rgb, int c)
 static inline const uint8_t *tarn__water_panned_texel(const tarn_texture *t, const tarn_panning *pan,
                                                      const uint32_t offset[2], const tarn_water_input *in)
 {
-    const uint32_t u = tarn__water_repeat_fraction(in->u, in->u_fine, (uint32_t)pan->scale) + offset[0];
-    const uint32_t v = tarn__water_repeat_fraction(in->v, in->v_fine, (uint32_t)pan->scale) + offset[1];
-    return tarn__water_texel_at(t, u >> 16, v >> 16); /* the texel's floor needs no more */
+    const uint32_t u = tarn__water_map_fraction(in->u, in->u_low, (uint32_t)pan->scale) + offset[0];
+    const uint32_t v = tarn__water_map_fraction(in->v, in->v_low, (uint32_t)pan->scale) + offset[1];
+    /* a power-of-two side's texel is the Q0.32 fraction's top bits: its top 16 do */
+    return tarn__water_texel_at(t, u >> 16, v >> 16);
 }
 
 /* 2^(-rate * x) for rate, x >= 0 (Q16.16), Q0.16, through the frame's exp2 table. */
@@ -334,8 +344,9 @@ tarn_water_normal tarn__water_map_x(const tarn_water_context *w, const tarn_wate
  * at (i, j) reads, `target`: moved by N.xy times the material's pixels per unit
  * normal and `reach` (saturate(db - ds), Q0.16), snapped to a whole pixel, at most
  * the context's offset_limit each axis and inside its sample_rect. N.xy is found
- * from the maps' texels again, exactly (tarn__water_exact_direction); `n` (the
- * direction step 1 found) is normalised for the steps after. */
+ * from the maps' texels again, exactly (tarn__water_exact_direction), with the
+ * quality's refraction_normal EXACT; `n` (the direction step 1 found) is
+ * normalised for the steps after, and is N.xy otherwise. */
 void tarn__water_refracted_pixel(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
                                  tarn_water_normal *n, uint32_t reach, int32_t target[2]);
 /* The refracted sample, or `own` (the pixel's background) where the refracted one

@@ -6,16 +6,21 @@
 
 #define Q15_ONE 32768
 
-/* floor(speed * time_ms / 1000) modulo one repeat, Q0.32: the Q16.16 quotient
- * gives the top 16 fraction bits, and its remainder (below 1000) the next 16. */
-uint32_t tarn__water_pan_offset(tarn_q16 speed, uint32_t time_ms)
+uint32_t tarn__water_pan_offset_q32(tarn_q16 speed, uint32_t time_ms)
 {
-    const int64_t travelled = (int64_t)speed * time_ms; /* |speed| <= 2^20: below 2^52 */
+    int64_t travelled = (int64_t)speed * time_ms; /* |speed| <= 2^20: below 2^52 */
     const tarn_divisor thousand = tarn_divisor_of(1000);
-    uint32_t remainder;
-    const int64_t q16 = tarn_divide_floor_i64(travelled, &thousand, &remainder);
-    const uint32_t below = (uint32_t)tarn_divide_u64((uint64_t)remainder << 16, &thousand, NULL);
+    uint32_t left; /* of the thousandths, in [0, 1000) */
+    int64_t q16 = tarn_divide_floor_i64(travelled, &thousand, &left);
+    const uint32_t below = (uint32_t)tarn_divide_u64((uint64_t)left << 16, &thousand, NULL);
     return ((uint32_t)((uint64_t)q16 & 0xFFFFu) << 16) + below;
+}
+
+/* floor(speed * time_ms / 1000) modulo one repeat, Q0.16: the Q0.32 offset's top
+ * half (a floor of a floor). */
+uint16_t tarn__water_pan_offset(tarn_q16 speed, uint32_t time_ms)
+{
+    return (uint16_t)(tarn__water_pan_offset_q32(speed, time_ms) >> 16);
 }
 
 /* 2^32 / x: the reciprocal of a Q16.16 distance in Q16.16, saturated. */
@@ -65,10 +70,10 @@ void tarn__water_context_setup(tarn_water_context *w, const tarn_view *view,
     const tarn_panning *pans[3] = {&water->pan_a, &water->pan_b, &water->foam_pan};
     uint32_t *offsets[3] = {w->pan_a, w->pan_b, w->foam_pan};
     for (int k = 0; k < 3; k++) {
-        offsets[k][0] = tarn__water_pan_offset(pans[k]->speed_u, config->time_ms);
-        offsets[k][1] = tarn__water_pan_offset(pans[k]->speed_v, config->time_ms);
+        offsets[k][0] = tarn__water_pan_offset_q32(pans[k]->speed_u, config->time_ms);
+        offsets[k][1] = tarn__water_pan_offset_q32(pans[k]->speed_v, config->time_ms);
     }
-    w->foam_phase = (uint16_t)(tarn__water_pan_offset(water->foam_line_speed, config->time_ms) >> 16);
+    w->foam_phase = tarn__water_pan_offset(water->foam_line_speed, config->time_ms);
     half_vector(view, object, w->half_vector);
     for (int c = 0; c < 3; c++) {
         w->light_q8[c] = ((view->light_q16[c] * 255u + 32768u) >> 16) << 8;

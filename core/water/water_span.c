@@ -4,12 +4,13 @@
  * top-left pixel found (tarn_water_block). */
 #include "water/water_internal.h"
 
-/* A texture coordinate's T value (Q16.16 times 2^shift, less whole repeats) as
- * Q16.16 and its next 8 fraction bits. */
-static void coordinate_of(uint32_t t, unsigned shift, uint32_t base, uint32_t *q16, uint32_t *fine)
+/* A texture coordinate's T value (below 2^31; Q16.16 shifted up by `shift`, at most
+ * 46) as Q16.16, added to the triangle's base, and the 16 fraction bits below (zero
+ * past T's own). */
+static uint32_t coordinate_q16(uint32_t t, unsigned shift, uint32_t base, uint16_t *low)
 {
-    *q16 = (t >> shift) + base;
-    *fine = (shift >= 8u ? t >> (shift - 8u) : t << (8u - shift)) & 0xFFu;
+    *low = (uint16_t)(shift >= 16u ? t >> (shift - 16u) : t << (16u - shift));
+    return (shift >= 31u ? 0u : t >> shift) + base;
 }
 
 /* The water pixel's inputs from the interpolated attributes. */
@@ -19,8 +20,8 @@ static tarn_water_input water_input(const tarn_attribute_set *set, const uint32_
     tarn_water_input in;
     in.inv_depth = inv_depth;
     for (int c = 0; c < 3; c++) in.lit[c] = values[c] >> set->t_shift[c];
-    coordinate_of(values[TARN_ATTRIBUTE_U], set->t_shift[TARN_ATTRIBUTE_U], set->u_base, &in.u, &in.u_fine);
-    coordinate_of(values[TARN_ATTRIBUTE_V], set->t_shift[TARN_ATTRIBUTE_V], set->v_base, &in.v, &in.v_fine);
+    in.u = coordinate_q16(values[TARN_ATTRIBUTE_U], set->t_shift[TARN_ATTRIBUTE_U], set->u_base, &in.u_low);
+    in.v = coordinate_q16(values[TARN_ATTRIBUTE_V], set->t_shift[TARN_ATTRIBUTE_V], set->v_base, &in.v_low);
     in.fresnel = set->count > TARN_ATTRIBUTE_FRESNEL ? values[TARN_ATTRIBUTE_FRESNEL] >> set->t_shift[TARN_ATTRIBUTE_FRESNEL] : 0u;
     return in;
 }

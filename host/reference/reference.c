@@ -219,11 +219,15 @@ static int within_exact_range(const ref_screen_vertex v[3], const ref_target *t)
     return 1;
 }
 
+/* A 128-bit integer (a GCC and Clang extension, and the host is one of theirs). */
+__extension__ typedef __int128 wide_int;
+
 /* The depth test compares near/d rounded to Q1.30, as the header defines the depth
- * buffer. With the core's own triangles (snapped mode) the vertex depths are whole
- * Q1.30 numbers and the edge values whole subpixel products, so the rounding is done
- * exactly in integers and ties fall exactly as they must; otherwise in doubles.
- * `edge` are the three non-negative edge values of a covered pixel. */
+ * buffer. Where the vertex depths are whole Q1.30 numbers (always with the core's own
+ * triangles, the snapped mode; by chance otherwise, as on the near plane) and the
+ * edge values whole subpixel products, the rounding is done exactly in integers and
+ * ties fall exactly as they must; otherwise in doubles. `edge` are the three
+ * non-negative edge values of a covered pixel. */
 static double depth_q30(const ref_screen_vertex v[3], const double edge[3], double area, int exact)
 {
     double z[3];
@@ -232,9 +236,13 @@ static double depth_q30(const ref_screen_vertex v[3], const double edge[3], doub
         z[k] = v[k].inv_depth * INV_DEPTH_SCALE;
         whole = whole && z[k] == floor(z[k]);
     }
-    if (whole) { /* sum of edge * z <= area * 2^30 < 2^61: exact in int64 */
-        int64_t num = 0, den = (int64_t)area;
-        for (int k = 0; k < 3; k++) num += (int64_t)edge[k] * (int64_t)z[k];
+    if (whole) {
+        /* Inside the exact range the edges and the area are whole numbers below 2^52
+         * (coordinates below 2^25), so sum of edge * z <= area * 2^30 < 2^82: exact
+         * in 128 bits. In 64 it overflowed for big unsnapped triangles near the eye. */
+        wide_int num = 0;
+        const wide_int den = (wide_int)area;
+        for (int k = 0; k < 3; k++) num += (wide_int)edge[k] * (wide_int)z[k];
         return (double)((num + den / 2) / den);
     }
     return floor((edge[0] * z[0] + edge[1] * z[1] + edge[2] * z[2]) / area + 0.5);
@@ -492,8 +500,9 @@ static void visit_core_triangle(void *user, const tarn_screen_vertex vertex[3],
         v[k].y = vertex[k].y;
         v[k].inv_depth = vertex[k].inv_depth / INV_DEPTH_SCALE;
         for (int c = 0; c < 3; c++) v[k].lit[c] = vertex[k].lit[c] / Q8_8_SCALE;
-        v[k].uv[0] = vertex[k].uv.u / Q16_SCALE;
-        v[k].uv[1] = vertex[k].uv.v / Q16_SCALE;
+        /* a clipped vertex's coordinates carry 16 bits below Q16.16 */
+        v[k].uv[0] = (vertex[k].uv.u + vertex[k].uv_low[0] / Q16_SCALE) / Q16_SCALE;
+        v[k].uv[1] = (vertex[k].uv.v + vertex[k].uv_low[1] / Q16_SCALE) / Q16_SCALE;
         v[k].fresnel = vertex[k].fresnel / FRESNEL_SCALE;
     }
     /* The core hands triangles over in their original winding and culls them only in

@@ -13,6 +13,7 @@
 #include "obj_load.h"
 #include "scene_fields.h"
 #include "scene_textures.h"
+#include "texel_span.h"
 #include "water_load.h"
 
 #define PI 3.14159265358979323846
@@ -294,15 +295,16 @@ typedef struct {
     const char *kind;            /* " for a sphere": in unknown-field messages */
     const char *const fields[5]; /* the type's own fields, NULL-terminated */
     mesh_builder build;
+    const char *uv_field;        /* the field that sets its texture coordinates, or NULL */
 } object_type;
 
 static const object_type OBJECT_TYPES[] = {
-    { "plane", " for a plane", { "size", "segments", "uv_scale", NULL }, build_plane },
-    { "box", " for a box", { "size", NULL }, build_box },
-    { "sphere", " for a sphere", { "radius", "segments", "rings", NULL }, build_sphere },
+    { "plane", " for a plane", { "size", "segments", "uv_scale", NULL }, build_plane, "uv_scale" },
+    { "box", " for a box", { "size", NULL }, build_box, NULL },
+    { "sphere", " for a sphere", { "radius", "segments", "rings", NULL }, build_sphere, NULL },
     { "heightfield", " for a heightfield", { "image", "size", "height", "uv_scale", NULL },
-      build_heightfield },
-    { "mesh", " for a mesh", { "file", NULL }, build_obj_mesh },
+      build_heightfield, "uv_scale" },
+    { "mesh", " for a mesh", { "file", NULL }, build_obj_mesh, "file" },
 };
 #define OBJECT_TYPE_COUNT (sizeof OBJECT_TYPES / sizeof OBJECT_TYPES[0])
 
@@ -394,7 +396,12 @@ static int load_object(tarn_loader *l, const json_t *o, size_t index)
     object->position = vec3_q16(position);
     rotation_matrix(rotation, object->rotation);
     object->scale = tarn_q16_from_double(scale);
-    return 0;
+    char uv_field[TARN_FIELD_PATH_MAX];
+    if (type->uv_field != NULL)
+        tarn_join_path(uv_field, field, type->uv_field);
+    else
+        snprintf(uv_field, sizeof uv_field, "%s", field);
+    return tarn_check_texel_spans(l, object, index, uv_field);
 }
 
 static int load_objects(tarn_loader *l, const json_t *root)

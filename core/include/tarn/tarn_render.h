@@ -235,6 +235,8 @@ typedef struct {
     int32_t x, y;        /* screen position in 1/2^subpixel_bits pixels */
     uint32_t inv_depth;  /* near/d, Q1.30 */
     tarn_uv uv;          /* Q16.16 texture coordinates */
+    uint16_t uv_low[2];  /* the 16 bits below u and v: a clipped vertex's own, 0 elsewhere
+                            (near the eye one bit of Q16.16 can span many pixels) */
     uint16_t lit[3];     /* lit vertex colour, Q8.8 per channel (0..65280) */
     uint16_t fresnel;    /* (1 - n.v)^2, Q1.15 (32768 = 1): n the unit vertex normal, v the
                             unit vector toward the camera; water materials only, else 0 */
