@@ -24,7 +24,7 @@
 #include "tarn/tarn_render.h"
 
 #define TARN_SWEEP_SOURCES_MAX 4 /* the host and up to three boards */
-#define TARN_SWEEP_OPTIONS_MAX 192
+#define TARN_SWEEP_OPTIONS_MAX 256
 
 typedef struct {
     tarn_quality quality;
