@@ -48,7 +48,8 @@ TARN = os.environ.get("TARN_BIN", "build/release/tarn")
 OUT = "build/figures"
 DOCS = ["README.md"] + sorted("docs/" + f for f in os.listdir(os.path.join(ROOT, "docs")) if f.endswith(".md"))
 
-BLOCK_RE = re.compile(r"<!-- figures:([\w.-]+) -->\n(.*?)<!-- /figures -->", re.S)
+# a block may be indented (inside a list item): its lines all are, by its marker's indent
+BLOCK_RE = re.compile(r"^([ \t]*)<!-- figures:([\w.-]+) -->\n(.*?)^[ \t]*<!-- /figures -->", re.S | re.M)
 # the value is the run of number-like characters right before the key's comment
 KEY_RE = re.compile(r"([\w.,%+-]*)<!-- fig:([\w.-]+)(?::(\w+))? -->")
 
@@ -167,9 +168,13 @@ def same(a, b):
 
 class Placeholder(dict):
     """What a measurement returns while the catalogue is only being read for what it
-    needs: any field, a figure of 1."""
+    needs: a figure of 1, whose every field is a figure of 1 too."""
+    text, num, tol, label = "1", 1.0, 0.0, ""
 
     def __missing__(self, key):
+        return Fig("1", 1.0, 0.0)
+
+    def fmt(self, style):
         return Fig("1", 1.0, 0.0)
 
 
@@ -347,11 +352,14 @@ class Measurer:
         return {k: exact(v) for k, v in fields(line).items()}
 
     def _callgrind(self, argv, tag):
-        out = os.path.join(ROOT, OUT, "callgrind", tag)
-        os.makedirs(os.path.dirname(out), exist_ok=True)
-        for f in os.listdir(os.path.dirname(out)):
-            if f.startswith(tag):
-                os.remove(os.path.join(os.path.dirname(out), f))
+        """Runs argv under callgrind, counting inside tarn_render_frame; the profile's
+        path (a dump at each CALLGRIND_DUMP_STATS goes beside it, PATH.1 onward)."""
+        folder = os.path.join(ROOT, OUT, "callgrind")
+        os.makedirs(folder, exist_ok=True)
+        out = os.path.join(folder, tag + ".cg")
+        for f in os.listdir(folder):
+            if f.startswith(tag + ".cg"):
+                os.remove(os.path.join(folder, f))
         run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out, "--collect-atstart=no",
              "--toggle-collect=tarn_render_frame", "--dump-instr=no"] + argv)
         return out
@@ -379,7 +387,7 @@ class Measurer:
         w, h = map(int, fields(size)["size"].split("x"))
         costs = [None] * len(args_list)
         for f in os.listdir(os.path.dirname(out)):
-            if not f.startswith(tag + ".out") and not (f.startswith(tag) and f[len(tag):].startswith(".")):
+            if not f.startswith(tag + ".cg"):
                 continue
             with open(os.path.join(os.path.dirname(out), f)) as fh:
                 text = fh.read()
@@ -394,7 +402,8 @@ class Measurer:
     def _m_bench(self, board, scene, flags):
         argv = ["make", "--no-print-directory", "-s", "-j2", "bench-target", "BOARD=" + board]
         if scene is not None:
-            slug = re.sub(r"[^\w.-]+", "_", "%s-%s-%s" % (board, os.path.basename(scene), flags or ""))
+            # short: the emulator's semihosting takes the stream's path, and long ones fail
+            slug = "%s-%s" % (board, hashlib.sha1(("%s\0%s" % (scene, flags)).encode()).hexdigest()[:10])
             fw_dir = os.path.join(OUT, "fw", slug)
             argv += ["SCENE=" + scene_path(scene), "BAKE_FLAGS=" + (flags or ""), "FW_BUILD_DIR=" + fw_dir]
         else:
@@ -460,6 +469,25 @@ def render(parts):
     return "".join(p if isinstance(p, str) else p.text for p in parts)
 
 
+def indented(parts, indent):
+    """The parts with every line started by indent (the block's marker's)."""
+    if not indent:
+        return parts
+    out, at_start = [], True
+    for p in parts:
+        if isinstance(p, str):
+            out.append("\n".join(indent + line if line and (i > 0 or at_start) else line
+                                 for i, line in enumerate(p.split("\n"))))
+            if p:
+                at_start = p.endswith("\n")
+        else:
+            if at_start:
+                out.append(indent)
+            out.append(p)
+            at_start = False
+    return out
+
+
 def fill_keys(text, keys, m, problems, doc):
     """The text with every key's value measured; problems for unknown keys."""
     def one(match):
@@ -503,7 +531,7 @@ def walk(docs, cat, m, problems):
     """Reads every block and key of every doc through `m`."""
     for doc, text in docs.items():
         for match in BLOCK_RE.finditer(text):
-            block_parts(cat.BLOCKS, match.group(1), m, problems, doc)
+            block_parts(cat.BLOCKS, match.group(2), m, problems, doc)
         for match in KEY_RE.finditer(text):
             key_fig(cat.KEYS, match.group(2), match.group(3), m, problems, doc)
 
@@ -528,9 +556,9 @@ def write_values(m, docs, cat):
             if fig is not None:
                 lines.append("%s\tfig:%s\t%s" % (doc, match.group(2), fig.text))
         for match in BLOCK_RE.finditer(text):
-            for p in block_parts(cat.BLOCKS, match.group(1), m, [], doc) or []:
+            for p in block_parts(cat.BLOCKS, match.group(2), m, [], doc) or []:
                 if isinstance(p, Fig):
-                    lines.append("%s\tfigures:%s\t%s\t%s" % (doc, match.group(1), p.label, p.text))
+                    lines.append("%s\tfigures:%s\t%s\t%s" % (doc, match.group(2), p.label, p.text))
     with open(os.path.join(ROOT, OUT, "values.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")
 
@@ -539,12 +567,13 @@ def cmd_write(cat, reuse, log):
     m, docs, problems = measure(cat, reuse, log)
     for doc, text in docs.items():
         def block(match):
-            parts = block_parts(cat.BLOCKS, match.group(1), m, problems, doc)
+            indent, name = match.group(1), match.group(2)
+            parts = block_parts(cat.BLOCKS, name, m, problems, doc)
             if parts is None:
                 return match.group(0)
-            body = render(parts)
-            return "<!-- figures:%s -->\n%s%s<!-- /figures -->" % (match.group(1), body,
-                                                                  "" if body.endswith("\n") else "\n")
+            body = render(indented(parts, indent))
+            return "%s<!-- figures:%s -->\n%s%s%s<!-- /figures -->" % (indent, name, body,
+                                                                       "" if body.endswith("\n") else "\n", indent)
         new = BLOCK_RE.sub(block, text)
         new = fill_keys(new, cat.KEYS, m, problems, doc)
         if new != text:
@@ -585,9 +614,13 @@ def cmd_check(cat, reuse, log):
     m, docs, problems = measure(cat, reuse, log)
     for doc, text in docs.items():
         for match in BLOCK_RE.finditer(text):
-            parts = block_parts(cat.BLOCKS, match.group(1), m, problems, doc)
+            indent, name, body = match.groups()
+            parts = block_parts(cat.BLOCKS, name, m, problems, doc)
             if parts is not None:
-                problems += check_block(doc, match.group(1), match.group(2), parts)
+                parts = indented(parts, indent)
+                if not render(parts).endswith("\n"):
+                    parts.append("\n")
+                problems += check_block(doc, name, body, parts)
         for match in KEY_RE.finditer(text):
             value, key, style = match.groups()
             fig = key_fig(cat.KEYS, key, style, m, problems, doc)

@@ -474,3 +474,278 @@ def raster_opaque(field):
 
 KEYS["raster.opaque.psnr"] = raster_opaque("psnr")
 KEYS["raster.opaque.maxerr"] = raster_opaque("maxerr")
+
+
+# ---- docs/sweep.md -------------------------------------------------------------------------
+
+@tool
+def front_md(m):
+    """docs/sweep/front.md, which make sweep-docs writes and tests/check_sweep.sh holds
+    to a fresh measurement of its presets."""
+    with open(os.path.join(ROOT, "docs/sweep/front.md")) as f:
+        return f.read()
+
+
+def front_section(m, scene):
+    text = m.output("front_md")
+    if not isinstance(text, str):
+        return ""
+    mt = re.search(r"^## %s \(.*?(?=^## |\Z)" % re.escape(scene), text, re.M | re.S)
+    if not mt:
+        raise MeasureError("docs/sweep/front.md has no section for %s" % scene)
+    return mt.group(0)
+
+
+def front_table(m, scene, first_header):
+    """The header and rows of the table of a front.md section whose header starts so."""
+    lines = front_section(m, scene).splitlines()
+    for i, line in enumerate(lines):
+        if line.startswith("| " + first_header):
+            rows = []
+            for row in lines[i + 2:]:
+                if not row.startswith("|"):
+                    break
+                rows.append([c.strip() for c in row.strip("|").split("|")])
+            return [c.strip() for c in line.strip("|").split("|")], lines[i + 1], rows
+    if front_section(m, scene):
+        raise MeasureError("docs/sweep/front.md: %s has no table starting '%s'" % (scene, first_header))
+    return [], "", []
+
+
+def front_preset(m, scene, preset, column, table_first="preset | PSNR dB"):
+    header, _, rows = front_table(m, scene, table_first)
+    for row in rows:
+        if row[0] == "`%s`" % preset:
+            return row[header.index(column)]
+    return "1"
+
+
+def sweep_presets(scene):
+    def fn(m):
+        header, rule, rows = front_table(m, scene, "preset | PSNR dB")
+        if not header:
+            return [Fig("1", 1)]
+        parts = ["| " + " | ".join(header) + " |\n", rule + "\n"]
+        for row in rows:
+            parts.append("| " + row[0] + " |")
+            for i, cell in enumerate(row[1:], 1):
+                parts += [" ", labelled(exact(cell), "%s / %s" % (row[0].strip("`"), header[i])), " |"]
+            parts.append("\n")
+        return parts
+    fn.__doc__ = "The presets of docs/sweep/front.md's %s section, copied." % scene
+    return fn
+
+
+BLOCKS["sweep-presets-pond"] = sweep_presets("pond")
+BLOCKS["sweep-presets-lake"] = sweep_presets("lake")
+
+SWEEP_POINTS = {
+    "balanced": "", "exact": "--quality exact", "fast": "--quality fast",
+    "fast-wb1": "--quality fast --water-block 1", "fast-affine": "--quality fast --perspective affine",
+    "apron-off": "--apron off", "apron-8": "--apron 8", "subpixel-5": "--subpixel 5", "subpixel-6": "--subpixel 6",
+    "depth-16": "--depth 16", "recip-2-fog-16": "--recip-steps 2 --fog-bits 16",
+    "plane": "--depth-interpolation plane", "water-block-2": "--water-block 2", "tile-64": "--tile 64",
+    "affine": "--perspective affine",
+}
+
+
+def sp(scene, name):
+    return lambda m: m.sweep_point(scene, SWEEP_POINTS[name])
+
+
+for _scene in ("pond", "lake"):
+    for _name in SWEEP_POINTS:
+        for _f in ("psnr", "shading_psnr", "panel_psnr", "host"):
+            KEYS["sweep.%s.%s.%s" % (_scene, _name, _f)] = (
+                lambda s, n, f: lambda m: m.sweep_point(s, SWEEP_POINTS[n])[f])(_scene, _name, _f)
+
+
+def spf(scene, name, field):
+    return m_get(lambda m: m.sweep_point(scene, SWEEP_POINTS[name])[field])
+
+
+def m_get(fn):
+    return fn
+
+
+def psnr_diff(scene, a, b, field="psnr"):
+    return lambda m: diff(sp(scene, a)(m)[field], sp(scene, b)(m)[field], 2)
+
+
+KEYS["sweep.lake.preset_spread"] = psnr_diff("lake", "exact", "fast")
+KEYS["sweep.lake.fast_to_balanced"] = psnr_diff("lake", "balanced", "fast")
+KEYS["sweep.lake.blocks_cost"] = psnr_diff("lake", "fast-wb1", "fast")
+KEYS["sweep.lake.fast_host_saving"] = lambda m: pct_less(sp("lake", "fast")(m)["host"], sp("lake", "balanced")(m)["host"])
+
+
+def front_insn(scene, preset, column):
+    def fn(m):
+        text = front_preset(m, scene, preset, column)
+        return insn(int(text.split()[0]))
+    return fn
+
+
+KEYS["sweep.lake.fast_m0_saving"] = lambda m: pct_less(front_insn("lake", "fast", "qemu-m0 insn/px")(m),
+                                                       front_insn("lake", "balanced", "qemu-m0 insn/px")(m))
+KEYS["sweep.pond.points"] = lambda m: exact(re.search(r"^## pond \(\S+, (\d+) points\)", front_section(m, "pond"),
+                                                      re.M).group(1)) \
+    if front_section(m, "pond") else Fig("1", 1.0)
+KEYS["sweep.pond.depth-16.psnr_cost"] = psnr_diff("pond", "balanced", "depth-16")
+KEYS["sweep.pond.recip-2-fog-16.psnr_gain"] = psnr_diff("pond", "recip-2-fog-16", "balanced")
+KEYS["sweep.pond.recip-2-fog-16.host_more"] = lambda m: pct_more(sp("pond", "recip-2-fog-16")(m)["host"],
+                                                                 sp("pond", "balanced")(m)["host"])
+KEYS["sweep.pond.depth-16.host_more"] = lambda m: pct_more(sp("pond", "depth-16")(m)["host"],
+                                                           sp("pond", "balanced")(m)["host"])
+KEYS["sweep.pond.plane.host_saving"] = lambda m: pct_less(sp("pond", "plane")(m)["host"],
+                                                          sp("pond", "balanced")(m)["host"])
+KEYS["sweep.pond.balanced.host_saving"] = lambda m: pct_less(sp("pond", "balanced")(m)["host"],
+                                                             sp("pond", "exact")(m)["host"])
+KEYS["sweep.pond.fast.blocks_psnr_cost"] = psnr_diff("pond", "fast-wb1", "fast")
+KEYS["sweep.pond.fast-affine.psnr_cost"] = psnr_diff("pond", "fast", "fast-affine")
+
+PERSPECTIVES = ["pixel", "span:4", "span:16", "affine"]
+
+
+@block
+def sweep_pond_perspective(m):
+    """The pond's perspective modes at balanced's other knobs: the sweep's points."""
+    rows = []
+    for p in PERSPECTIVES:
+        d = m.sweep_point("pond", "--perspective %s" % p)
+        rows.append(["`%s`" % p, d["psnr"], d["shading_psnr"], d["host"].fmt("comma")])
+    return table(["perspective", "PSNR dB", "shading dB", "host insn/px"], rows, ["---", "---:", "---:", "---:"])
+
+
+def apron_off_perspectives(m):
+    return [m.sweep_point("pond", "--apron off --perspective %s" % p)["psnr"] for p in PERSPECTIVES]
+
+
+KEYS["sweep.pond.apron-off.perspective_least"] = lambda m: min(apron_off_perspectives(m), key=lambda f: f.num)
+KEYS["sweep.pond.apron-off.perspective_most"] = lambda m: max(apron_off_perspectives(m), key=lambda f: f.num)
+KEYS["sweep.pond.apron-off.perspective_spread"] = lambda m: diff(KEYS["sweep.pond.apron-off.perspective_most"](m),
+                                                                 KEYS["sweep.pond.apron-off.perspective_least"](m), 2)
+
+M0_PERSPECTIVE = "--quality fast --water-block 1 --depth-interpolation exact --tile 42 --perspective "
+for _p in ("affine", "span:16", "pixel"):
+    FW_VARIANTS["m0-fast-nb-" + _p.replace(":", "")] = ("qemu-m0", "pond", M0_PERSPECTIVE + _p)
+FW_VARIANTS["m0-fast-recip-2"] = ("qemu-m0", "pond", "--quality fast --recip-steps 2 --fog-bits 16")
+add_fw_keys()
+
+
+@block
+def m0_perspective(m):
+    """The M0's cost of each perspective at the fast preset's other knobs, each in an image of its own."""
+    rows = [["`%s`" % p, fw("m0-fast-nb-" + p.replace(":", ""))(m)["insn_per_pixel"].fmt("comma")]
+            for p in ("affine", "span:16", "pixel")]
+    return table(["perspective", "M0 insn/px"], rows, ["---", "---:"])
+
+
+KEYS["fw.m0-affine.saving"] = lambda m: pct_less(fw("m0-fast-nb-affine")(m)["insn_per_pixel"],
+                                                 fw("m0-fast-nb-span16")(m)["insn_per_pixel"])
+KEYS["fw.m0-recip-2.more"] = lambda m: pct_more(fw("m0-fast-recip-2")(m)["insn_per_pixel"],
+                                                m.bench("qemu-m0")["insn_per_pixel"])
+KEYS["fw.m0-blocks.saving"] = lambda m: pct_less(m.bench("qemu-m0")["insn_per_pixel"],
+                                                 fw("m0-fast-wb1")(m)["insn_per_pixel"])
+KEYS["memory.pond.fast.block_bytes"] = lambda m: diff(m.memory("pond", "--quality fast")["baked_bytes"],
+                                                      m.memory("pond", "--quality fast --water-block 1")[
+                                                          "baked_bytes"]).fmt("comma")
+
+
+def sweep_budget(board, what):
+    def fn(m):
+        line = m.code("host/sweep/sweep_target.c", r'^\s*\{"%s", (16384u - \d+u - \d+u)\}' % board)
+        if isinstance(line, Placeholder):
+            return Fig("1", 1.0)
+        ram, stack, other = (int(x) for x in re.findall(r"\d+", line.text))
+        return exact(ram - stack - other if what == "budget" else stack).fmt("comma")
+    return fn
+
+
+for _b in ("qemu-m0", "qemu-rv32"):
+    KEYS["sweep.budget.%s" % _b] = sweep_budget(_b, "budget")
+    KEYS["sweep.stack.%s" % _b] = sweep_budget(_b, "stack")
+
+
+def wall_sweep_minutes(m):
+    path = os.path.join(ROOT, "build/figures/sweep-docs.seconds")
+    if not os.path.exists(path):
+        return wall(None)
+    with open(path) as f:
+        return wall("%d" % round(int(f.read()) / 60.0))
+
+
+KEYS["wall.sweep-docs.minutes"] = wall_sweep_minutes
+
+
+def conversion(column_dither):
+    def fn(m):
+        header, _, rows = front_table(m, "pond", "preset | dither")
+        for row in rows:
+            if row[0] == "`fast`" and row[1] == ("ordered 4x4" if column_dither else "none"):
+                return exact(row[header.index("qemu-m0 conversion insn/px")])
+        return Fig("1", 1.0)
+    return fn
+
+
+KEYS["sweep.m0.convert"] = conversion(False)
+KEYS["sweep.m0.convert_dither"] = conversion(True)
+
+
+@tool
+def profile_still(m):
+    """make profile-target BOARD=qemu-m0-still: every instruction of its run, by function."""
+    m.bench("qemu-m0-still")
+    return run(["make", "--no-print-directory", "-s", "profile-target", "BOARD=qemu-m0-still", "TOP=1000"])
+
+
+def profile_functions(m):
+    text = m.output("profile_still")
+    out = {}
+    if not isinstance(text, str):
+        return out
+    part = text.split("functions:")[1].split("files:")[0] if "functions:" in text else ""
+    for line in part.splitlines():
+        w = line.split()
+        if len(w) >= 3:
+            out[w[2]] = int(w[0])
+    return out
+
+
+def profile_per_pixel(functions, frames=2):
+    """Instructions a pixel of the pond's frame (240x240) in the named functions, over
+    `frames` frames (the conversion runs in the two streamed frames)."""
+    def fn(m):
+        f = profile_functions(m)
+        if not f:
+            return Fig("1", 1.0)
+        return insn(sum(f.get(name, 0) for name in functions) / (frames * 57600.0))
+    return fn
+
+
+KEYS["profile.still.convert_rows"] = profile_per_pixel(["convert_rows"])
+
+# ---- the extreme scenes: the worst case of a knob over scenes/extremes (docs/sweep/stability.md)
+
+EXTREMES = ["dense", "far", "grazing", "huge", "steep", "tiny"]
+STABILITY_KNOBS = {"balanced": "", "fog-bits-4": "--fog-bits 4", "fog-bits-6": "--fog-bits 6",
+                   "perspective-affine": "--perspective affine", "perspective-span64": "--perspective span:64",
+                   "recip-steps-0": "--recip-steps 0", "apron-off": "--apron off", "apron-4": "--apron 4",
+                   "exp2-8nearest": "--exp2 8:nearest", "subpixel-1": "--subpixel 1", "subpixel-2": "--subpixel 2"}
+
+
+def worst(knob, field, scene_name=False):
+    def fn(m):
+        got = [(m.compare("extremes/" + s, STABILITY_KNOBS[knob], 1000)[field], s) for s in EXTREMES]
+        pick = (min if field == "psnr" else max)(got, key=lambda g: g[0].num)
+        if scene_name:
+            return exact(pick[1])
+        return pick[0] if field == "psnr" else exact("%d%%" % round(pick[0].num))
+    return fn
+
+
+for _k in STABILITY_KNOBS:
+    KEYS["stability.%s.psnr" % _k] = worst(_k, "psnr")
+    KEYS["stability.%s.psnr_scene" % _k] = worst(_k, "psnr", True)
+    KEYS["stability.%s.over8" % _k] = worst(_k, "over8")
+    KEYS["stability.%s.over8_scene" % _k] = worst(_k, "over8", True)
+KEYS["stability.huge.over8"] = lambda m: exact("%d%%" % round(m.compare("extremes/huge", "", 1000)["over8"].num))
