@@ -181,7 +181,9 @@ install: lib
 	sed -e 's|@TARN_PC_PREFIX@|$(PREFIX)|' -e 's|@TARN_VERSION@|$(TARN_VERSION)|' \
 		core/tarn.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/tarn.pc
 
--include $(shell find build -name '*.d' 2>/dev/null)
+# (not build/figures: make docs-figures's firmware builds, which firmware.mk's own
+# include covers, would have every make read their thousands of files)
+-include $(shell find build -path build/figures -prune -o -name '*.d' -print 2>/dev/null)
 
 # Firmware for the boards in boards/: make firmware [BOARD=name], make bench-target.
 include firmware/firmware.mk
