@@ -40,7 +40,7 @@ import shlex
 import struct
 import subprocess
 import sys
-import tempfile
+import threading
 import zlib
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -50,8 +50,9 @@ DOCS = ["README.md"] + sorted("docs/" + f for f in os.listdir(os.path.join(ROOT,
 
 # a block may be indented (inside a list item): its lines all are, by its marker's indent
 BLOCK_RE = re.compile(r"^([ \t]*)<!-- figures:([\w.-]+) -->\n(.*?)^[ \t]*<!-- /figures -->", re.S | re.M)
-# the value is the run of number-like characters right before the key's comment
-KEY_RE = re.compile(r"([\w.,%+-]*)<!-- fig:([\w.-]+)(?::(\w+))? -->")
+# the value is the run of number-like characters right before the key's comment (or
+# digits grouped by single spaces, as 115 211)
+KEY_RE = re.compile(r"(\d{1,3}(?: \d{3})+|[\w.,%+-]*)<!-- fig:([\w.-]+)(?::(\w+))? -->")
 
 
 class MeasureError(Exception):
@@ -253,6 +254,7 @@ class Measurer:
         self.recording = False
         self.pending = []
         self.cache = {}
+        self.lock = threading.RLock()
         self.log = log or (lambda s: None)
         os.makedirs(os.path.join(ROOT, OUT), exist_ok=True)
 
@@ -263,8 +265,10 @@ class Measurer:
         if self.recording:
             if req not in self.pending:
                 self.pending.append(req)
-            return Placeholder()
-        self.cache[req] = self._measure(req)
+            return Placeholder() if req[0] not in ("output", "file") else None
+        with self.lock:  # one at a time: two tools may ask for the same board's build
+            if req not in self.cache:
+                self.cache[req] = self._measure(req)
         return self.cache[req]
 
     def compare(self, scene, args="", time=None):
@@ -289,11 +293,17 @@ class Measurer:
         d["host"] = self.sweep_cost(scene, args)
         return Placeholder(d) if self.recording else d
 
-    def bench(self, board, scene=None, flags=None):
+    def bench(self, board, scene=None, flags=None, may_fail=False):
         """make bench-target's line for a board's own build (scene None), or for a
         build of another scene or bake flags in a directory of its own; the run's
-        report fields too (frame_insn, counter_check)."""
-        return self._get(("bench", board, scene, flags))
+        report fields too (frame_insn, counter_check). may_fail: a build that fails
+        gives {"failed": its output} instead of stopping the measurement."""
+        value = self._get(("bench", board, scene, flags))
+        if isinstance(value, MeasureError):
+            if may_fail:
+                return {"failed": str(value)}
+            raise value
+        return value
 
     def memory(self, scene, args=""):
         return self._get(("memory", scene, args))
@@ -317,32 +327,42 @@ class Measurer:
 
     # ---- making them ----
     def measure_all(self, tools):
+        """Every pending measurement: the firmware builds two at a time (each build is
+        mostly serial), then callgrind runs and tools two at a time, the quick ones
+        meanwhile."""
         self.tools = tools
-        slow = [r for r in self.pending if r[0] in ("host",)]
+        pending, self.pending = self.pending, []
         sweeps = {}
-        for r in self.pending:
+        for r in pending:
             if r[0] == "sweep_cost":
                 sweeps.setdefault(r[1], []).append(r[2])
-        jobs = [("sweep_batch", scene, tuple(args)) for scene, args in sweeps.items()] + slow
+        phases = [[r for r in pending if r[0] == "bench"],
+                  [("sweep_batch", scene, tuple(args)) for scene, args in sweeps.items()] +
+                  [r for r in pending if r[0] in ("host", "output")]]
+        quick = [r for r in pending if r[0] not in ("bench", "host", "output", "sweep_cost")]
         with concurrent.futures.ThreadPoolExecutor(2) as pool:
-            futures = {pool.submit(self._measure, j): j for j in jobs}
-            rest = [r for r in self.pending if r[0] not in ("host", "sweep_cost")]
-            for r in rest:
-                if r not in self.cache:
-                    self.cache[r] = self._measure(r)
-            for f in concurrent.futures.as_completed(futures):
-                j = futures[f]
-                if j[0] == "sweep_batch":
-                    for args, value in zip(j[2], f.result()):
-                        self.cache[("sweep_cost", j[1], args)] = value
-                else:
-                    self.cache[j] = f.result()
-        self.pending = []
+            for k, jobs in enumerate(phases):
+                futures = {pool.submit(self._measure, j): j for j in jobs}
+                if k == 1:
+                    for r in quick:
+                        self._get(r)
+                for f in concurrent.futures.as_completed(futures):
+                    j = futures[f]
+                    if j[0] == "sweep_batch":
+                        for args, value in zip(j[2], f.result()):
+                            self.cache[("sweep_cost", j[1], args)] = value
+                    else:
+                        self.cache[j] = f.result()
 
     def _measure(self, req):
         kind = req[0]
         self.log("measure: %s" % " ".join(str(x) for x in req if x is not None))
-        return getattr(self, "_m_" + kind)(*req[1:])
+        try:
+            return getattr(self, "_m_" + kind)(*req[1:])
+        except MeasureError as e:
+            if kind == "bench":  # kept, for bench(may_fail=True) to see
+                return e
+            raise
 
     def _m_compare(self, scene, args, time):
         argv = [TARN, "compare", scene_path(scene)] + shlex.split(args)
@@ -400,7 +420,7 @@ class Measurer:
         return costs
 
     def _m_bench(self, board, scene, flags):
-        argv = ["make", "--no-print-directory", "-s", "-j2", "bench-target", "BOARD=" + board]
+        argv = ["make", "--no-print-directory", "-s", "bench-target", "BOARD=" + board]
         if scene is not None:
             # short: the emulator's semihosting takes the stream's path, and long ones fail
             slug = "%s-%s" % (board, hashlib.sha1(("%s\0%s" % (scene, flags)).encode()).hexdigest()[:10])
@@ -419,9 +439,10 @@ class Measurer:
                 values[k] = insn(int(v))
             elif k == "frame_insn":
                 values[k] = [insn(int(x)) for x in v.split(",")]
-            elif k == "counter_check":
+            elif k == "counter_check":  # a loop of `want` instructions, within 0.01%
                 got, want = v.split("/")
-                values[k] = Fig(v, float(got), 0.0001 * float(want))
+                values[k] = Fig(got, float(got), 0.0001 * float(want))
+                values[k + "_loop"] = exact(want)
             else:
                 values[k] = exact(v)
         return values
@@ -441,8 +462,12 @@ class Measurer:
         head = text[:text.index("*/")]
         for m in re.finditer(r"^ \*   ([a-z ]+?) +(\d+)$", head, re.M):
             values["bytes." + m.group(1).replace(" ", "_")] = exact(m.group(2))
-        for m in re.finditer(r"^(?:static )?const \w+ \w+?_(\w+)\[(\d+)\]", text, re.M):
-            values["count." + m.group(1)] = exact(m.group(2))
+        sizes = {"uint8_t": 1, "uint16_t": 2, "uint32_t": 4}
+        for m in re.finditer(r"^(?:static )?const (\w+) %s_(\w+)\[(\d+)\]" % re.escape(values["scene"].text),
+                             text, re.M):
+            values["count." + m.group(2)] = exact(m.group(3))
+            if m.group(1) in sizes:
+                values["bytes." + m.group(2)] = exact(sizes[m.group(1)] * int(m.group(3)))
         for m in re.finditer(r"^/\* backdrop: the (\d+) colours .*? padded with the last to (\d+): every (\d+)-bit",
                              text, re.M):
             values["backdrop.colours"], values["backdrop.palette"], values["backdrop.bits"] = map(exact, m.groups())
@@ -601,7 +626,14 @@ def check_block(doc, name, published, parts):
                         (doc, name, line)]
         return ["%s: figures:%s: the block differs from what its command gives" % (doc, name)]
     out = []
-    figs = [p for p in parts if not isinstance(p, str)]
+    figs, before = [], ""
+    for p in parts:  # a figure without a label is named by the text before it (name=)
+        if isinstance(p, str):
+            before = p
+        else:
+            if not p.label:
+                p = Fig(p.text, p.num, p.tol, before.split()[-1] if before.split() else "figure")
+            figs.append(p)
     for got, fig in zip(match.groups(), figs):
         why = same(got, fig)
         if why:
