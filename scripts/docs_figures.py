@@ -265,7 +265,7 @@ class Measurer:
         if self.recording:
             if req not in self.pending:
                 self.pending.append(req)
-            return Placeholder() if req[0] not in ("output", "file") else None
+            return Placeholder() if req[0] != "output" else None
         with self.lock:  # one at a time: two tools may ask for the same board's build
             if req not in self.cache:
                 self.cache[req] = self._measure(req)
@@ -320,10 +320,6 @@ class Measurer:
     def output(self, name):
         """A tool's whole output (TOOLS in the catalogue)."""
         return self._get(("output", name))
-
-    def file(self, path):
-        """A file the docs copy from (docs/sweep/front.md)."""
-        return self._get(("file", path))
 
     # ---- making them ----
     def measure_all(self, tools):
@@ -483,9 +479,6 @@ class Measurer:
     def _m_output(self, name):
         return self.tools[name](self)
 
-    def _m_file(self, path):
-        with open(os.path.join(ROOT, path)) as f:
-            return f.read()
 
 
 # ---- documents -------------------------------------------------------------------------

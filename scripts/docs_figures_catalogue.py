@@ -34,8 +34,7 @@ def tool(fn):
 
 
 def labelled(fig, label):
-    f = Fig(fig.text, fig.num, fig.tol, label)
-    return f
+    return Fig(fig.text, fig.num, fig.tol, label)
 
 
 def table(header, rows, align=None):
@@ -558,14 +557,6 @@ for _scene in ("pond", "lake"):
         for _f in ("psnr", "shading_psnr", "panel_psnr", "host"):
             KEYS["sweep.%s.%s.%s" % (_scene, _name, _f)] = (
                 lambda s, n, f: lambda m: m.sweep_point(s, SWEEP_POINTS[n])[f])(_scene, _name, _f)
-
-
-def spf(scene, name, field):
-    return m_get(lambda m: m.sweep_point(scene, SWEEP_POINTS[name])[field])
-
-
-def m_get(fn):
-    return fn
 
 
 def psnr_diff(scene, a, b, field="psnr"):
@@ -1356,10 +1347,6 @@ def bake_link(m):
         return [Fig("1", 1.0)]
     lines = [ln + "\n" for ln in ex["files"]["pond_link.h"].splitlines() if ln.startswith("#define TARN_LINK_")]
     return ["```c\n"] + lines + ["```\n"]
-
-
-def bake_of(flags):
-    return lambda m: m.bake("pond", flags)
 
 
 KEYS["bake.pond.static.mesh_bytes"] = lambda m: comma(m.bake("pond", "")["bytes.mesh"])

@@ -14,5 +14,5 @@
 # measurement by tests/check_sweep.sh.
 # Usage: TARN_BIN=build/release/tarn tests/check_doc_figures.sh
 set -u
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/.." || exit 2
 TARN_BIN=${TARN_BIN:-build/release/tarn} exec python3 scripts/docs_figures.py check --reuse --quiet
