@@ -49,7 +49,9 @@ def table(header, rows, align=None):
                                  header[i])
             parts.append(" ")
             for p in (cell if isinstance(cell, list) else [cell]):
-                parts.append(labelled(p, label) if isinstance(p, Fig) else p)
+                if isinstance(p, Fig):  # a figure already named (psnr) keeps its name after the cell's
+                    p = labelled(p, "%s (%s)" % (label, p.label) if p.label else label)
+                parts.append(p)
             parts.append(" |")
         parts.append("\n")
     return parts
@@ -61,13 +63,18 @@ def code_block(parts):
 
 # ---- the yardstick ---------------------------------------------------------------
 
+def named(c, field):
+    """A compare line's field, named by it in a failure."""
+    return labelled(c[field], field)
+
+
 def yard_whole(c):
     """PSNR / max error / >2 / >8 against the continuous reference."""
-    return [c["psnr"], " dB / ", c["maxerr"], " / ", c["over2"], " / ", c["over8"]]
+    return [named(c, "psnr"), " dB / ", named(c, "maxerr"), " / ", named(c, "over2"), " / ", named(c, "over8")]
 
 
 def yard_shading(c):
-    return [c["shading_psnr"], " dB / ", c["shading_over2"]]
+    return [named(c, "shading_psnr"), " dB / ", named(c, "shading_over2")]
 
 
 YARD_HEADER = ["whole: PSNR / max / >2 / >8", "shading: PSNR / >2", "panel PSNR", "coverage"]
@@ -1495,3 +1502,25 @@ KEYS["panel.spidev.tiles_fps_loss"] = fps_loss
 KEYS["panel.spidev.command_clock_cost"] = command_clock_cost
 KEYS["panel.band.frame_bytes"] = lambda m: exact(spaced(int(bench_panel_row("spidev", "bands", 32)(m)[3]))) \
     if bench_panel_row("spidev", "bands", 32)(m) else Fig("1", 1.0)
+
+
+@tool
+def test_display_links(m):
+    """build/release/tests/test_display_links's messages (make check builds it)."""
+    run(["make", "--no-print-directory", "-s", "build/release/tests/test_display_links"])
+    return run(["build/release/tests/test_display_links"])
+
+
+def mcp2210_changed(m):
+    text = m.output("test_display_links")
+    mt = re.search(r"second frame through the MCP2210: (\d+) of 225 tiles changed", text or "")
+    if isinstance(text, str) and not mt:
+        raise MeasureError("build/release/tests/test_display_links printed no MCP2210 line")
+    return exact(mt.group(1)) if mt else Fig("1", 1.0)
+
+
+KEYS["panel.mcp2210.tiles_changed"] = mcp2210_changed
+KEYS["panel.spidev.ceiling_fps"] = lambda m: exact("%.1f" % float(bench_panel_row("spidev", "bands", 32)(m)[7])) \
+    if bench_panel_row("spidev", "bands", 32)(m) else Fig("1", 1.0)
+for _b in ("qemu-m3", "qemu-rv32"):
+    KEYS["board.%s.counter_check" % _b] = (lambda b: lambda m: m.bench(b)["counter_check"].fmt("comma"))(_b)
