@@ -76,7 +76,7 @@ class Fig:
 
     def fmt(self, style):
         """The same figure in another format: comma (1,286), kB (15.6 for 15,576
-        bytes), int, pct (a share 0..1 as a whole percentage)."""
+        bytes), int (rounded)."""
         if self.text is None or style in (None, "plain"):
             return self
         n = self.num
