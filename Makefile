@@ -64,8 +64,9 @@ demo: deps
 # presets re-measured (tests/check_sweep.sh), a plain build, then the same tests under ASan + UBSan,
 # then the check that core/ stays integer-only on a Cortex-M0, then the core as a
 # package (make install, CMake, PlatformIO: tests/check_packages.sh), then the firmware's
-# sizes, stack and counter, then the fuzz targets' seed corpora and a short run of
-# each (tests/fuzz/fuzz.mk).
+# sizes, stack and counter, then every measured figure of the docs against what the
+# code measures now (tests/check_doc_figures.sh), then the fuzz targets' seed corpora
+# and a short run of each (tests/fuzz/fuzz.mk).
 test: deps-test
 	@$(MAKE) --no-print-directory firmware-run BOARD=
 	@tests/check_firmware_sweep.sh
