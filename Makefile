@@ -41,7 +41,7 @@ TEST_SUPPORT_OBJ := $(TEST_SUPPORT_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TARN := $(BUILD)/tarn
 
-.PHONY: all demo test check deps deps-test core-purity bench-panels sweep-docs golden clean lib libtarn install
+.PHONY: all demo test check deps deps-test core-purity bench-panels sweep-docs docs-figures golden clean lib libtarn install
 .DELETE_ON_ERROR:
 .SECONDARY:
 
@@ -64,8 +64,9 @@ demo: deps
 # presets re-measured (tests/check_sweep.sh), a plain build, then the same tests under ASan + UBSan,
 # then the check that core/ stays integer-only on a Cortex-M0, then the core as a
 # package (make install, CMake, PlatformIO: tests/check_packages.sh), then the firmware's
-# sizes, stack and counter, then the fuzz targets' seed corpora and a short run of
-# each (tests/fuzz/fuzz.mk).
+# sizes, stack and counter, then every measured figure of the docs against what the
+# code measures now (tests/check_doc_figures.sh), then the fuzz targets' seed corpora
+# and a short run of each (tests/fuzz/fuzz.mk).
 test: deps-test
 	@$(MAKE) --no-print-directory firmware-run BOARD=
 	@tests/check_firmware_sweep.sh
@@ -75,11 +76,12 @@ test: deps-test
 	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
 	@$(MAKE) --no-print-directory core-purity
 	@tests/check_packages.sh
-	@TARN_BIN=build/release/tarn tests/check_water_cost.sh
+	@TARN_BIN=build/release/tarn WATER_COST_OUT=build/release/water-cost.txt tests/check_water_cost.sh
 	@$(MAKE) --no-print-directory firmware-check BOARD=
 	@tests/check_firmware_link.sh
 	@BUILD=build/release tests/check_layering.sh
 	@tests/check_doc_paths.sh
+	@TARN_BIN=build/release/tarn tests/check_doc_figures.sh
 	@$(MAKE) --no-print-directory fuzz-replay
 	@cat build/release/summary build/san/summary | \
 		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'
@@ -109,6 +111,21 @@ sweep-docs: deps-test $(TARN)
 	$(TARN) sweep $(SWEEP_SCENES:%=scenes/%.json) --out build/sweep --extremes scenes/extremes
 	@mkdir -p docs/sweep
 	cp build/sweep/sweep.csv build/sweep/front.md build/sweep/stability.md $(SWEEP_SCENES:%=build/sweep/%.png) docs/sweep/
+
+# Every measured figure of README.md and docs/ from its command, in place
+# (scripts/docs_figures.py; tests/check_doc_figures.sh holds the docs to them in make
+# test): the sweep's pages first (make sweep-docs, timed for docs/sweep.md), the
+# emulated boards' runs, then every block, keyed number and image. DOCS_SWEEP=0 keeps
+# docs/sweep/ as it is (and the figures docs/sweep.md copies from it).
+DOCS_SWEEP ?= 1
+docs-figures: deps-test
+	@$(MAKE) --no-print-directory BUILD=build/release SAN=0 build/release/tarn build/release/tests/test_raster
+	@if [ "$(DOCS_SWEEP)" = 1 ]; then \
+		start=$$(date +%s) && $(MAKE) --no-print-directory BUILD=build/release SAN=0 sweep-docs && \
+		mkdir -p build/figures && echo $$(($$(date +%s) - start)) > build/figures/sweep-docs.seconds; \
+	fi
+	@$(MAKE) --no-print-directory firmware-run BOARD=
+	@TARN_BIN=build/release/tarn scripts/docs_figures.py write
 
 $(TARN): $(BUILD)/host/cli/main.o $(HOST_OBJ) $(CORE_OBJ)
 	$(CC) $(OPT) -o $@ $^ $(HOST_LIBS)
@@ -165,7 +182,9 @@ install: lib
 	sed -e 's|@TARN_PC_PREFIX@|$(PREFIX)|' -e 's|@TARN_VERSION@|$(TARN_VERSION)|' \
 		core/tarn.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/tarn.pc
 
--include $(shell find build -name '*.d' 2>/dev/null)
+# (not build/figures: make docs-figures's firmware builds, which firmware.mk's own
+# include covers, would have every make read their thousands of files)
+-include $(shell find build -path build/figures -prune -o -name '*.d' -print 2>/dev/null)
 
 # Firmware for the boards in boards/: make firmware [BOARD=name], make bench-target.
 include firmware/firmware.mk

@@ -137,7 +137,7 @@ firmware-sweep: $(FW_DIR)/report.txt
 	@cat $<
 
 bench-target: $(FW_DIR)/report.txt $(FW_ELF)
-	@tests/check_firmware.sh --bench $(BOARD)
+	@FW_BENCH_DIR=$(FW_DIR) tests/check_firmware.sh --bench $(BOARD)
 
 firmware-check: $(FW_DIR)/report.txt
 	@tests/check_firmware.sh $(BOARD)

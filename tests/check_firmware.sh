@@ -46,7 +46,8 @@ board_panel_psnr() {
 }
 
 for board in "$@"; do
-    dir=build/firmware/$board
+    # FW_BENCH_DIR: make bench-target's build of one board in FW_BUILD_DIR
+    dir=${FW_BENCH_DIR:-build/firmware/$board}
     elf=$dir/firmware.elf
     if [ ! -f "$dir/firmware.conf" ] || [ ! -f "$elf" ]; then
         fail "$board: not built (make firmware BOARD=$board)"

@@ -73,7 +73,7 @@ for scene in $(sed -n 's/^## \([a-z_]*\) (.*/\1/p' docs/sweep/front.md); do
                 n = NF / 2; bad = (n < 9)
                 for (i = 1; i <= n; i++) {
                     a = $i; b = $(i + n); gsub(/[ %]|\(.*\)/, "", a); gsub(/[ %]|\(.*\)/, "", b)
-                    if (i <= 8) bad = bad || a != b       # the yardstick's eight numbers: exact
+                    if (i <= 8) bad = bad || a != b       # the eight numbers of the yardstick: exact
                     else if (a + 0 > 0) bad = bad || (b - a > a * (i == 9 ? 0.005 : 0.01) ||
                                                       a - b > a * (i == 9 ? 0.005 : 0.01))
                     else bad = bad || a != b              # "does not fit" on both

@@ -4,7 +4,9 @@
 # tarn_render_frame) and of the water pixel (tarn__water_shade), per pixel.
 # Prints one line per scene:
 #   water-cost scene=NAME insn_per_pixel=N water_insn_per_pixel=N
-# Usage: TARN_BIN=build/release/tarn tests/check_water_cost.sh
+# and writes them to WATER_COST_OUT too (when set), for tests/check_doc_figures.sh
+# to hold docs/figures.md's table to without measuring again.
+# Usage: TARN_BIN=build/release/tarn [WATER_COST_OUT=FILE] tests/check_water_cost.sh
 set -u
 TARN_BIN=${TARN_BIN:-build/release/tarn}
 work=$(mktemp -d)
@@ -25,7 +27,8 @@ for scene in none fog absorption depth_colour ramp refraction normals fresnel fo
     frame=$(inclusive "$profile" tarn_render_frame)
     water=$(inclusive "$profile" tarn__water_shade)
     pixels=$((120 * 120))
-    echo "water-cost scene=$scene insn_per_pixel=$(( ${frame:-0} / pixels )) water_insn_per_pixel=$(( ${water:-0} / pixels ))"
+    echo "water-cost scene=$scene insn_per_pixel=$(( ${frame:-0} / pixels )) water_insn_per_pixel=$(( ${water:-0} / pixels ))" |
+        tee -a "$work/lines"
     if [ -z "$frame" ]; then failed=$((failed + 1)); echo "FAIL: no profile for $scene"; continue; fi
     if [ "$scene" = none ] && [ -n "$water" ]; then
         failed=$((failed + 1)); echo "FAIL: a scene without water ran the water pixel"
@@ -35,5 +38,6 @@ for scene in none fog absorption depth_colour ramp refraction normals fresnel fo
         passed=$((passed + 1))
     fi
 done
+[ -n "${WATER_COST_OUT:-}" ] && [ "$failed" -eq 0 ] && cp "$work/lines" "$WATER_COST_OUT"
 echo "water-cost: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
