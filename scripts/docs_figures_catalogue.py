@@ -766,14 +766,21 @@ def fw_report_example(m):
                        " counter_check=", r["counter_check"], "/", r["counter_check_loop"], "\n"])
 
 
-BOARD_ROWS = [
-    ("qemu-m0", "pond 240x240, `--quality fast` (apron off, tile 40, depth 16 on a plane, span:16, bins, water "
-                "blocks)"),
-    ("qemu-m0-backdrop", "pond 240x240, `--quality fast --backdrop on`"),
-    ("qemu-m0-still", "pond 240x240, `--quality fast --backdrop still --water-block 4`"),
-    ("qemu-m3", "pond 240x240, default: balanced (apron on, tile 32, depth 32, bins)"),
-    ("qemu-rv32", "pond 240x240, as `qemu-m0`"),
-]
+def board_bake_flags(board):
+    """The flags a board bakes its scene with, read from its board.mk (a board that
+    includes another's takes the last BOARD_BAKE_FLAGS it sets before it)."""
+    flags = ""
+    with open("boards/%s/board.mk" % board) as f:
+        for line in f:
+            found = re.match(r"^BOARD_BAKE_FLAGS\s*:?=\s*(.*)$", line)
+            if found:
+                flags = found.group(1).strip()
+    return flags or "the default: balanced"
+
+
+BOARD_ROWS = [(b, "pond 240x240, %s" % ("`%s`" % board_bake_flags(b) if board_bake_flags(b)[0] == "-" else
+                                         board_bake_flags(b)))
+              for b in ("qemu-m0", "qemu-m0-backdrop", "qemu-m0-still", "qemu-m3", "qemu-rv32")]
 
 
 @block
