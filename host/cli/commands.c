@@ -208,15 +208,12 @@ static int compare_frames(const tarn_cli_options *o, const tarn_loaded_scene *sc
                           tarn_continuous_reference *reference, tarn_error *err)
 {
     tarn_yardstick y;
-    uint8_t *surface_differs = NULL;
     if (frame_alloc(core, config->width, config->height, err) ||
         render_core_frame(o, scene, config, core->rgb, err) ||
         tarn_continuous_reference_render(&scene->scene, scene->name, config->width, config->height,
-                                         config->time_ms, reference, err))
-        return -1;
-    surface_differs = core->covered;
-    if (tarn_yardstick_measure(&scene->scene, scene->name, config, core->rgb, reference, &y, surface_differs, err) ||
-        (o->diff_path && write_heatmap(o->diff_path, core->rgb, reference, surface_differs, err) != 0))
+                                         config->time_ms, reference, err) ||
+        tarn_yardstick_measure(&scene->scene, scene->name, config, core->rgb, reference, &y, core->covered, err) ||
+        (o->diff_path && write_heatmap(o->diff_path, core->rgb, reference, core->covered, err) != 0))
         return -1;
     tarn_yardstick_print(stdout, scene->name, config, &y);
     return 0;
