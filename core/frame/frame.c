@@ -325,9 +325,11 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
 {
     if (tarn__config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
     tarn_status status = tarn__scene_check(scene);
-    if (status == TARN_OK) status = tarn__scene_check_reach(scene, config);
     if (status != TARN_OK) return status;
     if (memory == NULL || memory_bytes < tarn_frame_memory_bytes(config, scene)) return TARN_ERR_MEMORY;
+    scene = tarn__frame_pose(scene, config->time_ms, &memory);
+    status = tarn__scene_check_reach(scene, config);
+    if (status != TARN_OK) return status;
 
     tarn_view view;
     tarn__view_setup(scene, config, &view);
@@ -362,6 +364,7 @@ tarn_status tarn_visit_screen_triangles(const tarn_scene *scene, const tarn_fram
     if (tarn__config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
     tarn_status status = tarn__scene_check(scene);
     if (status != TARN_OK) return status;
+    if (tarn_scene_moves(scene)) return TARN_ERR_SCENE; /* tarn_scene_pose it first */
     tarn_view view;
     tarn__view_setup(scene, config, &view);
     visit_context ctx = {visit, user};

@@ -4,11 +4,12 @@
 
 #include <string.h>
 
-tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const tarn_scene *scene)
+/* The layout with the underwater view on or off as asked. */
+static tarn_frame_layout layout_of(const tarn_frame_config *config, const tarn_scene *scene, int underwater)
 {
     tarn_frame_layout l;
     l.tile = config->quality.tile_size;
-    l.underwater = TARN_LINK_UNDERWATER && tarn__underwater_active(scene);
+    l.underwater = TARN_LINK_UNDERWATER && underwater;
     l.water = (TARN_LINK_WATER && tarn__scene_has_water(scene)) || l.underwater;
     l.under_apron = l.underwater
         ? tarn__apron_limit(tarn__underwater_reach_pixels(scene->underwater, config->width), &config->quality)
@@ -39,6 +40,11 @@ tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const t
     return l;
 }
 
+tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const tarn_scene *scene)
+{
+    return layout_of(config, scene, tarn__underwater_active(scene));
+}
+
 /* Pixels of the water pass's own colour and depth buffers. */
 static size_t water_pixels(const tarn_frame_layout *l)
 {
@@ -55,11 +61,40 @@ static size_t layout_bytes(const tarn_frame_layout *l)
            (size_t)l->blocks * l->block_bytes + (size_t)l->bins * sizeof(tarn_cluster_bin);
 }
 
+/* A moving scene's pose lies at the start of the frame's memory, aligned for the
+ * pointers it holds (the memory is only 4-byte aligned): the posed scene, then its
+ * objects when some move. */
+#define POSE_ALIGN sizeof(void *)
+
+static size_t pose_bytes(const tarn_scene *scene)
+{
+    if (!TARN_LINK_MOTION || !tarn_scene_moves(scene)) return 0u;
+    const size_t objects = tarn__objects_move(scene) ? scene->object_count * sizeof(tarn_object) : 0u;
+    return (POSE_ALIGN - 4u + sizeof(tarn_scene) + objects + 3u) & ~(size_t)3u;
+}
+
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
 {
     if (tarn__config_check(config) != TARN_OK) return 0;
     const tarn_frame_layout l = tarn__frame_layout_of(config, scene);
-    return layout_bytes(&l);
+    size_t bytes = layout_bytes(&l);
+    if (TARN_LINK_MOTION && scene != NULL && scene->camera_path != NULL && scene->underwater != NULL) {
+        /* the camera may cross the water's level: room for the view either side */
+        const tarn_frame_layout other = layout_of(config, scene, !l.underwater);
+        if (layout_bytes(&other) > bytes) bytes = layout_bytes(&other);
+    }
+    return pose_bytes(scene) + bytes;
+}
+
+const tarn_scene *tarn__frame_pose(const tarn_scene *scene, uint32_t time_ms, void **memory)
+{
+    const size_t bytes = pose_bytes(scene);
+    if (bytes == 0u) return scene;
+    uint8_t *start = *memory;
+    tarn_scene *posed = (tarn_scene *)(void *)(start + ((0u - (uintptr_t)start) & (POSE_ALIGN - 1u)));
+    tarn__scene_pose(scene, time_ms, posed, tarn__objects_move(scene) ? (tarn_object *)(void *)(posed + 1) : NULL);
+    *memory = start + bytes;
+    return posed;
 }
 
 tarn_frame_buffers tarn__frame_carve(const tarn_frame_layout *l, void *memory)

@@ -1,40 +1,6 @@
 /* view.c: per-frame camera and light constants. Divisions here run once a frame. */
 #include "geometry/geometry_internal.h"
 
-static int64_t largest_magnitude(const int64_t c[3])
-{
-    int64_t largest = 0;
-    for (int i = 0; i < 3; i++) {
-        const int64_t magnitude = c[i] < 0 ? -c[i] : c[i];
-        if (magnitude > largest) largest = magnitude;
-    }
-    return largest;
-}
-
-/* Normalises a vector given as 64-bit integers of any common scale (each below
- * 2^62) into Q1.30. Returns 0 for the zero vector (out left unchanged). */
-static int normalise_q30(const int64_t v[3], int32_t out[3])
-{
-    int64_t c[3] = {v[0], v[1], v[2]};
-    int64_t largest = largest_magnitude(c);
-    if (largest == 0) return 0;
-    /* A power of two brings the largest component into [2^16, 2^31): below 2^31 the
-     * squares and their sum fit 64 bits, and from 2^16 the integer square root is
-     * good to 2^-16. (The root of (1, 0, 1)'s 2 is 1, which made a vector of length
-     * 1.41: found by fuzz_core, through a camera a hair from its target.) */
-    for (; largest >= ((int64_t)1 << 31); largest /= 2)
-        for (int i = 0; i < 3; i++) c[i] /= 2;
-    for (; largest < ((int64_t)1 << 16); largest *= 2)
-        for (int i = 0; i < 3; i++) c[i] *= 2;
-    uint64_t sum = 0;
-    for (int i = 0; i < 3; i++) sum += (uint64_t)(c[i] * c[i]);
-    int64_t length = (int64_t)tarn_isqrt_u64(sum); /* from 2^16 to below 2^32 */
-    const tarn_divisor divisor = tarn_divisor_of((uint32_t)length);
-    for (int i = 0; i < 3; i++)
-        out[i] = (int32_t)tarn_divide_trunc_i64(c[i] * ((int64_t)1 << 30), &divisor);
-    return 1;
-}
-
 static int32_t mul_q30(int32_t a, int32_t b)
 {
     return (int32_t)tarn_round_shift_i64((int64_t)a * b, 30);
@@ -54,7 +20,7 @@ static void camera_basis(const tarn_camera *camera, int32_t basis[3][3])
         (int64_t)camera->target.x - camera->position.x,
         (int64_t)camera->target.y - camera->position.y,
         (int64_t)camera->target.z - camera->position.z};
-    if (!normalise_q30(forward, basis[2])) {
+    if (!tarn_normalise_q30(forward, basis[2])) {
         /* target == position: look down -z rather than fail mid-frame */
         basis[2][0] = 0; basis[2][1] = 0; basis[2][2] = -(1 << 30);
     }
@@ -65,7 +31,7 @@ static void camera_basis(const tarn_camera *camera, int32_t basis[3][3])
         right[0] = -forward[1]; right[1] = forward[0]; right[2] = 0;
         if (forward[1] == 0) right[0] = 1 << 30;
     }
-    normalise_q30(right, basis[0]);
+    tarn_normalise_q30(right, basis[0]);
     cross_q30(basis[0], basis[2], basis[1]);
 }
 

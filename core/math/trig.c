@@ -54,3 +54,18 @@ void tarn_sin_cos_q30(int32_t radians_q30, int32_t *sine_q30, int32_t *cosine_q3
     *sine_q30 = (int32_t)tarn_round_shift_i64(x * sine, 30);
     *cosine_q30 = (int32_t)tarn_clamp_i32((int32_t)cosine, 0, 1 << 30);
 }
+
+void tarn_sin_cos_turns_q30(uint32_t turns_q32, int32_t *sine_q30, int32_t *cosine_q30)
+{
+    const int64_t half_pi_q32 = 6746518852; /* pi/2 * 2^32, rounded */
+    /* the nearest quarter turn, and the rest within an eighth of a turn of it */
+    const uint32_t shifted = turns_q32 + (1u << 29);
+    const uint32_t quarter = shifted >> 30;
+    const int32_t rest_q32 = (int32_t)(shifted & 0x3FFFFFFFu) - (1 << 29);
+    int32_t s, c;
+    tarn_sin_cos_q30((int32_t)tarn_round_shift_i64((int64_t)rest_q32 * half_pi_q32, 32), &s, &c);
+    /* sin and cos of rest + quarter * pi/2 */
+    const int32_t sines[4] = {s, c, -s, -c};
+    *sine_q30 = sines[quarter];
+    *cosine_q30 = sines[(quarter + 1u) & 3u];
+}

@@ -120,6 +120,7 @@ tarn_status tarn__scene_check(const tarn_scene *scene)
     if (scene == NULL || (scene->object_count > 0 && scene->objects == NULL)) return TARN_ERR_SCENE;
     if (scene->camera.near <= 0 || scene->camera.far <= scene->camera.near) return TARN_ERR_SCENE;
     if (scene->underwater != NULL && !underwater_valid(scene->underwater)) return TARN_ERR_SCENE;
+    if (TARN_LINK_MOTION ? !tarn__motion_valid(scene) : tarn_scene_moves(scene)) return TARN_ERR_SCENE;
     if (TARN_LINK_STATIC_VERTICES && scene->static_view != NULL && !static_view_valid(scene))
         return TARN_ERR_SCENE;
     const int static_view_applies = tarn__static_view_applies(scene);

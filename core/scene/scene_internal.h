@@ -8,6 +8,7 @@
 #ifndef TARN_SCENE_INTERNAL_H
 #define TARN_SCENE_INTERNAL_H
 
+#include "tarn/tarn_motion.h"
 #include "tarn/tarn_render.h"
 
 /* A bit above 0x00RRGGBB that a water pass drawing in place over the opaque
@@ -43,6 +44,21 @@ int tarn__static_screen_applies(const tarn_scene *scene, const tarn_frame_config
  * static view's frame and the scene's objects (backdrop_check.c). */
 const tarn_backdrop *tarn__backdrop_for(const tarn_scene *scene, const tarn_frame_config *config);
 int tarn__backdrop_valid(const tarn_backdrop *backdrop, const tarn_scene *scene);
+
+/* Motion (motion.c, key_curve.c; tarn_motion.h). */
+/* 1 when every motion of the scene keeps tarn_motion.h's rules. */
+int tarn__motion_valid(const tarn_scene *scene);
+/* 1 when the camera or the light moves: no static view applies then. */
+int tarn__view_moves(const tarn_scene *scene);
+/* 1 when some object moves. */
+int tarn__objects_move(const tarn_scene *scene);
+/* tarn_scene_pose for a checked scene; `objects` NULL when no object moves (the
+ * posed scene then keeps the scene's). */
+void tarn__scene_pose(const tarn_scene *scene, uint32_t time_ms, tarn_scene *posed, tarn_object *objects);
+/* The curve's value at time_ms, its channels into out. */
+void tarn__key_curve_at(const tarn_key_curve *curve, uint32_t time_ms, int32_t *out);
+/* 1 when the curve keeps tarn_key_curve's rules with this many channels. */
+int tarn__key_curve_valid(const tarn_key_curve *curve, unsigned channels);
 
 /* How far the water reaches (reach.c; tarn_water_reach_pixels and
  * tarn_frame_apron_pixels are public). */

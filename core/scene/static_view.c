@@ -22,7 +22,7 @@ static int same_light(const tarn_light *a, const tarn_light *b)
 int tarn__static_view_applies(const tarn_scene *scene)
 {
     const tarn_static_view *s = scene->static_view;
-    return TARN_LINK_STATIC_VERTICES && s != NULL && same_camera(&s->camera, &scene->camera) && same_light(&s->light, &scene->light);
+    return TARN_LINK_STATIC_VERTICES && s != NULL && !tarn__view_moves(scene) && same_camera(&s->camera, &scene->camera) && same_light(&s->light, &scene->light);
 }
 
 int tarn__static_screen_applies(const tarn_scene *scene, const tarn_frame_config *config)

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "ref_geometry.h"
+#include "ref_motion.h"
 #include "ref_texel.h"
 #include "reference_water.h"
 #include "tarn/tarn_render.h"
@@ -639,6 +640,23 @@ static int options_are_valid(const tarn_reference_options *opt, int width, int h
            && (opt->geometry == TARN_REF_CONTINUOUS || opt->geometry == TARN_REF_CORE_TRIANGLES);
 }
 
+/* A moving scene as it stands at the options' time: posed in doubles for the
+ * continuous geometry, and by the core for the core's own triangles, whose shading
+ * then follows the same pose. */
+static int render_posed(const tarn_scene *scene, int width, int height, const tarn_reference_options *opt,
+                        uint8_t *rgb, uint32_t *surface)
+{
+    tarn_object *objects = calloc(scene->object_count + 1u, sizeof *objects);
+    if (objects == NULL) return TARN_ERR_MEMORY;
+    tarn_scene posed;
+    int status = tarn_scene_pose(scene, opt->time_ms, &posed, objects);
+    if (status == TARN_OK && opt->geometry == TARN_REF_CONTINUOUS)
+        tarn_ref_scene_pose(scene, opt->time_ms, &posed, objects);
+    if (status == TARN_OK) status = tarn_reference_render_surfaces(&posed, width, height, opt, rgb, surface);
+    free(objects);
+    return status;
+}
+
 /* The continuous geometry keeps positions in subpixel units of the finest grid
  * only so that the rasterizer reads one unit; nothing is rounded to it. */
 int tarn_reference_render_surfaces(const tarn_scene *scene, int width, int height,
@@ -647,6 +665,7 @@ int tarn_reference_render_surfaces(const tarn_scene *scene, int width, int heigh
 {
     if (rgb == NULL || surface == NULL || !options_are_valid(opt, width, height)) return TARN_ERR_CONFIG;
     if (!scene_is_valid(scene)) return TARN_ERR_SCENE;
+    if (tarn_scene_moves(scene)) return render_posed(scene, width, height, opt, rgb, surface);
 
     size_t pixels = (size_t)width * height;
     int continuous = opt->geometry == TARN_REF_CONTINUOUS;

@@ -47,6 +47,7 @@ const tarn_rule TARN_COORDINATE = { "a number, -32768 < v < 32768", -32768, 3276
                                     TARN_MIN_OPEN | TARN_MAX_OPEN };
 const tarn_rule TARN_POSITIVE = { "a number > 0 and < 32768", 0, 32768,
                                   TARN_MIN_OPEN | TARN_MAX_OPEN };
+const tarn_rule TARN_FOV = { "a number of degrees, 1..179", 1, 179, 0 };
 
 static int number_fits(const tarn_rule *rule, double v)
 {
@@ -257,4 +258,17 @@ int tarn_get_asset_path(tarn_loader *l, const json_t *object, const char *parent
     }
     *out = resolve_asset(l, name);
     return *out ? 0 : tarn_fail(l->err, "%s: out of memory", l->file);
+}
+
+int tarn_get_vec3(tarn_loader *l, const json_t *object, const char *parent, const char *key,
+                  const double *fallback, double out[3])
+{
+    return tarn_get_numbers(l, object, parent, key, 3, &TARN_COORDINATE, fallback, out);
+}
+
+tarn_vec3 tarn_vec3_q16(const double v[3])
+{
+    tarn_vec3 q = { tarn_q16_from_double(v[0]), tarn_q16_from_double(v[1]),
+                    tarn_q16_from_double(v[2]) };
+    return q;
 }

@@ -13,6 +13,7 @@
 #include <stdint.h>
 #include <jansson.h>
 #include "error.h"
+#include "tarn/tarn_scene.h"
 
 struct tarn_loaded_scene;
 
@@ -38,6 +39,7 @@ typedef struct {
 
 extern const tarn_rule TARN_COORDINATE; /* |v| < 32768: anything Q16.16 holds */
 extern const tarn_rule TARN_POSITIVE;   /* 0 < v < 32768, and not 0 once in Q16.16 */
+extern const tarn_rule TARN_FOV;        /* degrees, 1..179 */
 
 /* "file: field: message"; always -1. */
 int tarn_fail_field(tarn_loader *l, const char *field, const char *format, ...)
@@ -53,6 +55,11 @@ int tarn_get_number(tarn_loader *l, const json_t *object, const char *parent, co
 /* An array of exactly `n` numbers, each following `rule`. */
 int tarn_get_numbers(tarn_loader *l, const json_t *object, const char *parent, const char *key,
                      size_t n, const tarn_rule *rule, const double *fallback, double *out);
+/* [x, y, z], each TARN_COORDINATE. */
+int tarn_get_vec3(tarn_loader *l, const json_t *object, const char *parent, const char *key,
+                  const double *fallback, double out[3]);
+/* Rounded to Q16.16. */
+tarn_vec3 tarn_vec3_q16(const double v[3]);
 /* A string; *out stays NULL when absent and optional. `what` describes it. */
 int tarn_get_string(tarn_loader *l, const json_t *object, const char *parent, const char *key,
                     const char *what, int required, const char **out);

@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 
 #include "obj_load.h"
+#include "motion_load.h"
 #include "scene_fields.h"
 #include "scene_textures.h"
 #include "texel_span.h"
@@ -23,24 +24,11 @@
 
 /* ---- field rules ------------------------------------------------------------ */
 
-static const tarn_rule FOV = { "a number of degrees, 1..179", 1, 179, 0 };
 static const tarn_rule FRAME_SIDE = { "an integer 1..1024", 1, 1024, TARN_INTEGER };
 static const tarn_rule SEGMENTS = { "an integer 1..256", 1, 256, TARN_INTEGER };
 static const tarn_rule SPHERE_SEGMENTS = { "an integer 3..256", 3, 256, TARN_INTEGER };
 static const tarn_rule SPHERE_RINGS = { "an integer 2..256", 2, 256, TARN_INTEGER };
 
-static int get_vec3(tarn_loader *l, const json_t *object, const char *parent, const char *key,
-                    const double *fallback, double out[3])
-{
-    return tarn_get_numbers(l, object, parent, key, 3, &TARN_COORDINATE, fallback, out);
-}
-
-static tarn_vec3 vec3_q16(const double v[3])
-{
-    tarn_vec3 q = { tarn_q16_from_double(v[0]), tarn_q16_from_double(v[1]),
-                    tarn_q16_from_double(v[2]) };
-    return q;
-}
 
 /* ---- frame, camera, light ----------------------------------------------------- */
 
@@ -65,23 +53,33 @@ static int load_frame(tarn_loader *l, const json_t *root)
 
 static int load_camera(tarn_loader *l, const json_t *root)
 {
-    static const char *const fields[] = { "position", "target", "fov", "near", "far", NULL };
-    static const double default_near = 0.1, default_far = 100;
+    static const char *const fields[] = { "position", "target", "fov", "near", "far", "path", NULL };
+    static const double default_near = 0.1, default_far = 100, placed[3] = { 0, 0, 0 };
     json_t *c;
+    int moves;
     double position[3], target[3], fov, near, far;
     if (tarn_get_object(l, root, "", "camera",
                         "an object {\"position\", \"target\", \"fov\"...}", 1, &c) ||
         tarn_check_fields(l, c, "camera", fields, NULL, "") ||
-        get_vec3(l, c, "camera", "position", NULL, position) ||
-        get_vec3(l, c, "camera", "target", NULL, target) ||
-        tarn_get_number(l, c, "camera", "fov", &FOV, NULL, &fov) ||
+        tarn_camera_path_load(l, c, &l->out->camera_path, &moves)) {
+        return -1;
+    }
+    if (moves) { /* the path places the camera (load_root puts it there at time 0) */
+        const char *placed_field = json_object_get(c, "position") ? "camera.position"
+                                   : json_object_get(c, "target") ? "camera.target" : NULL;
+        if (placed_field) return tarn_fail_field(l, placed_field, "not with camera.path, which places the camera");
+        l->out->scene.camera_path = &l->out->camera_path;
+    }
+    if (tarn_get_vec3(l, c, "camera", "position", moves ? placed : NULL, position) ||
+        tarn_get_vec3(l, c, "camera", "target", moves ? placed : NULL, target) ||
+        tarn_get_number(l, c, "camera", "fov", &TARN_FOV, NULL, &fov) ||
         tarn_get_number(l, c, "camera", "near", &TARN_POSITIVE, &default_near, &near) ||
         tarn_get_number(l, c, "camera", "far", &TARN_POSITIVE, &default_far, &far)) {
         return -1;
     }
     tarn_camera *camera = &l->out->scene.camera;
-    camera->position = vec3_q16(position);
-    camera->target = vec3_q16(target);
+    camera->position = tarn_vec3_q16(position);
+    camera->target = tarn_vec3_q16(target);
     camera->fov_y_degrees = tarn_q16_from_double(fov);
     camera->near = tarn_q16_from_double(near);
     camera->far = tarn_q16_from_double(far);
@@ -90,7 +88,7 @@ static int load_camera(tarn_loader *l, const json_t *root)
                                "expected a number greater than camera.near (%g), got %g",
                                near, far);
     }
-    if (memcmp(&camera->position, &camera->target, sizeof camera->position) == 0) {
+    if (!moves && memcmp(&camera->position, &camera->target, sizeof camera->position) == 0) {
         return tarn_fail_field(l, "camera.target", "must differ from camera.position");
     }
     return 0;
@@ -98,9 +96,10 @@ static int load_camera(tarn_loader *l, const json_t *root)
 
 static int load_light(tarn_loader *l, const json_t *root)
 {
-    static const char *const fields[] = { "direction", "colour", "ambient", NULL };
+    static const char *const fields[] = { "direction", "colour", "ambient", "motion", NULL };
     static const double from_above[3] = { 0, 1, 0 };
     json_t *light;
+    int moves;
     double d[3];
     tarn_light *out = &l->out->scene.light;
     if (tarn_get_object(l, root, "", "light",
@@ -109,18 +108,20 @@ static int load_light(tarn_loader *l, const json_t *root)
     }
     /* an absent light (NULL) has no fields, so every one takes its default */
     if (tarn_check_fields(l, light, "light", fields, NULL, "") ||
-        get_vec3(l, light, "light", "direction", from_above, d) ||
+        tarn_get_vec3(l, light, "light", "direction", from_above, d) ||
         tarn_get_colour(l, light, "light", "colour", 0xFFFFFF, &out->colour_rgb) ||
-        tarn_get_colour(l, light, "light", "ambient", 0x333333, &out->ambient_rgb)) {
+        tarn_get_colour(l, light, "light", "ambient", 0x333333, &out->ambient_rgb) ||
+        tarn_light_motion_load(l, light, &l->out->light_motion, &moves)) {
         return -1;
     }
+    if (moves) l->out->scene.light_motion = &l->out->light_motion;
     double length = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(length > 1e-9)) {
         return tarn_fail_field(l, "light.direction", "expected a non-zero vector, got [%g, %g, %g]",
                                d[0], d[1], d[2]);
     }
     double unit[3] = { d[0] / length, d[1] / length, d[2] / length };
-    out->direction = vec3_q16(unit);
+    out->direction = tarn_vec3_q16(unit);
     return 0;
 }
 
@@ -370,8 +371,8 @@ static void rotation_matrix(const double degrees[3], tarn_q16 out[3][3])
 
 static int load_object(tarn_loader *l, const json_t *o, size_t index)
 {
-    static const char *const common[] = { "type",     "material", "position",
-                                          "rotation", "scale",    NULL };
+    static const char *const common[] = { "type",  "material", "position", "rotation",
+                                          "scale", "motion",   NULL };
     static const double origin[3] = { 0, 0, 0 }, unit_scale = 1;
     char field[TARN_FIELD_PATH_MAX];
     snprintf(field, sizeof field, "objects[%zu]", index);
@@ -383,17 +384,20 @@ static int load_object(tarn_loader *l, const json_t *o, size_t index)
     tarn_mesh_buffer *mesh = &l->out->meshes[index];
     const object_type *type = NULL;
     double position[3], rotation[3], scale;
+    int moves;
     if (find_object_type(l, o, field, &type) ||
         tarn_check_fields(l, o, field, common, type->fields, type->kind) ||
         find_material(l, o, field, &object->material) ||
-        get_vec3(l, o, field, "position", origin, position) ||
-        get_vec3(l, o, field, "rotation", origin, rotation) ||
+        tarn_get_vec3(l, o, field, "position", origin, position) ||
+        tarn_get_vec3(l, o, field, "rotation", origin, rotation) ||
         tarn_get_number(l, o, field, "scale", &TARN_POSITIVE, &unit_scale, &scale) ||
+        tarn_object_motion_load(l, o, field, &l->out->motions[index], &moves) ||
         type->build(l, o, field, object->material, mesh) || tarn_mesh_build_clusters(mesh, l->err)) {
         return -1;
     }
     object->mesh = &mesh->mesh;
-    object->position = vec3_q16(position);
+    if (moves) object->motion = &l->out->motions[index];
+    object->position = tarn_vec3_q16(position);
     rotation_matrix(rotation, object->rotation);
     object->scale = tarn_q16_from_double(scale);
     char uv_field[TARN_FIELD_PATH_MAX];
@@ -419,7 +423,8 @@ static int load_objects(tarn_loader *l, const json_t *root)
     }
     s->objects = calloc(n + 1, sizeof *s->objects);
     s->meshes = calloc(n + 1, sizeof *s->meshes);
-    if (!s->objects || !s->meshes) return tarn_fail(l->err, "%s: out of memory", l->file);
+    s->motions = calloc(n + 1, sizeof *s->motions);
+    if (!s->objects || !s->meshes || !s->motions) return tarn_fail(l->err, "%s: out of memory", l->file);
     s->object_count = n;
     for (size_t k = 0; k < n; k++) {
         if (load_object(l, json_array_get(objects, k), k)) return -1;
@@ -498,6 +503,23 @@ static int load_underwater(tarn_loader *l, const json_t *root)
     return 0;
 }
 
+/* A camera on a path stands where the path has it at time 0: the scene's own
+ * camera, which a frame that does not move (and the bake's header) describes. */
+static int place_moving_camera(tarn_loader *l)
+{
+    tarn_scene *scene = &l->out->scene;
+    if (scene->camera_path == NULL) return 0;
+    tarn_object *objects = calloc(scene->object_count + 1u, sizeof *objects);
+    tarn_scene posed;
+    if (!objects) return tarn_fail(l->err, "%s: out of memory", l->file);
+    const tarn_status status = tarn_scene_pose(scene, 0, &posed, objects);
+    free(objects);
+    if (status != TARN_OK) return tarn_fail_field(l, "camera.path", "cannot be posed: %s", tarn_status_text(status));
+    scene->camera.position = posed.camera.position;
+    scene->camera.target = posed.camera.target;
+    return 0;
+}
+
 static int load_root(tarn_loader *l, const json_t *root)
 {
     static const char *const fields[] = { "frame", "background", "camera", "light", "materials",
@@ -505,7 +527,7 @@ static int load_root(tarn_loader *l, const json_t *root)
     if (tarn_check_fields(l, root, "", fields, NULL, "") || load_frame(l, root) ||
         tarn_get_colour(l, root, "", "background", 0x000000, &l->out->scene.background_rgb) ||
         load_camera(l, root) || load_light(l, root) || load_materials(l, root) ||
-        load_underwater(l, root) || load_objects(l, root)) {
+        load_underwater(l, root) || load_objects(l, root) || place_moving_camera(l)) {
         return -1;
     }
     return 0;
@@ -533,6 +555,10 @@ void tarn_scene_free(tarn_loaded_scene *s)
         tarn_image_free(&s->texture_images[k]);
         free(s->texture_paths[k]);
     }
+    for (size_t k = 0; s->motions && k < s->object_count; k++) tarn_key_curve_free(&s->motions[k].path);
+    tarn_key_curve_free(&s->camera_path.keys);
+    tarn_key_curve_free(&s->light_motion.direction);
+    free(s->motions);
     free(s->objects);
     free(s->meshes);
     free(s->materials);

@@ -4,8 +4,11 @@
  *   { "frame": {"width": 240, "height": 240},            optional, integers 1..1024
  *     "background": "#87ceeb",                            optional, default black
  *     "camera": {"position": [x,y,z], "target": [x,y,z], "fov": 60,
- *                "near": 0.1, "far": 100},                near and far optional
- *     "light": {"direction": [x,y,z], "colour": "#fffff0", "ambient": "#404850"},
+ *                "near": 0.1, "far": 100,                 near and far optional
+ *                "path": {...}},                          optional (motion_load.h); with
+ *                                                         it, no position or target
+ *     "light": {"direction": [x,y,z], "colour": "#fffff0", "ambient": "#404850",
+ *               "motion": {...}},                         motion optional (motion_load.h)
  *                                                         optional; direction points
  *                                                         toward the light, any length
  *     "materials": { "NAME": {"colour": "#rrggbb", "texture": "file.png",
@@ -15,6 +18,7 @@
  *     "objects": [ {"type": "plane"|"box"|"sphere"|"heightfield"|"mesh",
  *                   "material": "NAME", "position": [x,y,z],
  *                   "rotation": [rx,ry,rz] (degrees; R = Rz * Ry * Rx), "scale": 1,
+ *                   "motion": {...} (optional, motion_load.h),
  *                   plane:       "size": [w,d], "segments": [n,m], "uv_scale": [su,sv]
  *                   box:         "size": [w,h,d]
  *                   sphere:      "radius": r, "segments": 16, "rings": 8
@@ -32,6 +36,7 @@
 #include "error.h"
 #include "mesh_gen.h"
 #include "png_io.h"
+#include "tarn/tarn_motion.h"
 #include "tarn/tarn_scene.h"
 #include "tarn/tarn_water.h"
 
@@ -51,6 +56,9 @@ typedef struct tarn_loaded_scene {
     tarn_water *waters;
     size_t material_count;
     tarn_underwater underwater; /* scene.underwater points here when the file has one */
+    tarn_camera_path camera_path;   /* scene.camera_path points here when the camera moves */
+    tarn_light_motion light_motion; /* scene.light_motion, when the light moves */
+    tarn_object_motion *motions;    /* motions[i] for objects[i], which points to it if it moves */
     tarn_texture *textures;     /* fixed capacity: materials point into it as it fills */
     tarn_image *texture_images;
     char **texture_paths; /* as resolved against the scene's directory */

@@ -26,6 +26,7 @@
 #include "tarn_scene.h"
 #include "tarn_water.h"
 #include "tarn_render.h"
+#include "tarn_motion.h"
 #include "tarn_panel.h"
 #include "tarn_checksum.h"
 

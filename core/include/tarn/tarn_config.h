@@ -129,4 +129,10 @@
 #define TARN_LINK_UNDERWATER 1
 #endif
 
+/* Scenes that move (tarn_motion.h): the frame poses camera, light and objects for
+ * its time. Without it a scene with any motion is refused (TARN_ERR_SCENE). */
+#ifndef TARN_LINK_MOTION
+#define TARN_LINK_MOTION 1
+#endif
+
 #endif

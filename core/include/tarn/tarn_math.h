@@ -114,6 +114,10 @@ int32_t tarn_cos_q15(uint16_t angle_turns_q16);
  * with 64-bit products and constant divisions: for per-frame work such as the focal
  * length, where the table's 2^-15 would shift the frame edge by a hundredth of a pixel. */
 void tarn_sin_cos_q30(int32_t radians_q30, int32_t *sine_q30, int32_t *cosine_q30);
+/* The same for any angle in turns, Q0.32 wrapped (2^32 = one turn): the series at
+ * the nearest quarter turn's remainder, so within the same few units of 2^-30. For
+ * motion (tarn_motion.h), a few calls a frame. */
+void tarn_sin_cos_turns_q30(uint32_t turns_q32, int32_t *sine_q30, int32_t *cosine_q30);
 
 /* ---- square roots -----------------------------------------------------------------*/
 /* floor(sqrt(x)), exact for every 32-bit input. */
@@ -127,6 +131,10 @@ uint64_t tarn_isqrt_u64(uint64_t x);
  * smallest x, 2^-16) down to 256 (1/256), so nothing needs to saturate. Within
  * 0.501 LSB at every input; relative error beyond the rounding at most 2.5e-9. */
 uint32_t tarn_rsqrt_q16(uint32_t x_q16);
+/* v / |v| in Q1.30, for a vector of 64-bit integers of any common scale (each below
+ * 2^62 in magnitude): to about 2^-16 of each component. Returns 0 for the zero
+ * vector, leaving out unchanged. Once a frame: the camera's axes, a moving light. */
+int tarn_normalise_q30(const int64_t v[3], int32_t out[3]);
 
 #ifdef __cplusplus
 }

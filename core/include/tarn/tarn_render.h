@@ -162,7 +162,8 @@ tarn_quality tarn_quality_default(void);
 typedef struct {
     uint16_t width, height; /* pixels, 1..TARN_FRAME_SIZE_MAX */
     tarn_quality quality;
-    uint32_t time_ms;       /* animation clock for panning textures; wraps after ~49 days */
+    uint32_t time_ms;       /* the clock: panning textures, foam lines and every motion
+                               (tarn_motion.h); wraps after ~49 days */
 } tarn_frame_config;
 
 /* Pixels the guard band extends beyond each frame edge. */
@@ -249,7 +250,8 @@ typedef void (*tarn_triangle_visitor)(void *user, const tarn_screen_vertex verte
  * after clipping and snapping, with the mesh's own vertex order. Culling is not yet
  * applied: the rasterizer culls on the snapped winding (see the rules above), and a
  * visitor that draws must do the same. The float reference uses this to rasterize
- * exactly the core's triangles, isolating rasterization from transform precision. */
+ * exactly the core's triangles, isolating rasterization from transform precision.
+ * A moving scene is refused (TARN_ERR_SCENE): visit its pose (tarn_scene_pose). */
 tarn_status tarn_visit_screen_triangles(const tarn_scene *scene,
                                         const tarn_frame_config *config,
                                         tarn_triangle_visitor visit, void *user);

@@ -41,6 +41,9 @@ typedef enum {
 
 typedef struct tarn_water tarn_water;           /* tarn_water.h */
 typedef struct tarn_underwater tarn_underwater; /* tarn_water.h */
+typedef struct tarn_camera_path tarn_camera_path;     /* tarn_motion.h */
+typedef struct tarn_object_motion tarn_object_motion; /* tarn_motion.h */
+typedef struct tarn_light_motion tarn_light_motion;   /* tarn_motion.h */
 
 typedef struct {
     uint32_t colour_rgb;          /* tint multiplying the texture or vertex colours */
@@ -92,7 +95,8 @@ typedef struct {
 } tarn_static_vertex;
 
 /* World = position + scale * rotation * object. The rotation is orthonormal, so
- * normals transform by the rotation alone. */
+ * normals transform by the rotation alone. With a motion (tarn_motion.h) the
+ * position and rotation are the object's at time 0 of its bob and spin. */
 typedef struct {
     const tarn_mesh *mesh;
     const tarn_material *material;
@@ -102,6 +106,7 @@ typedef struct {
     const tarn_static_vertex *static_vertices; /* NULL, or one per mesh vertex, for the
                                                   scene's static_view; the object must
                                                   then not move */
+    const tarn_object_motion *motion; /* NULL: the object stays where it is */
 } tarn_object;
 
 typedef struct {
@@ -239,7 +244,10 @@ typedef struct {
     tarn_light light;
     uint32_t background_rgb; /* colour of pixels no triangle covers */
     const tarn_underwater *underwater; /* NULL: no underwater view */
-    const tarn_static_view *static_view; /* NULL when no object has static vertices */
+    const tarn_static_view *static_view; /* NULL when no object has static vertices;
+                                            applies only if camera and light never move */
+    const tarn_camera_path *camera_path;   /* NULL: the camera stays (tarn_motion.h) */
+    const tarn_light_motion *light_motion; /* NULL: the light stays */
 } tarn_scene;
 
 #ifdef __cplusplus
