@@ -93,12 +93,12 @@ static const bad_scene_case BAD_SCENE_CASES[] = {
       ": fo?o: unknown field (expected frame, background, camera, light, materials, underwater, "
       "objects)" },
     { "unknown camera field", BAD_CAMERA_SCENE("\"fob\": 1"), { { 0 } }, "bad.json",
-      ": camera.fob: unknown field (expected position, target, fov, near, far)" },
+      ": camera.fob: unknown field (expected position, target, fov, near, far, path)" },
     { "field of another object type",
       BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"sphere\", \"radius\": 1, \"size\": [1, 1, 1]")),
       { { 0 } }, "bad.json",
       ": objects[0].size: unknown field for a sphere (expected type, material, position, "
-      "rotation, scale, radius, segments, rings)" },
+      "rotation, scale, motion, radius, segments, rings)" },
     { "wrong type", BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"box\", \"size\": [1, 1, 1]") ", "
                                    BAD_OBJECT("\"type\": \"sphere\", \"radius\": \"big\"")),
       { { 0 } }, "bad.json", ": objects[1].radius: expected a number, got string" },
@@ -128,6 +128,55 @@ static const bad_scene_case BAD_SCENE_CASES[] = {
     { "camera on its target",
       BAD_CAMERA_SCENE("\"position\": [1, 2, 3], \"target\": [1, 2, 3], \"fov\": 60"),
       { { 0 } }, "bad.json", ": camera.target: must differ from camera.position" },
+    /* motion (host/scene/motion_load.c) */
+    { "orbit and keys", BAD_CAMERA_SCENE("\"fov\": 60, \"path\": {\"orbit\": {\"centre\": [0, 0, 0], "
+                                         "\"radius\": 5, \"period\": 8000}, \"keys\": []}"),
+      { { 0 } }, "bad.json", ": camera.path: expected either \"orbit\" or \"keys\", not both" },
+    { "path with a position", BAD_CAMERA_SCENE("\"position\": [0, 2, 6], \"fov\": 60, \"path\": {\"orbit\": "
+                                               "{\"centre\": [0, 0, 0], \"radius\": 5, \"period\": 8000}}"),
+      { { 0 } }, "bad.json", ": camera.position: not with camera.path, which places the camera" },
+    { "orbit period not whole", BAD_CAMERA_SCENE("\"fov\": 60, \"path\": {\"orbit\": {\"centre\": [0, 0, 0], "
+                                                 "\"radius\": 5, \"period\": 80.5}}"),
+      { { 0 } }, "bad.json",
+      ": camera.path.orbit.period: expected a whole number of milliseconds, 1..2147483647, got 80.5" },
+    { "orbit without radius", BAD_CAMERA_SCENE("\"fov\": 60, \"path\": {\"orbit\": {\"centre\": [0, 0, 0], "
+                                               "\"period\": 8000}}"),
+      { { 0 } }, "bad.json", ": camera.path.orbit.radius: missing (expected a number > 0 and < 32768)" },
+    { "orbit target on the orbit",
+      BAD_CAMERA_SCENE("\"fov\": 60, \"path\": {\"orbit\": {\"centre\": [0, 0, 0], \"radius\": 5, "
+                       "\"period\": 8000, \"target\": [5, 0, 0]}}"),
+      { { 0 } }, "bad.json", ": camera.path.orbit.target: lies on the orbit, where the camera would stand on it" },
+    { "orbit direction", BAD_CAMERA_SCENE("\"fov\": 60, \"path\": {\"orbit\": {\"centre\": [0, 0, 0], "
+                                          "\"radius\": 5, \"period\": 8000, \"direction\": \"left\"}}"),
+      { { 0 } }, "bad.json", ": camera.path.orbit.direction: expected \"counterclockwise\" or \"clockwise\", got \"left\"" },
+    { "keys out of order",
+      BAD_CAMERA_SCENE("\"fov\": 60, \"path\": {\"keys\": [{\"time\": 500, \"position\": [0, 2, 6], \"target\": [0, 0, 0]}, "
+                       "{\"time\": 500, \"position\": [0, 3, 6], \"target\": [0, 0, 0]}]}"),
+      { { 0 } }, "bad.json", ": camera.path.keys[1].time: expected a time after the key before's (500 ms), got 500" },
+    { "loop before the last key",
+      BAD_CAMERA_SCENE("\"fov\": 60, \"path\": {\"keys\": [{\"time\": 0, \"position\": [0, 2, 6], \"target\": [0, 0, 0]}, "
+                       "{\"time\": 900, \"position\": [0, 3, 6], \"target\": [0, 0, 0]}], \"loop\": 900}"),
+      { { 0 } }, "bad.json", ": camera.path.loop: expected a period after the last key's time (900 ms), got 900" },
+    { "fov in some keys",
+      BAD_CAMERA_SCENE("\"fov\": 60, \"path\": {\"keys\": [{\"time\": 0, \"position\": [0, 2, 6], \"target\": [0, 0, 0], "
+                       "\"fov\": 50}, {\"time\": 900, \"position\": [0, 3, 6], \"target\": [0, 0, 0]}]}"),
+      { { 0 } }, "bad.json", ": camera.path.keys[1]: lacks \"fov\": give it in every key or in none" },
+    { "key target at its position",
+      BAD_CAMERA_SCENE("\"fov\": 60, \"path\": {\"keys\": [{\"time\": 0, \"position\": [0, 2, 6], \"target\": [0, 2, 6]}]}"),
+      { { 0 } }, "bad.json", ": camera.path.keys[0].target: must differ from the key's position" },
+    { "no keys", BAD_CAMERA_SCENE("\"fov\": 60, \"path\": {\"keys\": []}"),
+      { { 0 } }, "bad.json", ": camera.path.keys: expected an array of 1..256 keys, got none" },
+    { "bob without axis", BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"box\", \"motion\": {\"bob\": {\"amplitude\": 1, \"period\": 900}}")),
+      { { 0 } }, "bad.json", ": objects[0].motion.bob.axis: missing (expected an array of 3 numbers)" },
+    { "spin about nothing",
+      BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"box\", \"motion\": {\"spin\": {\"axis\": [0, 0, 0], \"period\": 900}}")),
+      { { 0 } }, "bad.json", ": objects[0].motion.spin.axis: expected a non-zero vector, got [0, 0, 0]" },
+    { "unknown motion", BAD_SCENE_WITH(BAD_OBJECT("\"type\": \"box\", \"motion\": {\"wobble\": {}}")),
+      { { 0 } }, "bad.json", ": objects[0].motion.wobble: unknown field (expected bob, spin, path)" },
+    { "light spin period zero",
+      "{" BAD_CAMERA ", \"light\": {\"motion\": {\"spin\": {\"axis\": [0, 1, 0], \"period\": 0}}}, " BAD_MATERIALS
+      ", \"objects\": []}",
+      { { 0 } }, "bad.json", ": light.motion.spin.period: expected a whole number of milliseconds, 1..2147483647, got 0" },
     { "bad colour", "{\"background\": \"#12345\"}", { { 0 } }, "bad.json",
       ": background: expected a colour \"#rrggbb\", got \"#12345\"" },
     { "colour not a string", "{\"background\": 255}", { { 0 } }, "bad.json",
