@@ -292,6 +292,25 @@ static void test_pond_bakes_without_loss(void **state)
     round_trip("scenes/pond.json", "pond", "", NULL, 2750);
 }
 
+/* A moving scene keeps its motion: the baked frames (camera, light and objects posed
+ * by the firmware's core) are the loaded scene's, and nothing is frozen. */
+static void test_moving_scenes_bake_without_loss(void **state)
+{
+    (void)state;
+    round_trip("scenes/pond-orbit.json", "pond_orbit", "--name pond_orbit", NULL, 5000);
+    round_trip("scenes/lake-drift.json", "lake_drift", "--name lake_drift", NULL, 10500);
+    char path[PATH_SIZE];
+    snprintf(path, sizeof path, "%s/pond_orbit.c", work_dir);
+    char *source = read_all(path, NULL);
+    assert_non_null(strstr(source, "The scene moves (the camera, 2 objects): nothing is frozen"));
+    assert_null(strstr(source, "static_vertices["));
+    free(source);
+    snprintf(path, sizeof path, "%s/pond_orbit_link.h", work_dir);
+    source = read_all(path, NULL);
+    assert_non_null(strstr(source, "#define TARN_LINK_MOTION 1\n"));
+    free(source);
+}
+
 static void test_foam_bakes_without_loss(void **state)
 {
     (void)state;
@@ -521,6 +540,7 @@ static void test_baked_source_compiles_for_cortex_m0(void **state)
     }
     assert_builds_for_m0("scenes/pond.json", "pond_m0");
     assert_builds_for_m0("scenes/effects/foam.json", "foam_m0");
+    assert_builds_for_m0("scenes/pond-orbit.json", "orbit_m0");
 }
 
 /* ---- bad input ------------------------------------------------------------------ */
@@ -568,6 +588,10 @@ static void test_bad_input_exits_2_and_writes_nothing(void **state)
 
     snprintf(args, sizeof args, "%s/missing.json -o %s/x.c", work_dir, out);
     assert_bake_refused(args, out, "plain_file", "missing.json: cannot open");
+    snprintf(args, sizeof args, "scenes/pond-orbit.json -o %s/x.c --backdrop on", out);
+    assert_bake_refused(args, out, "plain_file",
+                        "scenes/pond-orbit.json: --backdrop: the scene moves (the camera, 2 objects), and a backdrop "
+                        "is one frame's picture; use --backdrop off");
 
     snprintf(args, sizeof args, "scenes/pond.json -o %s/plain_file/x.c", out);
     assert_bake_refused(args, out, "plain_file", "cannot create");
@@ -632,6 +656,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_pond_bakes_without_loss),
+        cmocka_unit_test(test_moving_scenes_bake_without_loss),
         cmocka_unit_test(test_foam_bakes_without_loss),
         cmocka_unit_test(test_size_quality_and_name_are_baked),
         cmocka_unit_test(test_underwater_bakes_without_loss),

@@ -20,6 +20,7 @@
 #include "bake_points.h"
 #include "backdrop.h"
 #include "static_view.h"
+#include "tarn/tarn_motion.h"
 
 /* ---- 1. types ------------------------------------------------------------------ */
 
@@ -134,10 +135,28 @@ STRUCT_TYPE(T_STATIC_VERTEX, tarn_static_vertex, ONE_LINE,
             FIELD(tarn_static_vertex, d, T_Q16),        FIELD(tarn_static_vertex, inv_depth, T_U32),
             FIELD(tarn_static_vertex, screen_x, T_I16), FIELD(tarn_static_vertex, screen_y, T_I16),
             FIELD(tarn_static_vertex, lit, T_U16_TRIPLE), FIELD(tarn_static_vertex, fresnel, T_U16));
+STRUCT_TYPE(T_KEY_CURVE, tarn_key_curve, BLOCK,
+            FIELD(tarn_key_curve, times_ms, T_REF),   FIELD(tarn_key_curve, values, T_REF),
+            FIELD(tarn_key_curve, key_count, T_U16),  FIELD(tarn_key_curve, channels, T_U8),
+            FIELD(tarn_key_curve, loop_ms, T_U32));
+STRUCT_TYPE(T_CAMERA_PATH, tarn_camera_path, BLOCK,
+            FIELD(tarn_camera_path, kind, T_U8),      FIELD(tarn_camera_path, centre, T_VEC3),
+            FIELD(tarn_camera_path, radius, T_Q16),   FIELD(tarn_camera_path, height, T_Q16),
+            FIELD(tarn_camera_path, period_ms, T_U32), FIELD(tarn_camera_path, start_turns_q32, T_U32),
+            FIELD(tarn_camera_path, clockwise, T_U8), FIELD(tarn_camera_path, target, T_VEC3),
+            FIELD(tarn_camera_path, keys, T_KEY_CURVE));
+STRUCT_TYPE(T_OBJECT_MOTION, tarn_object_motion, BLOCK,
+            FIELD(tarn_object_motion, bob, T_VEC3),   FIELD(tarn_object_motion, bob_period_ms, T_U32),
+            FIELD(tarn_object_motion, bob_phase_q32, T_U32), FIELD(tarn_object_motion, spin_axis, T_VEC3),
+            FIELD(tarn_object_motion, spin_period_ms, T_U32), FIELD(tarn_object_motion, path, T_KEY_CURVE));
+STRUCT_TYPE(T_LIGHT_MOTION, tarn_light_motion, BLOCK,
+            FIELD(tarn_light_motion, spin_axis, T_VEC3), FIELD(tarn_light_motion, spin_period_ms, T_U32),
+            FIELD(tarn_light_motion, direction, T_KEY_CURVE));
 STRUCT_TYPE(T_OBJECT, tarn_object, BLOCK,
             FIELD(tarn_object, mesh, T_REF),          FIELD(tarn_object, material, T_REF),
             FIELD(tarn_object, position, T_VEC3),     FIELD(tarn_object, rotation, T_MATRIX),
-            FIELD(tarn_object, scale, T_Q16),         FIELD(tarn_object, static_vertices, T_REF));
+            FIELD(tarn_object, scale, T_Q16),         FIELD(tarn_object, static_vertices, T_REF),
+            FIELD(tarn_object, motion, T_REF));
 STRUCT_TYPE(T_CAMERA, tarn_camera, BLOCK,
             FIELD(tarn_camera, position, T_VEC3),     FIELD(tarn_camera, target, T_VEC3),
             FIELD(tarn_camera, fov_y_degrees, T_Q16), FIELD(tarn_camera, near, T_Q16),
@@ -176,7 +195,8 @@ STRUCT_TYPE(T_SCENE, tarn_scene, BLOCK,
             FIELD(tarn_scene, objects, T_REF),        FIELD(tarn_scene, object_count, T_U16),
             FIELD(tarn_scene, camera, T_CAMERA),      FIELD(tarn_scene, light, T_LIGHT),
             FIELD(tarn_scene, background_rgb, T_RGB), FIELD(tarn_scene, underwater, T_REF),
-            FIELD(tarn_scene, static_view, T_REF));
+            FIELD(tarn_scene, static_view, T_REF),    FIELD(tarn_scene, camera_path, T_REF),
+            FIELD(tarn_scene, light_motion, T_REF));
 STRUCT_TYPE(T_EXP2, tarn_exp2_config, BLOCK,
             FIELD(tarn_exp2_config, entries, T_U16), FIELD(tarn_exp2_config, interpolate, T_U8));
 STRUCT_TYPE(T_QUALITY, tarn_quality, BLOCK,
@@ -196,7 +216,8 @@ static const bake_type *const all_structs[] = {
     &T_VEC3,  &T_UV,       &T_CLUSTER,  &T_TEXTURE, &T_MESH,  &T_PANNING,
     &T_WATER, &T_UNDERWATER, &T_MATERIAL, &T_OBJECT, &T_CAMERA, &T_LIGHT,
     &T_SCENE, &T_EXP2,     &T_QUALITY,  &T_CONFIG, &T_U16_TRIPLE, &T_STATIC_VERTEX, &T_BIN,
-    &T_I32_TRIPLE, &T_STILL_PLANE, &T_BACKDROP_SPAN, &T_BACKDROP, &T_STATIC_VIEW};
+    &T_I32_TRIPLE, &T_STILL_PLANE, &T_BACKDROP_SPAN, &T_BACKDROP, &T_STATIC_VIEW,
+    &T_KEY_CURVE, &T_CAMERA_PATH, &T_OBJECT_MOTION, &T_LIGHT_MOTION};
 
 /* Bytes on a 32-bit target (Cortex-M, rv32): what the header comment reports. */
 #define TARGET_POINTER_BYTES 4u
@@ -266,11 +287,11 @@ static int check_tables(tarn_error *err)
 
 typedef enum {
     BYTES_MESH, BYTES_TEXTURE, BYTES_MATERIAL, BYTES_WATER, BYTES_OBJECT, BYTES_STATIC, BYTES_BACKDROP,
-    BYTES_SCENE, BYTES_KINDS
+    BYTES_MOTION, BYTES_SCENE, BYTES_KINDS
 } byte_kind;
 
 static const char *const byte_kind_names[BYTES_KINDS] = {
-    "mesh", "texture", "material", "water", "object", "static vertices", "backdrop", "scene"};
+    "mesh", "texture", "material", "water", "object", "static vertices", "backdrop", "motion", "scene"};
 
 #define SYMBOL_MAX 96
 #define NOTE_MAX 200
@@ -608,6 +629,40 @@ static void plan_static_vertices(bake_plan *p)
     add_item(p, BYTES_STATIC, &T_STATIC_VIEW, scene->static_view, 0, "%s_static_view", p->name);
 }
 
+/* A curve's keys, named after what moves by it ("camera_path"). */
+static void plan_keys(bake_plan *p, const tarn_key_curve *c, const char *what)
+{
+    if (c->key_count == 0) return;
+    note(add_item(p, BYTES_MOTION, &T_U32, c->times_ms, c->key_count, "%s_%s_times", p->name, what),
+         "%s: each key's time, ms", what);
+    note(add_item(p, BYTES_MOTION, &T_Q16, c->values, (size_t)c->key_count * c->channels, "%s_%s_values", p->name,
+                  what),
+         "%s: each key's %u channels, Q16.16", what, c->channels);
+}
+
+/* The camera's path, the light's motion and each moving object's (tarn_motion.h):
+ * firmware poses the scene each frame. */
+static void plan_motion(bake_plan *p)
+{
+    const tarn_scene *scene = &p->scene->scene;
+    char what[SYMBOL_MAX];
+    if (scene->camera_path != NULL) {
+        plan_keys(p, &scene->camera_path->keys, "camera_path");
+        add_item(p, BYTES_MOTION, &T_CAMERA_PATH, scene->camera_path, 0, "%s_camera_path", p->name);
+    }
+    if (scene->light_motion != NULL) {
+        plan_keys(p, &scene->light_motion->direction, "light_motion");
+        add_item(p, BYTES_MOTION, &T_LIGHT_MOTION, scene->light_motion, 0, "%s_light_motion", p->name);
+    }
+    for (size_t i = 0; i < scene->object_count; i++) {
+        const tarn_object_motion *m = scene->objects[i].motion;
+        if (m == NULL) continue;
+        snprintf(what, sizeof what, "object_%zu_motion", i);
+        plan_keys(p, &m->path, what);
+        add_item(p, BYTES_MOTION, &T_OBJECT_MOTION, m, 0, "%s_%s", p->name, what);
+    }
+}
+
 static void plan_scene(bake_plan *p)
 {
     const tarn_scene *scene = &p->scene->scene;
@@ -632,6 +687,7 @@ static int plan_build(bake_plan *p, tarn_error *err)
     plan_meshes(p);
     plan_materials(p);
     plan_static_vertices(p);
+    plan_motion(p);
     plan_scene(p);
     return p->out_of_memory ? tarn_fail(err, "out of memory planning the baked scene") : 0;
 }
@@ -930,6 +986,19 @@ typedef struct {
     size_t memory_bytes;
 } bake_totals;
 
+/* What moves in the scene, for messages and the header: "the camera, 2 objects". */
+static const char *motion_summary(const tarn_scene *scene)
+{
+    static char text[96];
+    size_t objects = 0;
+    for (uint32_t i = 0; i < scene->object_count; i++) objects += scene->objects[i].motion != NULL;
+    snprintf(text, sizeof text, "%s%s%s%s", scene->camera_path ? "the camera" : "",
+             scene->camera_path && scene->light_motion ? ", " : "", scene->light_motion ? "the light" : "",
+             (scene->camera_path || scene->light_motion) && objects ? ", " : "");
+    if (objects) snprintf(text + strlen(text), sizeof text - strlen(text), "%zu object%s", objects, objects > 1 ? "s" : "");
+    return text;
+}
+
 static void print_source_comment(FILE *out, const bake_plan *p, const tarn_bake_options *o,
                                  const bake_totals *totals)
 {
@@ -945,11 +1014,16 @@ static void print_source_comment(FILE *out, const bake_plan *p, const tarn_bake_
     for (int k = 0; k < BYTES_KINDS; k++)
         fprintf(out, " *   %-15s %9zu\n", byte_kind_names[k], totals->bytes[k]);
     fprintf(out, " *   %-15s %9zu\n *\n", "total", totals->const_bytes);
+    if (tarn_scene_moves(&p->scene->scene))
+        fprintf(out, " * The scene moves (%s): nothing is frozen; each frame poses it for its time\n"
+                " * and transforms, lights and projects every vertex.\n *\n", motion_summary(&p->scene->scene));
+    else if (p->scene->scene.static_view != NULL)
+        fputs(" * Nothing in the scene moves: its static view holds every vertex as the camera sees it.\n *\n", out);
     fprintf(out, " * A %ux%u frame at the baked quality%s needs %zu bytes of working memory:\n * %s_MEMORY_BYTES in ",
             p->config.width, p->config.height, p->points->count ? " or any of the points" : "",
             totals->memory_bytes, macro);
     comment_text(out, base_name(totals->header_path));
-    fputs(". */\n#include \"tarn/tarn_render.h\"\n\n", out);
+    fputs(". */\n#include \"tarn/tarn_motion.h\"\n#include \"tarn/tarn_render.h\"\n\n", out);
 }
 
 static void print_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,
@@ -1073,6 +1147,7 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
     const int still = backdrop != NULL && backdrop->still_water;
     fprintf(out, "#define TARN_LINK_BACKDROP %d\n", backdrop != NULL);
     fprintf(out, "#define TARN_LINK_STILL_WATER %d\n", still);
+    fprintf(out, "#define TARN_LINK_MOTION %d\n", tarn_scene_moves(&p->scene->scene));
     fprintf(out, "#define TARN_LINK_WATER_SHADING %d\n", !still);
 }
 
@@ -1239,7 +1314,12 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
         return tarn_fail(err, "%s: %ux%u with these quality settings: %s", o->scene_path, plan.config.width,
                          plan.config.height, tarn_status_text(TARN_ERR_CONFIG));
     static_scene with_static;
-    if (o->static_view) {
+    /* a static view freezes the camera, the light and every object where they stand */
+    const int freeze = o->static_view && !tarn_scene_moves(&scene->scene);
+    if (o->backdrop && tarn_scene_moves(&scene->scene))
+        return tarn_fail(err, "%s: --backdrop: the scene moves (%s), and a backdrop is one frame's picture; use "
+                         "--backdrop off", o->scene_path, motion_summary(&scene->scene));
+    if (freeze) {
         if (static_scene_make(scene, &plan.config, o->backdrop, &with_static, err) != 0)
             return tarn_fail_in(err, o->scene_path);
         plan.scene = &with_static.loaded;
@@ -1266,7 +1346,7 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     result->const_bytes = totals.const_bytes;
     result->memory_bytes = totals.memory_bytes;
     plan_free(&plan);
-    if (o->static_view) static_scene_free(&with_static);
+    if (freeze) static_scene_free(&with_static);
     tarn_bake_points_free(&points);
     free(header_path);
     free(link_path);

@@ -134,7 +134,7 @@ size_t tarn_static_memory_bytes(const tarn_frame_config *config, const tarn_scen
                                 const tarn_frame_config *made_for)
 {
     tarn_frame_config without_found_bins = *config;
-    if (config->width == made_for->width && config->height == made_for->height &&
+    if (!tarn_scene_moves(scene) && config->width == made_for->width && config->height == made_for->height &&
         config->quality.subpixel_bits == made_for->quality.subpixel_bits)
         without_found_bins.quality.cluster_bins = 0;
     return tarn_frame_memory_bytes(&without_found_bins, scene);

@@ -10,6 +10,7 @@
 #define TARN_HOST_STATIC_VIEW_H
 
 #include "error.h"
+#include "tarn/tarn_motion.h"
 #include "tarn/tarn_render.h"
 
 typedef struct {
@@ -39,7 +40,8 @@ int tarn_static_scene_make(const tarn_scene *scene, const tarn_frame_config *con
 void tarn_static_scene_free(tarn_static_scene *s);
 
 /* tarn_frame_memory_bytes of `config` for the scene as tarn bake writes it with a
- * static view made for `made_for`: in that frame its bins come from flash. */
+ * static view made for `made_for`: in that frame its bins come from flash. A scene
+ * that moves is baked without one. */
 size_t tarn_static_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene,
                                 const tarn_frame_config *made_for);
 
