@@ -31,7 +31,7 @@ static const char *const scenes[] = {
     "scenes/extremes/far.json", "scenes/extremes/grazing.json", "scenes/extremes/huge.json",
     "scenes/extremes/steep.json", "scenes/extremes/tiny.json", "scenes/extremes/deep-squared.json",
     "scenes/extremes/huge-near.json", "scenes/extremes/uv-scale.json", "scenes/extremes/skim-above.json",
-    "scenes/extremes/skim-below.json",
+    "scenes/extremes/skim-below.json", "scenes/pond-orbit.json", "scenes/lake-drift.json",
 };
 
 /* The scenes whose water reaches every knob: refraction, foam, sparkles, the
