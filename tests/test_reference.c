@@ -49,7 +49,7 @@ static uint8_t covered[W * H];
 
 static tarn_object object_of(const tarn_mesh *mesh, const tarn_material *material)
 {
-    tarn_object obj = { mesh, material, VEC(0, 0, 0), IDENTITY, Q(1), NULL };
+    tarn_object obj = { mesh, material, VEC(0, 0, 0), IDENTITY, Q(1), NULL, NULL };
     return obj;
 }
 
@@ -60,6 +60,8 @@ static tarn_scene scene_of(const tarn_object *objects, uint16_t count)
         { VEC(0, 0, 0), VEC(0, 0, -1), Q(90), Q(1), Q(100) },
         { VEC(0, 0, 1), 0xFFFFFF, 0x000000 },
         BACKGROUND,
+        NULL,
+        NULL,
         NULL,
         NULL,
     };
@@ -638,7 +640,7 @@ static void test_object_transform_moves_positions_and_normals(void **state)
     };
     tarn_mesh mesh = { object_space, turned_normals, NULL, NULL, screen_quad_indices, 4, 2, NULL, 0 };
     tarn_object obj = { &mesh, &white_two_sided, VEC(0, 0, -1),
-                        { { 0, 0, Q(1) }, { 0, Q(1), 0 }, { Q(-1), 0, 0 } }, Q(2), NULL };
+                        { { 0, 0, Q(1) }, { 0, Q(1), 0 }, { Q(-1), 0, 0 } }, Q(2), NULL, NULL };
     render_lit_quad(&lighting_cases[0], &obj);
     assert_uniform_frame(lighting_cases[0].expected);
 }
