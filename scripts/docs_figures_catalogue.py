@@ -989,6 +989,15 @@ def backdrop_bake(m):
     return m.bake("pond", "--quality fast --backdrop on")
 
 
+# Refraction over an opaque backdrop, read from the picture in flash (docs/bake.md).
+BACKDROP_REFRACTION_FAST = "--quality fast --backdrop on --apron on --water-block 1 --perspective pixel"
+KEYS["bake.backdrop.balanced.memory_bytes"] = lambda m: comma(m.bake("pond", "--backdrop on")["memory_bytes"])
+KEYS["bake.balanced.memory_bytes"] = lambda m: comma(m.bake("pond")["memory_bytes"])
+KEYS["bake.backdrop-refraction.depths"] = lambda m: comma(m.bake("pond", BACKDROP_REFRACTION_FAST)["count.backdrop_depth"])
+KEYS["bake.backdrop-refraction.const_bytes"] = lambda m: comma(m.bake("pond", BACKDROP_REFRACTION_FAST)["const_bytes"])
+KEYS["bake.backdrop-refraction.panel_psnr"] = lambda m: m.compare("pond", BACKDROP_REFRACTION_FAST)["panel_psnr"]
+
+
 KEYS["bake.backdrop.indices_bytes"] = lambda m: comma(backdrop_bake(m)["bytes.backdrop_colour"])
 KEYS["bake.backdrop.colours"] = lambda m: comma(backdrop_bake(m)["backdrop.colours"])
 KEYS["bake.backdrop.palette_colours"] = lambda m: comma(backdrop_bake(m)["backdrop.palette"])

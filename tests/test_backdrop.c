@@ -1,7 +1,7 @@
 /* test_backdrop.c: a scene's water drawn over the backdrop of its opaque objects
  * (tarn_scene.h, host/bake/backdrop.h), without its triangles that draw no pixel
- * (host/bake/water_cull.h), gives the frame the whole scene gives, byte for byte: on
- * every scene, at each preset and two times, and with the knobs that move what the
+ * (host/bake/water_cull.h), gives the frame the whole scene gives, byte for byte, with
+ * refracted samples read from the picture and no apron drawn: on every scene, at each preset and two times, and with the knobs that move what the
  * water reads (aprons, blocks, tiles, depth, perspective). The backdrop
  * keeps the depth only around the water, in as few colours' bits as it can; a frame
  * it does not apply to, a malformed backdrop and a picture of more colours than
@@ -47,6 +47,16 @@ static void assert_same_frames(const char *path, tarn_frame_config config, const
         uint8_t *over = test_render_rgb(&b.water.scene, &config, "over the backdrop");
         if (memcmp(whole, over, 3u * config.width * config.height) != 0)
             fail_msg("%s (%s, %u ms): the backdrop changes the frame", path, knobs, (unsigned)config.time_ms);
+        /* refracted samples read the picture in flash: no apron is drawn around a
+         * tile, so the frame over its backdrop needs no more memory than one without
+         * refraction drawn whole (the underwater view keeps its apron) */
+        tarn_frame_config no_apron = config;
+        no_apron.quality.refraction_apron = 0;
+        if (loaded.scene.underwater == NULL &&
+            tarn_frame_memory_bytes(&config, &b.water.scene) > tarn_frame_memory_bytes(&no_apron, &loaded.scene))
+            fail_msg("%s (%s): %zu bytes over the backdrop, %zu drawn whole without an apron", path, knobs,
+                     tarn_frame_memory_bytes(&config, &b.water.scene),
+                     tarn_frame_memory_bytes(&no_apron, &loaded.scene));
         free(whole);
         free(over);
     }

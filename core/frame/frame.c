@@ -100,6 +100,17 @@ static void begin_water(frame_state *f)
     c->background_stride = f->opaque.stride;
     c->offset_limit = f->layout.refraction_apron;
     c->sample_rect = f->opaque.rect; /* binds at the frame's edges only (opaque_rect) */
+    /* over an opaque backdrop (tarn__frame_layout_of draws no apron then), moved
+     * samples read its picture, anywhere in the frame */
+    c->flash = TARN_LINK_BACKDROP && f->layout.backdrop != NULL && !f->layout.still && f->layout.apron == 0
+                   ? f->layout.backdrop
+                   : NULL;
+    if (c->flash != NULL) {
+        c->sample_rect.x0 = 0;
+        c->sample_rect.y0 = 0;
+        c->sample_rect.x1 = f->config->width;
+        c->sample_rect.y1 = f->config->height;
+    }
 }
 
 /* The water triangles of `rect` into the water pass's target. */

@@ -20,7 +20,10 @@ static tarn_frame_layout layout_of(const tarn_frame_config *config, const tarn_s
      * depth but the backdrop's own; refracted samples read the backdrop's picture
      * wherever they land, so no apron is drawn for them */
     l.still = TARN_LINK_STILL_WATER && l.backdrop != NULL && l.backdrop->still_water;
-    l.apron = l.still ? 0 : l.refraction_apron + l.under_apron;
+    /* over an opaque backdrop, which holds the whole opaque picture in flash, a
+     * refracted sample is read there wherever it lands: no apron either */
+    const int flash = TARN_LINK_BACKDROP && l.backdrop != NULL && !l.still && !l.underwater;
+    l.apron = l.still || flash ? 0 : l.refraction_apron + l.under_apron;
     /* Without an apron a water pixel reads the opaque pass at itself only, and the
      * water pass can draw over it; the underwater view reads the water pass's
      * output displaced, so keeps it apart. */

@@ -73,9 +73,29 @@ void tarn__backdrop_fill(const tarn_backdrop *b, uint16_t frame_width, tarn_tile
     }
 }
 
-uint32_t tarn__backdrop_kept(const tarn_backdrop *b, int32_t i, int32_t j)
+/* Where pixel (i, j)'s kept depth lies in the backdrop's depth array; 0 when it
+ * keeps none there. */
+static int kept_at(const tarn_backdrop *b, int32_t i, int32_t j, uint32_t *index)
 {
     for (uint32_t k = b->row_spans[j]; k < b->row_spans[j + 1] && i >= b->spans[k].x0; k++)
-        if (i < b->spans[k].x1) return ((const uint16_t *)b->depth)[b->spans[k].first + (uint32_t)(i - b->spans[k].x0)];
-    return 65536u;
+        if (i < b->spans[k].x1) {
+            *index = b->spans[k].first + (uint32_t)(i - b->spans[k].x0);
+            return 1;
+        }
+    return 0;
+}
+
+uint32_t tarn__backdrop_kept(const tarn_backdrop *b, int32_t i, int32_t j)
+{
+    uint32_t index;
+    return kept_at(b, i, j, &index) ? ((const uint16_t *)b->depth)[index] : 65536u;
+}
+
+uint32_t tarn__backdrop_depth_q30(const tarn_backdrop *b, int32_t i, int32_t j)
+{
+    uint32_t index;
+    const int kept = kept_at(b, i, j, &index);
+    if (tarn__depth_is_16_bits(b->depth_bits))
+        return tarn_depth16_decode(kept ? ((const uint16_t *)b->depth)[index] : 0xFFFFu);
+    return kept ? ((const uint32_t *)b->depth)[index] : 0xFFFFFFFFu;
 }

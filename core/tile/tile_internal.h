@@ -86,6 +86,10 @@ void tarn__backdrop_fill(const tarn_backdrop *backdrop, uint16_t frame_width, ta
  * of water beneath, or the place in the foam band, Q0.16); 65536 where it keeps
  * nothing. */
 uint32_t tarn__backdrop_kept(const tarn_backdrop *backdrop, int32_t i, int32_t j);
+/* The opaque depth (near/d, Q1.30) an opaque backdrop keeps at frame pixel (i, j),
+ * as tarn__backdrop_fill puts it in a tile's depth buffer: in front of every water
+ * pixel where it keeps none. */
+uint32_t tarn__backdrop_depth_q30(const tarn_backdrop *backdrop, int32_t i, int32_t j);
 /* The backdrop's colour at frame pixel (i, j) of a frame `frame_width` pixels wide,
  * marks and all: a read anywhere in the picture, as a refracted sample over still
  * water makes. */

@@ -58,6 +58,10 @@ typedef struct tarn_water_context {
     int32_t offset_limit;            /* pixels a refracted sample may move, each axis:
                                         the frame's refraction apron */
     tarn_pixel_rect sample_rect;     /* where refracted samples may land: the frame */
+    /* with an opaque backdrop (tarn_scene.h), which holds the whole frame's opaque
+       picture in flash: refracted samples that move are read from it, so the tile
+       draws no apron (sample_rect is then the whole frame); NULL otherwise */
+    const tarn_backdrop *flash;
     /* the quality's water_block 2 or 4: the effects of each block of the tile,
        found at its top-left pixel, a slot per block column; NULL with water_block 1 */
     struct tarn_water_block *blocks;
@@ -260,6 +264,9 @@ typedef struct {
 
 /* The opaque background at frame pixel (i, j); its colour is read when applied. */
 tarn_water_sample tarn__water_background(const tarn_water_context *w, int32_t i, int32_t j);
+/* The same where a refracted sample lands: from the backdrop in flash if the
+ * context has one (w->flash), else from the tile's buffers. */
+tarn_water_sample tarn__water_moved_background(const tarn_water_context *w, int32_t i, int32_t j);
 
 /* The surface normal N, or before tarn__water_normalise its direction: normalising
  * takes a reciprocal square root, which a pixel whose highlight cannot show (most

@@ -86,6 +86,6 @@ tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, in
     int32_t target[2];
     refracted_pixel(w, i, j, in, n, reach, target);
     if (target[0] == i && target[1] == j) return own; /* read already */
-    tarn_water_sample shifted = tarn__water_background(w, target[0], target[1]);
+    tarn_water_sample shifted = tarn__water_moved_background(w, target[0], target[1]);
     return shifted.depth < surface_depth ? own : shifted;
 }
