@@ -19,7 +19,9 @@ static int64_t key_time(const tarn_key_curve *c, int32_t i)
 static int32_t key_value(const tarn_key_curve *c, int32_t i, unsigned channel)
 {
     const int32_t n = c->key_count;
-    const int32_t k = c->loop_ms == 0u ? tarn_clamp_i32(i, 0, n - 1) : (i + n) % n;
+    /* i lies within a key of the ends: a looping curve's wraps once at most (and
+     * without %, which a Cortex-M0 takes from libgcc) */
+    const int32_t k = c->loop_ms == 0u ? tarn_clamp_i32(i, 0, n - 1) : (i < 0 ? i + n : (i >= n ? i - n : i));
     return c->values[(uint32_t)k * c->channels + channel];
 }
 
