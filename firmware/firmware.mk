@@ -94,8 +94,10 @@ FW_LIBC_SRC :=
 else
 FW_CROSS := riscv64-unknown-elf-
 FW_CROSS_PKG := gcc-riscv64-unknown-elf
-# the rv32imac/ilp32 multilib: -march with _zicsr would select the default (rv64) one
-FW_LIBS = $(shell $(FW_CROSS)gcc -march=rv32imac -mabi=ilp32 -print-libgcc-file-name 2>/dev/null)
+# the board's multilib (rv32imac/ilp32; rv32im/ilp32 for rv32imc, which has none of
+# its own): named without _zicsr, since -march with it would select the default
+# (rv64) one
+FW_LIBS = $(shell $(FW_CROSS)gcc $(subst _zicsr,,$(BOARD_CPU)) -print-libgcc-file-name 2>/dev/null)
 FW_LIBC_SRC := firmware/libc/string.c
 FW_LIBC_INCLUDE := -Ifirmware/libc
 endif
