@@ -9,6 +9,6 @@ BOARD_DIR := boards/qemu-rv32
 BOARD_CPU := -march=rv32imac_zicsr -mabi=ilp32 -mcmodel=medany
 BOARD_QEMU_MACHINE := sifive_e
 BOARD_STACK_BYTES := 4224
-BOARD_SCENE := scenes/pond.json
+BOARD_SCENES := scenes/pond.json
 BOARD_BAKE_FLAGS := --quality fast
 include boards/common/qemu_rv32.mk
