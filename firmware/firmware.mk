@@ -6,11 +6,14 @@
 #   make firmware-run BOARD=...   also runs an emulated board under QEMU (-icount
 #                                 shift=0): build/firmware/BOARD/panel.stream is what
 #                                 it sent the panel, report.txt its report line
-#   make bench-target             runs every emulated board and prints one line each
+#   make bench-target             runs every emulated board and prints one line for
+#                                 each of its scenes
 #   make profile-target BOARD=qemu-m0 [TOP=N]   where an emulated board's
 #                                 instructions go, counted exactly: by function,
 #                                 source file and source line
 #   make firmware SCENE=my.json BAKE_FLAGS="--tile 16 --depth 16"   another scene
+#   make firmware-run BOARD=qemu-m0-264k FW_BOARD_SCENE=scenes/pond-opaque.json
+#                                 one of the board's own scenes (BOARD_SCENES)
 #   make firmware-sweep BOARD=qemu-m0 POINTS=points.txt [SCENE=... BAKE_FLAGS=...]
 #                                 one boot measures every quality of the points file
 #                                 (tarn bake --points; firmware/sweep_main.c):
@@ -19,13 +22,24 @@
 # A board whose board.mk gives no BOARD_RUN is a real board: it is built (and
 # size-, stack- and float-checked by firmware-check) but never run here.
 #
+# A board's scenes are BOARD_SCENES in its board.mk, each baked with its
+# BOARD_BAKE_FLAGS into a build of its own: the first in build/firmware/BOARD (the
+# board's own build: profile-target, firmware-sweep), every other one in
+# build/firmware/BOARD@NAME (NAME: the scene file's name without .json).
+# make firmware, firmware-run, bench-target and firmware-check of a board do each
+# of its scenes in turn.
+#
 # docs/firmware.md describes the boards, the stream and the figures.
 
 FW_BOARDS := $(sort $(patsubst boards/%/board.mk,%,$(wildcard boards/*/board.mk)))
 FW_TARN := build/release/tarn
 FW_TIMEOUT ?= 120
+# The times (ms) of the frames firmware/main.c streams, compared byte for byte with
+# the host's frames by tests/test_firmware.c; the second is also the frame the
+# core renders alone, and the one make bench-target's panel_psnr measures.
+FW_TIMES := 0,1000,5000
 
-.PHONY: firmware firmware-run firmware-check bench-target profile-target firmware-sweep
+.PHONY: firmware firmware-run firmware-check bench-target profile-target firmware-sweep fw-dirs
 
 # The program an emulated board runs: main (firmware/main.c, the measured run) or
 # sweep (firmware/sweep_main.c: every point of the bake's --points, one boot), which
@@ -51,14 +65,15 @@ bench-target:
 
 # make test: every board built, run and compared with the host, byte for byte; the
 # real boards built and checked, and their bad builds (too little RAM, no compiler)
-# failing as they should
+# failing as they should. The builds to check: each board's, a directory a scene
+# (fw-dirs).
 firmware-check: firmware-run
-	@tests/check_firmware.sh $(FW_BOARDS)
+	@tests/check_firmware.sh $$(for b in $(FW_BOARDS); do $(MAKE) --no-print-directory -s fw-dirs BOARD=$$b || exit 1; done)
 	@tests/check_real_boards.sh
 
 else ifeq ($(filter $(BOARD),$(FW_BOARDS)),)
 
-firmware firmware-run bench-target firmware-check profile-target firmware-sweep:
+firmware firmware-run bench-target firmware-check profile-target firmware-sweep fw-dirs:
 	@echo "tarn: no board '$(BOARD)'; the boards are: $(FW_BOARDS)" >&2; exit 1
 
 else ifeq ($(filter $(FW_MAIN),main sweep),)
@@ -77,9 +92,24 @@ include boards/$(BOARD)/board.mk
 # the board's board.mk and what it includes (boards/common/*.mk, another board's board.mk)
 FW_BOARD_MK := $(filter boards/%,$(MAKEFILE_LIST))
 
+ifeq ($(BOARD_SCENES),)
+$(error tarn: boards/$(BOARD)/board.mk gives no BOARD_SCENES)
+endif
+# FW_BOARD_SCENE: which of the board's scenes this make builds (the first unless
+# given); one not in the list is refused
+FW_BOARD_SCENE ?= $(firstword $(BOARD_SCENES))
+ifeq ($(filter $(FW_BOARD_SCENE),$(BOARD_SCENES)),)
+$(error tarn: FW_BOARD_SCENE=$(FW_BOARD_SCENE) is not one of $(BOARD)'s scenes: $(BOARD_SCENES))
+endif
+# $(1): one of the board's scenes; its build's directory
+fw_scene_dir = build/firmware/$(BOARD)$(if $(filter-out $(firstword $(BOARD_SCENES)),$(1)),@$(basename $(notdir $(1))))
+# every scene in turn: a board of several scenes asked for itself (no SCENE,
+# FW_BUILD_DIR or FW_BOARD_SCENE given)
+FW_EACH_SCENE := $(if $(SCENE)$(FW_BUILD_DIR)$(filter-out file,$(origin FW_BOARD_SCENE)),,$(word 2,$(BOARD_SCENES)))
 # FW_BUILD_DIR: another build directory, for builds of other scenes beside the board's own
-FW_DIR := $(if $(FW_BUILD_DIR),$(FW_BUILD_DIR),build/$(if $(filter sweep,$(FW_MAIN)),firmware-sweep,firmware)/$(BOARD))
-FW_SCENE := $(if $(SCENE),$(SCENE),$(BOARD_SCENE))
+FW_DIR := $(if $(FW_BUILD_DIR),$(FW_BUILD_DIR),$(if $(filter sweep,$(FW_MAIN)),build/firmware-sweep/$(BOARD),$(if \
+	$(SCENE),build/firmware/$(BOARD),$(call fw_scene_dir,$(FW_BOARD_SCENE)))))
+FW_SCENE := $(if $(SCENE),$(SCENE),$(FW_BOARD_SCENE))
 FW_BAKE_FLAGS := $(if $(SCENE),$(BAKE_FLAGS),$(if $(BAKE_FLAGS),$(BAKE_FLAGS),$(BOARD_BAKE_FLAGS)))
 FW_SCENE_LABEL := $(basename $(notdir $(FW_SCENE)))
 # the sweep's points: baked with the scene (host/bake/bake_points.h)
@@ -94,8 +124,10 @@ FW_LIBC_SRC :=
 else
 FW_CROSS := riscv64-unknown-elf-
 FW_CROSS_PKG := gcc-riscv64-unknown-elf
-# the rv32imac/ilp32 multilib: -march with _zicsr would select the default (rv64) one
-FW_LIBS = $(shell $(FW_CROSS)gcc -march=rv32imac -mabi=ilp32 -print-libgcc-file-name 2>/dev/null)
+# the board's multilib (rv32imac/ilp32; rv32im/ilp32 for rv32imc, which has none of
+# its own): named without _zicsr, since -march with it would select the default
+# (rv64) one
+FW_LIBS = $(shell $(FW_CROSS)gcc $(subst _zicsr,,$(BOARD_CPU)) -print-libgcc-file-name 2>/dev/null)
 FW_LIBC_SRC := firmware/libc/string.c
 FW_LIBC_INCLUDE := -Ifirmware/libc
 endif
@@ -127,41 +159,54 @@ FW_OBJ += $(FW_DIR)/obj/boot2_crc.o
 endif
 FW_OUTPUTS := $(FW_ELF) $(if $(BOARD_UF2_FAMILY),$(FW_DIR)/firmware.uf2)
 
+fw-dirs:
+	@echo $(foreach s,$(BOARD_SCENES),$(call fw_scene_dir,$(s)))
+
+ifneq ($(FW_EACH_SCENE),)
+firmware firmware-run bench-target firmware-check:
+	@for s in $(BOARD_SCENES); do $(MAKE) --no-print-directory $@ BOARD=$(BOARD) FW_BOARD_SCENE=$$s || exit 1; done
+else
 firmware: $(FW_OUTPUTS)
 	@$(FW_CROSS)size $(FW_ELF)
 
 ifneq ($(value BOARD_RUN),)
 firmware-run: $(FW_DIR)/report.txt
 
-firmware-sweep: $(FW_DIR)/report.txt
-	@cat $<
-
 bench-target: $(FW_DIR)/report.txt $(FW_ELF)
-	@FW_BENCH_DIR=$(FW_DIR) tests/check_firmware.sh --bench $(BOARD)
+	@tests/check_firmware.sh --bench $(FW_DIR)
 
 firmware-check: $(FW_DIR)/report.txt
-	@tests/check_firmware.sh $(BOARD)
-
-profile-target: $(FW_ELF) | fw-qemu
-	@scripts/profile-target.py --top $(or $(TOP),30) --tools $(FW_CROSS) $(FW_ELF) -- \
-		$(call BOARD_RUN,$(FW_ELF),$(FW_DIR)/profile.stream,$(FW_DIR)/profile.report)
+	@tests/check_firmware.sh $(FW_DIR)
 else
 # a real board: built, never run here
 firmware-run: $(FW_OUTPUTS)
 	@echo "$(BOARD) is a real board: built ($(FW_OUTPUTS)), not run" >&2
 
-bench-target profile-target firmware-sweep: $(FW_OUTPUTS)
+bench-target: $(FW_OUTPUTS)
 	@echo "$(BOARD) is a real board: no emulated run to measure" >&2
 
 firmware-check: $(FW_OUTPUTS) $(FW_DIR)/firmware.conf
-	@tests/check_firmware.sh $(BOARD)
+	@tests/check_firmware.sh $(FW_DIR)
+endif
+endif
+
+ifneq ($(value BOARD_RUN),)
+firmware-sweep: $(FW_DIR)/report.txt
+	@cat $<
+
+profile-target: $(FW_ELF) | fw-qemu
+	@scripts/profile-target.py --top $(or $(TOP),30) --tools $(FW_CROSS) $(FW_ELF) -- \
+		$(call BOARD_RUN,$(FW_ELF),$(FW_DIR)/profile.stream,$(FW_DIR)/profile.report)
+else
+profile-target firmware-sweep: $(FW_OUTPUTS)
+	@echo "$(BOARD) is a real board: no emulated run to measure" >&2
 endif
 
 # what tests/check_firmware.sh and tests/test_firmware.c need to know about the build
 $(FW_DIR)/firmware.conf: $(FW_BOARD_MK) firmware/firmware.mk FORCE
 	@mkdir -p $(FW_DIR)
 	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
-		"bake_flags=$(FW_BAKE_FLAGS)" "times=0,1000" "dither=1" "cross=$(FW_CROSS)" \
+		"bake_flags=$(FW_BAKE_FLAGS)" "times=$(FW_TIMES)" "dither=1" "cross=$(FW_CROSS)" \
 		"stack_bytes=$(BOARD_STACK_BYTES)" "stack_entry=$(BOARD_STACK_ENTRY)" "emulated=$(if $(value BOARD_RUN),1,0)" \
 		"code_bytes_max=$(BOARD_CODE_BYTES_MAX)" "program=$(FW_MAIN)" "points=$(POINTS)" > $@.tmp
 	@if cmp -s $@.tmp $@; then rm $@.tmp; else mv $@.tmp $@; fi
@@ -198,7 +243,7 @@ $(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h
 $(FW_OBJ): firmware/firmware.mk $(FW_BOARD_MK)
 FW_MAIN_OBJ := $(patsubst %,$(FW_DIR)/obj/firmware/%.o,main sweep_main display_main)
 $(FW_MAIN_OBJ): $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
-$(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"'
+$(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"' -DFW_TIMES=$(FW_TIMES)
 $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-distribute-patterns -fno-strict-aliasing
 # Code that runs once a frame, or once a water object a tile (the scene check and the
 # backdrop's, the view and water setup, the presets, the report), is compiled for

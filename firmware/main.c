@@ -3,16 +3,19 @@
  * core/panel/panel.c, whose transport (stream_transport.c) writes the byte stream of
  * tarn_panel.h through the board. The real boards run display_main.c instead.
  *
- * One run: panel init, frame at FW_TIME_0 ms, frame at FW_TIME_1 ms (both into the
- * same panel stream), the 'E' record, then the FW_TIME_1 frame once more into a sink
- * that drops the tiles, and one line of text on the board's report channel:
+ * One run: panel init, a frame at each of the FW_TIMES (ms; firmware.mk gives them:
+ * 0, 1000 and 5000), all into the same panel stream, the 'E' record, then the frame
+ * at the second time once more into a sink that drops the tiles, and one line of
+ * text on the board's report channel:
  *   target board=B scene=S size=WxH insn_per_pixel=N render_insn_per_pixel=N
- *          stack_peak_bytes=N frame_insn=N,N,N counter_check=N/2000000
- * insn_per_pixel is the two streamed frames' instructions (render, RGB565 conversion
- * and the board's writes of the panel stream) over their pixels, rounded to nearest;
- * render_insn_per_pixel is the core alone (the third frame); frame_insn gives the
- * three frames' counts; counter_check is what the counter measured for a loop of
- * exactly 2000000 instructions (the board's tick-to-instruction ratio, checked).
+ *          stack_peak_bytes=N frame_insn=N,N,N,N counter_check=N/2000000
+ * insn_per_pixel is the streamed frames' instructions (render, RGB565 conversion and
+ * the board's writes of the panel stream) over their pixels, rounded to nearest: an
+ * average over the three times (until issue 21 there were two, 0 and 1000 ms, and
+ * the figure was their average); render_insn_per_pixel is the core alone (the last
+ * frame, at the second time); frame_insn gives every frame's count, the streamed
+ * ones first; counter_check is what the counter measured for a loop of exactly
+ * 2000000 instructions (the board's tick-to-instruction ratio, checked).
  *
  * build/firmware/BOARD/scene.h comes from `tarn bake SCENE -o scene.c --name scene`:
  * it declares scene_scene, scene_config and SCENE_MEMORY_BYTES. */
@@ -26,11 +29,8 @@
 #include "tarn/tarn_panel.h"
 #include "tarn/tarn_render.h"
 
-#ifndef FW_TIME_0
-#define FW_TIME_0 0u
-#endif
-#ifndef FW_TIME_1
-#define FW_TIME_1 1000u
+#ifndef FW_TIMES
+#error "FW_TIMES: the streamed frames' times in ms, from firmware/firmware.mk"
 #endif
 #ifndef FW_DITHER
 #define FW_DITHER 1
@@ -50,7 +50,12 @@ static int drop_tile(void *user, const tarn_tile *tile)
 
 /* The report line; kept out of main() so that its buffer is not on the stack while
  * the frames render. Returns main's exit status. */
-static int __attribute__((noinline)) report_run(tarn_status status, const uint64_t frame_instructions[3],
+/* The streamed frames' times, in ms. */
+static const uint32_t times[] = {FW_TIMES};
+#define STREAMED_FRAMES (sizeof times / sizeof times[0])
+#define FRAMES (STREAMED_FRAMES + 1u)
+
+static int __attribute__((noinline)) report_run(tarn_status status, const uint64_t frame_instructions[FRAMES],
                                                 uint64_t counter)
 {
     report r = {{0}, 0};
@@ -65,14 +70,16 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
     }
     uint64_t pixels = (uint64_t)scene_config.width * scene_config.height;
     report_frame_header(&r, "target", FW_BOARD_NAME, FW_SCENE_LABEL, scene_config.width, scene_config.height);
+    uint64_t streamed = 0;
+    for (unsigned i = 0; i < STREAMED_FRAMES; i++) streamed += frame_instructions[i];
     report_text(&r, " insn_per_pixel=");
-    report_number(&r, report_per_pixel(frame_instructions[0] + frame_instructions[1], 2u * pixels));
+    report_number(&r, report_per_pixel(streamed, STREAMED_FRAMES * pixels));
     report_text(&r, " render_insn_per_pixel=");
-    report_number(&r, report_per_pixel(frame_instructions[2], pixels));
+    report_number(&r, report_per_pixel(frame_instructions[STREAMED_FRAMES], pixels));
     report_text(&r, " stack_peak_bytes=");
     report_number(&r, board_stack_peak());
     report_text(&r, " frame_insn=");
-    for (unsigned i = 0; i < 3u; i++) {
+    for (unsigned i = 0; i < FRAMES; i++) {
         if (i > 0) report_text(&r, ",");
         report_number(&r, frame_instructions[i]);
     }
@@ -86,9 +93,8 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
 
 int main(void)
 {
-    static const uint32_t times[2] = {FW_TIME_0, FW_TIME_1};
     static panel_sink sink;
-    uint64_t frame_instructions[3] = {0, 0, 0};
+    uint64_t frame_instructions[FRAMES] = {0};
     tarn_status status;
 
     if (board_init() != 0) return 2;
@@ -97,7 +103,7 @@ int main(void)
                     sizeof line, FW_DITHER);
 
     status = tarn_panel_init(&sink.panel, transport);
-    for (unsigned i = 0; i < 2u && status == TARN_OK; i++) {
+    for (unsigned i = 0; i < STREAMED_FRAMES && status == TARN_OK; i++) {
         tarn_frame_config config = scene_config;
         config.time_ms = times[i];
         uint64_t start = board_instructions();
@@ -112,7 +118,7 @@ int main(void)
         config.time_ms = times[1];
         uint64_t start = board_instructions();
         status = tarn_render_frame(&scene_scene, &config, memory, sizeof memory, drop_tile, 0);
-        frame_instructions[2] = board_instructions() - start;
+        frame_instructions[STREAMED_FRAMES] = board_instructions() - start;
     }
     return report_run(status, frame_instructions, report_counter_check());
 }

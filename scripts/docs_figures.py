@@ -293,12 +293,14 @@ class Measurer:
         d["host"] = self.sweep_cost(scene, args)
         return Placeholder(d) if self.recording else d
 
-    def bench(self, board, scene=None, flags=None, may_fail=False):
-        """make bench-target's line for a board's own build (scene None), or for a
-        build of another scene or bake flags in a directory of its own; the run's
-        report fields too (frame_insn, counter_check). may_fail: a build that fails
-        gives {"failed": its output} instead of stopping the measurement."""
-        value = self._get(("bench", board, scene, flags))
+    def bench(self, board, scene=None, flags=None, may_fail=False, own_scene=None):
+        """make bench-target's line for a board's own build (scene None), for the
+        build of another of the board's own scenes (own_scene: one of its
+        BOARD_SCENES but the first), or for a build of another scene or bake flags
+        in a directory of its own; the run's report fields too (frame_insn,
+        counter_check). may_fail: a build that fails gives {"failed": its output}
+        instead of stopping the measurement."""
+        value = self._get(("bench", board, scene, flags, own_scene))
         if isinstance(value, MeasureError):
             if may_fail:
                 return {"failed": str(value)}
@@ -415,20 +417,28 @@ class Measurer:
                                (len(costs) - costs.count(None), len(costs), scene))
         return costs
 
-    def _m_bench(self, board, scene, flags):
+    def _m_bench(self, board, scene, flags, own_scene):
         argv = ["make", "--no-print-directory", "-s", "bench-target", "BOARD=" + board]
-        if scene is not None:
+        if own_scene is not None:
+            # where firmware/firmware.mk builds a board's scene after its first
+            argv.append("FW_BOARD_SCENE=" + scene_path(own_scene))
+            fw_dir = "build/firmware/%s@%s" % (board, os.path.basename(scene_path(own_scene))[:-len(".json")])
+        elif scene is not None:
             # short: the emulator's semihosting takes the stream's path, and long ones fail
             slug = "%s-%s" % (board, hashlib.sha1(("%s\0%s" % (scene, flags)).encode()).hexdigest()[:10])
             fw_dir = os.path.join(OUT, "fw", slug)
             argv += ["SCENE=" + scene_path(scene), "BAKE_FLAGS=" + (flags or ""), "FW_BUILD_DIR=" + fw_dir]
         else:
             fw_dir = os.path.join("build/firmware", board)
-        lines = [ln for ln in run(argv).splitlines() if ln.startswith("target ")]
-        if not lines:
-            raise MeasureError("make bench-target BOARD=%s printed no target line" % board)
+        out = run(argv)
         with open(os.path.join(ROOT, fw_dir, "report.txt")) as f:
             report = fields(f.read().strip())
+        # a board of several scenes prints a line for each: this build's is its scene's
+        lines = [ln for ln in out.splitlines() if ln.startswith("target ") and fields(ln).get("scene") ==
+                 report.get("scene")]
+        if not lines:
+            raise MeasureError("make bench-target BOARD=%s printed no target line for scene %s" %
+                               (board, report.get("scene")))
         values = {}
         for k, v in list(report.items()) + list(fields(lines[-1]).items()):
             if k in ("insn_per_pixel", "render_insn_per_pixel"):

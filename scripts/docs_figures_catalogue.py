@@ -96,19 +96,46 @@ def readme_compare(m):
                        c["coverage"], "\n"])
 
 
-def board_key(board, field):
-    def fn(m):
-        v = m.bench(board)[field]
-        return v
-    return fn
+def board_mk_value(board, name):
+    """A variable's value in a board's board.mk (the last it sets), or in the board.mk
+    it includes before it (qemu-m0-backdrop includes qemu-m0's); None if neither
+    sets it."""
+    value = None
+    with open(os.path.join(ROOT, "boards/%s/board.mk" % board)) as f:
+        for line in f:
+            found = re.match(r"^%s\s*:?=\s*(.*)$" % name, line)
+            included = re.match(r"^include boards/([\w-]+)/board\.mk$", line)
+            if found:
+                value = found.group(1).strip()
+            elif included and value is None:
+                value = board_mk_value(included.group(1), name)
+    return value
 
 
-BOARDS = ("qemu-m0", "qemu-m0-backdrop", "qemu-m0-still", "qemu-m3", "qemu-rv32")
+def board_scenes(board):
+    """A board's scenes, by name (pond for scenes/pond.json), as its BOARD_SCENES
+    lists them: make bench-target prints a line for each."""
+    return [os.path.basename(s)[:-len(".json")] for s in board_mk_value(board, "BOARD_SCENES").split()]
+
+
+def board_bench(m, board, scene):
+    """make bench-target's line for one of a board's scenes."""
+    return m.bench(board) if scene == board_scenes(board)[0] else m.bench(board, own_scene=scene)
+
+
+def board_key(board, field, scene=None):
+    return lambda m: board_bench(m, board, scene or board_scenes(board)[0])[field]
+
+
+BOARDS = ("qemu-m0", "qemu-m0-backdrop", "qemu-m0-still", "qemu-m0-264k", "qemu-m3", "qemu-rv32", "qemu-rv32-400k")
 BENCH_FIELDS = ("insn_per_pixel", "render_insn_per_pixel", "ram_bytes", "flash_bytes", "stack_bytes",
                 "scene_bytes", "code_bytes", "stack_peak_bytes", "stack_reserved_bytes", "panel_psnr")
+# board.BOARD.FIELD: the board's first scene; board.BOARD.SCENE.FIELD: each of its scenes
 for _b in BOARDS:
     for _f in BENCH_FIELDS:
         KEYS["board.%s.%s" % (_b, _f)] = board_key(_b, _f)
+        for _s in board_scenes(_b):
+            KEYS["board.%s.%s.%s" % (_b, _s, _f)] = board_key(_b, _f, _s)
 
 
 def link_length(board, region):
@@ -709,9 +736,20 @@ def profile_functions(m):
     return out
 
 
-def profile_per_pixel(functions, frames=2):
+def firmware_times():
+    """How many frames firmware/main.c streams: FW_TIMES in firmware/firmware.mk."""
+    with open(os.path.join(ROOT, "firmware/firmware.mk")) as f:
+        return len(re.search(r"^FW_TIMES := (.*)$", f.read(), re.M).group(1).split(","))
+
+
+# a board's run: the streamed frames, then the core alone once more
+STREAMED_FRAMES = firmware_times()
+RUN_FRAMES = STREAMED_FRAMES + 1
+
+
+def profile_per_pixel(functions, frames=STREAMED_FRAMES):
     """Instructions a pixel of the pond's frame (240x240) in the named functions, over
-    `frames` frames (the conversion runs in the two streamed frames)."""
+    `frames` frames (the conversion runs in the streamed frames)."""
     def fn(m):
         f = profile_functions(m)
         if not f:
@@ -759,36 +797,32 @@ def comma(fig):
 def fw_report_example(m):
     """build/firmware/qemu-m0/report.txt, the M0's report line (make firmware-run)."""
     r = m.bench("qemu-m0")
-    frames = r["frame_insn"] if isinstance(r["frame_insn"], list) else [r["frame_insn"]] * 3
+    frames = r["frame_insn"] if isinstance(r["frame_insn"], list) else [r["frame_insn"]] * 4
+    listed = [frames[0]]
+    for f in frames[1:]:
+        listed += [",", f]
     return code_block(["target board=qemu-m0 scene=pond size=240x240 insn_per_pixel=", r["insn_per_pixel"],
                        " render_insn_per_pixel=", r["render_insn_per_pixel"], "\n       stack_peak_bytes=",
-                       r["stack_peak_bytes"], " frame_insn=", frames[0], ",", frames[1], ",", frames[2],
-                       " counter_check=", r["counter_check"], "/", r["counter_check_loop"], "\n"])
+                       r["stack_peak_bytes"], " frame_insn="] + listed +
+                      [" counter_check=", r["counter_check"], "/", r["counter_check_loop"], "\n"])
 
 
 def board_bake_flags(board):
-    """The flags a board bakes its scene with, read from its board.mk (a board that
-    includes another's takes the last BOARD_BAKE_FLAGS it sets before it)."""
-    flags = ""
-    with open("boards/%s/board.mk" % board) as f:
-        for line in f:
-            found = re.match(r"^BOARD_BAKE_FLAGS\s*:?=\s*(.*)$", line)
-            if found:
-                flags = found.group(1).strip()
-    return flags or "the default: balanced"
+    """The flags a board bakes its scenes with, read from its board.mk."""
+    return board_mk_value(board, "BOARD_BAKE_FLAGS") or "the default: balanced"
 
 
-BOARD_ROWS = [(b, "pond 240x240, %s" % ("`%s`" % board_bake_flags(b) if board_bake_flags(b)[0] == "-" else
+BOARD_ROWS = [(b, s, "%s 240x240, %s" % (s, "`%s`" % board_bake_flags(b) if board_bake_flags(b)[0] == "-" else
                                          board_bake_flags(b)))
-              for b in ("qemu-m0", "qemu-m0-backdrop", "qemu-m0-still", "qemu-m3", "qemu-rv32")]
+              for b in BOARDS for s in board_scenes(b)]
 
 
 @block
 def fw_boards(m):
-    """make bench-target: every emulated board's line."""
+    """make bench-target: every emulated board's line, one a scene."""
     rows = []
-    for board, what in BOARD_ROWS:
-        b = m.bench(board)
+    for board, scene, what in BOARD_ROWS:
+        b = board_bench(m, board, scene)
         rows.append(["`%s`" % board, what, b["insn_per_pixel"], b["render_insn_per_pixel"], comma(b["ram_bytes"]),
                      [comma(b["flash_bytes"]), " (", comma(b["scene_bytes"]), " + ", comma(b["code_bytes"]), ")"],
                      [b["stack_bytes"], " / ", b["stack_peak_bytes"], " / ", b["stack_reserved_bytes"]],
@@ -1041,22 +1075,22 @@ def fw_scenes(m):
 
 
 # where the still board's instructions go: make profile-target's functions, by the work they do
-PROFILE_WORK = [  # the work, its functions, the frames it runs in (the panel: the two streamed), what it is
+PROFILE_WORK = [  # the work, its functions, the frames it runs in (the panel: the streamed ones), what it is
     ("the walk", ["tarn__water_still_tile", "over_still", "tarn__water_finish", "sharp_at", "tarn__water_sharp_at"],
-     3, "the scan of every tile pixel for each water object's marks, then each water pixel: its block, whether "
+     RUN_FRAMES, "the scan of every tile pixel for each water object's marks, then each water pixel: its block, whether "
         "a sharp feature can show, its colour"),
     ("the panel", ["convert_rows", "stream_data", "stream_command", "board_write", "semihosting_write",
-                   "tarn_panel_send_tile", "panel_sink_send_tile", "set_window", "set_address_range"], 2,
+                   "tarn_panel_send_tile", "panel_sink_send_tile", "set_window", "set_address_range"], STREAMED_FRAMES,
      "RGB565 with the ordered dither (`convert_rows`), the ST7789 stream; a streamed frame's"),
-    ("reading the picture", ["tarn__backdrop_fill"], 3, "a palette index a pixel, read a word at a time"),
+    ("reading the picture", ["tarn__backdrop_fill"], RUN_FRAMES, "a palette index a pixel, read a word at a time"),
     ("the highlight", ["tarn__water_surface_normal", "map_texels", "tarn__water_specular", "tarn__water_texel_at",
-                       "tarn_rsqrt_q16", "tarn__water_normalise"], 3,
+                       "tarn_rsqrt_q16", "tarn__water_normalise"], RUN_FRAMES,
      "once a block: both normal maps' texels, the normal's direction, the specular's test"),
-    ("foam", ["tarn__water_foam", "tarn__water_foam_over", "tarn__backdrop_foam_band", "tarn_sin_q15"], 3,
+    ("foam", ["tarn__water_foam", "tarn__water_foam_over", "tarn__backdrop_foam_band", "tarn_sin_q15"], RUN_FRAMES,
      "the band's pixels at every frame: the line's phase, the foam texel, the blend"),
-    ("texture coordinates", ["texture_coordinate", "recip_normalised_q30", "tarn_recip_q30"], 3,
+    ("texture coordinates", ["texture_coordinate", "recip_normalised_q30", "tarn_recip_q30"], RUN_FRAMES,
      "a reciprocal of near/d and two products a block's top-left pixel and a foam pixel"),
-    ("the scene check", ["tarn__backdrop_valid", "tarn__scene_check"], 3, "the backdrop's palette and spans, every frame"),
+    ("the scene check", ["tarn__backdrop_valid", "tarn__scene_check"], RUN_FRAMES, "the backdrop's palette and spans, every frame"),
 ]
 
 
@@ -1067,7 +1101,7 @@ def fw_profile_still(m):
     rows = [[work, profile_per_pixel(names, frames)(m), what] for work, names, frames, what in PROFILE_WORK]
     named = {n for _, names, _, _ in PROFILE_WORK for n in names} | {"spin"}
     rest = sum(v for k, v in f.items() if k not in named)
-    rows.append(["the rest", insn(rest / (3 * 57600.0)) if f else Fig("1", 1.0),
+    rows.append(["the rest", insn(rest / (RUN_FRAMES * 57600.0)) if f else Fig("1", 1.0),
                  "every other function (the counter check's loop, `spin`, left out)"])
     return table(["work", "insn/pixel", "what it is"], rows, ["---", "---:", "---"])
 
@@ -1163,7 +1197,7 @@ add_fw_keys()
 
 def points_bake_frame(m):
     frames = fw("m0-points-bake")(m)["frame_insn"]
-    return frames[2] if isinstance(frames, list) else frames
+    return frames[-1] if isinstance(frames, list) else frames
 
 
 KEYS["fw.m0-points-bake.render_frame_insn"] = lambda m: comma(points_bake_frame(m))
@@ -1538,5 +1572,5 @@ def mcp2210_changed(m):
 KEYS["panel.mcp2210.tiles_changed"] = mcp2210_changed
 KEYS["panel.spidev.ceiling_fps"] = lambda m: exact("%.1f" % float(bench_panel_row("spidev", "bands", 32)(m)[7])) \
     if bench_panel_row("spidev", "bands", 32)(m) else Fig("1", 1.0)
-for _b in ("qemu-m3", "qemu-rv32"):
+for _b in ("qemu-m3", "qemu-rv32", "qemu-m0-264k", "qemu-rv32-400k"):
     KEYS["board.%s.counter_check" % _b] = (lambda b: lambda m: m.bench(b)["counter_check"].fmt("comma"))(_b)

@@ -1,8 +1,8 @@
 #!/bin/sh
-# check_firmware.sh: the built and emulated firmware, board by board.
+# check_firmware.sh: the built and emulated firmware, build by build.
 #
-#   tests/check_firmware.sh BOARD...          checks (make test, after make firmware-run)
-#   tests/check_firmware.sh --bench BOARD...  one line per board (make bench-target):
+#   tests/check_firmware.sh DIR...          checks (make test, after make firmware-run)
+#   tests/check_firmware.sh --bench DIR...  one line per build (make bench-target):
 #     target board=B scene=S size=WxH insn_per_pixel=N ram_bytes=N flash_bytes=N
 #            stack_bytes=N render_insn_per_pixel=N scene_bytes=N code_bytes=N
 #            stack_peak_bytes=N stack_reserved_bytes=N panel_psnr=NN.NN
@@ -14,7 +14,11 @@
 # really used (startup paints the stack); panel_psnr the board's frame on the
 # yardstick (tarn compare: the panel error, RGB565 with the ordered dither).
 #
-# Checks, per board: the run finished and reported; the board's counter measured a
+# Each DIR is a firmware build (firmware/firmware.mk): build/firmware/BOARD, a
+# board's other scenes in build/firmware/BOARD@SCENE, or a build of FW_BUILD_DIR=;
+# its firmware.conf names the board and the scene.
+#
+# Checks, per build: the run finished and reported; the board's counter measured a
 # loop of known length within 0.01%; the stack bound and the measured peak fit the
 # reserved stack; the image links no floating-point helper, allocator or stdio; the
 # code (the image less the scene) fits the board's BOARD_CODE_BYTES_MAX, if it has one.
@@ -24,7 +28,7 @@
 set -u
 bench=0
 if [ "${1:-}" = --bench ]; then bench=1; shift; fi
-[ $# -gt 0 ] || { echo "usage: $0 [--bench] BOARD..." >&2; exit 2; }
+[ $# -gt 0 ] || { echo "usage: $0 [--bench] DIR..." >&2; exit 2; }
 
 passed=0
 failed=0
@@ -45,14 +49,15 @@ board_panel_psnr() {
     field panel_psnr "$line"
 }
 
-for board in "$@"; do
-    # FW_BENCH_DIR: make bench-target's build of one board in FW_BUILD_DIR
-    dir=${FW_BENCH_DIR:-build/firmware/$board}
+for dir in "$@"; do
     elf=$dir/firmware.elf
     if [ ! -f "$dir/firmware.conf" ] || [ ! -f "$elf" ]; then
-        fail "$board: not built (make firmware BOARD=$board)"
+        fail "$dir: not built: no firmware.conf and firmware.elf there (make firmware)"
         continue
     fi
+    # the board, and in what failures say, its scene too
+    board=$(conf board)
+    what="$board $(conf label)"
     cross=$(conf cross)
     reserved=$(conf stack_bytes)
     # Berkeley format: text data bss
@@ -77,9 +82,9 @@ for board in "$@"; do
     else
         report=$(cat "$dir/report.txt" 2>/dev/null || true)
         case $report in
-        "target board=$board "*) ;;
+        "target board=$board scene=$(conf label) "*) ;;
         *)
-            fail "$board: no report from a finished run in $dir/report.txt (make firmware-run BOARD=$board): $report"
+            fail "$what: no report from a finished run in $dir/report.txt (make firmware-run BOARD=$board): $report"
             continue
             ;;
         esac
@@ -101,28 +106,28 @@ for board in "$@"; do
         measured=${counter%/*} expected=${counter#*/}
         if [ -n "$counter" ] && [ $((measured - expected)) -le $((expected / 10000)) ] &&
             [ $((expected - measured)) -le $((expected / 10000)) ]; then pass; else
-            fail "$board: the counter measured $measured instructions for a loop of $expected"; fi
+            fail "$what: the counter measured $measured instructions for a loop of $expected"; fi
     fi
 
     if [ $bound_status -eq 0 ] && [ -n "$stack" ]; then pass; else
-        fail "$board: no stack bound: $bound_out"; fi
+        fail "$what: no stack bound: $bound_out"; fi
     if [ -n "$stack" ] && [ "$stack" -le "$reserved" ]; then pass; else
-        fail "$board: the deepest call chain needs $stack bytes of stack, the board reserves $reserved (BOARD_STACK_BYTES):"
+        fail "$what: the deepest call chain needs $stack bytes of stack, the board reserves $reserved (BOARD_STACK_BYTES):"
         printf '%s\n' "$bound_out"; fi
     if [ "$emulated" = 0 ]; then :
     elif [ -n "$peak" ] && [ "$peak" -lt "$reserved" ] && [ "$peak" -le "${stack:-0}" ]; then pass; else
-        fail "$board: the run used $peak bytes of stack; reserved $reserved, bound ${stack:-?}"; fi
+        fail "$what: the run used $peak bytes of stack; reserved $reserved, bound ${stack:-?}"; fi
 
     forbidden=$("${cross}nm" "$elf" | awk '{print $NF}' |
         grep -E '^(__aeabi_[fd][a-z0-9]*|__aeabi_[a-z0-9]+2[fd]|__(add|sub|mul|div)[sd]f3|__float[a-z]*|__fix[a-z]*|malloc|free|calloc|realloc|printf|puts|_sbrk)$' || true)
     if [ -z "$forbidden" ]; then pass; else
-        fail "$board: the image links $(echo $forbidden)"; fi
+        fail "$what: the image links $(echo $forbidden)"; fi
 
     code_max=$(conf code_bytes_max)
     if [ -z "$code_max" ] || [ "$code" -le "$code_max" ]; then pass; else
-        fail "$board: the code takes $code bytes of flash besides the scene, over the board's $code_max"; fi
+        fail "$what: the code takes $code bytes of flash besides the scene, over the board's $code_max"; fi
 
-    echo "$board: flash $flash bytes ($scene_bytes scene, $code code), RAM $ram bytes, stack bound $stack, peak ${peak:-(not run)}, reserved $reserved"
+    echo "$what: flash $flash bytes ($scene_bytes scene, $code code), RAM $ram bytes, stack bound $stack, peak ${peak:-(not run)}, reserved $reserved"
 done
 
 [ $bench = 1 ] && exit $((failed > 0))

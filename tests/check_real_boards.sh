@@ -12,8 +12,11 @@
 #   compiler and the package that has it.
 # - A scene too large for a board's flash (the Cortex-M0's 256 KB): the link must fail
 #   the same way, and with the static view suggest baking without it.
+# - The budget boards (qemu-m0-264k, qemu-rv32-400k) hold their chip's RAM, not the
+#   emulator's 4 MB or 128 MB: with a stack as large as the whole budget, the link
+#   must fail, RAM overflowed.
 #
-# Both build into build/firmware-bad/, so the real builds stay as they are.
+# All build into build/firmware-bad/, so the real builds stay as they are.
 set -u
 board=stm32f411-st7789
 dir=build/firmware-bad/$board
@@ -101,6 +104,24 @@ else
     fail "qemu-m0 with a backdrop too large for its flash should fail to link, saying the backdrop can go (status $status):"
     printf '%s\n' "$out" | grep -v "gcc -std" | tail -4
 fi
+
+# the budget boards' RAM is the chip's: a stack of the whole budget leaves no room
+for budget in qemu-m0-264k:264 qemu-rv32-400k:400; do
+    b=${budget%:*} kb=${budget#*:}
+    rm -rf "build/firmware-bad/$b"
+    out=$(make --no-print-directory firmware BOARD=$b FW_BUILD_DIR=build/firmware-bad/$b \
+        BOARD_STACK_BYTES=$((kb * 1024)) 2>&1)
+    status=$?
+    overflow=$(printf '%s\n' "$out" | grep -E "region .RAM. overflowed by [0-9]+ bytes" | head -1)
+    if [ $status -ne 0 ] && [ ! -e "build/firmware-bad/$b/firmware.elf" ] && [ -n "$overflow" ] &&
+        printf '%s\n' "$out" | grep -q "^tarn: $b has too little RAM for"; then
+        pass
+        echo "$b, a stack of ${kb} KB: ${overflow##*: }"
+    else
+        fail "$b with a stack of its whole ${kb} KB of RAM should fail to link, RAM overflowed (status $status):"
+        printf '%s\n' "$out" | grep -v "gcc -std" | tail -4
+    fi
+done
 
 rm -rf build/firmware-bad
 echo "real boards, bad builds: $passed passed, $failed failed"

@@ -1,16 +1,17 @@
 /* test_firmware.c: what each emulated board sent its panel equals the host's integer
- * render, byte for byte.
+ * render, byte for byte, at each of three times.
  *
- * For every board run found in build/firmware/BOARD/ (made by `make firmware-run`,
- * which `make test` runs first): firmware.conf names the scene, the bake flags, the
- * two animation times and the dither; panel.stream is the byte stream the board
- * wrote (ST7789 commands and data, tarn_panel.h) and report.txt its report line.
- * The stream is replayed into the host panel emulator; the picture after the first
- * frame's pixels and the one at the end are compared with the host's render of the
- * same scene, quality and time (through the same backdrop for a bake with still
- * water, whose frames the host draws the same way), converted with tarn_rgb565.
- * The emulator must also have ignored nothing: no early command, no unknown
- * command, no stray data. */
+ * For every board run found in build/firmware/ (made by `make firmware-run`, which
+ * `make test` runs first): build/firmware/BOARD for a board's first scene,
+ * build/firmware/BOARD@SCENE for each of its others. firmware.conf names the scene,
+ * the bake flags, the animation times and the dither; panel.stream is the byte
+ * stream the board wrote (ST7789 commands and data, tarn_panel.h) and report.txt its
+ * report line. The stream is replayed into the host panel emulator; the picture as
+ * each frame's last pixel lands is compared with the host's render of the same
+ * scene, quality and time (through the same backdrop for a bake with still water,
+ * whose frames the host draws the same way), converted with tarn_rgb565. The
+ * emulator must also have ignored nothing: no early command, no unknown command, no
+ * stray data. */
 #include <dirent.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -32,45 +33,55 @@
 #include "tarn/tarn_panel.h"
 
 #define FIRMWARE_DIR "build/firmware"
-#define BOARDS_MAX 16
+#define RUNS_MAX 32
+#define TIMES 3
 
 typedef struct {
     char board[64];
     char scene[256];
+    char label[64];
     char bake_flags[256];
-    uint32_t times[2];
+    uint32_t times[TIMES];
     int dither;
 } firmware_conf;
 
-static void read_conf(const char *board, firmware_conf *conf)
+/* The conf of the run in FIRMWARE_DIR/run: the board named by the run's directory
+ * (BOARD, or BOARD@SCENE for the board's other scenes), and three distinct times. */
+static void read_conf(const char *run, firmware_conf *conf)
 {
     char path[512], value[64];
-    snprintf(path, sizeof path, FIRMWARE_DIR "/%s/firmware.conf", board);
+    snprintf(path, sizeof path, FIRMWARE_DIR "/%s/firmware.conf", run);
     char *text = firmware_read_file(path, NULL);
     if (text == NULL) fail_msg("%s: cannot read it", path);
     memset(conf, 0, sizeof *conf);
     firmware_conf_value(conf->board, sizeof conf->board, text, "board");
     firmware_conf_value(conf->scene, sizeof conf->scene, text, "scene");
+    firmware_conf_value(conf->label, sizeof conf->label, text, "label");
     firmware_conf_value(conf->bake_flags, sizeof conf->bake_flags, text, "bake_flags");
     firmware_conf_value(value, sizeof value, text, "times");
-    unsigned t0, t1;
-    if (sscanf(value, "%u,%u", &t0, &t1) != 2) fail_msg("%s: times: expected T0,T1, got '%s'", path, value);
-    conf->times[0] = t0;
-    conf->times[1] = t1;
+    unsigned t[TIMES];
+    char end;
+    if (sscanf(value, "%u,%u,%u%c", &t[0], &t[1], &t[2], &end) != TIMES || t[0] == t[1] || t[1] == t[2] ||
+        t[0] == t[2])
+        fail_msg("%s: times: expected three distinct times T0,T1,T2 in ms, got '%s'", path, value);
+    for (unsigned i = 0; i < TIMES; i++) conf->times[i] = t[i];
     firmware_conf_value(value, sizeof value, text, "dither");
     conf->dither = strcmp(value, "1") == 0;
     free(text);
-    if (strcmp(conf->board, board) != 0 || conf->scene[0] == '\0')
-        fail_msg("%s: expected board=%s and a scene", path, board);
+    size_t board_length = strcspn(run, "@");
+    if (strlen(conf->board) != board_length || strncmp(conf->board, run, board_length) != 0 ||
+        conf->scene[0] == '\0')
+        fail_msg("%s: expected board=%.*s and a scene", path, (int)board_length, run);
 }
 
-/* The emulator behind a transport that photographs the picture as soon as the first
+/* The emulator behind a transport that photographs the picture as soon as each
  * frame's last pixel has arrived. */
 typedef struct {
     tarn_panel_emulator emulator;
     tarn_panel_transport inner;
     uint32_t frame_pixels;
-    uint16_t *first; /* the picture after frame_pixels pixels, NULL until then */
+    uint16_t *pictures[TIMES]; /* the picture after (i + 1) * frame_pixels pixels, NULL until then */
+    unsigned taken;
     size_t picture_words;
 } recording_panel;
 
@@ -84,10 +95,11 @@ static int record_data(void *user, const uint8_t *bytes, size_t count)
 {
     recording_panel *p = user;
     int status = p->inner.data(p->inner.user, bytes, count);
-    if (p->first == NULL && p->emulator.counts.pixels_written >= p->frame_pixels) {
-        p->first = malloc(p->picture_words * sizeof *p->first);
-        assert_non_null(p->first);
-        tarn_panel_emulator_image(&p->emulator, p->first);
+    if (p->taken < TIMES && p->emulator.counts.pixels_written >= (p->taken + 1u) * p->frame_pixels) {
+        uint16_t *picture = malloc(p->picture_words * sizeof *picture);
+        assert_non_null(picture);
+        tarn_panel_emulator_image(&p->emulator, picture);
+        p->pictures[p->taken++] = picture;
     }
     return status;
 }
@@ -130,8 +142,8 @@ static size_t compare_frame(const firmware_conf *conf, const tarn_loaded_scene *
                                         conf->dither);
             uint16_t got = picture[(size_t)y * panel_width + x];
             if (want != got && differ++ < 5)
-                print_message("%s t=%u: pixel (%u, %u): board 0x%04x, host 0x%04x\n", conf->board,
-                              time_ms, x, y, got, want);
+                print_message("%s %s t=%u: pixel (%u, %u): board 0x%04x, host 0x%04x\n", conf->board,
+                              conf->label, time_ms, x, y, got, want);
         }
     free(rgb);
     return differ;
@@ -139,23 +151,24 @@ static size_t compare_frame(const firmware_conf *conf, const tarn_loaded_scene *
 
 static void test_board_matches_host(void **state)
 {
-    const char *board = *state;
+    const char *run = *state;
     char path[512];
     firmware_conf conf;
-    read_conf(board, &conf);
+    read_conf(run, &conf);
+    const char *board = conf.board;
 
-    snprintf(path, sizeof path, FIRMWARE_DIR "/%s/report.txt", board);
+    snprintf(path, sizeof path, FIRMWARE_DIR "/%s/report.txt", run);
     char *report = firmware_read_file(path, NULL);
     if (report == NULL) fail_msg("%s: no report: run make firmware-run BOARD=%s", path, board);
-    char expected[96];
-    snprintf(expected, sizeof expected, "target board=%s ", board);
-    if (strncmp(report, expected, strlen(expected)) != 0) fail_msg("%s: %s", path, report);
+    char expected[160];
+    snprintf(expected, sizeof expected, "target board=%s scene=%s ", board, conf.label);
+    if (strncmp(report, expected, strlen(expected)) != 0) fail_msg("%s: expected '%s...', got %s", path, expected, report);
     print_message("%s", report);
     free(report);
 
     char conf_path[512];
-    snprintf(conf_path, sizeof conf_path, FIRMWARE_DIR "/%s/firmware.conf", board);
-    snprintf(path, sizeof path, FIRMWARE_DIR "/%s/panel.stream", board);
+    snprintf(conf_path, sizeof conf_path, FIRMWARE_DIR "/%s/firmware.conf", run);
+    snprintf(path, sizeof path, FIRMWARE_DIR "/%s/panel.stream", run);
     if (modified(path) < modified(conf_path))
         fail_msg("%s is older than its build: run make firmware-run BOARD=%s", path, board);
 
@@ -184,9 +197,10 @@ static void test_board_matches_host(void **state)
     if (tarn_panel_stream_decode_file(path, &transport, &err) != 0) fail_msg("%s", err.message);
 
     const tarn_panel_emulator_counts *c = &panel->emulator.counts;
-    print_message("%s: %u commands, %u data bytes, %u pixels, %u ms of delays\n", board, c->commands,
+    print_message("%s: %u commands, %u data bytes, %u pixels, %u ms of delays\n", run, c->commands,
                   c->data_bytes, c->pixels_written, c->delay_ms);
-    assert_int_equal(c->pixels_written, 2u * panel->frame_pixels);
+    assert_int_equal(c->pixels_written, TIMES * panel->frame_pixels);
+    assert_int_equal(panel->taken, TIMES);
     assert_int_equal(c->pixels_outside_ram, 0);
     assert_int_equal(c->pixel_bytes_ignored, 0);
     assert_int_equal(c->data_ignored, 0);
@@ -195,24 +209,26 @@ static void test_board_matches_host(void **state)
     assert_int_equal(c->commands_too_early, 0);
     assert_true(config.width <= width);
 
-    uint16_t *last = malloc(panel->picture_words * sizeof *last);
-    assert_non_null(last);
-    tarn_panel_emulator_image(&panel->emulator, last);
-    size_t differ0 = compare_frame(&conf, &drawn, config, conf.times[0], panel->first, width);
-    size_t differ1 = compare_frame(&conf, &drawn, config, conf.times[1], last, width);
-    print_message("%s: %s %ux%u at %u ms and %u ms: %zu and %zu pixels differ from the host\n", board,
-                  conf.scene, config.width, config.height, conf.times[0], conf.times[1], differ0, differ1);
-    size_t changed = 0;
-    for (size_t i = 0; i < panel->picture_words; i++) changed += panel->first[i] != last[i];
-    print_message("%s: %zu pixels change between the two times\n", board, changed);
-    free(last);
-    free(panel->first);
+    /* Each time's picture equals the host's frame at that time: where the scene
+     * moves, the pictures differ between times as the host's do, which shows the
+     * clock reached the firmware (a scene where nothing moves, like pond-opaque,
+     * draws one picture at every time, on the board as on the host). */
+    size_t differ[TIMES], differ_total = 0;
+    for (unsigned i = 0; i < TIMES; i++) {
+        differ[i] = compare_frame(&conf, &drawn, config, conf.times[i], panel->pictures[i], width);
+        differ_total += differ[i];
+        print_message("%s: %s %ux%u at %u ms: %zu pixels differ from the host\n", run, conf.scene, config.width,
+                      config.height, conf.times[i], differ[i]);
+        if (i == 0) continue;
+        size_t changed = 0;
+        for (size_t k = 0; k < panel->picture_words; k++) changed += panel->pictures[i - 1][k] != panel->pictures[i][k];
+        print_message("%s: %zu pixels change from %u ms to %u ms\n", run, changed, conf.times[i - 1], conf.times[i]);
+    }
+    for (unsigned i = 0; i < TIMES; i++) free(panel->pictures[i]);
     free(panel);
     if (backdrop == TARN_BACKDROP_STILL) tarn_backdrop_scene_free(&still);
     tarn_scene_free(&scene);
-    assert_int_equal(differ0, 0);
-    assert_int_equal(differ1, 0);
-    assert_true(changed > 0); /* the clock reached the firmware */
+    assert_int_equal(differ_total, 0);
 }
 
 static void test_no_board_has_run(void **state)
@@ -222,8 +238,9 @@ static void test_no_board_has_run(void **state)
     skip();
 }
 
-/* Boards whose build says they run under an emulator (firmware.conf has emulated=1). */
-static size_t find_boards(char names[][64], size_t max)
+/* The runs (a directory for each board and scene) whose build says they run under an
+ * emulator (firmware.conf has emulated=1). */
+static size_t find_runs(char names[][64], size_t max)
 {
     DIR *dir = opendir(FIRMWARE_DIR);
     size_t n = 0;
@@ -248,16 +265,16 @@ static size_t find_boards(char names[][64], size_t max)
 
 int main(void)
 {
-    static char boards[BOARDS_MAX][64];
-    static char names[BOARDS_MAX][96];
+    static char runs[RUNS_MAX][64];
+    static char names[RUNS_MAX][96];
     static const char suffix[] = " matches the host";
-    static void *states[BOARDS_MAX];
-    struct CMUnitTest tests[BOARDS_MAX];
-    size_t n = find_boards(boards, BOARDS_MAX);
+    static void *states[RUNS_MAX];
+    struct CMUnitTest tests[RUNS_MAX];
+    size_t n = find_runs(runs, RUNS_MAX);
     for (size_t i = 0; i < n; i++) {
-        memcpy(names[i], boards[i], 64);
-        memcpy(names[i] + strlen(boards[i]), suffix, sizeof suffix);
-        states[i] = boards[i];
+        memcpy(names[i], runs[i], 64);
+        memcpy(names[i] + strlen(runs[i]), suffix, sizeof suffix);
+        states[i] = runs[i];
         tests[i] = (struct CMUnitTest){names[i], test_board_matches_host, NULL, NULL, states[i]};
     }
     if (n == 0) {

@@ -16,6 +16,6 @@ BOARD_STACK_BYTES := 4352
 # the flash the firmware may take besides the scene's const data (issue 4's budget;
 # tests/check_firmware.sh holds the image to it)
 BOARD_CODE_BYTES_MAX := 32768
-BOARD_SCENE := scenes/pond.json
+BOARD_SCENES := scenes/pond.json
 BOARD_BAKE_FLAGS := --quality fast --apron 12 --tile 16 --water-block 1
 include boards/common/qemu_cortex_m.mk

@@ -5,6 +5,6 @@ BOARD_DIR := boards/qemu-m3
 BOARD_CPU := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
 BOARD_QEMU_MACHINE := mps2-an385
 BOARD_STACK_BYTES := 8192
-BOARD_SCENE := scenes/pond.json
+BOARD_SCENES := scenes/pond.json
 BOARD_BAKE_FLAGS :=
 include boards/common/qemu_cortex_m.mk

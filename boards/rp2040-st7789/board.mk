@@ -9,7 +9,7 @@
 BOARD_DIR := boards/rp2040-st7789
 BOARD_CPU := -mcpu=cortex-m0plus -mthumb -mfloat-abi=soft
 BOARD_STACK_BYTES := 8192
-BOARD_SCENE := scenes/pond.json
+BOARD_SCENES := scenes/pond.json
 BOARD_BAKE_FLAGS :=
 # the second stage the bootrom loads (checksummed at build time), and the UF2 output
 BOARD_BOOT2 := boards/rp2040-st7789/boot2.S

@@ -12,6 +12,6 @@
 BOARD_DIR := boards/stm32f411-st7789
 BOARD_CPU := -mcpu=cortex-m4 -mthumb -mfloat-abi=soft
 BOARD_STACK_BYTES := 8192
-BOARD_SCENE := scenes/pond.json
+BOARD_SCENES := scenes/pond.json
 BOARD_BAKE_FLAGS :=
 include boards/common/real_board.mk

@@ -1,21 +1,21 @@
-/* qemu-rv32: QEMU sifive_e. The panel stream leaves through UART0 (QEMU: -serial
- * file:STREAM); the report goes to a host file through semihosting (word 1 of the
- * command line: -semihosting-config enable=on,target=native,arg=firmware,arg=REPORT),
- * and a semihosting exit ends the run. The counter is the minstret CSR, which QEMU
- * derives from -icount: with shift=0 it is the exact number of instructions retired
- * (mcycle reads the same value; the CLINT's mtime runs at 10 MHz of virtual time). */
+/* qemu_rv32_io.c: board.h's side for the emulated RISC-V boards (qemu-rv32 on
+ * sifive_e, qemu-rv32-400k on virt). The panel stream leaves through the machine's
+ * UART (QEMU: -serial file:STREAM), through the board's own uart.h; the report goes
+ * to a host file through semihosting (word 1 of the command line:
+ * -semihosting-config enable=on,target=native,arg=firmware,arg=REPORT), and a
+ * semihosting exit ends the run. The counter is the minstret CSR, which QEMU derives
+ * from -icount on every machine: with shift=0 it is the exact number of
+ * instructions retired (mcycle reads the same value; the CLINT's mtime runs at
+ * 10 MHz of virtual time). */
 #include "board.h"
 #include "semihosting.h"
-
-#define UART0_TXDATA (*(volatile uint32_t *)0x10013000u)
-#define UART0_TXCTRL (*(volatile uint32_t *)0x10013008u)
-#define UART_TX_FULL 0x80000000u
+#include "uart.h"
 
 static int32_t report = -1;
 
 int board_init(void)
 {
-    UART0_TXCTRL = 1u; /* txen, one stop bit */
+    uart_init();
     char cmdline[256];
     const char *words[2] = {"firmware", "report.txt"};
     (void)semihosting_words(cmdline, sizeof cmdline, words, 2);
@@ -33,9 +33,9 @@ int board_write(const void *bytes, size_t count)
     const uint8_t *p = bytes;
     for (size_t i = 0; i < count; i++) {
         uint32_t polls = 0;
-        while (UART0_TXDATA & UART_TX_FULL)
+        while (uart_tx_full())
             if (++polls == UART_FULL_POLLS_MAX) return -1;
-        UART0_TXDATA = p[i];
+        uart_tx(p[i]);
     }
     return 0;
 }

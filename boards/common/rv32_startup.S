@@ -1,6 +1,7 @@
-/* startup.S: reset for qemu-rv32. Stack pointer and global pointer, a trap vector
- * that ends the run, the stack painted for the high-water mark, .data copied,
- * .bss zeroed, then main() and board_exit() with its result. */
+/* rv32_startup.S: reset for the emulated RISC-V boards (qemu-rv32, qemu-rv32-400k).
+ * Stack pointer and global pointer, a trap vector that ends the run, the stack
+ * painted for the high-water mark, .data copied, .bss zeroed, then main() and
+ * board_exit() with its result. rv32_sections.ld provides the symbols. */
 #include "stack_paint.h"
 
     .section .text.start, "ax"
