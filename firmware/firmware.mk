@@ -23,7 +23,9 @@
 # size-, stack- and float-checked by firmware-check) but never run here.
 #
 # A board's scenes are BOARD_SCENES in its board.mk, each baked with its
-# BOARD_BAKE_FLAGS into a build of its own: the first in build/firmware/BOARD (the
+# BOARD_BAKE_FLAGS (or the scene's own, BOARD_BAKE_FLAGS.NAME, and held to
+# BOARD_CODE_BYTES_MAX.NAME instead of BOARD_CODE_BYTES_MAX where the board gives
+# them) into a build of its own: the first in build/firmware/BOARD (the
 # board's own build: profile-target, firmware-sweep), every other one in
 # build/firmware/BOARD@NAME (NAME: the scene file's name without .json).
 # make firmware, firmware-run, bench-target and firmware-check of a board do each
@@ -110,8 +112,11 @@ FW_EACH_SCENE := $(if $(SCENE)$(FW_BUILD_DIR)$(filter-out file,$(origin FW_BOARD
 FW_DIR := $(if $(FW_BUILD_DIR),$(FW_BUILD_DIR),$(if $(filter sweep,$(FW_MAIN)),build/firmware-sweep/$(BOARD),$(if \
 	$(SCENE),build/firmware/$(BOARD),$(call fw_scene_dir,$(FW_BOARD_SCENE)))))
 FW_SCENE := $(if $(SCENE),$(SCENE),$(FW_BOARD_SCENE))
-FW_BAKE_FLAGS := $(if $(SCENE),$(BAKE_FLAGS),$(if $(BAKE_FLAGS),$(BAKE_FLAGS),$(BOARD_BAKE_FLAGS)))
 FW_SCENE_LABEL := $(basename $(notdir $(FW_SCENE)))
+# a scene's own flags and code budget, where the board gives them
+fw_scene_value = $(if $(filter undefined,$(origin $(1).$(FW_SCENE_LABEL))),$($(1)),$($(1).$(FW_SCENE_LABEL)))
+FW_BAKE_FLAGS := $(if $(SCENE),$(BAKE_FLAGS),$(if $(BAKE_FLAGS),$(BAKE_FLAGS),$(call fw_scene_value,BOARD_BAKE_FLAGS)))
+FW_CODE_BYTES_MAX := $(call fw_scene_value,BOARD_CODE_BYTES_MAX)
 # the sweep's points: baked with the scene (host/bake/bake_points.h)
 FW_POINTS_FLAGS := $(if $(filter sweep,$(FW_MAIN)),--points $(POINTS))
 FW_ELF := $(FW_DIR)/firmware.elf
@@ -208,7 +213,7 @@ $(FW_DIR)/firmware.conf: $(FW_BOARD_MK) firmware/firmware.mk FORCE
 	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
 		"bake_flags=$(FW_BAKE_FLAGS)" "times=$(FW_TIMES)" "dither=1" "cross=$(FW_CROSS)" \
 		"stack_bytes=$(BOARD_STACK_BYTES)" "stack_entry=$(BOARD_STACK_ENTRY)" "emulated=$(if $(value BOARD_RUN),1,0)" \
-		"code_bytes_max=$(BOARD_CODE_BYTES_MAX)" "program=$(FW_MAIN)" "points=$(POINTS)" > $@.tmp
+		"code_bytes_max=$(FW_CODE_BYTES_MAX)" "program=$(FW_MAIN)" "points=$(POINTS)" > $@.tmp
 	@if cmp -s $@.tmp $@; then rm $@.tmp; else mv $@.tmp $@; fi
 
 .PHONY: FORCE fw-toolchain fw-qemu
@@ -246,7 +251,7 @@ $(FW_MAIN_OBJ): $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
 $(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"' -DFW_TIMES=$(FW_TIMES)
 $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-distribute-patterns -fno-strict-aliasing
 # Code that runs once a frame, or once a water object a tile (the scene check and the
-# backdrop's, the view and water setup, the presets, the report), is compiled for
+# backdrop's, the motion, the view and water setup, the camera's unit vectors, the presets, the report), is compiled for
 # size (on top of the scene_link.h switches): it is far below 0.1% of the
 # instructions, and -Os takes about 700 bytes off the M0's 32 KB. On a board with a
 # code budget (BOARD_CODE_BYTES_MAX) so are the tile loop (core/frame/frame.c), once a
@@ -255,7 +260,7 @@ $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-d
 # -Os takes about 1,240 bytes more off for 4 instructions a pixel of the M0's pond;
 # and the triangle setup (core/raster/triangle_setup.c), where -Os took 520 bytes
 # and 6 instructions a pixel off, and 48 bytes off the deepest stack.
-FW_SIZE_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,$(basename $(wildcard core/scene/*.c)) core/geometry/view \
+FW_SIZE_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,$(basename $(wildcard core/scene/*.c)) core/geometry/view core/math/normalise \
 	core/water/water_setup core/water/underwater_setup core/frame/layout core/frame/status firmware/report \
 	$(if $(BOARD_CODE_BYTES_MAX),core/frame/frame core/geometry/vertex core/geometry/clip core/geometry/project core/raster/triangle_setup))
 $(FW_SIZE_OBJ): FW_DEFINES += -Os

@@ -3,7 +3,7 @@
 # (make firmware-check runs it after check_firmware.sh; tests/test_real_boards.c
 # checks the images that do build).
 #
-# - A scene too large for the board's RAM: the STM32F411 (128 KB) and the pond at
+# - A scene too large for the board's RAM: the STM32F411 (128 KB) and its moving pond at
 #   --tile 64, whose renderer alone needs 163,840 bytes as baked (tarn memory). The link must fail, say by
 #   how many bytes RAM overflowed and what to change, and leave no firmware.elf.
 # - A stack reserve smaller than the deepest call chain (firmware/stack_bound.sh):
@@ -26,11 +26,12 @@ pass() { passed=$((passed + 1)); }
 fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
 
 rm -rf "$dir"
-needs=$(build/release/tarn memory scenes/pond.json --tile 64 | sed -n 's/.* baked_bytes=\([0-9]*\)$/\1/p')
+scene=scenes/pond-orbit.json # the board's own (BOARD_SCENES)
+needs=$(build/release/tarn memory $scene --tile 64 | sed -n 's/.* baked_bytes=\([0-9]*\)$/\1/p')
 out=$(make --no-print-directory firmware BOARD=$board FW_DIR=$dir BAKE_FLAGS="--tile 64" 2>&1)
 status=$?
 overflow=$(printf '%s\n' "$out" | grep -E "region .RAM. overflowed by [0-9]+ bytes" | head -1)
-note=$(printf '%s\n' "$out" | grep -E "^tarn: $board has too little RAM for scenes/pond.json \[--tile 64\]: the renderer needs $needs bytes and the stack 8192; bake with a smaller --tile" | head -1)
+note=$(printf '%s\n' "$out" | grep -E "^tarn: $board has too little RAM for $scene \[--tile 64\]: the renderer needs $needs bytes and the stack 8192; bake with a smaller --tile" | head -1)
 if [ $status -ne 0 ] && [ -n "$overflow" ] && [ -n "$note" ] && [ ! -e "$dir/firmware.elf" ]; then
     pass
     echo "$board, pond --tile 64: ${overflow##*: }"

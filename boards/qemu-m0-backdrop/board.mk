@@ -7,3 +7,5 @@
 # the cost of the opaque pass (docs/firmware.md).
 include boards/qemu-m0/board.mk
 BOARD_BAKE_FLAGS := --quality fast --backdrop on
+# a backdrop is one frame's picture: the still pond only (a moving scene's bake is refused)
+BOARD_SCENES := scenes/pond.json

@@ -14,3 +14,5 @@
 # the pond 1.2 dB nearer the reference (docs/firmware.md, "Still water").
 include boards/qemu-m0/board.mk
 BOARD_BAKE_FLAGS := --quality fast --backdrop still --water-block 4 --apron on --perspective pixel --depth 32
+# a backdrop is one frame's picture: the still pond only (a moving scene's bake is refused)
+BOARD_SCENES := scenes/pond.json

@@ -16,6 +16,13 @@ BOARD_STACK_BYTES := 4352
 # the flash the firmware may take besides the scene's const data (issue 4's budget;
 # tests/check_firmware.sh holds the image to it)
 BOARD_CODE_BYTES_MAX := 32768
-BOARD_SCENES := scenes/pond.json
+BOARD_SCENES := scenes/pond.json scenes/pond-orbit.json
 BOARD_BAKE_FLAGS := --quality fast --apron 12 --tile 16 --water-block 1
+# The moving pond: each frame poses the scene and transforms, lights and projects
+# every vertex, and finds the clusters' bins (4 bytes each) in RAM, which a static
+# view spares. What fits 16 KB beside them is an 8-pixel apron. Its image links the
+# vertex pipeline, the bins and the motion a static view leaves out, so its code is
+# held to 40 KB instead of the 32 KB above (docs/firmware.md gives the figures).
+BOARD_BAKE_FLAGS.pond-orbit := --quality fast --apron 8 --tile 16 --water-block 1
+BOARD_CODE_BYTES_MAX.pond-orbit := 40960
 include boards/common/qemu_cortex_m.mk

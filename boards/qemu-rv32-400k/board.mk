@@ -1,12 +1,9 @@
 # qemu-rv32-400k: rv32imc code on QEMU's riscv32 virt, held by its link.ld to the
-# ESP32-C3's 4 MB of flash and 400 KB of RAM. It renders as qemu-m0-264k does, at
-# the exact preset in 64-pixel tiles, the largest the core takes (the RAM would hold
-# more, the core takes no larger tile): 163,840 bytes of renderer memory, 172,208 of
-# the 409,600 bytes of RAM with the 8 KB stack; exact costs about 6% more than
-# balanced here (3390 instructions a pixel against 3212) for 62.12 dB panel PSNR
-# instead of 59.56. The stack's bound is 4.1 KB.
-# Variables read by firmware/firmware.mk; the rest, as for every emulated RISC-V
-# board, from boards/common/qemu_rv32.mk.
+# ESP32-C3's 4 MB of flash and 400 KB of RAM. It renders as qemu-m0-264k does: the
+# moving pond and the same scene without its water, at the exact preset in 64-pixel
+# tiles, the largest the core takes (the RAM would hold more). Variables read by
+# firmware/firmware.mk; the rest, as for every emulated RISC-V board, from
+# boards/common/qemu_rv32.mk.
 BOARD_DIR := boards/qemu-rv32-400k
 BOARD_CPU := -march=rv32imc_zicsr -mabi=ilp32 -mcmodel=medany
 BOARD_QEMU_MACHINE := virt
@@ -16,6 +13,6 @@ BOARD_STACK_BYTES := 8192
 # the scenes make bench-target measures, a line each; the first is the board's own
 # build (build/firmware/qemu-rv32-400k), each other one builds in
 # build/firmware/qemu-rv32-400k@NAME
-BOARD_SCENES := scenes/pond.json scenes/pond-opaque.json
+BOARD_SCENES := scenes/pond-orbit.json scenes/pond-opaque.json
 BOARD_BAKE_FLAGS := --quality exact --tile 64
 include boards/common/qemu_rv32.mk

@@ -9,6 +9,9 @@ BOARD_DIR := boards/qemu-rv32
 BOARD_CPU := -march=rv32imac_zicsr -mabi=ilp32 -mcmodel=medany
 BOARD_QEMU_MACHINE := sifive_e
 BOARD_STACK_BYTES := 4224
-BOARD_SCENES := scenes/pond.json
+BOARD_SCENES := scenes/pond.json scenes/pond-orbit.json
 BOARD_BAKE_FLAGS := --quality fast
+# the moving pond finds its clusters' bins in RAM and poses its objects there:
+# beside them fits qemu-m0's quality for it, refraction with an 8-pixel apron
+BOARD_BAKE_FLAGS.pond-orbit := --quality fast --apron 8 --tile 16 --water-block 1
 include boards/common/qemu_rv32.mk

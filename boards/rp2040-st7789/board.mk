@@ -1,15 +1,16 @@
 # rp2040-st7789: a real board, built and checked here but not run (no BOARD_RUN).
 # RP2040 (Cortex-M0+ at 125 MHz, 264 KB SRAM, the Pico's 2 MB QSPI flash) with an
 # ST7789 240x240 on SPI0, fed by DMA channel 0 while the next tile renders. The
-# output to flash is firmware.uf2 (hold BOOTSEL, copy it). It renders the full pond
-# at the default quality: 81,920 bytes of renderer memory, two 8,192-byte tile
+# output to flash is firmware.uf2 (hold BOOTSEL, copy it). It renders the moving pond
+# (the camera circling, each frame at the board's millisecond clock) at the default
+# quality: its renderer memory, two 8,192-byte tile
 # buffers and an 8 KB stack in 256 KB (README.md gives the figures). Variables read
 # by firmware/firmware.mk; the rest, as for every real board, from
 # boards/common/real_board.mk.
 BOARD_DIR := boards/rp2040-st7789
 BOARD_CPU := -mcpu=cortex-m0plus -mthumb -mfloat-abi=soft
 BOARD_STACK_BYTES := 8192
-BOARD_SCENES := scenes/pond.json
+BOARD_SCENES := scenes/pond-orbit.json
 BOARD_BAKE_FLAGS :=
 # the second stage the bootrom loads (checksummed at build time), and the UF2 output
 BOARD_BOOT2 := boards/rp2040-st7789/boot2.S

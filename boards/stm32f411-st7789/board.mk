@@ -1,7 +1,8 @@
 # stm32f411-st7789: a real board, built and checked here but not run (no BOARD_RUN).
 # STM32F411 (Cortex-M4 at 100 MHz, 512 KB flash, 128 KB RAM) with an ST7789 240x240
-# on SPI1, fed by DMA2 while the next tile renders. It renders the full pond at the
-# default quality: 81,920 bytes of renderer memory, two 8,192-byte tile buffers and
+# on SPI1, fed by DMA2 while the next tile renders. It renders the moving pond (the
+# camera circling, each frame at the board's millisecond clock) at the
+# default quality: its renderer memory, two 8,192-byte tile buffers and
 # an 8 KB stack in the 128 KB (README.md gives the figures). Variables read by
 # firmware/firmware.mk; the rest, as for every real board, from
 # boards/common/real_board.mk.
@@ -12,6 +13,6 @@
 BOARD_DIR := boards/stm32f411-st7789
 BOARD_CPU := -mcpu=cortex-m4 -mthumb -mfloat-abi=soft
 BOARD_STACK_BYTES := 8192
-BOARD_SCENES := scenes/pond.json
+BOARD_SCENES := scenes/pond-orbit.json
 BOARD_BAKE_FLAGS :=
 include boards/common/real_board.mk

@@ -1,5 +1,4 @@
-/* sqrt.c: integer square root and reciprocal square root, without a divider, and
- * the unit vector along a vector. */
+/* sqrt.c: integer square root and reciprocal square root, without a divider. */
 #include "tarn/tarn_math.h"
 #include "math/math_tables_internal.h"
 
@@ -69,36 +68,4 @@ uint32_t tarn_rsqrt_q16(uint32_t x_q16)
 
     unsigned shift = 22u - (even_lz >> 1); /* 7..22: from Q2.30 to the result */
     return (y + (1u << (shift - 1u))) >> shift;
-}
-
-static int64_t largest_magnitude(const int64_t c[3])
-{
-    int64_t largest = 0;
-    for (int i = 0; i < 3; i++) {
-        const int64_t magnitude = c[i] < 0 ? -c[i] : c[i];
-        if (magnitude > largest) largest = magnitude;
-    }
-    return largest;
-}
-
-int tarn_normalise_q30(const int64_t v[3], int32_t out[3])
-{
-    int64_t c[3] = {v[0], v[1], v[2]};
-    int64_t largest = largest_magnitude(c);
-    if (largest == 0) return 0;
-    /* A power of two brings the largest component into [2^16, 2^31): below 2^31 the
-     * squares and their sum fit 64 bits, and from 2^16 the integer square root is
-     * good to 2^-16. (The root of (1, 0, 1)'s 2 is 1, which made a vector of length
-     * 1.41: found by fuzz_core, through a camera a hair from its target.) */
-    for (; largest >= ((int64_t)1 << 31); largest /= 2)
-        for (int i = 0; i < 3; i++) c[i] /= 2;
-    for (; largest < ((int64_t)1 << 16); largest *= 2)
-        for (int i = 0; i < 3; i++) c[i] *= 2;
-    uint64_t sum = 0;
-    for (int i = 0; i < 3; i++) sum += (uint64_t)(c[i] * c[i]);
-    int64_t length = (int64_t)tarn_isqrt_u64(sum); /* from 2^16 to below 2^32 */
-    const tarn_divisor divisor = tarn_divisor_of((uint32_t)length);
-    for (int i = 0; i < 3; i++)
-        out[i] = (int32_t)tarn_divide_trunc_i64(c[i] * ((int64_t)1 << 30), &divisor);
-    return 1;
 }

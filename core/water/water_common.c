@@ -86,10 +86,3 @@ tarn_water_sample tarn__water_background(const tarn_water_context *w, int32_t i,
     tarn_water_sample s = {i, j, tarn__water_depth_of(w, tarn__water_background_q30(w, i, j))};
     return s;
 }
-
-tarn_water_sample tarn__water_moved_background(const tarn_water_context *w, int32_t i, int32_t j)
-{
-    if (!TARN_LINK_BACKDROP || w->flash == NULL) return tarn__water_background(w, i, j);
-    tarn_water_sample s = {i, j, tarn__water_depth_of(w, tarn__backdrop_depth_q30(w->flash, i, j))};
-    return s;
-}

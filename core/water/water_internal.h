@@ -266,7 +266,12 @@ typedef struct {
 tarn_water_sample tarn__water_background(const tarn_water_context *w, int32_t i, int32_t j);
 /* The same where a refracted sample lands: from the backdrop in flash if the
  * context has one (w->flash), else from the tile's buffers. */
-tarn_water_sample tarn__water_moved_background(const tarn_water_context *w, int32_t i, int32_t j);
+static inline tarn_water_sample tarn__water_moved_background(const tarn_water_context *w, int32_t i, int32_t j)
+{
+    if (!TARN_LINK_BACKDROP || w->flash == NULL) return tarn__water_background(w, i, j);
+    tarn_water_sample s = {i, j, tarn__water_depth_of(w, tarn__backdrop_depth_q30(w->flash, i, j))};
+    return s;
+}
 
 /* The surface normal N, or before tarn__water_normalise its direction: normalising
  * takes a reciprocal square root, which a pixel whose highlight cannot show (most
