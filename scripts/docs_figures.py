@@ -46,7 +46,9 @@ import zlib
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TARN = os.environ.get("TARN_BIN", "build/release/tarn")
 OUT = "build/figures"
-DOCS = ["README.md"] + sorted("docs/" + f for f in os.listdir(os.path.join(ROOT, "docs")) if f.endswith(".md"))
+DOCS = ["README.md"] + sorted("docs/" + f for f in os.listdir(os.path.join(ROOT, "docs")) if f.endswith(".md")) + \
+    sorted("boards/%s/README.md" % b for b in os.listdir(os.path.join(ROOT, "boards"))
+           if os.path.exists(os.path.join(ROOT, "boards", b, "README.md")))
 
 # a block may be indented (inside a list item): its lines all are, by its marker's indent
 BLOCK_RE = re.compile(r"^([ \t]*)<!-- figures:([\w.-]+) -->\n(.*?)^[ \t]*<!-- /figures -->", re.S | re.M)
@@ -310,6 +312,13 @@ class Measurer:
     def memory(self, scene, args=""):
         return self._get(("memory", scene, args))
 
+    def build(self, board):
+        """A board's own build, as tests/check_firmware.sh sizes it without running it
+        (the real boards): text, data, bss, flash_bytes, ram_bytes, scene_bytes,
+        code_bytes, stack_bytes (the static bound), memory_bytes (its scene's, as
+        baked), and uf2_bytes where the build makes a UF2 file."""
+        return self._get(("build", board))
+
     def bake(self, scene, args=""):
         """tarn bake's line (const_bytes, memory_bytes), its header's byte table
         (bytes.mesh ...), and each array's element count (count.SYMBOL)."""
@@ -334,10 +343,10 @@ class Measurer:
         for r in pending:
             if r[0] == "sweep_cost":
                 sweeps.setdefault(r[1], []).append(r[2])
-        phases = [[r for r in pending if r[0] == "bench"],
+        phases = [[r for r in pending if r[0] in ("bench", "build")],
                   [("sweep_batch", scene, tuple(args)) for scene, args in sweeps.items()] +
                   [r for r in pending if r[0] in ("host", "output")]]
-        quick = [r for r in pending if r[0] not in ("bench", "host", "output", "sweep_cost")]
+        quick = [r for r in pending if r[0] not in ("bench", "build", "host", "output", "sweep_cost")]
         with concurrent.futures.ThreadPoolExecutor(2) as pool:
             for k, jobs in enumerate(phases):
                 futures = {pool.submit(self._measure, j): j for j in jobs}
@@ -452,6 +461,28 @@ class Measurer:
             else:
                 values[k] = exact(v)
         return values
+
+    def _m_build(self, board):
+        run(["make", "--no-print-directory", "-s", "firmware", "BOARD=" + board])
+        fw_dir = os.path.join("build/firmware", board)
+        with open(os.path.join(ROOT, fw_dir, "firmware.conf")) as f:
+            conf = dict(line.rstrip("\n").split("=", 1) for line in f if "=" in line)
+        elf = os.path.join(fw_dir, "firmware.elf")
+        text, data, bss = map(int, run([conf["cross"] + "size", elf]).splitlines()[1].split()[:3])
+        scene = sum(int(parts[1], 16) for parts in (ln.split() for ln in run([conf["cross"] + "nm", "-S",
+                                                                                 "--defined-only", elf]).splitlines())
+                    if len(parts) == 4 and parts[3].startswith("scene_") and parts[2] in "rRtT")
+        bound = run(["firmware/stack_bound.sh", conf["cross"], os.path.join(fw_dir, "obj")] +
+                    conf["stack_entry"].split())
+        with open(os.path.join(ROOT, fw_dir, "scene.h")) as f:
+            memory = re.search(r"^#define SCENE_MEMORY_BYTES (\d+)", f.read(), re.M).group(1)
+        values = {"text": text, "data": data, "bss": bss, "flash_bytes": text + data, "ram_bytes": data + bss,
+                  "scene_bytes": scene, "code_bytes": text + data - scene,
+                  "stack_bytes": int(fields(bound.splitlines()[0])["stack_bytes"]), "memory_bytes": int(memory)}
+        uf2 = os.path.join(ROOT, fw_dir, "firmware.uf2")
+        if os.path.exists(uf2):
+            values["uf2_bytes"] = os.path.getsize(uf2)
+        return {k: exact(str(v)) for k, v in values.items()}
 
     def _m_memory(self, scene, args):
         line = run([TARN, "memory", scene_path(scene)] + shlex.split(args)).strip().splitlines()[-1]

@@ -103,7 +103,7 @@ def board_mk_value(board, name):
     value = None
     with open(os.path.join(ROOT, "boards/%s/board.mk" % board)) as f:
         for line in f:
-            found = re.match(r"^%s\s*:?=\s*(.*)$" % name, line)
+            found = re.match(r"^%s\s*:?=\s*(.*)$" % re.escape(name), line)
             included = re.match(r"^include boards/([\w-]+)/board\.mk$", line)
             if found:
                 value = found.group(1).strip()
@@ -146,6 +146,22 @@ def link_length(board, region):
             return Fig("1", 1.0)
         return exact(int(v.text[:-1]) * 1024)
     return fn
+
+
+# The real boards: their own build, sized as tests/check_firmware.sh sizes it (they
+# do not run here), in their README.
+REAL_BOARDS = ("rp2040-st7789", "stm32f411-st7789")
+for _b in REAL_BOARDS:
+    for _f in ("text", "data", "bss", "flash_bytes", "ram_bytes", "scene_bytes", "code_bytes", "stack_bytes",
+               "memory_bytes"):
+        KEYS["real.%s.%s" % (_b, _f)] = (lambda b, f: lambda m: comma(m.build(b)[f]))(_b, _f)
+    for _r in ("FLASH", "RAM"):
+        KEYS["limit.%s.%s" % (_b, _r.lower())] = (lambda f: lambda m: comma(f(m)))(link_length(_b, _r))
+    KEYS["real.%s.ram_left" % _b] = (lambda b: lambda m: Fig("1", 1.0) if m.recording else comma(exact(
+        link_length(b, "RAM")(m).num - m.build(b)["ram_bytes"].num)))(_b)
+KEYS["real.rp2040-st7789.uf2_bytes"] = lambda m: comma(m.build("rp2040-st7789")["uf2_bytes"])
+KEYS["real.rp2040-st7789.uf2_blocks"] = lambda m: Fig("1", 1.0) if m.recording else exact(
+    m.build("rp2040-st7789")["uf2_bytes"].num // 512)
 
 
 KEYS["limit.qemu-m0.flash_bytes"] = link_length("qemu-m0", "FLASH")
@@ -807,13 +823,18 @@ def fw_report_example(m):
                       [" counter_check=", r["counter_check"], "/", r["counter_check_loop"], "\n"])
 
 
-def board_bake_flags(board):
-    """The flags a board bakes its scenes with, read from its board.mk."""
-    return board_mk_value(board, "BOARD_BAKE_FLAGS") or "the default: balanced"
+def board_bake_flags(board, scene=None):
+    """The flags a board bakes a scene with, read from its board.mk: the scene's own
+    (BOARD_BAKE_FLAGS.NAME) where it gives them."""
+    own = board_mk_value(board, "BOARD_BAKE_FLAGS.%s" % scene) if scene else None
+    return own or board_mk_value(board, "BOARD_BAKE_FLAGS") or "the default: balanced"
 
 
-BOARD_ROWS = [(b, s, "%s 240x240, %s" % (s, "`%s`" % board_bake_flags(b) if board_bake_flags(b)[0] == "-" else
-                                         board_bake_flags(b)))
+def quoted_flags(flags):
+    return "`%s`" % flags if flags[0] == "-" else flags
+
+
+BOARD_ROWS = [(b, s, "%s 240x240, %s" % (s, quoted_flags(board_bake_flags(b, s))))
               for b in BOARDS for s in board_scenes(b)]
 
 
