@@ -29,9 +29,12 @@ file_edges() {
         END {for (k = 1; k <= n; k++) if ((sym[k] in def) && def[sym[k]] != file[k]) print file[k], def[sym[k]]}' | sort -u
 }
 
-# Fails naming the circle when the pairs on stdin hold one.
-no_circle() { # WHAT
-    loop=$(tsort 2>&1 >/dev/null | sed -n 's/^tsort: //p' | grep -v 'input contains a loop' | tr '\n' ' ')
+# Fails naming the circle when the pairs ("caller callee" lines) hold one. Takes
+# them as an argument, not from a pipe: a function at a pipe's end runs in a
+# subshell, where fail's status would be lost.
+no_circle() { # WHAT PAIRS
+    loop=$(printf '%s\n' "$2" | grep . | tsort 2>&1 >/dev/null | sed -n 's/^tsort: //p' |
+        grep -v 'input contains a loop' | tr '\n' ' ')
     if [ -n "$loop" ]; then fail "$1 call each other in a circle: $loop"; return; fi
     echo "ok: no circle of $1"
 }
@@ -40,10 +43,10 @@ no_circle() { # WHAT
 
 core=$(file_edges core)
 host=$(file_edges host)
-printf '%s\n' "$core" | grep . | no_circle "core/ files"
-printf '%s\n' "$host" | grep . | no_circle "host/ files"
-printf '%s\n' "$host" | awk '{split($1, a, "/"); split($2, b, "/"); if (a[2] != b[2]) print a[2], b[2]}' | sort -u |
-    grep . | no_circle "host/ folders"
+no_circle "core/ files" "$core"
+no_circle "host/ files" "$host"
+no_circle "host/ folders" "$(printf '%s\n' "$host" |
+    awk '{split($1, a, "/"); split($2, b, "/"); if (a[2] != b[2]) print a[2], b[2]}' | sort -u)"
 
 stage_of() { # core/FOLDER/file -> the folder's place in the order, 0 when it is none
     folder=$(echo "$1" | cut -d/ -f2)

@@ -151,3 +151,10 @@ tarn_status tarn__scene_check_reach(const tarn_scene *scene, const tarn_frame_co
     return TARN_OK;
 }
 
+tarn_status tarn_scene_pose(const tarn_scene *scene, uint32_t time_ms, tarn_scene *posed, tarn_object *objects)
+{
+    const tarn_status status = tarn__scene_check(scene);
+    if (status != TARN_OK) return status;
+    tarn__scene_pose(scene, time_ms, posed, scene->object_count > 0u ? objects : NULL);
+    return TARN_OK;
+}
