@@ -90,11 +90,13 @@ void tarn__water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, c
  * an offset: blocks share no refracted effects. */
 static uint32_t moved_background(const tarn_water_context *w, const tarn_water_effects *e, int32_t i, int32_t j)
 {
-    if (TARN_LINK_APRON && (e->offset[0] | e->offset[1]) != 0) {
+    if (TARN_LINK_APRON) {
+        /* over a backdrop a moved sample is read from its picture; the pixel's own
+         * from the tile (a build without backdrops asks nothing more a pixel) */
+        if (TARN_LINK_BACKDROP && w->flash != NULL && (e->offset[0] | e->offset[1]) != 0)
+            return tarn__backdrop_colour_at(w->flash, (uint16_t)w->sample_rect.x1, i + e->offset[0], j + e->offset[1]);
         i += e->offset[0];
         j += e->offset[1];
-        if (TARN_LINK_BACKDROP && w->flash != NULL)
-            return tarn__backdrop_colour_at(w->flash, (uint16_t)w->sample_rect.x1, i, j);
     }
     return w->background[tarn__water_background_offset(w, i, j)];
 }
