@@ -27,7 +27,7 @@
  * panel that came loose, short enough not to be noticed otherwise. */
 #define RETRY_DELAY_MS 500u
 
-#define TILE_BUFFER_BYTES (2u * TARN_TILE_SIZE_MAX * TARN_TILE_SIZE_MAX)
+#define TILE_BUFFER_BYTES (2u * SCENE_PIECE_WIDTH * SCENE_PIECE_ROWS)
 
 /* The renderer's working memory, and the two tile buffers the DMA sends from. */
 static uint32_t memory[(SCENE_MEMORY_BYTES + 3u) / 4u];

@@ -38,8 +38,11 @@
 
 /* The renderer's working memory: the only large buffer. */
 static uint32_t memory[(SCENE_MEMORY_BYTES + 3u) / 4u];
-/* One tile row in RGB565: the panel stream needs no more. */
-static uint8_t line[2u * TARN_TILE_SIZE_MAX];
+/* A row of the widest piece (tile or strip) in RGB565, and at least 64 pixels: the
+ * panel stream needs no more, and sends as many rows of a narrow tile as fit in one
+ * write. */
+#define LINE_PIXELS (SCENE_PIECE_WIDTH > TARN_TILE_SIZE_MAX ? SCENE_PIECE_WIDTH : TARN_TILE_SIZE_MAX)
+static uint8_t line[2u * LINE_PIXELS];
 
 static int drop_tile(void *user, const tarn_tile *tile)
 {

@@ -38,9 +38,10 @@
 
 /* The renderer's working memory: the only large buffer. */
 static uint32_t memory[(SCENE_MEMORY_BYTES + 3u) / 4u];
-/* One tile row in RGB565, as the panel path converts it. Not static: nothing here
- * reads it, and the conversions' stores must not be optimised away. */
-uint8_t sweep_line[2u * TARN_TILE_SIZE_MAX];
+/* One row of the widest piece (tile or strip) in RGB565, as the panel path converts
+ * it. Not static: nothing here reads it, and the conversions' stores must not be
+ * optimised away. */
+uint8_t sweep_line[2u * SCENE_PIECE_WIDTH];
 
 typedef struct {
     uint32_t checksum;

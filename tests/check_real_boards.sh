@@ -27,7 +27,7 @@ fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
 
 rm -rf "$dir"
 scene=scenes/pond-orbit.json # the board's own (BOARD_SCENES)
-needs=$(build/release/tarn memory $scene --tile 64 | sed -n 's/.* baked_bytes=\([0-9]*\)$/\1/p')
+needs=$(build/release/tarn memory $scene --tile 64 | sed -n 's/.* baked_bytes=\([0-9]*\) .*/\1/p')
 out=$(make --no-print-directory firmware BOARD=$board FW_DIR=$dir BAKE_FLAGS="--tile 64" 2>&1)
 status=$?
 overflow=$(printf '%s\n' "$out" | grep -E "region .RAM. overflowed by [0-9]+ bytes" | head -1)

@@ -4,10 +4,13 @@
 # camera circling, the balls bobbing; each frame poses the scene, nothing frozen)
 # and the same scene without its water, at the exact preset (core/scene/presets.c:
 # refraction with the full apron, 32-bit depth, per-pixel perspective, the finest
-# tables) in 64-pixel tiles, the largest the core takes: the apron each tile draws
-# around itself is then the smallest share of it, for the same image. Exact rather
-# than balanced: a few percent more instructions for a few dB of panel PSNR
-# (docs/firmware.md gives the figures). The 8 KB stack holds the 4.4 KB bound with
+# tables) in strips of the whole width (--frame strips): each strip's opaque pass
+# is drawn once into a ring deep enough for the water's refracted samples, where
+# 64-pixel tiles drew about four times the frame's opaque pixels for their aprons;
+# the same image. 16-row strips keep the ring (five strips, 32 pixels of apron
+# above and below) and the water's strip within 200 KB. Exact rather than balanced:
+# a few percent more instructions for a few dB of panel PSNR (docs/firmware.md
+# gives the figures). The 8 KB stack holds the 4.6 KB bound with
 # room to spare. Variables read by firmware/firmware.mk; the rest, as for every
 # emulated Cortex-M board, from boards/common/qemu_cortex_m.mk.
 BOARD_DIR := boards/qemu-m0-264k
@@ -18,5 +21,8 @@ BOARD_STACK_BYTES := 8192
 # build (build/firmware/qemu-m0-264k), each other one builds in
 # build/firmware/qemu-m0-264k@NAME
 BOARD_SCENES := scenes/pond-orbit.json scenes/pond-opaque.json
-BOARD_BAKE_FLAGS := --quality exact --tile 64
+BOARD_BAKE_FLAGS := --quality exact --frame strips --tile 16
+# without water nothing refracts: one strip is the ring, and taller strips cut
+# fewer triangles in two
+BOARD_BAKE_FLAGS.pond-opaque := --quality exact --frame strips --tile 64
 include boards/common/qemu_cortex_m.mk

@@ -1,5 +1,5 @@
-/* frame.c: tarn_render_frame, the tile loop that runs every other stage, and
- * tarn_visit_screen_triangles. */
+/* frame.c: tarn_render_frame, the tile or strip loop that runs every other stage,
+ * and tarn_visit_screen_triangles. */
 #include "frame/frame_internal.h"
 
 #include <string.h>
@@ -33,12 +33,16 @@ static void copy_pixels(const tarn_tile_target *from, const tarn_tile_target *to
     }
 }
 
+
+/* A frame being drawn: what every pass reads, and the targets they draw into. */
 typedef struct {
     const tarn_scene *scene;
     const tarn_frame_config *config;
     const tarn_view *view;
     tarn_frame_layout layout;
-    tarn_tile_target opaque;
+    tarn_tile_target opaque;      /* the opaque pass's target: the tile or strip drawn */
+    const tarn_tile_target *ring; /* with strips, the ring of their opaque passes the
+                                     water pass reads; NULL: it reads `opaque` */
     tarn_water_pass water;
     uint32_t *water_colour;       /* the water pass's own buffers */
     void *water_depth;
@@ -61,9 +65,10 @@ static void frame_begin(frame_state *f, void *memory)
     f->bins = b.found_bins != NULL ? b.found_bins : f->layout.static_bins;
     f->opaque.colour = b.opaque_colour;
     f->opaque.depth = b.opaque_depth;
-    f->opaque.stride = f->layout.region;
+    f->opaque.stride = f->layout.region_width;
     f->opaque.quality = &f->config->quality;
     f->opaque.log2_span = (uint8_t)(31u - tarn_clz32(f->config->quality.perspective_span));
+    f->ring = NULL; /* strips.c points it at the ring */
     f->water.target = f->opaque;
     f->water.water = &f->water_context;
     f->water.view = f->view;
@@ -92,14 +97,16 @@ static tarn_pixel_rect around(int32_t x, int32_t y, int32_t size, int32_t apron,
 static void begin_water(frame_state *f)
 {
     tarn_water_context *c = &f->water_context;
-    c->background = f->opaque.colour;
-    c->background_depth = f->opaque.depth;
+    const tarn_tile_target *b = f->ring != NULL ? f->ring : &f->opaque;
+    c->background = b->colour;
+    c->background_depth = b->depth;
     c->depth_bits = f->config->quality.depth_bits;
-    c->background_rect.x0 = f->opaque.origin_x;
-    c->background_rect.y0 = f->opaque.origin_y;
-    c->background_stride = f->opaque.stride;
+    c->background_rect.x0 = b->origin_x;
+    c->background_rect.y0 = b->origin_y;
+    c->background_stride = b->stride;
+    c->background_rows = f->layout.ring_rows;
     c->offset_limit = f->layout.refraction_apron;
-    c->sample_rect = f->opaque.rect; /* binds at the frame's edges only (opaque_rect) */
+    c->sample_rect = b->rect; /* binds at the frame's edges only (opaque_rect, the ring) */
     /* over an opaque backdrop (tarn__frame_layout_of draws no apron then), moved
      * samples read its picture, anywhere in the frame */
     c->flash = TARN_LINK_BACKDROP && f->layout.backdrop != NULL && !f->layout.still && f->layout.apron == 0
@@ -171,7 +178,7 @@ static void draw_water_in_strips(frame_state *f, const tarn_pixel_rect *tile_rec
     for (int32_t y = tile_rect->y0; y < tile_rect->y1; y += TARN_WATER_STRIP_ROWS) {
         const tarn_pixel_rect strip = {tile_rect->x0, y, tile_rect->x1,
                                        y + TARN_WATER_STRIP_ROWS < tile_rect->y1 ? y + TARN_WATER_STRIP_ROWS : tile_rect->y1};
-        draw_water_copy(f, &strip, tile_rect->x0, y, f->layout.tile);
+        draw_water_copy(f, &strip, tile_rect->x0, y, f->layout.piece_width);
         tarn_tile_target back = f->opaque;
         back.rect = strip;
         copy_pixels(&f->water.target, &back, f->layout.depth_bytes);
@@ -311,17 +318,24 @@ static const tarn_tile_target *draw_tile_pixels(frame_state *f, int32_t x, int32
     return &f->water.target;
 }
 
+static tarn_tile tile_of(const frame_state *f, const tarn_tile_target *out, const tarn_pixel_rect *rect)
+{
+    const int32_t first = (rect->y0 - out->origin_y) * out->stride + (rect->x0 - out->origin_x);
+    tarn_tile tile = {(uint16_t)rect->x0, (uint16_t)rect->y0, (uint16_t)(rect->x1 - rect->x0),
+                      (uint16_t)(rect->y1 - rect->y0), out->colour + first,
+                      (const uint8_t *)out->depth + (size_t)first * f->layout.depth_bytes, (uint16_t)out->stride,
+                      f->config->quality.depth_bits};
+    if (TARN_LINK_BACKDROP && f->layout.backdrop != NULL) tile.depth = NULL; /* kept under water only */
+    return tile;
+}
+
 static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, void *user)
 {
     const int32_t size = f->layout.tile;
     const tarn_pixel_rect frame = {0, 0, f->config->width, f->config->height};
     const tarn_pixel_rect tile_rect = around(x, y, size, 0, &frame);
     const tarn_tile_target *out = draw_tile_pixels(f, x, y, &tile_rect);
-    const int32_t first = (y - out->origin_y) * out->stride + (x - out->origin_x);
-    tarn_tile tile = {(uint16_t)x, (uint16_t)y, (uint16_t)(tile_rect.x1 - x), (uint16_t)(tile_rect.y1 - y),
-                      out->colour + first, (const uint8_t *)out->depth + (size_t)first * f->layout.depth_bytes,
-                      (uint16_t)out->stride, f->config->quality.depth_bits};
-    if (TARN_LINK_BACKDROP && f->layout.backdrop != NULL) tile.depth = NULL; /* kept under water only */
+    tarn_tile tile = tile_of(f, out, &tile_rect);
     if (TARN_LINK_UNDERWATER && f->layout.underwater) {
         draw_underwater(f, &tile_rect);
         tile.rgb = f->final;
@@ -329,6 +343,91 @@ static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, 
         tile.depth = NULL; /* the displaced image has no single depth per pixel */
     }
     return sink != NULL ? sink(user, &tile) : 0;
+}
+
+/* ---- strips ---------------------------------------------------------------------
+ * A frame drawn in strips (TARN_FRAME_STRIPS), tile_size rows of the
+ * whole width, top to bottom.
+ *
+ * A tile draws the opaque scene around itself as far as its water's refracted
+ * samples reach, and its neighbours draw the same pixels again: at the exact
+ * preset that is about four times the frame's opaque pixels. Here each strip's
+ * opaque pass is drawn once, into a ring of layout.ring_strips strips, and the
+ * opaque pass runs as many strips ahead of the water pass as the apron reaches:
+ * when strip k's water is drawn, the strips from k - a to k + a are in the ring,
+ * every pixel a refracted sample of strip k can land on. The water pass draws into
+ * its own strip buffer from a copy (the ring keeps the opaque pixels the next
+ * strips' water reads), or in place when no sample moves. Each pixel is found as
+ * a tile finds it, so the image is the same byte for byte. */
+/* Strip s's slot in the ring, as a target over the strip's rows; `slot` is
+ * s modulo the ring's strips. */
+static tarn_tile_target ring_slot(const frame_state *f, const tarn_tile_target *ring, int32_t s, int32_t slot)
+{
+    const tarn_frame_layout *l = &f->layout;
+    tarn_tile_target t = *ring;
+    const size_t first = (size_t)slot * (size_t)l->tile * (size_t)l->piece_width;
+    t.colour += first;
+    t.depth = (uint8_t *)t.depth + first * l->depth_bytes;
+    t.origin_x = 0;
+    t.origin_y = s * l->tile;
+    t.rect.x0 = 0;
+    t.rect.y0 = t.origin_y;
+    t.rect.x1 = f->config->width;
+    t.rect.y1 = t.origin_y + l->tile < f->config->height ? t.origin_y + l->tile : f->config->height;
+    return t;
+}
+
+/* The ring as the water pass of strip k reads it: frame row y at ring row
+ * (y - origin_y), less the ring's rows past its end, over the strips held. */
+static void hold_ring_for(const frame_state *f, tarn_tile_target *ring, int32_t k, int32_t strips)
+{
+    const tarn_frame_layout *l = &f->layout;
+    const int32_t reach = (l->ring_strips - 1) / 2;
+    const int32_t first = k - reach > 0 ? k - reach : 0;
+    const int32_t last = k + reach < strips - 1 ? k + reach : strips - 1;
+    ring->origin_x = 0;
+    ring->origin_y = (first - first % l->ring_strips) * l->tile; /* the ring's row 0 */
+    ring->rect.x0 = 0;
+    ring->rect.y0 = first * l->tile;
+    ring->rect.x1 = f->config->width;
+    ring->rect.y1 = (last + 1) * l->tile < f->config->height ? (last + 1) * l->tile : f->config->height;
+}
+
+/* Strip k's water over its opaque pass in the ring; the target the sink reads. */
+static const tarn_tile_target *draw_strip_water(frame_state *f, tarn_tile_target *ring, int32_t k,
+                                                int32_t strips, const tarn_tile_target *slot)
+{
+    hold_ring_for(f, ring, k, strips);
+    f->opaque = *slot;
+    if (f->layout.in_place) {
+        draw_water_over_opaque(f, &slot->rect);
+        return &f->opaque;
+    }
+    begin_water(f);
+    draw_water_copy(f, &slot->rect, 0, slot->origin_y, f->layout.piece_width);
+    return &f->water.target;
+}
+
+static tarn_status draw_strips(frame_state *f, tarn_tile_sink sink, void *user)
+{
+    const tarn_frame_layout *l = &f->layout;
+    tarn_tile_target ring = f->opaque; /* the frame's opaque buffers: the ring */
+    f->ring = &ring;
+    const int32_t strips = (f->config->height + l->tile - 1) / l->tile;
+    const int32_t ahead = (l->ring_strips - 1) / 2; /* strips the opaque pass runs ahead */
+    int32_t drawn = 0;                              /* strips whose opaque pass is in the ring */
+    for (int32_t k = 0; k < strips; k++) {
+        for (; drawn < strips && drawn <= k + ahead; drawn++) {
+            f->opaque = ring_slot(f, &ring, drawn, drawn % l->ring_strips);
+            draw_opaque(f);
+        }
+        const tarn_tile_target slot = ring_slot(f, &ring, k, k % l->ring_strips);
+        const tarn_tile_target *out = &slot;
+        if (l->water) out = draw_strip_water(f, &ring, k, strips, &slot);
+        const tarn_tile tile = tile_of(f, out, &slot.rect);
+        if (sink != NULL && sink(user, &tile) != 0) return TARN_ERR_SINK;
+    }
+    return TARN_OK;
 }
 
 tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *config,
@@ -352,6 +451,7 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
     frame_begin(&f, memory);
     if (TARN_LINK_FOUND_BINS && f.found_bins != NULL) tarn__bin_clusters(scene, &view, f.found_bins);
     if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn__underwater_setup(&f.underwater, &view, config, scene->underwater);
+    if (TARN_LINK_STRIPS && f.layout.strips) return draw_strips(&f, sink, user);
     for (int32_t y = 0; y < config->height; y += f.layout.tile)
         for (int32_t x = 0; x < config->width; x += f.layout.tile)
             if (draw_tile(&f, x, y, sink, user) != 0) return TARN_ERR_SINK;

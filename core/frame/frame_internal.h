@@ -6,6 +6,8 @@
  *   frame.c   tarn_render_frame: checks, view, bins, then each tile: the opaque pass
  *             (drawn or read from a backdrop), the water pass (in place, from a copy,
  *             or over still water), the underwater view, and the sink
+ *             or in strips of the whole width (TARN_FRAME_STRIPS), each strip's
+ *             opaque pass drawn once into a ring, ahead of its water
  *   status.c  tarn_status_text and tarn_version
  *
  * It takes the scene, the config and the caller's memory, and hands each finished
@@ -20,7 +22,7 @@
 #define TARN_WATER_STRIP_ROWS 2
 
 /* The buffers of one frame: the opaque pass's colour and depth over the tile and
- * its apron; with water or the underwater view, the water pass's colour and depth
+ * its apron, or over the ring of strips; with water or the underwater view, the water pass's colour and depth
  * over the tile and the underwater apron, or only over a strip of the tile when
  * the water pass draws in place; with the underwater view, the tile's final
  * colour; the water blocks' slots; the cluster bins this frame finds. */
@@ -29,7 +31,8 @@ typedef struct {
     int32_t under_apron;  /* pixels the underwater displacement reaches */
     int32_t refraction_apron; /* pixels refraction reaches */
     int32_t apron;        /* the opaque pass's: refraction plus underwater */
-    int32_t region;       /* tile + 2 * apron, pixels per side */
+    int32_t region_width; /* the opaque buffers: tile + 2 * apron square, or */
+    int32_t region_height; /* ring_strips strips of the frame's width */
     int32_t water_region; /* tile + 2 * under_apron */
     int water;            /* a water pass runs */
     int underwater;
@@ -42,6 +45,10 @@ typedef struct {
     const tarn_cluster_bin *static_bins; /* the static view's instead, or NULL */
     const tarn_backdrop *backdrop; /* the opaque pass's pixels, or NULL: drawn */
     int still;            /* the backdrop holds the water's still terms (tarn_scene.h) */
+    int strips;           /* the frame is drawn in strips (TARN_FRAME_STRIPS) */
+    int32_t piece_width;  /* pixels across a tile or strip */
+    int32_t ring_strips;  /* strips whose opaque pass is kept; 1 with tiles */
+    int32_t ring_rows;    /* their rows, after which the buffers wrap; INT32_MAX with tiles */
 } tarn_frame_layout;
 
 /* Where each buffer of a layout lies in the caller's memory. */

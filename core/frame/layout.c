@@ -28,13 +28,21 @@ static tarn_frame_layout layout_of(const tarn_frame_config *config, const tarn_s
      * water pass can draw over it; the underwater view reads the water pass's
      * output displaced, so keeps it apart. */
     l.in_place = l.water && !l.underwater && l.apron == 0;
-    l.region = l.tile + 2 * l.apron;
+    /* strips keep the opaque pass of every strip a water pixel can sample: the
+     * apron, rounded up to whole strips, above and below */
+    l.strips = TARN_LINK_STRIPS && config->quality.frame_shape == TARN_FRAME_STRIPS && !l.underwater &&
+               l.backdrop == NULL;
+    l.piece_width = l.strips ? (int32_t)config->width : l.tile;
+    l.ring_strips = l.strips ? 1 + 2 * ((l.apron + l.tile - 1) / l.tile) : 1;
+    l.ring_rows = l.strips ? l.ring_strips * l.tile : INT32_MAX;
+    l.region_width = l.strips ? l.piece_width : l.tile + 2 * l.apron;
+    l.region_height = l.strips ? l.ring_strips * l.tile : l.region_width;
     l.water_region = l.tile + 2 * l.under_apron;
     l.depth_bytes = l.still ? 0u : config->quality.depth_bits / 8u;
     /* the underwater pass reads displaced water pixels over an apron that need not
      * hold whole blocks */
     l.blocks = TARN_LINK_WATER_BLOCKS && l.water && !l.underwater && config->quality.water_block > 1
-        ? (uint32_t)l.tile / config->quality.water_block : 0u;
+        ? ((uint32_t)l.piece_width + config->quality.water_block - 1u) / config->quality.water_block : 0u;
     l.block_bytes = l.still ? sizeof(tarn_still_block) : sizeof(tarn_water_block);
     const int binned = scene != NULL && config->quality.cluster_bins;
     l.static_bins = binned && TARN_LINK_STATIC_VERTICES && tarn__static_screen_applies(scene, config)
@@ -52,13 +60,14 @@ tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const t
 static size_t water_pixels(const tarn_frame_layout *l)
 {
     if (!l->water || l->still) return 0u;
-    if (l->in_place) return (size_t)l->tile * TARN_WATER_STRIP_ROWS;
+    if (l->in_place) return (size_t)l->piece_width * TARN_WATER_STRIP_ROWS;
+    if (l->strips) return (size_t)l->piece_width * (size_t)l->tile;
     return (size_t)l->water_region * (size_t)l->water_region;
 }
 
 static size_t layout_bytes(const tarn_frame_layout *l)
 {
-    const size_t region = (size_t)l->region * (size_t)l->region;
+    const size_t region = (size_t)l->region_width * (size_t)l->region_height;
     const size_t tile = (size_t)l->tile * (size_t)l->tile;
     return (region + water_pixels(l)) * (4u + l->depth_bytes) + (l->underwater ? tile * 4u : 0u) +
            (size_t)l->blocks * l->block_bytes + (size_t)l->bins * sizeof(tarn_cluster_bin);
@@ -102,7 +111,7 @@ const tarn_scene *tarn__frame_pose(const tarn_scene *scene, uint32_t time_ms, vo
 
 tarn_frame_buffers tarn__frame_carve(const tarn_frame_layout *l, void *memory)
 {
-    const size_t region = (size_t)l->region * (size_t)l->region;
+    const size_t region = (size_t)l->region_width * (size_t)l->region_height;
     const size_t water = water_pixels(l);
     tarn_frame_buffers b;
     uint8_t *next = memory; /* 4-byte buffers first, so every one stays aligned */

@@ -47,6 +47,7 @@ static tarn_quality preset_exact(void)
     q.fog_argument_bits = 16;
     q.water_block = 1;
     q.refraction_normal = TARN_REFRACTION_NORMAL_EXACT;
+    q.frame_shape = TARN_FRAME_TILES;
     return q;
 }
 

@@ -72,6 +72,10 @@ typedef struct tarn_water_context {
        block's highlight, a slot per block column (tarn_still_block); NULL otherwise */
     struct tarn_still_block *still_blocks;
     uint32_t still_walks; /* tile walks over still water this frame, 0 before the first */
+    /* rows the background buffers hold before they wrap to their first (a frame
+       drawn in strips keeps them in a ring); INT32_MAX: they never do. Last, so
+       the fields above keep the offsets a Cortex-M0 loads in one instruction. */
+    int32_t background_rows;
 } tarn_water_context;
 
 /* A block's highlight over still water, and who found it: the walk of one water
@@ -235,7 +239,9 @@ static inline uint32_t tarn__water_depth_of(const tarn_water_context *w, uint32_
 /* The index of frame pixel (i, j) in the background buffers. */
 static inline int32_t tarn__water_background_offset(const tarn_water_context *w, int32_t i, int32_t j)
 {
-    return (j - w->background_rect.y0) * w->background_stride + (i - w->background_rect.x0);
+    int32_t row = j - w->background_rect.y0;
+    if (TARN_LINK_STRIPS && row >= w->background_rows) row -= w->background_rows; /* rows held span less than the ring */
+    return row * w->background_stride + (i - w->background_rect.x0);
 }
 
 /* A 0xRRGGBB colour's channel c (0 red, 1 green, 2 blue) in Q8.8. */

@@ -207,7 +207,7 @@ STRUCT_TYPE(T_QUALITY, tarn_quality, BLOCK,
             FIELD(tarn_quality, tile_size, T_U8),
             FIELD(tarn_quality, refraction_apron, T_U8),   FIELD(tarn_quality, cluster_bins, T_U8),
             FIELD(tarn_quality, fog_argument_bits, T_U8),  FIELD(tarn_quality, water_block, T_U8),
-            FIELD(tarn_quality, refraction_normal, T_U8));
+            FIELD(tarn_quality, refraction_normal, T_U8), FIELD(tarn_quality, frame_shape, T_U8));
 STRUCT_TYPE(T_CONFIG, tarn_frame_config, BLOCK,
             FIELD(tarn_frame_config, width, T_U16), FIELD(tarn_frame_config, height, T_U16),
             FIELD(tarn_frame_config, quality, T_QUALITY), FIELD(tarn_frame_config, time_ms, T_U32));
@@ -984,6 +984,7 @@ typedef struct {
     size_t bytes[BYTES_KINDS];
     size_t const_bytes;
     size_t memory_bytes;
+    unsigned piece_width, piece_rows; /* the largest tile or strip the sink takes */
 } bake_totals;
 
 /* What moves in the scene, for messages and the header: "the camera, 2 objects". */
@@ -1047,6 +1048,9 @@ static void print_header(FILE *out, const bake_plan *p, const tarn_bake_options 
         fprintf(out, "/* tarn_frame_memory_bytes(&%s_config, &%s_scene): a frame's working memory. */\n",
                 p->name, p->name);
     fprintf(out, "#define %s_MEMORY_BYTES %zu\n\n", macro, totals->memory_bytes);
+    fprintf(out, "/* The widest and tallest piece (tile or strip, tarn_tile) the frame hands its sink%s. */\n"
+            "#define %s_PIECE_WIDTH %u\n#define %s_PIECE_ROWS %u\n\n",
+            p->points->count ? " at any of them" : "", macro, totals->piece_width, macro, totals->piece_rows);
     fprintf(out, "extern const tarn_scene %s_scene;\nextern const tarn_frame_config %s_config;\n\n", p->name,
             p->name);
     if (p->points->count)
@@ -1090,7 +1094,8 @@ enum {
     USES_DEPTH32 = 1u << 6,
     USES_EXACT_DEPTH = 1u << 7,
     USES_FOUND_BINS = 1u << 8, /* bins on, and the static view holds none for its grid */
-    USES_REFRACTION_EXACT = 1u << 9
+    USES_REFRACTION_EXACT = 1u << 9,
+    USES_STRIPS = 1u << 10
 };
 
 static const struct {
@@ -1101,7 +1106,8 @@ static const struct {
     {"PERSPECTIVE_PIXEL", USES_PERSPECTIVE_PIXEL},   {"APRON", USES_APRON},
     {"WATER_BLOCKS", USES_WATER_BLOCKS},             {"DEPTH16", USES_DEPTH16},
     {"DEPTH32", USES_DEPTH32},                       {"EXACT_DEPTH", USES_EXACT_DEPTH},
-    {"FOUND_BINS", USES_FOUND_BINS},                 {"REFRACTION_EXACT", USES_REFRACTION_EXACT}};
+    {"FOUND_BINS", USES_FOUND_BINS},                 {"REFRACTION_EXACT", USES_REFRACTION_EXACT},
+    {"STRIPS", USES_STRIPS}};
 
 static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
 {
@@ -1115,7 +1121,8 @@ static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
            (q->depth_bits == 16 ? USES_DEPTH16 : 0u) | (q->depth_bits == 32 ? USES_DEPTH32 : 0u) |
            (q->depth_interpolation == TARN_DEPTH_EXACT ? USES_EXACT_DEPTH : 0u) |
            (finds_bins ? USES_FOUND_BINS : 0u) |
-           (q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT ? USES_REFRACTION_EXACT : 0u);
+           (q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT ? USES_REFRACTION_EXACT : 0u) |
+           (q->frame_shape == TARN_FRAME_STRIPS ? USES_STRIPS : 0u);
 }
 
 static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,
@@ -1285,6 +1292,15 @@ static void static_scene_free(static_scene *s)
     else tarn_static_scene_free(&s->with_view);
 }
 
+/* The largest piece a frame at quality q hands its sink, into the totals. */
+static void add_piece(bake_totals *totals, const tarn_frame_config *config, const tarn_quality *q)
+{
+    const unsigned tile = q->tile_size;
+    const unsigned width = q->frame_shape == TARN_FRAME_STRIPS && config->width > tile ? config->width : tile;
+    if (width > totals->piece_width) totals->piece_width = width;
+    if (tile > totals->piece_rows) totals->piece_rows = tile;
+}
+
 /* The working memory of a frame of the scene as baked, at the config and at each
  * --points quality (loaded into `points`): the largest. 0, or -1 with `err` set. */
 static int baked_memory(const bake_plan *p, const tarn_bake_options *o, tarn_bake_points *points,
@@ -1331,6 +1347,8 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     plan.points = &points;
     char *header_path = NULL, *link_path = NULL;
     int failed = baked_memory(&plan, o, &points, &totals.memory_bytes, err);
+    add_piece(&totals, &plan.config, &plan.config.quality);
+    for (size_t k = 0; !failed && k < points.count; k++) add_piece(&totals, &plan.config, &points.qualities[k]);
     if (!failed) {
         header_path = path_beside(o->output_path, ".h", err);
         link_path = header_path ? path_beside(o->output_path, "_link.h", err) : NULL;

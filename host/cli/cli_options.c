@@ -34,7 +34,9 @@ const char tarn_cli_usage[] =
     "         --water-block 1|2|4 (water effects found at every pixel, or once per 2x2 or 4x4 block:\n"
     "         tiles a multiple of the block only)\n"
     "         --refraction-normal shared|exact (the normal refraction moves by: the highlight's\n"
-    "         14 bits, or found again from the maps' texels to 2^-15)\n";
+    "         14 bits, or found again from the maps' texels to 2^-15)\n"
+    "         --frame tiles|strips (square tiles, or strips of --tile rows of the whole width\n"
+    "         whose opaque pass is kept for the strips below: each pixel drawn once, more memory)\n";
 
 static int parse_size(const char *text, tarn_cli_options *o, tarn_error *err)
 {

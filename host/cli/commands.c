@@ -243,10 +243,18 @@ static int print_memory(const tarn_cli_options *o, const tarn_loaded_scene *scen
     if (bytes == 0)
         return tarn_fail(err, "%s: %ux%u with these quality settings: %s", scene->name, config->width,
                          config->height, tarn_status_text(TARN_ERR_CONFIG));
-    printf("memory scene=%s size=%ux%u tile=%u depth_bits=%u apron=%d bytes=%zu baked_bytes=%zu\n", scene->name,
-           config->width, config->height, config->quality.tile_size, config->quality.depth_bits,
+    /* what the frame needs in each shape, the rest of the quality as asked */
+    tarn_frame_config shaped = *config;
+    shaped.quality.frame_shape = TARN_FRAME_TILES;
+    const size_t tiles = tarn_frame_memory_bytes(&shaped, &scene->scene);
+    shaped.quality.frame_shape = TARN_FRAME_STRIPS;
+    const size_t strips = tarn_frame_memory_bytes(&shaped, &scene->scene);
+    printf("memory scene=%s size=%ux%u tile=%u frame=%s depth_bits=%u apron=%d bytes=%zu baked_bytes=%zu "
+           "tiles_bytes=%zu strips_bytes=%zu\n",
+           scene->name, config->width, config->height, config->quality.tile_size,
+           config->quality.frame_shape == TARN_FRAME_STRIPS ? "strips" : "tiles", config->quality.depth_bits,
            (int)tarn_frame_apron_pixels(&scene->scene, config), bytes,
-           tarn_static_memory_bytes(config, &scene->scene, config));
+           tarn_static_memory_bytes(config, &scene->scene, config), tiles, strips);
     return 0;
 }
 

@@ -14,6 +14,9 @@ static const tarn_option_choice bins_values[] = {
 static const tarn_option_choice refraction_normal_values[] = {
     {"shared", TARN_REFRACTION_NORMAL_SHARED, "the highlight's 14-bit normal"},
     {"exact", TARN_REFRACTION_NORMAL_EXACT, "found again from the maps' texels, to 2^-15"}};
+static const tarn_option_choice frame_shape_values[] = {
+    {"tiles", TARN_FRAME_TILES, "square tiles, each drawing the opaque scene its water samples: least memory"},
+    {"strips", TARN_FRAME_STRIPS, "rows of the whole width, the opaque pass kept for the next strips: each pixel drawn once"}};
 static const tarn_option_choice depth_interpolation_values[] = {
     {"exact", TARN_DEPTH_EXACT, "near/d rounded exactly at each pixel"},
     {"plane", TARN_DEPTH_PLANE, "stepped on a plane, a division less a triangle"}};
@@ -41,7 +44,8 @@ static const byte_knob byte_knobs[] = {
     CHOICE_KNOB("--depth", depth_bits, depth_bits_values),
     CHOICE_KNOB("--bins", cluster_bins, bins_values),
     CHOICE_KNOB("--depth-interpolation", depth_interpolation, depth_interpolation_values),
-    CHOICE_KNOB("--refraction-normal", refraction_normal, refraction_normal_values)};
+    CHOICE_KNOB("--refraction-normal", refraction_normal, refraction_normal_values),
+    CHOICE_KNOB("--frame", frame_shape, frame_shape_values)};
 
 static int parse_byte_knob(const byte_knob *knob, const char *text, tarn_quality *q, tarn_error *err)
 {

@@ -184,6 +184,10 @@ void tarn_sweep_quality_text(const tarn_quality *q, char *out, size_t size)
              (unsigned)q->subpixel_bits, (unsigned)q->tile_size, q->cluster_bins ? "on" : "off",
              (unsigned)q->water_block, tarn_sweep_depth_text(q),
              q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT ? "exact" : "shared");
+    if (q->frame_shape == TARN_FRAME_STRIPS) {
+        const size_t used = strlen(out);
+        snprintf(out + used, size - used, " --frame strips");
+    }
 }
 
 int tarn_sweep_write_points(const char *path, const tarn_quality *qualities, size_t count, tarn_error *err)

@@ -124,6 +124,11 @@
 #define TARN_LINK_WATER_BLOCKS 1
 #endif
 
+/* Frames cut into strips (the quality's frame_shape TARN_FRAME_STRIPS). */
+#ifndef TARN_LINK_STRIPS
+#define TARN_LINK_STRIPS 1
+#endif
+
 /* The underwater view (tarn_scene.h's underwater block). */
 #ifndef TARN_LINK_UNDERWATER
 #define TARN_LINK_UNDERWATER 1

@@ -93,7 +93,8 @@ typedef struct {
     uint8_t perspective_span;   /* 2..64, a power of two; SPAN mode only */
     uint8_t depth_bits;         /* 16 or 32 bits per depth-buffer entry */
     uint8_t depth_interpolation; /* tarn_depth_interpolation */
-    uint8_t tile_size;          /* 8..64 pixels, square tiles; does not change the image */
+    uint8_t tile_size;          /* 8..64 pixels: the side of a square tile, or a strip's
+                                   rows (frame_shape); does not change the image */
     uint8_t refraction_apron;   /* how far (pixels, each axis) a refracted or underwater
                                    sample may move from its pixel, and so how much opaque
                                    scene each tile renders around its water:
@@ -125,7 +126,23 @@ typedef struct {
     uint8_t refraction_normal;  /* tarn_refraction_normal: the normal a refracted sample
                                    moves by, where it moves (a refraction apron, or
                                    still water's picture) */
+    uint8_t frame_shape;        /* tarn_frame_shape: square tiles, or strips of the
+                                   frame's width. Does not change the image. */
 } tarn_quality;
+
+/* How a frame is cut into the pieces it draws and hands to the sink, one at a time. */
+typedef enum {
+    TARN_FRAME_TILES = 0,  /* tile_size squares, each drawing its own opaque apron
+                              around its water: the least memory (tiles of 16 KB) */
+    TARN_FRAME_STRIPS = 1  /* tile_size rows of the whole width, top to bottom; the
+                              opaque pass of the strips a water pixel can sample is
+                              kept (a ring of 1 + 2 * ceil(apron / tile_size)
+                              strips), so every opaque pixel is drawn once and each
+                              part of the scene is walked by about one strip: for
+                              boards with the RAM (tarn_frame_memory_bytes). Frames
+                              under the underwater view or over a backdrop are
+                              drawn in tiles of the same size. */
+} tarn_frame_shape;
 
 /* Refraction moves a sample by N.xy times tens of pixels, then rounds to a pixel:
  * N's last bits decide which pixel near half-way points. */
