@@ -437,7 +437,7 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
     tarn_status status = tarn__scene_check(scene);
     if (status != TARN_OK) return status;
     if (memory == NULL || memory_bytes < tarn_frame_memory_bytes(config, scene)) return TARN_ERR_MEMORY;
-    scene = tarn__frame_pose(scene, config->time_ms, &memory);
+    scene = tarn__frame_scene(scene, config, &memory);
     status = tarn__scene_check_reach(scene, config);
     if (status != TARN_OK) return status;
 

@@ -65,10 +65,11 @@ typedef struct {
 
 /* The layout of a frame of a config that tarn__config_check accepts. */
 tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const tarn_scene *scene);
-/* A moving scene posed for the frame's time at the start of *memory, which moves
- * past it; a scene that does not move is returned as it is (tarn_frame_memory_bytes
- * counts the pose's bytes). */
-const tarn_scene *tarn__frame_pose(const tarn_scene *scene, uint32_t time_ms, void **memory);
+/* The scene the frame draws, at the start of *memory, which moves past it: a moving
+ * scene posed for the frame's time; with the vertex pass (tarn_vertex_pass), a copy
+ * whose static view holds every vertex as the frame's camera sees it. Otherwise the
+ * scene as it is. tarn_frame_memory_bytes counts its bytes. */
+const tarn_scene *tarn__frame_scene(const tarn_scene *scene, const tarn_frame_config *config, void **memory);
 /* The buffers carved from `memory` (4-byte aligned, at least
  * tarn_frame_memory_bytes long), the blocks' slots cleared. */
 tarn_frame_buffers tarn__frame_carve(const tarn_frame_layout *layout, void *memory);

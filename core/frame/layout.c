@@ -73,16 +73,30 @@ static size_t layout_bytes(const tarn_frame_layout *l)
            (size_t)l->blocks * l->block_bytes + (size_t)l->bins * sizeof(tarn_cluster_bin);
 }
 
-/* A moving scene's pose lies at the start of the frame's memory, aligned for the
- * pointers it holds (the memory is only 4-byte aligned): the posed scene, then its
- * objects when some move. */
-#define POSE_ALIGN sizeof(void *)
+/* The scene the frame draws lies at the start of the frame's memory when it is not
+ * the caller's, aligned for the pointers it holds (the memory is only 4-byte
+ * aligned): a moving scene posed, then its objects when some move; with the vertex
+ * pass, the scene and all its objects copied, the static view made for the frame,
+ * and every vertex. */
+#define SCENE_ALIGN sizeof(void *)
 
-static size_t pose_bytes(const tarn_scene *scene)
+/* Whether the frame finds its vertices once into its memory: asked, and no static
+ * view (a baked still scene's) holds them already. */
+static int vertex_pass_applies(const tarn_frame_config *config, const tarn_scene *scene)
 {
-    if (!TARN_LINK_MOTION || !tarn_scene_moves(scene)) return 0u;
-    const size_t objects = tarn__objects_move(scene) ? scene->object_count * sizeof(tarn_object) : 0u;
-    return (POSE_ALIGN - 4u + sizeof(tarn_scene) + objects + 3u) & ~(size_t)3u;
+    return TARN_LINK_VERTEX_PASS && TARN_LINK_STATIC_VERTICES && scene != NULL &&
+           config->quality.vertex_pass == TARN_VERTICES_PER_FRAME && !tarn__static_view_applies(scene);
+}
+
+static size_t scene_bytes(const tarn_frame_config *config, const tarn_scene *scene)
+{
+    const int moves = TARN_LINK_MOTION && tarn_scene_moves(scene);
+    const int pass = vertex_pass_applies(config, scene);
+    if (!moves && !pass) return 0u;
+    const int objects = pass || tarn__objects_move(scene);
+    size_t bytes = SCENE_ALIGN - 4u + sizeof(tarn_scene) + (objects ? scene->object_count * sizeof(tarn_object) : 0u);
+    if (pass) bytes += sizeof(tarn_static_view) + tarn__scene_vertex_count(scene) * sizeof(tarn_static_vertex);
+    return (bytes + 3u) & ~(size_t)3u;
 }
 
 size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
@@ -95,18 +109,30 @@ size_t tarn_frame_memory_bytes(const tarn_frame_config *config, const tarn_scene
         const tarn_frame_layout other = layout_of(config, scene, !l.underwater);
         if (layout_bytes(&other) > bytes) bytes = layout_bytes(&other);
     }
-    return pose_bytes(scene) + bytes;
+    return scene_bytes(config, scene) + bytes;
 }
 
-const tarn_scene *tarn__frame_pose(const tarn_scene *scene, uint32_t time_ms, void **memory)
+const tarn_scene *tarn__frame_scene(const tarn_scene *scene, const tarn_frame_config *config, void **memory)
 {
-    const size_t bytes = pose_bytes(scene);
+    const size_t bytes = scene_bytes(config, scene);
     if (bytes == 0u) return scene;
     uint8_t *start = *memory;
-    tarn_scene *posed = (tarn_scene *)(void *)(start + ((0u - (uintptr_t)start) & (POSE_ALIGN - 1u)));
-    tarn__scene_pose(scene, time_ms, posed, tarn__objects_move(scene) ? (tarn_object *)(void *)(posed + 1) : NULL);
+    tarn_scene *own = (tarn_scene *)(void *)(start + ((0u - (uintptr_t)start) & (SCENE_ALIGN - 1u)));
+    const int pass = vertex_pass_applies(config, scene);
+    tarn_object *objects = pass || tarn__objects_move(scene) ? (tarn_object *)(void *)(own + 1) : NULL;
+    if (TARN_LINK_MOTION && tarn_scene_moves(scene)) {
+        tarn__scene_pose(scene, config->time_ms, own, objects);
+    } else {
+        *own = *scene;
+        for (uint32_t i = 0; objects != NULL && i < scene->object_count; i++) objects[i] = scene->objects[i];
+    }
+    if (pass) {
+        own->objects = objects;
+        tarn_static_view *made = (tarn_static_view *)(void *)(objects + scene->object_count);
+        tarn__vertex_pass(own, objects, config, made, (tarn_static_vertex *)(void *)(made + 1));
+    }
     *memory = start + bytes;
-    return posed;
+    return own;
 }
 
 tarn_frame_buffers tarn__frame_carve(const tarn_frame_layout *l, void *memory)

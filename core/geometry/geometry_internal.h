@@ -7,6 +7,7 @@
  *   project.c       view space to snapped screen space; screen bounds to pixels
  *   vertex_cache.c  each vertex transformed, projected and lit about once a walk
  *                   (vertex_cache_internal.h)
+ *   vertex_pass.c   or every vertex once a frame, as a baked static view keeps them
  *
  * It takes the scene and the frame config (checked by core/scene/) and hands on
  * tarn_screen_vertex triangles (tarn_render.h) to a tarn_triangle_sink. Its work
@@ -150,5 +151,21 @@ static inline void tarn__bounds_add(tarn_subpixel_bounds *b, const tarn_screen_v
 /* Pixels whose centres lie in non-empty bounds: from ceil((min - half) / 2^s) to
  * floor((max - half) / 2^s), half a pixel being 2^(s-1) subpixels. */
 tarn_pixel_box tarn__bounds_pixels(const tarn_subpixel_bounds *b, unsigned subpixel_bits);
+
+/* ---- the vertex pass (vertex_pass.c) ------------------------------------------ */
+
+/* Vertex `index` of the mesh as a frame computes it: its view position and outcode,
+ * its projection (inside every clip plane only) and its shading. */
+tarn_static_vertex tarn__static_vertex_of(const tarn_view *view, const tarn_object_xform *xform,
+                                          const tarn_mesh *mesh, uint16_t index);
+/* The vertices of every object's mesh, summed. */
+uint32_t tarn__scene_vertex_count(const tarn_scene *scene);
+/* Every vertex of the scene, whose objects are `objects` (its own, writable), as
+ * the frame's camera sees it, into `vertices` (tarn__scene_vertex_count of them);
+ * each object's static_vertices then name its own, and the scene's static view is
+ * `made`, for this frame's size and precision, with no bins. Every mesh must have
+ * its positions. */
+void tarn__vertex_pass(tarn_scene *scene, tarn_object *objects, const tarn_frame_config *config,
+                       tarn_static_view *made, tarn_static_vertex *vertices);
 
 #endif

@@ -32,7 +32,9 @@ static int quality_in_range(const tarn_quality *q)
             (TARN_LINK_WATER_BLOCKS && (q->water_block == 2 || q->water_block == 4) && q->tile_size % q->water_block == 0)) &&
            (q->refraction_normal == TARN_REFRACTION_NORMAL_SHARED ||
             (TARN_LINK_REFRACTION_EXACT && q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT)) &&
-           (q->frame_shape == TARN_FRAME_TILES || (TARN_LINK_STRIPS && q->frame_shape == TARN_FRAME_STRIPS));
+           (q->frame_shape == TARN_FRAME_TILES || (TARN_LINK_STRIPS && q->frame_shape == TARN_FRAME_STRIPS)) &&
+           (q->vertex_pass == TARN_VERTICES_PER_TILE ||
+            (TARN_LINK_VERTEX_PASS && TARN_LINK_STATIC_VERTICES && q->vertex_pass == TARN_VERTICES_PER_FRAME));
 }
 
 tarn_status tarn__config_check(const tarn_frame_config *config)

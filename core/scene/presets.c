@@ -48,6 +48,7 @@ static tarn_quality preset_exact(void)
     q.water_block = 1;
     q.refraction_normal = TARN_REFRACTION_NORMAL_EXACT;
     q.frame_shape = TARN_FRAME_TILES;
+    q.vertex_pass = TARN_VERTICES_PER_TILE;
     return q;
 }
 

@@ -207,7 +207,8 @@ STRUCT_TYPE(T_QUALITY, tarn_quality, BLOCK,
             FIELD(tarn_quality, tile_size, T_U8),
             FIELD(tarn_quality, refraction_apron, T_U8),   FIELD(tarn_quality, cluster_bins, T_U8),
             FIELD(tarn_quality, fog_argument_bits, T_U8),  FIELD(tarn_quality, water_block, T_U8),
-            FIELD(tarn_quality, refraction_normal, T_U8), FIELD(tarn_quality, frame_shape, T_U8));
+            FIELD(tarn_quality, refraction_normal, T_U8), FIELD(tarn_quality, frame_shape, T_U8),
+            FIELD(tarn_quality, vertex_pass, T_U8));
 STRUCT_TYPE(T_CONFIG, tarn_frame_config, BLOCK,
             FIELD(tarn_frame_config, width, T_U16), FIELD(tarn_frame_config, height, T_U16),
             FIELD(tarn_frame_config, quality, T_QUALITY), FIELD(tarn_frame_config, time_ms, T_U32));
@@ -1095,7 +1096,8 @@ enum {
     USES_EXACT_DEPTH = 1u << 7,
     USES_FOUND_BINS = 1u << 8, /* bins on, and the static view holds none for its grid */
     USES_REFRACTION_EXACT = 1u << 9,
-    USES_STRIPS = 1u << 10
+    USES_STRIPS = 1u << 10,
+    USES_VERTEX_PASS = 1u << 11
 };
 
 static const struct {
@@ -1107,7 +1109,7 @@ static const struct {
     {"WATER_BLOCKS", USES_WATER_BLOCKS},             {"DEPTH16", USES_DEPTH16},
     {"DEPTH32", USES_DEPTH32},                       {"EXACT_DEPTH", USES_EXACT_DEPTH},
     {"FOUND_BINS", USES_FOUND_BINS},                 {"REFRACTION_EXACT", USES_REFRACTION_EXACT},
-    {"STRIPS", USES_STRIPS}};
+    {"STRIPS", USES_STRIPS},                         {"VERTEX_PASS", USES_VERTEX_PASS}};
 
 static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
 {
@@ -1122,7 +1124,8 @@ static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
            (q->depth_interpolation == TARN_DEPTH_EXACT ? USES_EXACT_DEPTH : 0u) |
            (finds_bins ? USES_FOUND_BINS : 0u) |
            (q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT ? USES_REFRACTION_EXACT : 0u) |
-           (q->frame_shape == TARN_FRAME_STRIPS ? USES_STRIPS : 0u);
+           (q->frame_shape == TARN_FRAME_STRIPS ? USES_STRIPS : 0u) |
+           (q->vertex_pass == TARN_VERTICES_PER_FRAME ? USES_VERTEX_PASS : 0u);
 }
 
 static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,
@@ -1149,7 +1152,9 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
         fprintf(out, "#define TARN_LINK_%s %d\n", quality_switches[k].name, (uses & quality_switches[k].bit) != 0);
     fprintf(out, "#define TARN_LINK_OPAQUE_OBJECTS %d\n", has_opaque_objects(&p->scene->scene));
     fprintf(out, "#define TARN_LINK_COMPUTED_VERTICES %d\n", p->scene->scene.static_view == NULL);
-    fprintf(out, "#define TARN_LINK_STATIC_VERTICES %d\n", p->scene->scene.static_view != NULL);
+    /* the vertex pass reads the vertices it finds as static ones */
+    fprintf(out, "#define TARN_LINK_STATIC_VERTICES %d\n",
+            p->scene->scene.static_view != NULL || (uses & USES_VERTEX_PASS) != 0);
     const tarn_backdrop *backdrop = p->scene->scene.static_view != NULL ? p->scene->scene.static_view->backdrop : NULL;
     const int still = backdrop != NULL && backdrop->still_water;
     fprintf(out, "#define TARN_LINK_BACKDROP %d\n", backdrop != NULL);

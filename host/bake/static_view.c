@@ -6,30 +6,6 @@
 
 #include "tarn_internal.h"
 
-/* Vertex `index` as a frame computes it: tarn_vertex_cache's position, outcode,
- * projection (inside every clip plane only) and shading. */
-static tarn_static_vertex static_vertex(const tarn_view *view, const tarn_object_xform *xform,
-                                        const tarn_mesh *mesh, uint16_t index)
-{
-    tarn_static_vertex out = {0, 0, 0, 0, 0, 0, {0, 0, 0}, 0};
-    tarn_view_vertex v;
-    tarn__vertex_position(xform, &mesh->positions[index], &v);
-    out.x = v.x;
-    out.y = v.y;
-    out.d = v.d;
-    if (tarn__clip_outcode(view, &v) == 0u) {
-        tarn_screen_vertex screen;
-        tarn__project_position(view, &v, &screen);
-        out.screen_x = (int16_t)screen.x;
-        out.screen_y = (int16_t)screen.y;
-        out.inv_depth = screen.inv_depth;
-    }
-    tarn__vertex_shade(view, xform, mesh, index, &v);
-    for (int c = 0; c < 3; c++) out.lit[c] = (uint16_t)v.lit[c];
-    out.fresnel = (uint16_t)v.fresnel;
-    return out;
-}
-
 static tarn_static_vertex *object_vertices(const tarn_view *view, const tarn_object *object)
 {
     const tarn_mesh *mesh = object->mesh;
@@ -37,7 +13,7 @@ static tarn_static_vertex *object_vertices(const tarn_view *view, const tarn_obj
     if (vertices == NULL) return NULL;
     tarn_object_xform xform;
     tarn__object_xform_setup(view, object, &xform);
-    for (uint32_t i = 0; i < mesh->vertex_count; i++) vertices[i] = static_vertex(view, &xform, mesh, (uint16_t)i);
+    for (uint32_t i = 0; i < mesh->vertex_count; i++) vertices[i] = tarn__static_vertex_of(view, &xform, mesh, (uint16_t)i);
     return vertices;
 }
 

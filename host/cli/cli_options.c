@@ -36,7 +36,9 @@ const char tarn_cli_usage[] =
     "         --refraction-normal shared|exact (the normal refraction moves by: the highlight's\n"
     "         14 bits, or found again from the maps' texels to 2^-15)\n"
     "         --frame tiles|strips (square tiles, or strips of --tile rows of the whole width\n"
-    "         whose opaque pass is kept for the strips below: each pixel drawn once, more memory)\n";
+    "         whose opaque pass is kept for the strips below: each pixel drawn once, more memory)\n"
+    "         --vertices tile|frame (vertices found by each tile's walk, or once a frame into\n"
+    "         memory, 28 bytes a vertex)\n";
 
 static int parse_size(const char *text, tarn_cli_options *o, tarn_error *err)
 {

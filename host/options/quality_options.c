@@ -17,6 +17,9 @@ static const tarn_option_choice refraction_normal_values[] = {
 static const tarn_option_choice frame_shape_values[] = {
     {"tiles", TARN_FRAME_TILES, "square tiles, each drawing the opaque scene its water samples: least memory"},
     {"strips", TARN_FRAME_STRIPS, "rows of the whole width, the opaque pass kept for the next strips: each pixel drawn once"}};
+static const tarn_option_choice vertex_pass_values[] = {
+    {"tile", TARN_VERTICES_PER_TILE, "each tile's walk finds the vertices it meets: no memory"},
+    {"frame", TARN_VERTICES_PER_FRAME, "once a frame, into memory: 28 bytes a vertex"}};
 static const tarn_option_choice depth_interpolation_values[] = {
     {"exact", TARN_DEPTH_EXACT, "near/d rounded exactly at each pixel"},
     {"plane", TARN_DEPTH_PLANE, "stepped on a plane, a division less a triangle"}};
@@ -45,7 +48,8 @@ static const byte_knob byte_knobs[] = {
     CHOICE_KNOB("--bins", cluster_bins, bins_values),
     CHOICE_KNOB("--depth-interpolation", depth_interpolation, depth_interpolation_values),
     CHOICE_KNOB("--refraction-normal", refraction_normal, refraction_normal_values),
-    CHOICE_KNOB("--frame", frame_shape, frame_shape_values)};
+    CHOICE_KNOB("--frame", frame_shape, frame_shape_values),
+    CHOICE_KNOB("--vertices", vertex_pass, vertex_pass_values)};
 
 static int parse_byte_knob(const byte_knob *knob, const char *text, tarn_quality *q, tarn_error *err)
 {

@@ -188,6 +188,10 @@ void tarn_sweep_quality_text(const tarn_quality *q, char *out, size_t size)
         const size_t used = strlen(out);
         snprintf(out + used, size - used, " --frame strips");
     }
+    if (q->vertex_pass == TARN_VERTICES_PER_FRAME) {
+        const size_t used = strlen(out);
+        snprintf(out + used, size - used, " --vertices frame");
+    }
 }
 
 int tarn_sweep_write_points(const char *path, const tarn_quality *qualities, size_t count, tarn_error *err)

@@ -129,6 +129,12 @@
 #define TARN_LINK_STRIPS 1
 #endif
 
+/* Vertices found once a frame (the quality's vertex_pass TARN_VERTICES_PER_FRAME);
+ * it reads them as static vertices, so needs TARN_LINK_STATIC_VERTICES too. */
+#ifndef TARN_LINK_VERTEX_PASS
+#define TARN_LINK_VERTEX_PASS 1
+#endif
+
 /* The underwater view (tarn_scene.h's underwater block). */
 #ifndef TARN_LINK_UNDERWATER
 #define TARN_LINK_UNDERWATER 1

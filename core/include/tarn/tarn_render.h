@@ -128,7 +128,21 @@ typedef struct {
                                    still water's picture) */
     uint8_t frame_shape;        /* tarn_frame_shape: square tiles, or strips of the
                                    frame's width. Does not change the image. */
+    uint8_t vertex_pass;        /* tarn_vertex_pass: where vertices are transformed,
+                                   projected and lit. Does not change the image. */
 } tarn_quality;
+
+/* Where a frame finds its vertices as the camera sees them. A scene whose static
+ * view applies (tarn_scene.h: a baked still scene) reads them from it either way. */
+typedef enum {
+    TARN_VERTICES_PER_TILE = 0,  /* each tile's or strip's walk, through a 16-vertex
+                                    cache: no memory, but a vertex shared by several
+                                    pieces, or evicted, is found again */
+    TARN_VERTICES_PER_FRAME = 1  /* once a frame, into the frame's memory (a
+                                    tarn_static_vertex, 28 bytes, per mesh vertex,
+                                    and the scene and its objects copied to name
+                                    them), which every walk and the cluster bins read */
+} tarn_vertex_pass;
 
 /* How a frame is cut into the pieces it draws and hands to the sink, one at a time. */
 typedef enum {

@@ -1,0 +1,153 @@
+/* test_vertex_pass.c: a frame that finds its vertices once, into its memory (the
+ * quality's vertex_pass TARN_VERTICES_PER_FRAME), is the frame whose walks find
+ * them, byte for byte: on every scene two ways of drawing are tested on and the
+ * moving ones, at each preset and two times, in tiles and in strips. It takes the
+ * bytes tarn_render.h states (28 a vertex, with the scene, its objects and the view
+ * that names them), and none where a baked static view holds the vertices already. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "frame_render.h"
+#include "scene_load.h"
+#include "static_view.h"
+#include "tarn_internal.h"
+
+#define WIDTH 160
+#define HEIGHT 120
+
+static const char *const moving_scenes[] = {"scenes/pond-orbit.json", "scenes/lake-drift.json"};
+static const char *const preset_names[] = {"exact", "balanced", "fast"};
+
+static void load(const char *path, tarn_loaded_scene *loaded)
+{
+    tarn_error err;
+    if (tarn_scene_load(path, loaded, &err) != 0) fail_msg("%s", err.message);
+}
+
+static tarn_frame_config config_of(int preset, uint32_t time_ms)
+{
+    tarn_frame_config c = {WIDTH, HEIGHT, tarn_quality_preset((tarn_preset)preset), time_ms};
+    return c;
+}
+
+/* The frame with the vertex pass, in the preset's tiles and in 16-row strips,
+ * equals the frame without it. */
+static void assert_pass_draws_the_same_frame(const char *path)
+{
+    tarn_loaded_scene loaded;
+    load(path, &loaded);
+    static const uint32_t times[] = {0, 1234};
+    for (int p = 0; p < TARN_PRESET_COUNT; p++)
+        for (size_t t = 0; t < sizeof times / sizeof times[0]; t++) {
+            tarn_frame_config config = config_of(p, times[t]);
+            uint8_t *walked = test_render_rgb(&loaded.scene, &config, path);
+            config.quality.vertex_pass = TARN_VERTICES_PER_FRAME;
+            for (int strips = 0; strips <= 1; strips++) {
+                config.quality.frame_shape = strips ? TARN_FRAME_STRIPS : TARN_FRAME_TILES;
+                config.quality.tile_size = strips ? 16 : config.quality.tile_size;
+                uint8_t *passed = test_render_rgb(&loaded.scene, &config, path);
+                if (memcmp(walked, passed, 3u * WIDTH * HEIGHT) != 0)
+                    fail_msg("%s (%s, %u ms, %s): the vertex pass changes the frame", path, preset_names[p],
+                             (unsigned)times[t], strips ? "strips" : "tiles");
+                free(passed);
+            }
+            free(walked);
+        }
+    tarn_scene_free(&loaded);
+}
+
+static void test_vertex_pass_draws_the_same_frame(void **state)
+{
+    (void)state;
+    for (size_t i = 0; i < TEST_FRAME_SCENE_COUNT; i++) assert_pass_draws_the_same_frame(test_frame_scenes[i]);
+    for (size_t i = 0; i < sizeof moving_scenes / sizeof moving_scenes[0]; i++)
+        assert_pass_draws_the_same_frame(moving_scenes[i]);
+}
+
+/* The bytes the pass adds to a still scene: its copy, its objects', the view it
+ * makes and every vertex, rounded to 4 bytes with room to align the copy. */
+static size_t pass_bytes(const tarn_scene *scene)
+{
+    size_t vertices = 0;
+    for (uint32_t i = 0; i < scene->object_count; i++) vertices += scene->objects[i].mesh->vertex_count;
+    const size_t bytes = sizeof(void *) - 4u + sizeof(tarn_scene) + scene->object_count * sizeof(tarn_object) +
+                         sizeof(tarn_static_view) + vertices * sizeof(tarn_static_vertex);
+    return (bytes + 3u) & ~(size_t)3u;
+}
+
+static void test_vertex_pass_takes_its_vertices_bytes(void **state)
+{
+    (void)state;
+    tarn_loaded_scene loaded;
+    load("scenes/pond.json", &loaded);
+    tarn_frame_config config = config_of(TARN_PRESET_BALANCED, 0);
+    const size_t walked = tarn_frame_memory_bytes(&config, &loaded.scene);
+    config.quality.vertex_pass = TARN_VERTICES_PER_FRAME;
+    const size_t passed = tarn_frame_memory_bytes(&config, &loaded.scene);
+    if (passed - walked != pass_bytes(&loaded.scene))
+        fail_msg("the vertex pass adds %zu bytes, expected %zu", passed - walked, pass_bytes(&loaded.scene));
+    assert_int_equal(test_render_status(&loaded.scene, &config), TARN_OK);
+
+    /* baked for this frame, the scene's own static view holds the vertices */
+    tarn_static_scene baked;
+    tarn_error err;
+    if (tarn_static_scene_make(&loaded.scene, &config, 1, &baked, &err) != 0) fail_msg("%s", err.message);
+    tarn_frame_config walk = config;
+    walk.quality.vertex_pass = TARN_VERTICES_PER_TILE;
+    assert_int_equal(tarn_frame_memory_bytes(&config, &baked.scene), tarn_frame_memory_bytes(&walk, &baked.scene));
+    tarn_static_scene_free(&baked);
+    tarn_scene_free(&loaded);
+}
+
+/* The scene a frame with the pass draws: a copy in the frame's memory whose static
+ * view is made for this frame, every object's vertices in that memory as the
+ * frame's camera sees them. */
+static void test_vertex_pass_scene_holds_every_vertex(void **state)
+{
+    (void)state;
+    tarn_loaded_scene loaded;
+    load("scenes/pond-orbit.json", &loaded);
+    tarn_frame_config config = config_of(TARN_PRESET_EXACT, 1234);
+    config.quality.vertex_pass = TARN_VERTICES_PER_FRAME;
+    const size_t bytes = tarn_frame_memory_bytes(&config, &loaded.scene);
+    uint8_t *memory = malloc(bytes);
+    assert_non_null(memory);
+    void *next = memory;
+    const tarn_scene *own = tarn__frame_scene(&loaded.scene, &config, &next);
+    assert_true((const uint8_t *)own >= memory && (uint8_t *)next <= memory + bytes);
+    assert_true(tarn__static_screen_applies(own, &config));
+    tarn_view view;
+    tarn_scene plain = *own;
+    plain.static_view = NULL;
+    tarn__view_setup(&plain, &config, &view);
+    for (uint32_t i = 0; i < own->object_count; i++) {
+        const tarn_object *object = &own->objects[i];
+        assert_true((const uint8_t *)object->static_vertices >= memory &&
+                    (const uint8_t *)(object->static_vertices + object->mesh->vertex_count) <= (uint8_t *)next);
+        tarn_object_xform xform;
+        tarn__object_xform_setup(&view, object, &xform);
+        for (uint32_t k = 0; k < object->mesh->vertex_count; k += 97u) {
+            const tarn_static_vertex expected = tarn__static_vertex_of(&view, &xform, object->mesh, (uint16_t)k);
+            if (memcmp(&expected, &object->static_vertices[k], sizeof expected) != 0)
+                fail_msg("object %u, vertex %u: the pass kept another vertex than the frame's camera sees",
+                         (unsigned)i, (unsigned)k);
+        }
+    }
+    free(memory);
+    tarn_scene_free(&loaded);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_vertex_pass_draws_the_same_frame),
+        cmocka_unit_test(test_vertex_pass_takes_its_vertices_bytes),
+        cmocka_unit_test(test_vertex_pass_scene_holds_every_vertex),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
