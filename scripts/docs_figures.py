@@ -309,6 +309,12 @@ class Measurer:
             raise value
         return value
 
+    def profile(self, board):
+        """make profile-target's stages for a board's own build: each stage's
+        instructions a pixel over the run's frames (stage name -> Fig), and
+        "frames", the frames they were counted over."""
+        return self._get(("profile", board))
+
     def memory(self, scene, args=""):
         return self._get(("memory", scene, args))
 
@@ -343,10 +349,17 @@ class Measurer:
         for r in pending:
             if r[0] == "sweep_cost":
                 sweeps.setdefault(r[1], []).append(r[2])
-        phases = [[r for r in pending if r[0] in ("bench", "build")],
+        # a board's own builds share its directories (bench-target of a board runs each
+        # of its scenes, profile-target its first): one at a time, each board's in turn
+        boards = {}
+        for r in pending:
+            if r[0] in ("bench", "build", "profile"):
+                own = r[0] != "bench" or r[2] is None or r[4] is not None
+                boards.setdefault(("board", r[1]) if own else r, []).append(r)
+        phases = [[("serial", tuple(jobs)) for jobs in boards.values()],
                   [("sweep_batch", scene, tuple(args)) for scene, args in sweeps.items()] +
                   [r for r in pending if r[0] in ("host", "output")]]
-        quick = [r for r in pending if r[0] not in ("bench", "build", "host", "output", "sweep_cost")]
+        quick = [r for r in pending if r[0] not in ("bench", "build", "profile", "host", "output", "sweep_cost")]
         with concurrent.futures.ThreadPoolExecutor(2) as pool:
             for k, jobs in enumerate(phases):
                 futures = {pool.submit(self._measure, j): j for j in jobs}
@@ -358,11 +371,20 @@ class Measurer:
                     if j[0] == "sweep_batch":
                         for args, value in zip(j[2], f.result()):
                             self.cache[("sweep_cost", j[1], args)] = value
+                    elif j[0] == "serial":
+                        for one, value in zip(j[1], f.result()):
+                            self.cache[one] = value
                     else:
                         self.cache[j] = f.result()
 
+    def _m_serial(self, jobs):
+        """Measurements that must not run beside each other, in turn."""
+        return [self._measure(j) for j in jobs]
+
     def _measure(self, req):
         kind = req[0]
+        if kind == "serial":
+            return self._m_serial(req[1])
         self.log("measure: %s" % " ".join(str(x) for x in req if x is not None))
         try:
             return getattr(self, "_m_" + kind)(*req[1:])
@@ -461,6 +483,26 @@ class Measurer:
             else:
                 values[k] = exact(v)
         return values
+
+    def _m_profile(self, board):
+        out = run(["make", "--no-print-directory", "-s", "profile-target", "BOARD=" + board, "TOP=20"])
+        with open(os.path.join(ROOT, "build/firmware", board, "profile.report")) as f:
+            report = fields(f.read().strip())
+        frames = len(report["frame_insn"].split(","))
+        width, height = map(int, report["size"].split("x"))
+        stages, inside = {}, False
+        for line in out.splitlines():
+            if line.startswith("stages:"):
+                inside = True
+            elif inside and line.startswith(" "):
+                count, _, name = line.split(None, 2)
+                stages[name.strip()] = insn(int(count) / (frames * width * height))
+            elif inside:
+                break
+        if not stages:
+            raise MeasureError("make profile-target BOARD=%s printed no stages" % board)
+        stages["frames"] = exact(frames)
+        return stages
 
     def _m_build(self, board):
         run(["make", "--no-print-directory", "-s", "firmware", "BOARD=" + board])

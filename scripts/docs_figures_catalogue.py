@@ -176,7 +176,8 @@ POND_KNOBS = ["", "--quality exact", "--quality fast", "--perspective span:4", "
               "--perspective affine", "--recip-steps 2", "--recip-steps 0", "--fog-bits 16", "--depth 16",
               "--subpixel 2", "--subpixel 5", "--subpixel 6", "--tile 16", "--tile 64", "--apron off",
               "--apron off --tile 16", "--bins off", "--water-block 2", "--quality fast --water-block 1",
-              "--depth-interpolation plane", "--quality fast --depth-interpolation exact"]
+              "--depth-interpolation plane", "--quality fast --depth-interpolation exact",
+              "--frame strips --tile 16", "--vertices frame", "--frame strips --tile 16 --vertices frame"]
 
 
 @block
@@ -386,6 +387,7 @@ KEYS["memory.pond.bytes"] = memory_key("pond", "", "bytes")
 KEYS["memory.pond.baked_bytes"] = memory_key("pond", "", "baked_bytes")
 KEYS["memory.pond.fast.bytes"] = memory_key("pond", "--quality fast", "bytes")
 KEYS["memory.pond.fast.baked_bytes"] = memory_key("pond", "--quality fast", "baked_bytes")
+KEYS["memory.pond-orbit.strips16.bytes"] = memory_key("pond-orbit", "--quality exact --frame strips --tile 16", "bytes")
 KEYS["memory.opaque.tile32"] = memory_key("effects/none", "--tile 32 --depth 32", "baked_bytes")
 KEYS["memory.opaque.tile16_depth16"] = memory_key("effects/none", "--tile 16 --depth 16", "baked_bytes")
 
@@ -851,6 +853,39 @@ def fw_boards(m):
     return table(["board", "scene, quality", "insn/pixel", "core alone", "RAM", "flash (scene + code)",
                   "stack bound / peak / reserved", "panel PSNR dB"], rows,
                  ["---", "---", "---:", "---:", "---:", "---:", "---", "---:"])
+
+
+# the RAM boards' scenes as they were baked before strips and the vertex pass, and
+# the moving pond at a leaner quality than the boards' exact
+FW_VARIANTS.update({
+    "m0-264k-orbit-tiles": ("qemu-m0-264k", "pond-orbit", "--quality exact --tile 64"),
+    "m0-264k-orbit-lean": ("qemu-m0-264k", "pond-orbit", "--quality balanced --frame strips --tile 16 "
+                           "--depth-interpolation plane --refraction-normal shared"),
+    "m0-264k-opaque-tiles": ("qemu-m0-264k", "pond-opaque", "--quality exact --tile 64"),
+    "m0-264k-opaque-strips": ("qemu-m0-264k", "pond-opaque", "--quality exact --frame strips --tile 64"),
+    "rv32-400k-orbit-tiles": ("qemu-rv32-400k", "pond-orbit", "--quality exact --tile 64"),
+    "rv32-400k-opaque-tiles": ("qemu-rv32-400k", "pond-opaque", "--quality exact --tile 64"),
+})
+
+
+PROFILE_BOARDS = ("qemu-m0-264k", "qemu-rv32-400k")
+PROFILE_STAGES = [("geometry: transform, clip, project, vertex cache", "vertices: transform, clip, project, light"),
+                  ("cluster bins", "cluster bins"),
+                  ("triangle setup: edges, planes, exact depth", "triangle setup"),
+                  ("raster: coverage, depth, interpolation, texels", "opaque spans"),
+                  ("water shading", "water"),
+                  ("panel: RGB565 and the stream", "panel: RGB565 and the stream"),
+                  ("frame: pose, tiles or strips, clears, copies", "frame: pose, strips, clears, copies"),
+                  ("other", "other (start-up, the counter's check)")]
+
+
+@block
+def fw_profile(m):
+    """make profile-target on the RAM boards: each stage's instructions a pixel."""
+    rows = []
+    for stage, label in PROFILE_STAGES:
+        rows.append([label] + [m.profile(b).get(stage, insn(0)) for b in PROFILE_BOARDS])
+    return table(["stage"] + ["`%s`" % b for b in PROFILE_BOARDS], rows, ["---", "---:", "---:"])
 
 
 FW_VARIANTS.update({

@@ -54,8 +54,10 @@ STAGES = {
     'tarn__water_sharp_features': 'water shading',
     'tarn__water_still_tile': 'water shading',
     'tarn__underwater_tile': 'water shading',
+    'tarn__vertex_pass': 'geometry: transform, clip, project, vertex cache',
+    'tarn__scene_pose': 'frame: pose, tiles or strips, clears, copies',
     'tarn__bin_clusters': 'cluster bins',
-    'tarn_render_frame': 'frame: tiles, clears, copies',
+    'tarn_render_frame': 'frame: pose, tiles or strips, clears, copies',
     'tarn_panel_send_tile': 'panel: RGB565 and the stream',
     'tarn_panel_band_add': 'panel: RGB565 and the stream',
 }

@@ -67,6 +67,14 @@ static void test_good_lines_parse(void **state)
     assert_int_equal(o.quality.refraction_normal, TARN_REFRACTION_NORMAL_EXACT);
     assert_int_equal(parse("render s.json -o x.png --refraction-normal shared", &o, &err), 0);
     assert_int_equal(o.quality.refraction_normal, TARN_REFRACTION_NORMAL_SHARED);
+    assert_int_equal(parse("render s.json -o x.png --frame strips --vertices frame", &o, &err), 0);
+    assert_int_equal(o.quality.frame_shape, TARN_FRAME_STRIPS);
+    assert_int_equal(o.quality.vertex_pass, TARN_VERTICES_PER_FRAME);
+    assert_int_equal(parse("render s.json -o x.png", &o, &err), 0);
+    assert_int_equal(o.quality.frame_shape, TARN_FRAME_TILES);
+    assert_int_equal(o.quality.vertex_pass, TARN_VERTICES_PER_TILE);
+    assert_int_not_equal(parse("render s.json -o x.png --frame bands", &o, &err), 0);
+    assert_int_not_equal(parse("render s.json -o x.png --vertices 2", &o, &err), 0);
     assert_int_equal(parse("compare s.json --backdrop still --diff heat.png", &o, &err), 0);
     assert_int_equal(o.command, TARN_CMD_COMPARE);
     assert_int_equal(o.backdrop, TARN_BACKDROP_STILL);
@@ -92,7 +100,8 @@ static int same_quality(const tarn_quality *a, const tarn_quality *b)
            a->depth_bits == b->depth_bits && a->tile_size == b->tile_size &&
            a->refraction_apron == b->refraction_apron && a->cluster_bins == b->cluster_bins &&
            a->fog_argument_bits == b->fog_argument_bits && a->water_block == b->water_block &&
-           a->depth_interpolation == b->depth_interpolation;
+           a->depth_interpolation == b->depth_interpolation && a->frame_shape == b->frame_shape &&
+           a->vertex_pass == b->vertex_pass;
 }
 
 /* A preset is the base; a knob changes it wherever it stands on the line. */

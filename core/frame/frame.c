@@ -104,7 +104,7 @@ static void begin_water(frame_state *f)
     c->background_rect.x0 = b->origin_x;
     c->background_rect.y0 = b->origin_y;
     c->background_stride = b->stride;
-    c->background_rows = f->layout.ring_rows;
+    c->background_rows = f->layout.ring_strips != 0 ? f->layout.ring_strips * f->layout.tile : INT32_MAX;
     c->offset_limit = f->layout.refraction_apron;
     c->sample_rect = b->rect; /* binds at the frame's edges only (opaque_rect, the ring) */
     /* over an opaque backdrop (tarn__frame_layout_of draws no apron then), moved
@@ -359,6 +359,7 @@ static int draw_tile(frame_state *f, int32_t x, int32_t y, tarn_tile_sink sink, 
  * its own strip buffer from a copy (the ring keeps the opaque pixels the next
  * strips' water reads), or in place when no sample moves. Each pixel is found as
  * a tile finds it, so the image is the same byte for byte. */
+
 /* Strip s's slot in the ring, as a target over the strip's rows; `slot` is
  * s modulo the ring's strips. */
 static tarn_tile_target ring_slot(const frame_state *f, const tarn_tile_target *ring, int32_t s, int32_t slot)
@@ -451,7 +452,7 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
     frame_begin(&f, memory);
     if (TARN_LINK_FOUND_BINS && f.found_bins != NULL) tarn__bin_clusters(scene, &view, f.found_bins);
     if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn__underwater_setup(&f.underwater, &view, config, scene->underwater);
-    if (TARN_LINK_STRIPS && f.layout.strips) return draw_strips(&f, sink, user);
+    if (TARN_LINK_STRIPS && f.layout.ring_strips != 0) return draw_strips(&f, sink, user);
     for (int32_t y = 0; y < config->height; y += f.layout.tile)
         for (int32_t x = 0; x < config->width; x += f.layout.tile)
             if (draw_tile(&f, x, y, sink, user) != 0) return TARN_ERR_SINK;

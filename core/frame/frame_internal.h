@@ -31,8 +31,8 @@ typedef struct {
     int32_t under_apron;  /* pixels the underwater displacement reaches */
     int32_t refraction_apron; /* pixels refraction reaches */
     int32_t apron;        /* the opaque pass's: refraction plus underwater */
-    int32_t region_width; /* the opaque buffers: tile + 2 * apron square, or */
-    int32_t region_height; /* ring_strips strips of the frame's width */
+    int32_t region_width; /* the opaque buffers: tile + 2 * apron square, or the
+                             frame's width, ring_strips strips tall */
     int32_t water_region; /* tile + 2 * under_apron */
     int water;            /* a water pass runs */
     int underwater;
@@ -45,10 +45,10 @@ typedef struct {
     const tarn_cluster_bin *static_bins; /* the static view's instead, or NULL */
     const tarn_backdrop *backdrop; /* the opaque pass's pixels, or NULL: drawn */
     int still;            /* the backdrop holds the water's still terms (tarn_scene.h) */
-    int strips;           /* the frame is drawn in strips (TARN_FRAME_STRIPS) */
     int32_t piece_width;  /* pixels across a tile or strip */
-    int32_t ring_strips;  /* strips whose opaque pass is kept; 1 with tiles */
-    int32_t ring_rows;    /* their rows, after which the buffers wrap; INT32_MAX with tiles */
+    int32_t ring_strips;  /* strips whose opaque pass the ring keeps; 0: the frame is
+                             drawn in tiles (the fields stay few: the layout lives on
+                             the 16 KB boards' stack) */
 } tarn_frame_layout;
 
 /* Where each buffer of a layout lies in the caller's memory. */

@@ -30,13 +30,11 @@ static tarn_frame_layout layout_of(const tarn_frame_config *config, const tarn_s
     l.in_place = l.water && !l.underwater && l.apron == 0;
     /* strips keep the opaque pass of every strip a water pixel can sample: the
      * apron, rounded up to whole strips, above and below */
-    l.strips = TARN_LINK_STRIPS && config->quality.frame_shape == TARN_FRAME_STRIPS && !l.underwater &&
-               l.backdrop == NULL;
-    l.piece_width = l.strips ? (int32_t)config->width : l.tile;
-    l.ring_strips = l.strips ? 1 + 2 * ((l.apron + l.tile - 1) / l.tile) : 1;
-    l.ring_rows = l.strips ? l.ring_strips * l.tile : INT32_MAX;
-    l.region_width = l.strips ? l.piece_width : l.tile + 2 * l.apron;
-    l.region_height = l.strips ? l.ring_strips * l.tile : l.region_width;
+    const int strips = TARN_LINK_STRIPS && config->quality.frame_shape == TARN_FRAME_STRIPS && !l.underwater &&
+                       l.backdrop == NULL;
+    l.piece_width = strips ? (int32_t)config->width : l.tile;
+    l.ring_strips = strips ? 1 + 2 * ((l.apron + l.tile - 1) / l.tile) : 0;
+    l.region_width = strips ? l.piece_width : l.tile + 2 * l.apron;
     l.water_region = l.tile + 2 * l.under_apron;
     l.depth_bytes = l.still ? 0u : config->quality.depth_bits / 8u;
     /* the underwater pass reads displaced water pixels over an apron that need not
@@ -56,18 +54,24 @@ tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const t
     return layout_of(config, scene, tarn__underwater_active(scene));
 }
 
+/* Rows of the opaque buffers: the tile's square, or the ring's strips. */
+static int32_t region_height(const tarn_frame_layout *l)
+{
+    return l->ring_strips != 0 ? l->ring_strips * l->tile : l->region_width;
+}
+
 /* Pixels of the water pass's own colour and depth buffers. */
 static size_t water_pixels(const tarn_frame_layout *l)
 {
     if (!l->water || l->still) return 0u;
     if (l->in_place) return (size_t)l->piece_width * TARN_WATER_STRIP_ROWS;
-    if (l->strips) return (size_t)l->piece_width * (size_t)l->tile;
+    if (l->ring_strips != 0) return (size_t)l->piece_width * (size_t)l->tile;
     return (size_t)l->water_region * (size_t)l->water_region;
 }
 
 static size_t layout_bytes(const tarn_frame_layout *l)
 {
-    const size_t region = (size_t)l->region_width * (size_t)l->region_height;
+    const size_t region = (size_t)l->region_width * (size_t)region_height(l);
     const size_t tile = (size_t)l->tile * (size_t)l->tile;
     return (region + water_pixels(l)) * (4u + l->depth_bytes) + (l->underwater ? tile * 4u : 0u) +
            (size_t)l->blocks * l->block_bytes + (size_t)l->bins * sizeof(tarn_cluster_bin);
@@ -137,7 +141,7 @@ const tarn_scene *tarn__frame_scene(const tarn_scene *scene, const tarn_frame_co
 
 tarn_frame_buffers tarn__frame_carve(const tarn_frame_layout *l, void *memory)
 {
-    const size_t region = (size_t)l->region_width * (size_t)l->region_height;
+    const size_t region = (size_t)l->region_width * (size_t)region_height(l);
     const size_t water = water_pixels(l);
     tarn_frame_buffers b;
     uint8_t *next = memory; /* 4-byte buffers first, so every one stays aligned */

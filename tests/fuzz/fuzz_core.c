@@ -243,6 +243,8 @@ static tarn_frame_config make_config(fuzz_reader *r)
     c.quality.water_block = pick(r, blocks, 4); /* 3, and 2 with tile 13, are refused */
     c.quality.depth_interpolation = pick(r, depth_modes, 3); /* 2 is refused */
     c.quality.refraction_normal = pick(r, depth_modes, 3);   /* 2 is refused */
+    c.quality.frame_shape = pick(r, depth_modes, 3);         /* 2 is refused */
+    c.quality.vertex_pass = pick(r, depth_modes, 3);         /* 2 is refused */
     return c;
 }
 

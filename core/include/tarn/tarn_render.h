@@ -5,7 +5,8 @@
  *     size_t need = tarn_frame_memory_bytes(&cfg, &scene);   0 means the config is invalid
  *     static uint32_t mem[...];                          at least `need` bytes, 4-aligned
  *     tarn_render_frame(&scene, &cfg, mem, sizeof mem, my_sink, my_ctx);
- * The sink receives each finished tile, left to right, top to bottom.
+ * The sink receives each finished tile, left to right, top to bottom (or, with the
+ * quality's frame_shape TARN_FRAME_STRIPS, each strip of the whole width).
  *
  * What a pixel is (the float reference in host/ implements the same rules):
  *  - View space: forward f = normalize(target - position), right r = normalize(f x Y),
@@ -242,7 +243,9 @@ static inline uint32_t tarn_depth16_decode(uint16_t code)
 }
 
 typedef struct {
-    uint16_t x, y, width, height; /* the tile's rectangle in the frame, pixels */
+    uint16_t x, y, width, height; /* the tile's rectangle in the frame, pixels: at most
+                                     tile_size square, or a strip tile_size rows by
+                                     the frame's width */
     const uint32_t *rgb;          /* 0x00RRGGBB pixels, rows `stride` pixels apart */
     const void *depth;            /* near/d per pixel (uint16_t tarn_depth16 code or uint32_t
                                      Q1.30 by depth_bits), same layout; 0 where no triangle drew.
