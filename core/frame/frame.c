@@ -97,14 +97,15 @@ static tarn_pixel_rect around(int32_t x, int32_t y, int32_t size, int32_t apron,
 static void begin_water(frame_state *f)
 {
     tarn_water_context *c = &f->water_context;
-    const tarn_tile_target *b = f->ring != NULL ? f->ring : &f->opaque;
+    const tarn_tile_target *b = TARN_LINK_STRIPS && f->ring != NULL ? f->ring : &f->opaque;
     c->background = b->colour;
     c->background_depth = b->depth;
     c->depth_bits = f->config->quality.depth_bits;
     c->background_rect.x0 = b->origin_x;
     c->background_rect.y0 = b->origin_y;
     c->background_stride = b->stride;
-    c->background_rows = f->layout.ring_strips != 0 ? f->layout.ring_strips * f->layout.tile : INT32_MAX;
+    c->background_rows =
+        TARN_LINK_STRIPS && f->layout.ring_strips != 0 ? f->layout.ring_strips * f->layout.tile : INT32_MAX;
     c->offset_limit = f->layout.refraction_apron;
     c->sample_rect = b->rect; /* binds at the frame's edges only (opaque_rect, the ring) */
     /* over an opaque backdrop (tarn__frame_layout_of draws no apron then), moved

@@ -57,7 +57,7 @@ tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const t
 /* Rows of the opaque buffers: the tile's square, or the ring's strips. */
 static int32_t region_height(const tarn_frame_layout *l)
 {
-    return l->ring_strips != 0 ? l->ring_strips * l->tile : l->region_width;
+    return TARN_LINK_STRIPS && l->ring_strips != 0 ? l->ring_strips * l->tile : l->region_width;
 }
 
 /* Pixels of the water pass's own colour and depth buffers. */
@@ -65,7 +65,7 @@ static size_t water_pixels(const tarn_frame_layout *l)
 {
     if (!l->water || l->still) return 0u;
     if (l->in_place) return (size_t)l->piece_width * TARN_WATER_STRIP_ROWS;
-    if (l->ring_strips != 0) return (size_t)l->piece_width * (size_t)l->tile;
+    if (TARN_LINK_STRIPS && l->ring_strips != 0) return (size_t)l->piece_width * (size_t)l->tile;
     return (size_t)l->water_region * (size_t)l->water_region;
 }
 
