@@ -33,7 +33,6 @@ static void copy_pixels(const tarn_tile_target *from, const tarn_tile_target *to
     }
 }
 
-
 /* A frame being drawn: what every pass reads, and the targets they draw into. */
 typedef struct {
     const tarn_scene *scene;
@@ -68,7 +67,7 @@ static void frame_begin(frame_state *f, void *memory)
     f->opaque.stride = f->layout.region_width;
     f->opaque.quality = &f->config->quality;
     f->opaque.log2_span = (uint8_t)(31u - tarn_clz32(f->config->quality.perspective_span));
-    f->ring = NULL; /* strips.c points it at the ring */
+    f->ring = NULL; /* draw_strips points it at the ring */
     f->water.target = f->opaque;
     f->water.water = &f->water_context;
     f->water.view = f->view;

@@ -3,11 +3,12 @@
  *
  *   layout.c  which buffers a frame of this scene and quality needs, their bytes
  *             (tarn_frame_memory_bytes) and where each lies in the caller's memory
- *   frame.c   tarn_render_frame: checks, view, bins, then each tile: the opaque pass
- *             (drawn or read from a backdrop), the water pass (in place, from a copy,
- *             or over still water), the underwater view, and the sink
- *             or in strips of the whole width (TARN_FRAME_STRIPS), each strip's
- *             opaque pass drawn once into a ring, ahead of its water
+ *   frame.c   tarn_render_frame: checks, the scene it draws (posed, its vertices
+ *             found once), view, bins, then each tile: the opaque pass (drawn or
+ *             read from a backdrop), the water pass (in place, from a copy, or over
+ *             still water), the underwater view, and the sink; or in strips of the
+ *             whole width (TARN_FRAME_STRIPS), each strip's opaque pass drawn once
+ *             into a ring, ahead of its water
  *   status.c  tarn_status_text and tarn_version
  *
  * It takes the scene, the config and the caller's memory, and hands each finished
@@ -22,10 +23,11 @@
 #define TARN_WATER_STRIP_ROWS 2
 
 /* The buffers of one frame: the opaque pass's colour and depth over the tile and
- * its apron, or over the ring of strips; with water or the underwater view, the water pass's colour and depth
- * over the tile and the underwater apron, or only over a strip of the tile when
- * the water pass draws in place; with the underwater view, the tile's final
- * colour; the water blocks' slots; the cluster bins this frame finds. */
+ * its apron, or over the ring of strips; with water or the underwater view, the
+ * water pass's colour and depth over the tile and the underwater apron (over the
+ * strip, with strips), or only over two rows of the piece when the water pass
+ * draws in place; with the underwater view, the tile's final colour; the water
+ * blocks' slots; the cluster bins this frame finds. */
 typedef struct {
     int32_t tile;
     int32_t under_apron;  /* pixels the underwater displacement reaches */
