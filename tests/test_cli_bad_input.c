@@ -156,14 +156,16 @@ static void test_cli_unwritable_outputs(void **state)
     snprintf(missing_c, sizeof missing_c, "%s/no-such-dir/out.c", dir);
     snprintf(a_directory, sizeof a_directory, "%s/taken.png", dir);
     assert_int_equal(mkdir(a_directory, 0700), 0);
-    const char *const cases[][2] = {{"render", missing_png}, {"bake", missing_c}, {"render", a_directory}};
+    const char *const cases[][3] = {{"render", missing_png, "cannot create "},
+                                    {"bake", missing_c, "cannot create "},
+                                    {"render", a_directory, "is a directory, expected a file name"}};
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         char *const argv[] = {(char *)tarn, (char *)cases[k][0], "scenes/effects/none.json", "-o",
                               (char *)cases[k][1], NULL};
         run_result r;
         run(argv, &r);
         char start[1200];
-        snprintf(start, sizeof start, "tarn: %s: cannot ", cases[k][1]);
+        snprintf(start, sizeof start, "tarn: %s: %s", cases[k][1], cases[k][2]);
         const char *newline = strchr(r.stderr_text, '\n');
         if (r.status != TARN_EXIT_BAD_INPUT || strncmp(r.stderr_text, start, strlen(start)) != 0 ||
             newline == NULL || newline[1] != '\0')
