@@ -90,7 +90,7 @@ static const bad_scene_case BAD_SCENE_CASES[] = {
       ": cameras: unknown field (expected frame, background, camera, light, materials, "
       "underwater, objects)" },
     { "control character in a field name", "{\"fo\\no\": 1}", { { 0 } }, "bad.json",
-      ": fo?o: unknown field (expected frame, background, camera, light, materials, underwater, "
+      ": fo\\x0ao: unknown field (expected frame, background, camera, light, materials, underwater, "
       "objects)" },
     { "unknown camera field", BAD_CAMERA_SCENE("\"fob\": 1"), { { 0 } }, "bad.json",
       ": camera.fob: unknown field (expected position, target, fov, near, far, path)" },
@@ -453,7 +453,7 @@ static const bad_scene_case BAD_SCENE_CASES[] = {
     { "texture a directory", BAD_TEXTURE_SCENE, { { "tex.png", BAD_DIRECTORY, NULL, 0, 0 } }, "tex.png", ": cannot read: Is a directory" },
     { "texture name with a newline",
       "{" BAD_CAMERA ", \"materials\": {\"m\": {\"texture\": \"water\\nmap.png\"}}, \"objects\": []}", { { 0 } },
-      "water?map.png", ": cannot open: No such file or directory" },
+      "water\\x0amap.png", ": cannot open: No such file or directory" },
     { "texture a dangling link", BAD_TEXTURE_SCENE, { { "tex.png", BAD_SYMLINK, "nowhere.png", 0, 0 } },
       "tex.png", ": cannot open: No such file or directory" },
     { "scene file of 5 MB", NULL, { { "bad.json", BAD_OVERSIZED, NULL, 5, 0 } }, "bad.json",
