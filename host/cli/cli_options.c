@@ -6,40 +6,6 @@
 #include <stdio.h>
 #include <string.h>
 
-const char tarn_cli_usage[] =
-    "usage: tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]\n"
-    "                   [--reference [--snapped]] [--backdrop on|off|still] [QUALITY]\n"
-    "       tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--backdrop on|off|still] [QUALITY]\n"
-    "       tarn accuracy --math\n"
-    "       tarn memory SCENE [--size WxH] [QUALITY]\n"
-    "       tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]\n"
-    "                 [--static-view on|off] [--backdrop on|off|still] [QUALITY]\n"
-    "       (--backdrop on: the opaque objects drawn once, for the frame and quality, into\n"
-    "        a palette image the water draws over; the image is the same. still: the\n"
-    "        water's still terms drawn into it too, and only its moving ones each frame;\n"
-    "        each channel within 1 of the scene drawn whole, but for the highlights that\n"
-    "        water blocks share)\n"
-    "       tarn show SCENE --display DISPLAY --panel MODEL [...]   (tarn show --help)\n"
-    "       tarn sweep [SCENE...] [--out DIR] [...]                 (tarn sweep --help)\n"
-    "QUALITY: --quality fast|balanced|exact (a preset, balanced by default; the knobs below\n"
-    "         override it wherever they stand)\n"
-    "         --tile N (8..64) --subpixel N (1..8) --perspective affine|pixel|span:N (N 2..64)\n"
-    "         --depth 16|32 --recip-steps N (0..2) --exp2 N[:nearest|:linear] (N 8..256)\n"
-    "         --depth-interpolation exact|plane (near/d rounded exactly at each pixel, or on a\n"
-    "         plane like the attributes': a division less a triangle)\n"
-    "         --fog-bits N (4..16: fraction bits of the depth of water in fog's exp2)\n"
-    "         --apron on|off|N (how far refraction may move a sample, so how much opaque scene\n"
-    "         each tile renders around its water: as far as it reaches, not at all, or N pixels 0..32)\n"
-    "         --bins on|off (find each cluster's screen box once a frame, 4 bytes a cluster)\n"
-    "         --water-block 1|2|4 (water effects found at every pixel, or once per 2x2 or 4x4 block:\n"
-    "         tiles a multiple of the block only)\n"
-    "         --refraction-normal shared|exact (the normal refraction moves by: the highlight's\n"
-    "         14 bits, or found again from the maps' texels to 2^-15)\n"
-    "         --frame tiles|strips (square tiles, or strips of --tile rows of the whole width\n"
-    "         whose opaque pass is kept for the strips below: each pixel drawn once, more memory)\n"
-    "         --vertices tile|frame (vertices found by each tile's walk, or once a frame into\n"
-    "         memory, 28 bytes a vertex)\n";
-
 static int parse_size(const char *text, tarn_cli_options *o, tarn_error *err)
 {
     const char *x = text ? strchr(text, 'x') : NULL;
@@ -78,10 +44,16 @@ static int parse_command(const char *word, tarn_cli_options *o, tarn_error *err)
         o->command = (tarn_command)command;
         return 0;
     }
-    char expected[64]; /* "render, compare, accuracy, memory or bake" */
-    tarn_list_choices(TARN_CHOICES(commands), expected, sizeof expected);
+    /* show and sweep have parsers of their own (main.c), but are commands as much */
+    static const char expected[] = "render, compare, memory, bake, show, sweep or accuracy";
     if (word == NULL) return tarn_fail(err, "expected a command: %s", expected);
     return tarn_fail(err, "unknown command '%s'; expected %s", word, expected);
+}
+
+const char *tarn_cli_known_command(int argc, char **argv)
+{
+    int command;
+    return argc >= 2 && tarn_find_choice(argv[1], TARN_CHOICES(commands), &command) == 0 ? argv[1] : NULL;
 }
 
 /* --frames N and --fps F. */
@@ -134,6 +106,7 @@ static int parse_flag(const char *name, tarn_cli_options *o)
     if (strcmp(name, "--reference") == 0) o->reference = 1;
     else if (strcmp(name, "--snapped") == 0) o->snapped = 1;
     else if (strcmp(name, "--math") == 0) o->math = 1;
+    else if (strcmp(name, "--quiet") == 0) o->quiet = 1;
     else return 1;
     return 0;
 }
@@ -169,12 +142,21 @@ static int check_sequence(tarn_cli_options *o, tarn_error *err)
 static int check_combination(tarn_cli_options *o, tarn_error *err)
 {
     if (tarn_cli_check_quality(&o->quality, err) != 0) return -1;
+    if (o->command == TARN_CMD_ACCURACY && o->scene_path != NULL)
+        return tarn_fail(err, "accuracy: unexpected argument '%s'", o->scene_path);
     if (o->command == TARN_CMD_ACCURACY)
         return o->math ? 0 : tarn_fail(err, "accuracy: expected --math");
     if (o->scene_path == NULL) return tarn_fail(err, "expected a scene file");
     if (o->command == TARN_CMD_RENDER && o->output_path == NULL)
         return tarn_fail(err, "render: expected -o OUT.png");
     if (o->command == TARN_CMD_BAKE && o->output_path == NULL) return tarn_fail(err, "bake: expected -o OUT.c");
+    if (o->quiet && o->command != TARN_CMD_RENDER && o->command != TARN_CMD_BAKE)
+        return tarn_fail(err, "--quiet applies to render and bake");
+    if (o->output_path && strcmp(o->output_path, "-") == 0 && (o->frames || o->command == TARN_CMD_BAKE))
+        return tarn_fail(err, "-o -: standard output takes one image; %s writes several files",
+                         o->frames ? "--frames" : "bake");
+    if (o->diff_path && strcmp(o->diff_path, "-") == 0)
+        return tarn_fail(err, "--diff -: standard output carries the compare line; name a file");
     if (o->name && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--name applies to bake");
     if (o->points_path && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--points applies to bake");
     if (o->static_view_given && o->command != TARN_CMD_BAKE) return tarn_fail(err, "--static-view applies to bake");

@@ -1,14 +1,14 @@
 /* cli_options.h: the command line of the `tarn` tool, parsed and range-checked.
  *
  *   tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]
- *               [--reference [--snapped]] [--backdrop on|off|still] [QUALITY]
+ *               [--reference [--snapped]] [--backdrop on|off|still] [--quiet] [QUALITY]
  *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png]
  *                [--backdrop on|off|still] [QUALITY]   (the core, through a backdrop with
  *                                              --backdrop, on the yardstick: yardstick.h)
  *   tarn accuracy --math
  *   tarn memory SCENE [--size WxH] [QUALITY]   (the working memory a frame needs)
  *   tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]
- *             [--static-view on|off] [--backdrop on|off|still] [QUALITY]
+ *             [--static-view on|off] [--backdrop on|off|still] [--quiet] [QUALITY]
  *                                              (the scene as const C data: host/bake/bake.h)
  * QUALITY knobs (defaults from tarn_quality_default()):
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
@@ -16,7 +16,7 @@
  *   --exp2 N[:nearest|:linear] (8..256)
  *   --apron on|off|N  --bins on|off  --fog-bits N (4..16)  --water-block 1|2|4
  *   --quality fast|balanced|exact   a preset (core/scene/presets.c) as the base of the others
- * (parsed by quality_options.h) */
+ * (parsed by quality_options.h). cli_help.c prints each command's usage. */
 #ifndef TARN_HOST_CLI_OPTIONS_H
 #define TARN_HOST_CLI_OPTIONS_H
 
@@ -51,6 +51,7 @@ typedef struct {
     int reference;           /* render with the float reference */
     int snapped;             /* the reference rasterizes the core's snapped triangles */
     int math;                /* accuracy --math */
+    int quiet;               /* render, bake --quiet: no progress line on stderr */
     tarn_quality quality;
     int argc;                /* the whole command line, as given */
     char **argv;
@@ -68,6 +69,8 @@ int tarn_cli_frame_path(const char *output, unsigned index, char *out, size_t si
 /* The clock of frame `index`: time_ms + floor(index * 1000 / fps). */
 uint32_t tarn_cli_frame_time(const tarn_cli_options *options, unsigned index);
 
-extern const char tarn_cli_usage[];
+/* argv[1] when it names one of the commands tarn_cli_parse reads, else NULL: for
+ * the "try 'tarn render --help'" of a usage error. */
+const char *tarn_cli_known_command(int argc, char **argv);
 
 #endif

@@ -9,6 +9,8 @@
 #include <string.h>
 #include <wchar.h>
 
+const char tarn_mcp2210_usb_backend[] = "hidapi-hidraw";
+
 struct tarn_mcp2210_usb {
     hid_device *device;
 };

@@ -12,6 +12,9 @@
 
 typedef struct tarn_mcp2210_usb tarn_mcp2210_usb;
 
+/* The backend this build has: "hidapi-hidraw", or "none" (tarn --version). */
+extern const char tarn_mcp2210_usb_backend[];
+
 /* Opens the first MCP2210, or the one with this serial number (NULL: any). 0, or
  * -1 with one line saying none is attached, or why it cannot be opened. */
 int tarn_mcp2210_usb_open(const char *serial, tarn_mcp2210_usb **usb, tarn_mcp2210_seam *seam,

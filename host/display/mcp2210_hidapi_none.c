@@ -3,6 +3,8 @@
 
 #include <stddef.h>
 
+const char tarn_mcp2210_usb_backend[] = "none";
+
 int tarn_mcp2210_usb_open(const char *serial, tarn_mcp2210_usb **usb, tarn_mcp2210_seam *seam,
                           tarn_error *err)
 {

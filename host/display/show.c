@@ -10,6 +10,7 @@
 
 #include "display.h"
 #include "frame_sender.h"
+#include "option_values.h"
 #include "png_io.h"
 #include "scene_load.h"
 #include "show_options.h"
@@ -234,15 +235,8 @@ int tarn_command_show(int argc, char **argv)
 {
     tarn_show_options options;
     tarn_error err;
-    if (argc >= 3 && (strcmp(argv[2], "--help") == 0 || strcmp(argv[2], "-h") == 0)) {
-        fputs(tarn_show_usage, stdout);
-        return 0;
-    }
-    if (tarn_show_parse(argc, argv, &options, &err) != 0) {
-        /* one line, as every error of tarn show: the usage is a --help away */
-        fprintf(stderr, "tarn: %s (tarn show --help lists the options)\n", err.message);
-        return 2;
-    }
+    /* tarn show --help is main.c's: one line, as every error of tarn show */
+    if (tarn_show_parse(argc, argv, &options, &err) != 0) return tarn_usage_error("show", &err);
     tarn_loaded_scene scene;
     if (tarn_scene_load(options.scene_path, &scene, &err) != 0) return report(&err, 2);
     struct sigaction action;

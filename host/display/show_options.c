@@ -154,7 +154,7 @@ static int check_combination(const show_parse *p, tarn_error *err)
 {
     tarn_show_options *o = p->o;
     if (o->scene_path == NULL) return tarn_fail(err, "show: expected a scene file");
-    if (o->display_text == NULL) return tarn_fail(err, "show: expected --display (see tarn show --help)");
+    if (o->display_text == NULL) return tarn_fail(err, "show: expected --display");
     if (o->panel_name == NULL) {
         char models[PANEL_LIST_MAX];
         tarn_list_choices(TARN_CHOICES(panel_models), models, sizeof models);

@@ -60,16 +60,32 @@ int tarn_parse_choice(const char *option, const char *text, const tarn_option_ch
     return tarn_fail(err, "%s: expected %s, got '%s'", option, expected, text ? text : "");
 }
 
+int tarn_option_once(tarn_options_seen *seen, const char *name, tarn_error *err)
+{
+    for (size_t k = 0; k < seen->count; k++)
+        if (strcmp(seen->names[k], name) == 0) return tarn_fail(err, "%s: given twice (give it once)", name);
+    if (seen->count < TARN_OPTIONS_SEEN_MAX) seen->names[seen->count++] = name;
+    return 0;
+}
+
+int tarn_usage_error(const char *command, const tarn_error *err)
+{
+    fprintf(stderr, "tarn: %s; try 'tarn %s%s--help'\n", err->message, command ? command : "", command ? " " : "");
+    return TARN_EXIT_BAD_INPUT;
+}
+
 int tarn_parse_arguments(int argc, char **argv, const char **scene, tarn_option_reader read, void *options,
                          tarn_error *err)
 {
+    tarn_options_seen seen = {.count = 0};
     for (int i = 2; i < argc; i++) {
         const char *arg = argv[i];
-        if (arg[0] != '-') {
+        if (arg[0] != '-' || strcmp(arg, "-") == 0) {
             if (*scene != NULL) return tarn_fail(err, "unexpected argument '%s'", arg);
             *scene = arg;
             continue;
         }
+        if (tarn_option_once(&seen, arg, err) != 0) return -1;
         int taken = read(options, arg, i + 1 < argc ? argv[i + 1] : NULL, err);
         if (taken < 0) return -1;
         if (taken == TARN_OPTION_UNKNOWN) return tarn_fail(err, "unknown option '%s'", arg);

@@ -50,9 +50,24 @@ enum { TARN_OPTION_VALUE = 0, TARN_OPTION_UNKNOWN = 1, TARN_OPTION_FLAG = 2 };
 /* One option `name` of the command, `value` the word after it (NULL at the end). */
 typedef int (*tarn_option_reader)(void *options, const char *name, const char *value, tarn_error *err);
 
+/* The options a command line has given so far: each may stand once, since a
+ * second would silently win over the first. */
+#define TARN_OPTIONS_SEEN_MAX 64
+typedef struct {
+    const char *names[TARN_OPTIONS_SEEN_MAX];
+    size_t count;
+} tarn_options_seen;
+
+/* 0 the first time `name` is seen, or -1 with "NAME: given twice" in `err`. */
+int tarn_option_once(tarn_options_seen *seen, const char *name, tarn_error *err);
+
+/* A usage error of `tarn COMMAND` as its one line on stderr,
+ * "tarn: MESSAGE; try 'tarn COMMAND --help'"; returns TARN_EXIT_BAD_INPUT. */
+int tarn_usage_error(const char *command, const tarn_error *err);
+
 /* The words after the command, argv[2..argc): the one not starting with '-' is the
  * scene (*scene), each option goes to `read`. 0, or -1 with `err` set: a second
- * scene, an unknown option or the reader's message. */
+ * scene, an unknown option, an option given twice or the reader's message. */
 int tarn_parse_arguments(int argc, char **argv, const char **scene, tarn_option_reader read, void *options,
                          tarn_error *err);
 

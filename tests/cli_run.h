@@ -1,0 +1,25 @@
+/* cli_run.h: the `tarn` binary run as a user runs it, for the command-line tests:
+ * its exit status, its stdout and stderr captured, and killed if it outlives a
+ * timeout, so that a hang fails the test instead of stopping the suite. */
+#ifndef TARN_TESTS_CLI_RUN_H
+#define TARN_TESTS_CLI_RUN_H
+
+#include <stddef.h>
+
+#define CLI_OUTPUT_MAX 65536
+
+typedef struct {
+    int status;    /* the exit status; -1 when killed by a signal */
+    int timed_out; /* killed after the timeout */
+    char out[CLI_OUTPUT_MAX], err[CLI_OUTPUT_MAX];
+    size_t out_length, err_length;
+} cli_result;
+
+/* Runs argv (argv[0] the program) with stdin from /dev/null. stderr_fd >= 0
+ * sends stderr there (a terminal, say) instead of capturing it. */
+void cli_run(char *const argv[], int stderr_fd, unsigned timeout_s, cli_result *r);
+
+/* Whether r->err is exactly one line. */
+int cli_one_line(const cli_result *r);
+
+#endif
