@@ -8,6 +8,7 @@
 #include "compare.h"
 #include "core_render.h"
 #include "png_io.h"
+#include "progress.h"
 #include "reference.h"
 #include "scene_load.h"
 #include "backdrop.h"
@@ -130,15 +131,18 @@ static int render_sequence(const tarn_cli_options *o, const tarn_loaded_scene *s
     /* every frame's name is as long as the last one's */
     if (tarn_cli_frame_path(o->output_path, o->frames - 1u, path, sizeof path) != 0)
         return tarn_fail(err, "-o: '%s' is too long for a frame's file name", o->output_path);
-    for (unsigned k = 0; k < o->frames; k++) {
+    tarn_progress progress;
+    tarn_progress_start(&progress, "tarn render: frames", o->frames, o->quiet);
+    int failed = 0;
+    for (unsigned k = 0; k < o->frames && !failed; k++) {
         at.time_ms = tarn_cli_frame_time(o, k);
         tarn_cli_frame_path(o->output_path, k, path, sizeof path);
-        if (render_frame_to(path, o, scene, &at, f, err) != 0) {
-            remove_frames(o->output_path, k);
-            return -1;
-        }
+        failed = render_frame_to(path, o, scene, &at, f, err);
+        if (failed) remove_frames(o->output_path, k);
+        tarn_progress_step(&progress, k + 1u);
     }
-    return 0;
+    tarn_progress_end(&progress);
+    return failed ? -1 : 0;
 }
 
 static int render_images(const tarn_cli_options *o, const tarn_loaded_scene *scene,

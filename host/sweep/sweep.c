@@ -1,14 +1,20 @@
+/* nftw, to remove a failed run's work folder */
+#define _XOPEN_SOURCE 700
 #include "sweep.h"
 
 #include <errno.h>
+#include <ftw.h>
 #include <glob.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "atomic_file.h"
+#include "child_process.h"
 #include "option_values.h"
+#include "progress.h"
 #include "scene_load.h"
 #include "sweep_error.h"
 #include "sweep_grid.h"
@@ -25,22 +31,25 @@ typedef struct {
     const char *scenes[SCENES_MAX];
     size_t scene_count;
     const char *out_dir, *extremes_dir;
+    glob_t extremes;     /* the extreme scenes, when extremes_dir is given */
     tarn_sweep_grid grid;
     int host_cost;
+    int quiet;           /* no progress lines */
     char boards[128];
     tarn_sweep_sources sources;
 } sweep_options;
 
-static const char usage[] =
+const char tarn_sweep_usage[] =
     "usage: tarn sweep [SCENE...] [--out DIR] [--grid full|quick|presets] [--boards B,B|none]\n"
-    "                  [--host-cost callgrind|none] [--extremes DIR]\n"
+    "                  [--host-cost callgrind|none] [--extremes DIR] [--quiet]\n"
     "  SCENE        scenes to sweep (scenes/pond.json when none is given)\n"
     "  --out        where sweep.csv, front.md, SCENE.png and stability.md go (build/sweep)\n"
     "  --grid       full: the crossed knobs and every other value alone; quick: a few points;\n"
     "               presets: the three presets alone\n"
     "  --boards     emulated boards that measure target cost (qemu-m0,qemu-rv32; also qemu-m3)\n"
     "  --host-cost  callgrind (host instructions per pixel) or none\n"
-    "  --extremes   a folder of extreme scenes: each knob value's worst case, in stability.md\n";
+    "  --extremes   a folder of extreme scenes: each knob value's worst case, in stability.md\n"
+    "  --quiet      no progress lines on stderr\n";
 
 static int parse_sources(sweep_options *o, const char *list, tarn_error *err)
 {
@@ -85,10 +94,15 @@ static int parse(int argc, char **argv, sweep_options *o, tarn_error *err)
     o->host_cost = 1;
     o->sources.names[0] = "host";
     if (parse_sources(o, "qemu-m0,qemu-rv32", err) != 0) return -1;
+    tarn_options_seen seen = {.count = 0};
     for (int i = 2; i < argc; i++) {
         if (argv[i][0] != '-') {
             if (o->scene_count == SCENES_MAX) return tarn_fail(err, "at most %d scenes", SCENES_MAX);
             o->scenes[o->scene_count++] = argv[i];
+        } else if (tarn_option_once(&seen, argv[i], err) != 0) {
+            return -1;
+        } else if (strcmp(argv[i], "--quiet") == 0) {
+            o->quiet = 1;
         } else if (parse_option(o, argv[i], i + 1 < argc ? argv[i + 1] : NULL, err) != 0) {
             return -1;
         } else {
@@ -99,10 +113,66 @@ static int parse(int argc, char **argv, sweep_options *o, tarn_error *err)
     return 0;
 }
 
+/* 1 when this run made the folder, 0 when it was there, -1 with `err` set. */
 static int make_dir(const char *path, tarn_error *err)
 {
-    if (mkdir(path, 0755) != 0 && errno != EEXIST) return tarn_fail(err, "%s: cannot create: %s", path, strerror(errno));
+    if (mkdir(path, 0755) == 0) return 1;
+    if (errno == EEXIST) return 0;
+    return tarn_fail(err, "%s: cannot create: %s", path, strerror(errno));
+}
+
+static int scene_loads(const char *path, tarn_error *err)
+{
+    tarn_loaded_scene loaded;
+    if (tarn_scene_load(path, &loaded, err) != 0) return -1;
+    tarn_scene_free(&loaded);
     return 0;
+}
+
+static int plotted(const sweep_options *o)
+{
+    return o->host_cost || o->sources.count > 1;
+}
+
+/* What the work will need, before any of it: every scene and extreme scene loads,
+ * and every program the sweep runs is installed. A mistake then costs no minutes. */
+static int check_before_work(sweep_options *o, tarn_error *err)
+{
+    for (size_t k = 0; k < o->scene_count; k++)
+        if (scene_loads(o->scenes[k], err) != 0) return -1;
+    if (o->extremes_dir != NULL) {
+        char pattern[PATH_MAX_BYTES];
+        snprintf(pattern, sizeof pattern, "%s/*.json", o->extremes_dir);
+        if (glob(pattern, 0, NULL, &o->extremes) != 0)
+            return tarn_fail(err, "--extremes: no scene (*.json) in '%s'", o->extremes_dir);
+        for (size_t k = 0; k < o->extremes.gl_pathc; k++)
+            if (scene_loads(o->extremes.gl_pathv[k], err) != 0) return -1;
+    }
+    const tarn_child valgrind = {"valgrind", NULL, TARN_SWEEP_INSTALL_VALGRIND, 0};
+    const tarn_child make = {"make", NULL, TARN_SWEEP_INSTALL_MAKE, 0};
+    const tarn_child gnuplot = {"gnuplot", NULL, TARN_SWEEP_INSTALL_GNUPLOT, 0};
+    if (o->host_cost && tarn_child_installed(&valgrind, err) != 0) return -1;
+    if (o->sources.count > 1 && tarn_child_installed(&make, err) != 0) return -1;
+    return plotted(o) ? tarn_child_installed(&gnuplot, err) : 0;
+}
+
+static int remove_entry(const char *path, const struct stat *info, int kind, struct FTW *at)
+{
+    (void)info;
+    (void)kind;
+    (void)at;
+    remove(path);
+    return 0;
+}
+
+/* A failed run leaves nothing of its own: the work folder it made goes, unless
+ * the error names a log there, and so does the output folder it made (empty: the
+ * outputs are written all or none). */
+static void clean_up_failure(const char *out_dir, int made_out, const char *work_dir, int made_work,
+                             const tarn_error *err)
+{
+    if (made_work && strstr(err->message, work_dir) == NULL) nftw(work_dir, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+    if (made_out) rmdir(out_dir);
 }
 
 /* Drops the points the frame refuses (a frame too large for the subpixel bits),
@@ -138,7 +208,10 @@ static int sweep_scene(const sweep_options *o, const char *work_dir, tarn_sweep_
         scene->count = keep_valid_points(&loaded, scene->points,
                                          tarn_sweep_grid_points(o->grid, scene->points, POINTS_MAX));
         fprintf(stderr, "tarn sweep: %s, %zu points: error against the reference\n", scene->name, scene->count);
-        failed = tarn_sweep_measure_errors(&loaded, scene, err);
+        tarn_progress progress;
+        tarn_progress_start(&progress, "tarn sweep: points measured", scene->count, o->quiet);
+        failed = tarn_sweep_measure_errors(&loaded, scene, &progress, err);
+        tarn_progress_end(&progress);
     }
     if (!failed && o->host_cost) {
         fprintf(stderr, "tarn sweep: %s: host instructions (callgrind, two workers)\n", scene->name);
@@ -171,14 +244,12 @@ static void print_presets(const tarn_sweep_scene *scene, const tarn_sweep_source
 
 static int write_stability(const sweep_options *o, FILE *out, tarn_error *err)
 {
-    char pattern[PATH_MAX_BYTES];
-    snprintf(pattern, sizeof pattern, "%s/*.json", o->extremes_dir);
-    glob_t found;
-    if (glob(pattern, 0, NULL, &found) != 0)
-        return tarn_fail(err, "--extremes: no scene (*.json) in '%s'", o->extremes_dir);
-    fprintf(stderr, "tarn sweep: every knob value over the %zu extreme scenes\n", found.gl_pathc);
-    const int failed = tarn_sweep_stability((const char *const *)found.gl_pathv, found.gl_pathc, out, err);
-    globfree(&found);
+    const glob_t *found = &o->extremes;
+    fprintf(stderr, "tarn sweep: every knob value over the %zu extreme scenes\n", found->gl_pathc);
+    tarn_progress progress;
+    tarn_progress_start(&progress, "tarn sweep: extreme scenes measured", found->gl_pathc, o->quiet);
+    const int failed = tarn_sweep_stability((const char *const *)found->gl_pathv, found->gl_pathc, out, &progress, err);
+    tarn_progress_end(&progress);
     return failed;
 }
 
@@ -214,15 +285,14 @@ static size_t add_output(output_paths *out, const char *dir, const char *name, c
 static int write_outputs(const sweep_options *o, const char *work_dir, const tarn_sweep_scene *scenes,
                          size_t count, tarn_error *err)
 {
-    const int plotted = o->host_cost || o->sources.count > 1;
-    for (size_t k = 0; k < count && plotted; k++)
+    for (size_t k = 0; k < count && plotted(o); k++)
         if (tarn_sweep_plot(work_dir, &scenes[k], &o->sources, err) != 0) return -1;
     output_paths out = {.count = 0};
     const size_t csv = add_output(&out, o->out_dir, "sweep", ".csv");
     const size_t fronts = add_output(&out, o->out_dir, "front", ".md");
     const size_t stability = o->extremes_dir ? add_output(&out, o->out_dir, "stability", ".md") : 0;
     const size_t first_plot = out.count;
-    for (size_t k = 0; k < count && plotted; k++) add_output(&out, o->out_dir, scenes[k].name, ".png");
+    for (size_t k = 0; k < count && plotted(o); k++) add_output(&out, o->out_dir, scenes[k].name, ".png");
     tarn_atomic_file files[OUTPUTS_MAX];
     if (tarn_atomic_open_all(files, out.paths, out.count, err) != 0) return -1;
     tarn_sweep_write_csv(files[csv].file, scenes, count, &o->sources);
@@ -230,12 +300,26 @@ static int write_outputs(const sweep_options *o, const char *work_dir, const tar
     int failed = o->extremes_dir != NULL && write_stability(o, files[stability].file, err);
     for (size_t k = first_plot; k < out.count && !failed; k++) {
         char plot[PATH_MAX_BYTES];
-        snprintf(plot, sizeof plot, "%s/%s.png", work_dir, scenes[k - first_plot].name);
-        failed = copy_file(files[k].file, plot, err);
+        int length = snprintf(plot, sizeof plot, "%s/%s.png", work_dir, scenes[k - first_plot].name);
+        failed = length < 0 || (size_t)length >= sizeof plot ? tarn_fail(err, "%s: path too long", work_dir)
+                                                             : copy_file(files[k].file, plot, err);
     }
     if (!failed) return tarn_atomic_commit_all(files, out.count, err);
     tarn_atomic_abandon_all(files, out.count);
     return -1;
+}
+
+/* The sweep itself, once every check has passed. */
+static int run_sweep(const sweep_options *o, const char *work_dir, tarn_sweep_scene *scenes, tarn_error *err)
+{
+    int failed = 0;
+    for (size_t k = 0; k < o->scene_count && !failed; k++) {
+        scenes[k].path = o->scenes[k];
+        failed = sweep_scene(o, work_dir, &scenes[k], err);
+    }
+    if (!failed) failed = write_outputs(o, work_dir, scenes, o->scene_count, err);
+    for (size_t k = 0; k < o->scene_count && !failed; k++) print_presets(&scenes[k], &o->sources);
+    return failed;
 }
 
 int tarn_command_sweep(int argc, char **argv)
@@ -245,25 +329,20 @@ int tarn_command_sweep(int argc, char **argv)
     tarn_sweep_scene scenes[SCENES_MAX];
     memset(scenes, 0, sizeof scenes);
     char work_dir[PATH_MAX_BYTES];
-    if (argc == 3 && strcmp(argv[2], "--help") == 0) {
-        fputs(usage, stdout);
-        return 0;
-    }
-    int failed = parse(argc, argv, &o, &err);
-    if (failed) fprintf(stderr, "tarn: %s\n%s", err.message, usage);
-    if (failed) return 2;
+    if (parse(argc, argv, &o, &err) != 0) return tarn_usage_error("sweep", &err);
+    int failed = check_before_work(&o, &err);
     snprintf(work_dir, sizeof work_dir, "%s/work", o.out_dir);
-    failed = make_dir(o.out_dir, &err) || make_dir(work_dir, &err);
-    for (size_t k = 0; k < o.scene_count && !failed; k++) {
-        scenes[k].path = o.scenes[k];
-        failed = sweep_scene(&o, work_dir, &scenes[k], &err);
+    const int made_out = failed ? 0 : make_dir(o.out_dir, &err);
+    const int made_work = failed || made_out < 0 ? 0 : make_dir(work_dir, &err);
+    failed = failed || made_out < 0 || made_work < 0 || run_sweep(&o, work_dir, scenes, &err);
+    if (failed) {
+        clean_up_failure(o.out_dir, made_out > 0, work_dir, made_work > 0, &err);
+        fprintf(stderr, "tarn: %s\n", err.message);
     }
-    if (!failed) failed = write_outputs(&o, work_dir, scenes, o.scene_count, &err);
-    for (size_t k = 0; k < o.scene_count && !failed; k++) print_presets(&scenes[k], &o.sources);
-    if (failed) fprintf(stderr, "tarn: %s\n", err.message);
     for (size_t k = 0; k < o.scene_count; k++) {
         free((char *)scenes[k].name);
         free(scenes[k].points);
     }
+    if (o.extremes_dir != NULL) globfree(&o.extremes);
     return failed ? 2 : 0;
 }

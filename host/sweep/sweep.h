@@ -1,7 +1,7 @@
 /* sweep.h: tarn sweep, the speed/accuracy map of the quality knobs.
  *
  *   tarn sweep [SCENE...] [--out DIR] [--grid full|quick|presets] [--boards B,B|none]
- *              [--host-cost callgrind|none] [--extremes DIR]
+ *              [--host-cost callgrind|none] [--extremes DIR] [--quiet]
  *
  * For each scene (scenes/pond.json when none is given), every point of the grid
  * (sweep_grid.c) is rendered by the core at the scene's size, 1000 ms, and compared
@@ -12,7 +12,10 @@
  * (sweep_report.c) DIR gets sweep.csv, front.md (each scene's and cost's Pareto
  * front) and one PNG plot per scene; with --extremes, stability.md (each knob
  * value's worst case over the extreme scenes in DIR). They are written all or
- * none: a failure leaves the last run's outputs as they were. Run it from the top
+ * none: a failure leaves the last run's outputs as they were. Every scene, the
+ * extreme scenes and the programs it runs are checked before any work, and a
+ * failed run removes the work folder it made (DIR/work), unless the error names a
+ * log in it. Run it from the top
  * of the tarn tree: a board's cost comes from make there. */
 #ifndef TARN_HOST_SWEEP_H
 #define TARN_HOST_SWEEP_H
@@ -22,6 +25,14 @@
 #include "yardstick.h"
 #include "error.h"
 #include "tarn/tarn_render.h"
+
+/* tarn sweep --help */
+extern const char tarn_sweep_usage[];
+
+/* What to install for each program the sweep runs: its messages say it. */
+#define TARN_SWEEP_INSTALL_VALGRIND "sudo apt-get install valgrind (or give --host-cost none)"
+#define TARN_SWEEP_INSTALL_MAKE "sudo apt-get install make"
+#define TARN_SWEEP_INSTALL_GNUPLOT "sudo apt-get install gnuplot-nox"
 
 #define TARN_SWEEP_SOURCES_MAX 4 /* the host and up to three boards */
 #define TARN_SWEEP_OPTIONS_MAX 256

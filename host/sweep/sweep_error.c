@@ -45,7 +45,8 @@ static void knob_math_errors(math_errors *m, tarn_sweep_point *p)
     p->recip_max_rel = m->recip[p->quality.recip_newton_steps];
 }
 
-int tarn_sweep_measure_errors(const tarn_loaded_scene *loaded, tarn_sweep_scene *scene, tarn_error *err)
+int tarn_sweep_measure_errors(const tarn_loaded_scene *loaded, tarn_sweep_scene *scene, tarn_progress *progress,
+                              tarn_error *err)
 {
     tarn_continuous_reference reference = {NULL, NULL, 0, 0, 0};
     math_errors math;
@@ -56,6 +57,7 @@ int tarn_sweep_measure_errors(const tarn_loaded_scene *loaded, tarn_sweep_scene 
         tarn_sweep_point *p = &scene->points[i];
         failed = measure(loaded, &reference, &p->quality, &p->error, &p->checksum, err);
         knob_math_errors(&math, p);
+        tarn_progress_step(progress, i + 1u);
     }
     tarn_continuous_reference_free(&reference);
     return failed ? -1 : 0;

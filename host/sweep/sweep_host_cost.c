@@ -55,7 +55,7 @@ static int start_worker(const tarn_sweep_scene *scene, worker *w, tarn_error *er
                     "sweep-cost-worker", (char *)scene->path, w->points, NULL};
     w->child.program = "valgrind";
     w->child.log = w->log;
-    w->child.install = "sudo apt-get install valgrind (or give --host-cost none)";
+    w->child.install = TARN_SWEEP_INSTALL_VALGRIND;
     return tarn_child_start(&w->child, argv, err);
 }
 

@@ -235,7 +235,7 @@ static void plot_panel(FILE *gp, const char *work_dir, const tarn_sweep_scene *s
 static int run_gnuplot(const char *script, const char *log, tarn_error *err)
 {
     char *argv[] = {"gnuplot", (char *)script, NULL};
-    tarn_child gnuplot = {"gnuplot", log, "sudo apt-get install gnuplot-nox", 0};
+    tarn_child gnuplot = {"gnuplot", log, TARN_SWEEP_INSTALL_GNUPLOT, 0};
     return tarn_child_run(&gnuplot, argv, err);
 }
 

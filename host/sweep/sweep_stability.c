@@ -116,7 +116,8 @@ static void write_tables(FILE *out, const tarn_sweep_variant *variants, size_t c
     for (size_t s = 0; s < scene_count; s++) write_preset_rows(out, &presets[s]);
 }
 
-int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, FILE *out, tarn_error *err)
+int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, FILE *out, tarn_progress *progress,
+                         tarn_error *err)
 {
     tarn_sweep_variant variants[VARIANTS_MAX];
     worst_case worst[VARIANTS_MAX];
@@ -124,8 +125,10 @@ int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, FIL
     scene_presets *presets = calloc(scene_count, sizeof *presets);
     memset(worst, 0, sizeof worst);
     int failed = presets == NULL ? tarn_fail(err, "out of memory") : 0;
-    for (size_t s = 0; s < scene_count && !failed; s++)
+    for (size_t s = 0; s < scene_count && !failed; s++) {
         failed = measure_scene(scene_paths[s], variants, count, worst, &presets[s], err);
+        tarn_progress_step(progress, s + 1u);
+    }
     if (!failed) write_tables(out, variants, count, worst, presets, scene_count);
     free(presets);
     return failed ? -1 : 0;

@@ -11,9 +11,12 @@
 #define TARN_HOST_SWEEP_STABILITY_H
 
 #include <stdio.h>
+#include "progress.h"
 #include "sweep.h"
 
-/* `scene_paths`: the extreme scenes. Writes the Markdown table to `out`. */
-int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, FILE *out, tarn_error *err);
+/* `scene_paths`: the extreme scenes. Writes the Markdown table to `out`, stepping
+ * `progress` a scene at a time. */
+int tarn_sweep_stability(const char *const *scene_paths, size_t scene_count, FILE *out, tarn_progress *progress,
+                         tarn_error *err);
 
 #endif

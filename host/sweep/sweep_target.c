@@ -82,7 +82,7 @@ static int run_make(const char *board, const char *scene_path, const char *point
     snprintf(bake_arg, sizeof bake_arg, "BAKE_FLAGS=%s", first);
     char *argv[] = {"make", "-s", "--no-print-directory", "firmware-sweep", board_arg, scene_arg,
                     points_arg, dir_arg, bake_arg, NULL};
-    tarn_child make = {"make", log, "sudo apt-get install make", 0};
+    tarn_child make = {"make", log, TARN_SWEEP_INSTALL_MAKE, 0};
     return tarn_child_run(&make, argv, err);
 }
 

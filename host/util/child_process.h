@@ -20,6 +20,10 @@ int tarn_child_start(tarn_child *child, char *const argv[], tarn_error *err);
 /* Waits for it: 0 when it exited with status 0, else -1 with `err` naming the log. */
 int tarn_child_finish(const tarn_child *child, tarn_error *err);
 
+/* 0 when the program is in PATH (an executable file), else -1 with `err` saying
+ * it is missing and how to install it: for a command to check before its work. */
+int tarn_child_installed(const tarn_child *child, tarn_error *err);
+
 /* Both, one after the other. */
 int tarn_child_run(tarn_child *child, char *const argv[], tarn_error *err);
 
