@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "input_file.h"
+
 /* v, vt and vn lines beyond this are refused before memory runs out; far more
  * than a tarn mesh can use (TARN_MESH_VERTICES_MAX). */
 #define OBJ_ELEMENTS_MAX (1u << 24)
@@ -281,8 +283,8 @@ static int parse_line(obj_parser *p, char *line)
 
 static int parse_file(obj_parser *p)
 {
-    FILE *file = fopen(p->path, "r");
-    if (!file) return tarn_fail(p->err, "%s: cannot open: %s", p->path, strerror(errno));
+    FILE *file = tarn_open_input(p->path, "an OBJ file", TARN_OBJ_FILE_BYTES_MAX, p->err);
+    if (!file) return -1;
     char *line = NULL;
     size_t size = 0;
     int result = 0;

@@ -21,6 +21,12 @@
 #include "error.h"
 #include "mesh_gen.h"
 
+/* The largest OBJ file read, checked before its first line. A full tarn mesh
+ * (TARN_MESH_VERTICES_MAX vertices with texture coordinates and normals, as many
+ * triangles) is about 10 MB of text, and scenes/ holds a 3 KB one; a sparse file of
+ * gigabytes would otherwise be read to its end before anything else is said. */
+#define TARN_OBJ_FILE_BYTES_MAX (64u * 1024u * 1024u)
+
 int tarn_obj_load(const char *path, tarn_mesh_buffer *out, tarn_error *err);
 
 #endif

@@ -2,14 +2,13 @@
 
 #include "mesh_clusters.h"
 
-#include <errno.h>
 #include <jansson.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
+#include "input_file.h"
 #include "obj_load.h"
 #include "motion_load.h"
 #include "scene_fields.h"
@@ -438,25 +437,8 @@ static int load_objects(tarn_loader *l, const json_t *root)
 
 static json_t *parse_json(const char *path, tarn_error *err)
 {
-    FILE *file = fopen(path, "r");
-    if (!file) {
-        tarn_fail(err, "%s: cannot open: %s", path, strerror(errno));
-        return NULL;
-    }
-    struct stat info;
-    if (fstat(fileno(file), &info) == 0 && S_ISDIR(info.st_mode)) {
-        fclose(file);
-        tarn_fail(err, "%s: is a directory, not a scene file", path);
-        return NULL;
-    }
-    /* the demo's scenes take 3 KB; a file this large is not a scene, and parsing it
-     * whole would take memory in proportion */
-    if (info.st_size > (off_t)TARN_SCENE_FILE_BYTES_MAX) {
-        fclose(file);
-        tarn_fail(err, "%s: is %lld bytes; a scene file holds at most %u", path, (long long)info.st_size,
-                  TARN_SCENE_FILE_BYTES_MAX);
-        return NULL;
-    }
+    FILE *file = tarn_open_input(path, "a scene file", TARN_SCENE_FILE_BYTES_MAX, err);
+    if (!file) return NULL;
     json_error_t error;
     json_t *root = json_loadf(file, JSON_REJECT_DUPLICATES, &error);
     fclose(file);

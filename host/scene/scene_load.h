@@ -65,10 +65,13 @@ typedef struct tarn_loaded_scene {
     size_t texture_count, texture_capacity;
 } tarn_loaded_scene;
 
-/* 0, or -1 with `err` set and `out` left empty (nothing to free). */
-/* The largest scene file the loader parses (meshes and images are files of their own). */
+/* The largest scene file the loader parses (meshes and images are files of their
+ * own): the scenes of scenes/ take 3 KB; a file this large is not a scene, and
+ * parsing it whole would take memory in proportion. Checked before it is read. */
 #define TARN_SCENE_FILE_BYTES_MAX (4u * 1024u * 1024u)
 
+/* 0, or -1 with `err` set and `out` left empty (nothing to free). A scene file, and
+ * every file it names, must be a regular file (input_file.h). */
 int tarn_scene_load(const char *path, tarn_loaded_scene *out, tarn_error *err);
 
 /* Frees everything the scene owns; safe on an emptied or zeroed scene. */
