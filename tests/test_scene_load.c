@@ -477,7 +477,7 @@ static void load_obj_text(const char *text, tarn_mesh_buffer *out)
 {
     char *dir = make_temp_dir();
     tarn_error err = { "" };
-    int result = tarn_obj_load(write_temp(dir, "t.obj", text), out, &err);
+    int result = tarn_obj_load(write_temp(dir, "t.obj", text), NULL, out, &err);
     remove_temp_dir(dir);
     if (result) fail_msg("%s", err.message);
 }
@@ -630,7 +630,7 @@ static void test_obj_triangle_limit(void **state)
     char expected[1200];
     snprintf(expected, sizeof expected,
              "%s:65539: more than 65535 triangles; a tarn mesh holds at most 65535", path);
-    assert_int_equal(tarn_obj_load(path, &b, &err), -1);
+    assert_int_equal(tarn_obj_load(path, NULL, &b, &err), -1);
     assert_string_equal(err.message, expected);
     remove_temp_dir(dir);
     free(text);

@@ -54,7 +54,7 @@ int tarn_mesh_drop_unused_vertices(tarn_mesh_buffer *m, const char *what, tarn_e
 void tarn_mesh_buffer_free(tarn_mesh_buffer *m);
 
 /* The vertices and triangles a generator makes room for, known from its arguments
- * before it builds anything, so that a scene can be weighed before it is built. */
+ * before it builds anything, so that a scene can be weighed first (scene_budget.h). */
 typedef struct {
     uint32_t vertices, triangles;
 } tarn_mesh_size;
