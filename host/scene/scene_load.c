@@ -448,6 +448,16 @@ static void rotation_matrix(const double degrees[3], tarn_q16 out[3][3])
     }
 }
 
+/* The mesh's clusters (mesh_clusters.h), whose one failure, memory, is named
+ * after the object: the orderer knows only the mesh. */
+static int build_clusters(tarn_loader *l, const char *field, tarn_mesh_buffer *mesh)
+{
+    if (tarn_mesh_build_clusters(mesh, l->err) == 0) return 0;
+    char what[TARN_FIELD_PATH_MAX + 64];
+    snprintf(what, sizeof what, "%s: %s", l->file, field);
+    return tarn_fail_in(l->err, what);
+}
+
 static int load_object(tarn_loader *l, const json_t *o, size_t index)
 {
     static const char *const common[] = { "type",  "material", "position", "rotation",
@@ -471,7 +481,7 @@ static int load_object(tarn_loader *l, const json_t *o, size_t index)
         tarn_get_vec3(l, o, field, "rotation", origin, rotation) ||
         tarn_get_number(l, o, field, "scale", &TARN_POSITIVE, &unit_scale, &scale) ||
         tarn_object_motion_load(l, o, field, &l->out->motions[index], &moves) ||
-        type->build(l, o, field, object->material, mesh) || tarn_mesh_build_clusters(mesh, l->err)) {
+        type->build(l, o, field, object->material, mesh) || build_clusters(l, field, mesh)) {
         return -1;
     }
     object->mesh = &mesh->mesh;
