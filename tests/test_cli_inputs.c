@@ -256,9 +256,10 @@ static void test_links_to_files_are_read(void **state)
     char *const argv[] = { (char *)tarn, "render", link, "-o", out, "--size", "32x32", NULL };
     run_result r;
     run(argv, -1, &r);
+    int written = access(out, F_OK) == 0;
+    bad_case_remove_dir(dir); /* first: a failure ends the test */
     if (r.status != 0) fail_msg("status %d, stderr %s", r.status, r.stderr_text);
-    assert_int_equal(access(out, F_OK), 0);
-    bad_case_remove_dir(dir);
+    assert_true(written);
 }
 
 /* ---- scenes over the limits ------------------------------------------------------ */
@@ -322,10 +323,10 @@ static void budget_scene_refused(budget_scene *b, const char *file, const char *
     check_refusal(&r, expected, b->dir, inputs, problem, sizeof problem);
     if (!problem[0] && r.seconds > BUDGET_SECONDS_MAX)
         snprintf(problem, sizeof problem, "took %.1f s, more than %.0f", r.seconds, BUDGET_SECONDS_MAX);
+    bad_case_remove_dir(b->dir); /* first: a failure ends the test */
     if (problem[0])
         fail_msg("%s\n  stderr   %s  expected %s", problem, r.stderr_length ? r.stderr_text : "(empty)\n",
                  expected);
-    bad_case_remove_dir(b->dir);
 }
 
 /* "4,000,000" */
