@@ -634,7 +634,7 @@ static void test_bad_input_exits_2_and_writes_nothing(void **state)
         assert_bake_refused(args, out, "plain_file", bad_points[k].expect);
     }
     snprintf(args, sizeof args, "scenes/effects/foam.json -o %s/x.c --points %s/none.txt", out, work_dir);
-    assert_bake_refused(args, out, "plain_file", "--points: cannot open");
+    assert_bake_refused(args, out, "plain_file", "none.txt: cannot open: No such file or directory");
 
 }
 

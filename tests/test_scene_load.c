@@ -477,7 +477,7 @@ static void load_obj_text(const char *text, tarn_mesh_buffer *out)
 {
     char *dir = make_temp_dir();
     tarn_error err = { "" };
-    int result = tarn_obj_load(write_temp(dir, "t.obj", text), out, &err);
+    int result = tarn_obj_load(write_temp(dir, "t.obj", text), NULL, out, &err);
     remove_temp_dir(dir);
     if (result) fail_msg("%s", err.message);
 }
@@ -630,10 +630,47 @@ static void test_obj_triangle_limit(void **state)
     char expected[1200];
     snprintf(expected, sizeof expected,
              "%s:65539: more than 65535 triangles; a tarn mesh holds at most 65535", path);
-    assert_int_equal(tarn_obj_load(path, &b, &err), -1);
+    assert_int_equal(tarn_obj_load(path, NULL, &b, &err), -1);
     assert_string_equal(err.message, expected);
     remove_temp_dir(dir);
     free(text);
+}
+
+/* An OBJ file stops at the line that takes the scene past a limit of
+ * scene_budget.h, counting what the rest of the scene holds: a v line for the
+ * vertices (and a vt or vn line, each a vertex's at most), a face for the
+ * triangles. */
+static void test_obj_stops_at_the_scene_limits(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *text;
+        tarn_scene_cost held;
+        const char *expect;
+    } cases[] = {
+        { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", { 0, TARN_SCENE_VERTICES_MAX - 2, 0, 0 },
+          ":3: the scene would hold 3,000,001 vertices; the limit is 3,000,000" },
+        { "vt 0 0\nvt 1 0\nvt 0 1\n", { 0, TARN_SCENE_VERTICES_MAX - 2, 0, 0 },
+          ":3: the scene would hold 3,000,001 vertices; the limit is 3,000,000" },
+        { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3 1 2\n", { 0, 0, TARN_SCENE_TRIANGLES_MAX - 2, 0 },
+          ":5: the scene would hold 4,000,001 triangles; the limit is 4,000,000" },
+    };
+    assert_int_equal(TARN_SCENE_VERTICES_MAX, 3000000);
+    assert_int_equal(TARN_SCENE_TRIANGLES_MAX, 4000000);
+    char *dir = make_temp_dir();
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const char *path = write_temp(dir, "t.obj", cases[k].text);
+        char expected[1200];
+        snprintf(expected, sizeof expected, "%s%s", path, cases[k].expect);
+        tarn_error err;
+        tarn_mesh_buffer b;
+        assert_int_equal(tarn_obj_load(path, &cases[k].held, &b, &err), -1);
+        assert_string_equal(err.message, expected);
+        /* the same file alone loads, or fails for its own reasons */
+        if (tarn_obj_load(path, NULL, &b, &err) == 0) tarn_mesh_buffer_free(&b);
+        else assert_null(strstr(err.message, "the scene would"));
+    }
+    remove_temp_dir(dir);
 }
 
 /* ---- PNG ------------------------------------------------------------------------ */
@@ -1298,6 +1335,7 @@ int main(void)
         cmocka_unit_test(test_obj_vertex_colours),
         cmocka_unit_test(test_obj_mixed_colours),
         cmocka_unit_test(test_obj_triangle_limit),
+        cmocka_unit_test(test_obj_stops_at_the_scene_limits),
         cmocka_unit_test(test_png_round_trip),
         cmocka_unit_test(test_png_formats),
         cmocka_unit_test(test_png_write_failure_leaves_nothing),

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "input_file.h"
 #include "quality_options.h"
 
 void tarn_bake_points_free(tarn_bake_points *points)
@@ -87,8 +88,8 @@ int tarn_bake_points_load(const char *path, const tarn_quality *base, tarn_bake_
 {
     memset(points, 0, sizeof *points);
     points->path = path;
-    FILE *f = fopen(path, "r");
-    if (f == NULL) return tarn_fail(err, "--points: cannot open '%s'", path);
+    FILE *f = tarn_open_input(path, "a points file", TARN_BAKE_POINTS_FILE_BYTES_MAX, err);
+    if (f == NULL) return -1;
     char *line = NULL;
     size_t line_capacity = 0, capacity = 0;
     unsigned line_number = 0;

@@ -12,7 +12,7 @@
  * word starting with '#' ends a line's options. As on the command line, a line's
  * --quality NAME replaces the whole base (the bake's quality) with the preset, the
  * knobs change it wherever they stand, and a later knob wins. A bad option or value
- * is a one-line error naming FILE:LINE. */
+ * is a one-line error naming FILE:LINE. FILE must be a regular file (input_file.h). */
 #ifndef TARN_HOST_BAKE_POINTS_H
 #define TARN_HOST_BAKE_POINTS_H
 
@@ -21,6 +21,9 @@
 #include "tarn/tarn_render.h"
 
 #define TARN_BAKE_POINTS_MAX 1000u
+/* The largest points file read, checked before its first line: room for every point
+ * on a line of a thousand bytes (tests/sweep_points.txt takes 319 bytes in all). */
+#define TARN_BAKE_POINTS_FILE_BYTES_MAX (1024u * 1024u)
 
 typedef struct {
     const char *path;       /* the file, for messages */

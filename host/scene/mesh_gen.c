@@ -193,11 +193,28 @@ static int add_grid_triangles(tarn_mesh_buffer *out, const grid_spec *g, const c
     return tarn_mesh_drop_unused_vertices(out, what, err);
 }
 
+/* `columns` x `rows` vertices, two triangles a cell. */
+static tarn_mesh_size grid_size(uint32_t columns, uint32_t rows)
+{
+    tarn_mesh_size size = { columns * rows, 2 * (columns - 1) * (rows - 1) };
+    return size;
+}
+
+tarn_mesh_size tarn_mesh_plane_size(uint32_t segments_x, uint32_t segments_z)
+{
+    return grid_size(segments_x + 1, segments_z + 1);
+}
+
+tarn_mesh_size tarn_mesh_heightfield_size(uint32_t image_width, uint32_t image_height)
+{
+    return grid_size(image_width, image_height);
+}
+
 static int build_grid(tarn_mesh_buffer *out, const grid_spec *g, const char *what,
                       tarn_error *err)
 {
-    uint32_t quads = (g->columns - 1) * (g->rows - 1);
-    if (tarn_mesh_reserve(out, g->columns * g->rows, 2 * quads, 1, what, err)) return -1;
+    const tarn_mesh_size size = grid_size(g->columns, g->rows);
+    if (tarn_mesh_reserve(out, size.vertices, size.triangles, 1, what, err)) return -1;
     for (uint32_t j = 0; j < g->rows; j++) {
         double fz = (double)j / (g->rows - 1);
         for (uint32_t i = 0; i < g->columns; i++) {
@@ -238,6 +255,12 @@ int tarn_mesh_heightfield(tarn_mesh_buffer *out, const tarn_image *gray, double 
 
 /* ---- box ---------------------------------------------------------------------- */
 
+tarn_mesh_size tarn_mesh_box_size(void)
+{
+    const tarn_mesh_size size = { 24, 12 }; /* four vertices and two triangles a face */
+    return size;
+}
+
 int tarn_mesh_box(tarn_mesh_buffer *out, double width, double height, double depth,
                   const char *what, tarn_error *err)
 {
@@ -250,7 +273,8 @@ int tarn_mesh_box(tarn_mesh_buffer *out, double width, double height, double dep
     };
     static const double corners[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
     const double half[3] = { width / 2, height / 2, depth / 2 };
-    if (tarn_mesh_reserve(out, 24, 12, 1, what, err)) return -1;
+    const tarn_mesh_size size = tarn_mesh_box_size();
+    if (tarn_mesh_reserve(out, size.vertices, size.triangles, 1, what, err)) return -1;
     for (int f = 0; f < 6; f++) {
         const double *normal = faces[f][0], *right = faces[f][1];
         double up[3];
@@ -272,15 +296,21 @@ int tarn_mesh_box(tarn_mesh_buffer *out, double width, double height, double dep
 
 /* ---- sphere ------------------------------------------------------------------- */
 
+/* The seam column is duplicated (u = 0 and u = 1) and each pole is one vertex per
+ * segment, so every vertex has a single texture coordinate; the triangle touching a
+ * pole through two of its corners has no area, so a pole's ring has one a segment. */
+tarn_mesh_size tarn_mesh_sphere_size(uint32_t segments, uint32_t rings)
+{
+    const tarn_mesh_size size = { (rings + 1) * (segments + 1), 2 * segments * (rings - 1) };
+    return size;
+}
+
 int tarn_mesh_sphere(tarn_mesh_buffer *out, double radius, uint32_t segments, uint32_t rings,
                      const char *what, tarn_error *err)
 {
-    /* The seam column is duplicated (u = 0 and u = 1) and each pole is one vertex
-     * per segment, so every vertex has a single texture coordinate. */
     uint32_t columns = segments + 1;
-    if (tarn_mesh_reserve(out, (rings + 1) * columns, 2 * segments * (rings - 1), 1, what, err)) {
-        return -1;
-    }
+    const tarn_mesh_size size = tarn_mesh_sphere_size(segments, rings);
+    if (tarn_mesh_reserve(out, size.vertices, size.triangles, 1, what, err)) return -1;
     for (uint32_t k = 0; k <= rings; k++) {
         double theta = PI * k / rings; /* 0 at the top pole */
         for (uint32_t s = 0; s <= segments; s++) {

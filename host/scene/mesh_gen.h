@@ -53,6 +53,18 @@ int tarn_mesh_drop_unused_vertices(tarn_mesh_buffer *m, const char *what, tarn_e
 
 void tarn_mesh_buffer_free(tarn_mesh_buffer *m);
 
+/* The vertices and triangles a generator makes room for, known from its arguments
+ * before it builds anything, so that a scene can be weighed first (scene_budget.h). */
+typedef struct {
+    uint32_t vertices, triangles;
+} tarn_mesh_size;
+
+tarn_mesh_size tarn_mesh_plane_size(uint32_t segments_x, uint32_t segments_z);
+tarn_mesh_size tarn_mesh_box_size(void);
+tarn_mesh_size tarn_mesh_sphere_size(uint32_t segments, uint32_t rings);
+/* The grid before its level squares merge, which can only drop some of both. */
+tarn_mesh_size tarn_mesh_heightfield_size(uint32_t image_width, uint32_t image_height);
+
 /* A flat grid in XZ, centred, facing +y: `segments_x` by `segments_z` quads,
  * texture coordinates from 0 to u_scale (along +x) and v_scale (along +z). */
 int tarn_mesh_plane(tarn_mesh_buffer *out, double width, double depth, uint32_t segments_x,

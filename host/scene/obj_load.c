@@ -7,8 +7,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* v, vt and vn lines beyond this are refused before memory runs out; far more
- * than a tarn mesh can use (TARN_MESH_VERTICES_MAX). */
+#include "input_file.h"
+
+/* v, vt and vn lines beyond this are refused whatever the scene's limits
+ * (scene_budget.h, which stop a file far sooner), so that every index stays an
+ * int32_t; far more than a tarn mesh can use (TARN_MESH_VERTICES_MAX). */
 #define OBJ_ELEMENTS_MAX (1u << 24)
 
 #define NO_INDEX (-1)
@@ -33,6 +36,7 @@ typedef struct {
     const char *path;
     unsigned long line;
     tarn_error *err;
+    const tarn_scene_cost *scene; /* what the rest of the scene holds */
     element_list positions, texcoords, normals;
     corner *corners; /* 3 per triangle, in file order */
     size_t triangle_count, corner_capacity;
@@ -120,6 +124,22 @@ static unsigned split_tokens(char **save, char *tokens[], unsigned max)
     return n;
 }
 
+/* The file so far, beside the rest of the scene, within the scene's limits
+ * (scene_budget.h): checked at every element and triangle, so that a file that
+ * would cross one stops at the line that does, before it takes the memory. A mesh
+ * vertex takes at most one v, one vt and one vn, so the most lines of any of them
+ * is as few vertices as the file can make. */
+static int check_scene_limits(obj_parser *p)
+{
+    size_t most = p->positions.count;
+    if (p->texcoords.count > most) most = p->texcoords.count;
+    if (p->normals.count > most) most = p->normals.count;
+    const tarn_scene_cost so_far = { 0, most, p->triangle_count, 0 };
+    char why[sizeof p->err->message];
+    if (tarn_scene_cost_over(p->scene, &so_far, why, sizeof why)) return fail_at_line(p, "%s", why);
+    return 0;
+}
+
 /* Room for one more element at the end of `list`; NULL with the error set. */
 static double *append_element(obj_parser *p, element_list *list, const char *keyword)
 {
@@ -132,7 +152,9 @@ static double *append_element(obj_parser *p, element_list *list, const char *key
         fail_at_line(p, "out of memory");
         return NULL;
     }
-    return list->values + list->count++ * list->width;
+    list->count++;
+    if (check_scene_limits(p)) return NULL;
+    return list->values + (list->count - 1) * list->width;
 }
 
 /* vt u [v [w]], vn x y z: `min`..`max` numbers of which the first list->width are
@@ -244,7 +266,7 @@ static int add_triangle(obj_parser *p, corner a, corner b, corner c)
     tri[0] = a;
     tri[1] = b;
     tri[2] = c;
-    return 0;
+    return check_scene_limits(p);
 }
 
 /* f c1 c2 c3 ...: a convex polygon, fanned from its first corner. */
@@ -281,8 +303,8 @@ static int parse_line(obj_parser *p, char *line)
 
 static int parse_file(obj_parser *p)
 {
-    FILE *file = fopen(p->path, "r");
-    if (!file) return tarn_fail(p->err, "%s: cannot open: %s", p->path, strerror(errno));
+    FILE *file = tarn_open_input(p->path, "an OBJ file", TARN_OBJ_FILE_BYTES_MAX, p->err);
+    if (!file) return -1;
     char *line = NULL;
     size_t size = 0;
     int result = 0;
@@ -408,13 +430,15 @@ static int build_mesh(const obj_parser *p, tarn_mesh_buffer *out, tarn_error *er
     return result;
 }
 
-int tarn_obj_load(const char *path, tarn_mesh_buffer *out, tarn_error *err)
+int tarn_obj_load(const char *path, const tarn_scene_cost *scene, tarn_mesh_buffer *out, tarn_error *err)
 {
+    static const tarn_scene_cost nothing = { 0, 0, 0, 0 };
     memset(out, 0, sizeof *out);
     obj_parser p;
     memset(&p, 0, sizeof p);
     p.path = path;
     p.err = err;
+    p.scene = scene ? scene : &nothing;
     p.positions = (element_list){ NULL, 0, 0, 3, "vertices", "index" };
     p.texcoords = (element_list){ NULL, 0, 0, 2, "texture coordinates", "texture index" };
     p.normals = (element_list){ NULL, 0, 0, 3, "normals", "normal index" };

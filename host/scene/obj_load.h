@@ -20,7 +20,17 @@
 
 #include "error.h"
 #include "mesh_gen.h"
+#include "scene_budget.h"
 
-int tarn_obj_load(const char *path, tarn_mesh_buffer *out, tarn_error *err);
+/* The largest OBJ file read, checked before its first line. A full tarn mesh
+ * (TARN_MESH_VERTICES_MAX vertices with texture coordinates and normals, as many
+ * triangles) is about 10 MB of text, and scenes/ holds a 3 KB one; a sparse file of
+ * gigabytes would otherwise be read to its end before anything else is said. */
+#define TARN_OBJ_FILE_BYTES_MAX (64u * 1024u * 1024u)
+
+/* Reads `path` into `out`: 0, or -1 with `err` naming the file and line. `scene` is
+ * what the rest of the scene holds (NULL: nothing); the file stops at the line whose
+ * vertices or faces would take the two past a limit of scene_budget.h. */
+int tarn_obj_load(const char *path, const tarn_scene_cost *scene, tarn_mesh_buffer *out, tarn_error *err);
 
 #endif

@@ -2,14 +2,13 @@
 
 #include "mesh_clusters.h"
 
-#include <errno.h>
 #include <jansson.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
+#include "input_file.h"
 #include "obj_load.h"
 #include "motion_load.h"
 #include "scene_fields.h"
@@ -213,17 +212,78 @@ static int load_materials(tarn_loader *l, const json_t *root)
 typedef int (*mesh_builder)(tarn_loader *l, const json_t *o, const char *field,
                             const tarn_material *material, tarn_mesh_buffer *mesh);
 
+/* Words for an object in the budget's messages: "sphere, segments 64, rings 64". */
+#define OBJECT_WORDS_MAX 96
+
+static const double ONE_BY_ONE[2] = { 1, 1 };
+
+static int get_plane_segments(tarn_loader *l, const json_t *o, const char *field, double segments[2])
+{
+    return tarn_get_numbers(l, o, field, "segments", 2, &SEGMENTS, ONE_BY_ONE, segments);
+}
+
+static int get_sphere_segments(tarn_loader *l, const json_t *o, const char *field, double *segments,
+                               double *rings)
+{
+    static const double default_segments = 16, default_rings = 8;
+    return tarn_get_number(l, o, field, "segments", &SPHERE_SEGMENTS, &default_segments, segments) ||
+           tarn_get_number(l, o, field, "rings", &SPHERE_RINGS, &default_rings, rings);
+}
+
+/* The mesh of a plane, box or sphere weighed from its fields, and the words that
+ * name it; for the other types the files they name decide. */
+typedef int (*mesh_sizer)(tarn_loader *l, const json_t *o, const char *field, tarn_mesh_size *size,
+                          char words[OBJECT_WORDS_MAX]);
+
+static int size_plane(tarn_loader *l, const json_t *o, const char *field, tarn_mesh_size *size,
+                      char words[OBJECT_WORDS_MAX])
+{
+    double segments[2];
+    if (get_plane_segments(l, o, field, segments)) return -1;
+    *size = tarn_mesh_plane_size((uint32_t)segments[0], (uint32_t)segments[1]);
+    snprintf(words, OBJECT_WORDS_MAX, "plane, segments [%g, %g]", segments[0], segments[1]);
+    return 0;
+}
+
+static int size_box(tarn_loader *l, const json_t *o, const char *field, tarn_mesh_size *size,
+                    char words[OBJECT_WORDS_MAX])
+{
+    (void)l, (void)o, (void)field;
+    *size = tarn_mesh_box_size();
+    snprintf(words, OBJECT_WORDS_MAX, "box");
+    return 0;
+}
+
+static int size_sphere(tarn_loader *l, const json_t *o, const char *field, tarn_mesh_size *size,
+                       char words[OBJECT_WORDS_MAX])
+{
+    double segments, rings;
+    if (get_sphere_segments(l, o, field, &segments, &rings)) return -1;
+    *size = tarn_mesh_sphere_size((uint32_t)segments, (uint32_t)rings);
+    snprintf(words, OBJECT_WORDS_MAX, "sphere, segments %g, rings %g", segments, rings);
+    return 0;
+}
+
+/* Adds an object's mesh to the scene's weight, or refuses the object that would
+ * cross a limit: "FILE: objects[3] (WORDS): the scene would hold...". */
+static int weigh_mesh(tarn_loader *l, const char *field, const char *words, tarn_mesh_size size)
+{
+    const tarn_scene_cost mesh = { 0, size.vertices, size.triangles, 0 };
+    char what[sizeof l->err->message];
+    snprintf(what, sizeof what, "%s: %s (%s)", l->file, field, words);
+    return tarn_scene_cost_charge(&l->out->cost, &mesh, what, l->err);
+}
+
 static int build_plane(tarn_loader *l, const json_t *o, const char *field,
                        const tarn_material *material, tarn_mesh_buffer *mesh)
 {
     (void)material;
-    static const double one_by_one[2] = { 1, 1 };
     double size[2], segments[2], uv_scale[2];
     char what[TARN_FIELD_PATH_MAX + 64];
     snprintf(what, sizeof what, "%s: %s", l->file, field);
     if (tarn_get_numbers(l, o, field, "size", 2, &TARN_POSITIVE, NULL, size) ||
-        tarn_get_numbers(l, o, field, "segments", 2, &SEGMENTS, one_by_one, segments) ||
-        tarn_get_numbers(l, o, field, "uv_scale", 2, &TARN_COORDINATE, one_by_one, uv_scale)) {
+        get_plane_segments(l, o, field, segments) ||
+        tarn_get_numbers(l, o, field, "uv_scale", 2, &TARN_COORDINATE, ONE_BY_ONE, uv_scale)) {
         return -1;
     }
     return tarn_mesh_plane(mesh, size[0], size[1], (uint32_t)segments[0], (uint32_t)segments[1],
@@ -245,13 +305,11 @@ static int build_sphere(tarn_loader *l, const json_t *o, const char *field,
                         const tarn_material *material, tarn_mesh_buffer *mesh)
 {
     (void)material;
-    static const double default_segments = 16, default_rings = 8;
     double radius, segments, rings;
     char what[TARN_FIELD_PATH_MAX + 64];
     snprintf(what, sizeof what, "%s: %s", l->file, field);
     if (tarn_get_number(l, o, field, "radius", &TARN_POSITIVE, NULL, &radius) ||
-        tarn_get_number(l, o, field, "segments", &SPHERE_SEGMENTS, &default_segments, &segments) ||
-        tarn_get_number(l, o, field, "rings", &SPHERE_RINGS, &default_rings, &rings)) {
+        get_sphere_segments(l, o, field, &segments, &rings)) {
         return -1;
     }
     return tarn_mesh_sphere(mesh, radius, (uint32_t)segments, (uint32_t)rings, what, l->err);
@@ -260,17 +318,21 @@ static int build_sphere(tarn_loader *l, const json_t *o, const char *field,
 static int build_heightfield(tarn_loader *l, const json_t *o, const char *field,
                              const tarn_material *material, tarn_mesh_buffer *mesh)
 {
-    static const double one_by_one[2] = { 1, 1 };
     double size[2], height, uv_scale[2];
     char *path;
     if (tarn_get_numbers(l, o, field, "size", 2, &TARN_POSITIVE, NULL, size) ||
         tarn_get_number(l, o, field, "height", &TARN_POSITIVE, NULL, &height) ||
-        tarn_get_numbers(l, o, field, "uv_scale", 2, &TARN_COORDINATE, one_by_one, uv_scale) ||
+        tarn_get_numbers(l, o, field, "uv_scale", 2, &TARN_COORDINATE, ONE_BY_ONE, uv_scale) ||
         tarn_get_asset_path(l, o, field, "image", "a PNG file name", &path)) {
         return -1;
     }
     tarn_image image;
+    char words[OBJECT_WORDS_MAX];
     int result = tarn_png_read_heightfield(path, &image, l->err);
+    if (result == 0) {
+        snprintf(words, sizeof words, "heightfield, image %ux%u", image.width, image.height);
+        result = weigh_mesh(l, field, words, tarn_mesh_heightfield_size(image.width, image.height));
+    }
     if (result == 0) {
         result = tarn_mesh_heightfield(mesh, &image, size[0], size[1], height, uv_scale[0],
                                        uv_scale[1], material->water == NULL, path, l->err);
@@ -286,7 +348,16 @@ static int build_obj_mesh(tarn_loader *l, const json_t *o, const char *field,
     (void)material;
     char *path;
     if (tarn_get_asset_path(l, o, field, "file", "an OBJ file name", &path)) return -1;
-    int result = tarn_obj_load(path, mesh, l->err);
+    /* the file stops at the line that would cross a limit; the mesh is then weighed
+     * as built, since a position split by its texture coordinates or normals makes
+     * more vertices than the file has lines */
+    char words[OBJECT_WORDS_MAX];
+    snprintf(words, sizeof words, "mesh, %s", path);
+    int result = tarn_obj_load(path, &l->out->cost, mesh, l->err);
+    if (result == 0) {
+        const tarn_mesh_size size = { mesh->mesh.vertex_count, mesh->mesh.triangle_count };
+        result = weigh_mesh(l, field, words, size);
+    }
     free(path);
     return result;
 }
@@ -295,34 +366,42 @@ typedef struct {
     const char *type;
     const char *kind;            /* " for a sphere": in unknown-field messages */
     const char *const fields[5]; /* the type's own fields, NULL-terminated */
+    mesh_sizer size;             /* NULL: the files it names decide, as it is built */
     mesh_builder build;
     const char *uv_field;        /* the field that sets its texture coordinates, or NULL */
 } object_type;
 
 static const object_type OBJECT_TYPES[] = {
-    { "plane", " for a plane", { "size", "segments", "uv_scale", NULL }, build_plane, "uv_scale" },
-    { "box", " for a box", { "size", NULL }, build_box, NULL },
-    { "sphere", " for a sphere", { "radius", "segments", "rings", NULL }, build_sphere, NULL },
-    { "heightfield", " for a heightfield", { "image", "size", "height", "uv_scale", NULL },
+    { "plane", " for a plane", { "size", "segments", "uv_scale", NULL }, size_plane, build_plane,
+      "uv_scale" },
+    { "box", " for a box", { "size", NULL }, size_box, build_box, NULL },
+    { "sphere", " for a sphere", { "radius", "segments", "rings", NULL }, size_sphere, build_sphere,
+      NULL },
+    { "heightfield", " for a heightfield", { "image", "size", "height", "uv_scale", NULL }, NULL,
       build_heightfield, "uv_scale" },
-    { "mesh", " for a mesh", { "file", NULL }, build_obj_mesh, "file" },
+    { "mesh", " for a mesh", { "file", NULL }, NULL, build_obj_mesh, "file" },
 };
 #define OBJECT_TYPE_COUNT (sizeof OBJECT_TYPES / sizeof OBJECT_TYPES[0])
 
 static const char TYPE_CHOICES[] =
     "one of \"plane\", \"box\", \"sphere\", \"heightfield\", \"mesh\"";
 
+/* The type named `type`, or NULL (also for a NULL name). */
+static const object_type *object_type_named(const char *type)
+{
+    for (size_t k = 0; type && k < OBJECT_TYPE_COUNT; k++) {
+        if (strcmp(type, OBJECT_TYPES[k].type) == 0) return &OBJECT_TYPES[k];
+    }
+    return NULL;
+}
+
 static int find_object_type(tarn_loader *l, const json_t *o, const char *field,
                             const object_type **out)
 {
     const char *type;
     if (tarn_get_string(l, o, field, "type", TYPE_CHOICES, 1, &type)) return -1;
-    for (size_t k = 0; k < OBJECT_TYPE_COUNT; k++) {
-        if (strcmp(type, OBJECT_TYPES[k].type) == 0) {
-            *out = &OBJECT_TYPES[k];
-            return 0;
-        }
-    }
+    *out = object_type_named(type);
+    if (*out) return 0;
     char type_field[TARN_FIELD_PATH_MAX];
     tarn_join_path(type_field, field, "type");
     return tarn_fail_field(l, type_field, "expected %s, got \"%s\"", TYPE_CHOICES, type);
@@ -369,6 +448,16 @@ static void rotation_matrix(const double degrees[3], tarn_q16 out[3][3])
     }
 }
 
+/* The mesh's clusters (mesh_clusters.h), whose one failure, memory, is named
+ * after the object: the orderer knows only the mesh. */
+static int build_clusters(tarn_loader *l, const char *field, tarn_mesh_buffer *mesh)
+{
+    if (tarn_mesh_build_clusters(mesh, l->err) == 0) return 0;
+    char what[TARN_FIELD_PATH_MAX + 64];
+    snprintf(what, sizeof what, "%s: %s", l->file, field);
+    return tarn_fail_in(l->err, what);
+}
+
 static int load_object(tarn_loader *l, const json_t *o, size_t index)
 {
     static const char *const common[] = { "type",  "material", "position", "rotation",
@@ -392,7 +481,7 @@ static int load_object(tarn_loader *l, const json_t *o, size_t index)
         tarn_get_vec3(l, o, field, "rotation", origin, rotation) ||
         tarn_get_number(l, o, field, "scale", &TARN_POSITIVE, &unit_scale, &scale) ||
         tarn_object_motion_load(l, o, field, &l->out->motions[index], &moves) ||
-        type->build(l, o, field, object->material, mesh) || tarn_mesh_build_clusters(mesh, l->err)) {
+        type->build(l, o, field, object->material, mesh) || build_clusters(l, field, mesh)) {
         return -1;
     }
     object->mesh = &mesh->mesh;
@@ -408,6 +497,31 @@ static int load_object(tarn_loader *l, const json_t *o, size_t index)
     return tarn_check_texel_spans(l, object, index, uv_field);
 }
 
+/* The object arrays, and every plane, box and sphere weighed from its fields, before
+ * any object is built: a scene that asks for too much is refused at once, naming
+ * the object that crosses a limit. An object whose fields cannot be weighed (a bad
+ * type or segment count) is left to its own load, which refuses it in file order. */
+static int weigh_objects(tarn_loader *l, const json_t *objects)
+{
+    const tarn_scene_cost arrays = { json_array_size(objects), 0, 0, 0 };
+    char what[sizeof l->err->message];
+    snprintf(what, sizeof what, "%s: objects", l->file);
+    if (tarn_scene_cost_charge(&l->out->cost, &arrays, what, l->err)) return -1;
+    tarn_error unread;
+    tarn_loader quiet = *l;
+    quiet.err = &unread;
+    for (size_t k = 0; k < json_array_size(objects); k++) {
+        const json_t *o = json_array_get(objects, k);
+        const object_type *type = object_type_named(json_string_value(json_object_get(o, "type")));
+        char field[TARN_FIELD_PATH_MAX], words[OBJECT_WORDS_MAX];
+        tarn_mesh_size size;
+        snprintf(field, sizeof field, "objects[%zu]", k);
+        if (!type || !type->size || type->size(&quiet, o, field, &size, words)) continue;
+        if (weigh_mesh(l, field, words, size)) return -1;
+    }
+    return 0;
+}
+
 static int load_objects(tarn_loader *l, const json_t *root)
 {
     tarn_loaded_scene *s = l->out;
@@ -421,6 +535,7 @@ static int load_objects(tarn_loader *l, const json_t *root)
     if (n > UINT16_MAX) {
         return tarn_fail_field(l, "objects", "expected at most %u objects, got %zu", UINT16_MAX, n);
     }
+    if (weigh_objects(l, objects)) return -1;
     s->objects = calloc(n + 1, sizeof *s->objects);
     s->meshes = calloc(n + 1, sizeof *s->meshes);
     s->motions = calloc(n + 1, sizeof *s->motions);
@@ -438,25 +553,8 @@ static int load_objects(tarn_loader *l, const json_t *root)
 
 static json_t *parse_json(const char *path, tarn_error *err)
 {
-    FILE *file = fopen(path, "r");
-    if (!file) {
-        tarn_fail(err, "%s: cannot open: %s", path, strerror(errno));
-        return NULL;
-    }
-    struct stat info;
-    if (fstat(fileno(file), &info) == 0 && S_ISDIR(info.st_mode)) {
-        fclose(file);
-        tarn_fail(err, "%s: is a directory, not a scene file", path);
-        return NULL;
-    }
-    /* the demo's scenes take 3 KB; a file this large is not a scene, and parsing it
-     * whole would take memory in proportion */
-    if (info.st_size > (off_t)TARN_SCENE_FILE_BYTES_MAX) {
-        fclose(file);
-        tarn_fail(err, "%s: is %lld bytes; a scene file holds at most %u", path, (long long)info.st_size,
-                  TARN_SCENE_FILE_BYTES_MAX);
-        return NULL;
-    }
+    FILE *file = tarn_open_input(path, "a scene file", TARN_SCENE_FILE_BYTES_MAX, err);
+    if (!file) return NULL;
     json_error_t error;
     json_t *root = json_loadf(file, JSON_REJECT_DUPLICATES, &error);
     fclose(file);

@@ -36,6 +36,7 @@
 #include "error.h"
 #include "mesh_gen.h"
 #include "png_io.h"
+#include "scene_budget.h"
 #include "tarn/tarn_motion.h"
 #include "tarn/tarn_scene.h"
 #include "tarn/tarn_water.h"
@@ -63,12 +64,18 @@ typedef struct tarn_loaded_scene {
     tarn_image *texture_images;
     char **texture_paths; /* as resolved against the scene's directory */
     size_t texture_count, texture_capacity;
+    tarn_scene_cost cost; /* what it holds, weighed against the limits as it loads
+                             (scene_budget.h) */
 } tarn_loaded_scene;
 
-/* 0, or -1 with `err` set and `out` left empty (nothing to free). */
-/* The largest scene file the loader parses (meshes and images are files of their own). */
+/* The largest scene file the loader parses (meshes and images are files of their
+ * own): the scenes of scenes/ take 3 KB; a file this large is not a scene, and
+ * parsing it whole would take memory in proportion. Checked before it is read. */
 #define TARN_SCENE_FILE_BYTES_MAX (4u * 1024u * 1024u)
 
+/* 0, or -1 with `err` set and `out` left empty (nothing to free). A scene file, and
+ * every file it names, must be a regular file (input_file.h), and the scene must stay
+ * within the limits of scene_budget.h. */
 int tarn_scene_load(const char *path, tarn_loaded_scene *out, tarn_error *err);
 
 /* Frees everything the scene owns; safe on an emptied or zeroed scene. */

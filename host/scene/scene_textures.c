@@ -1,11 +1,25 @@
 /* scene_textures.c: the loaded scene's textures (scene_textures.h). */
 #include "scene_textures.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* The texture for `path`, loaded once however many materials use it. */
-static int find_or_load_texture(tarn_loader *l, const char *path, const tarn_texture **out)
+/* A texture just read, weighed with the scene's others: "FILE: FIELD (image WxH): the
+ * scene would hold...". Read first, since its header alone says its size, and one is
+ * at most TARN_TEXTURE_SIZE_MAX squared texels. */
+static int weigh_texture(tarn_loader *l, const char *field, const tarn_image *image)
+{
+    const tarn_scene_cost texels = { 0, 0, 0, (uint64_t)image->width * image->height };
+    char what[sizeof l->err->message];
+    snprintf(what, sizeof what, "%s: %s (image %ux%u)", l->file, field, image->width, image->height);
+    return tarn_scene_cost_charge(&l->out->cost, &texels, what, l->err);
+}
+
+/* The texture for `path`, loaded once however many fields (`field` is this one's)
+ * name it. */
+static int find_or_load_texture(tarn_loader *l, const char *field, const char *path,
+                                const tarn_texture **out)
 {
     tarn_loaded_scene *s = l->out;
     for (size_t k = 0; k < s->texture_count; k++) {
@@ -23,6 +37,7 @@ static int find_or_load_texture(tarn_loader *l, const char *path, const tarn_tex
     s->texture_paths[k] = strdup(path);
     s->texture_count++; /* counted now, so that scene_free releases the image */
     if (!s->texture_paths[k]) return tarn_fail(l->err, "%s: out of memory", l->file);
+    if (weigh_texture(l, field, image)) return -1;
     s->textures[k].width = image->width;
     s->textures[k].height = image->height;
     s->textures[k].rgb = image->pixels;
@@ -33,9 +48,10 @@ static int find_or_load_texture(tarn_loader *l, const char *path, const tarn_tex
 int tarn_get_texture(tarn_loader *l, const json_t *object, const char *parent, const char *key,
                      const tarn_texture **out)
 {
-    char *path;
+    char *path, field[TARN_FIELD_PATH_MAX];
     if (tarn_get_asset_path(l, object, parent, key, "a PNG file name", &path)) return -1;
-    int result = find_or_load_texture(l, path, out);
+    tarn_join_path(field, parent, key);
+    int result = find_or_load_texture(l, field, path, out);
     free(path);
     return result;
 }

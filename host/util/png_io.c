@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "atomic_file.h"
+#include "input_file.h"
 #include "tarn/tarn_scene.h"
 
 /* Everything one libpng run owns. libpng reports errors by longjmp, so all of it
@@ -129,8 +130,8 @@ static int read_png(const char *path, unsigned channels, size_check check, tarn_
     png_job job;
     memset(&job, 0, sizeof job);
     job.path = path;
-    job.file = fopen(path, "rb");
-    if (!job.file) return tarn_fail(err, "%s: cannot open: %s", path, strerror(errno));
+    job.file = tarn_open_input(path, "a PNG file", TARN_PNG_FILE_BYTES_MAX, err);
+    if (!job.file) return -1;
 
     unsigned char signature[8];
     size_t got = fread(signature, 1, sizeof signature, job.file);

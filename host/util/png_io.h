@@ -5,7 +5,8 @@
  * between gray and RGB as asked. Each reader checks the image size from the header
  * before decoding anything, so an oversized image costs no memory.
  *
- * Errors name the file ("pond/sand.png: not a PNG file") and leave `out` empty. */
+ * Errors name the file ("pond/sand.png: not a PNG file") and leave `out` empty. A
+ * file read must be a regular one of at most TARN_PNG_FILE_BYTES_MAX (input_file.h). */
 #ifndef TARN_HOST_PNG_IO_H
 #define TARN_HOST_PNG_IO_H
 
@@ -15,6 +16,12 @@
 /* Heightfields become one vertex per pixel; 256 keeps the index math in range
  * (the mesh generator checks the tighter vertex and triangle limits). */
 #define TARN_HEIGHTFIELD_SIZE_MAX 256u
+
+/* The largest PNG file read, checked before its first byte. The biggest image a
+ * reader accepts (a TARN_TEXTURE_SIZE_MAX square texture) is 8 MB even stored raw at
+ * 16 bits per channel with alpha, and scenes/ holds PNGs of 10 KB; the rest is room
+ * for ancillary chunks. */
+#define TARN_PNG_FILE_BYTES_MAX (64u * 1024u * 1024u)
 
 typedef struct {
     uint16_t width, height;

@@ -14,7 +14,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const char *path = fuzz_write_file("mesh.obj", data, size);
     tarn_mesh_buffer mesh;
     tarn_error err;
-    if (tarn_obj_load(path, &mesh, &err) != 0) {
+    if (tarn_obj_load(path, NULL, &mesh, &err) != 0) {
         if (!fuzz_error_is_one_line(&err)) abort();
         return 0;
     }
