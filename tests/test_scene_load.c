@@ -18,6 +18,7 @@
 #include "core_render.h"
 #include "mesh_gen.h"
 #include "obj_load.h"
+#include "atomic_file.h"
 #include "png_io.h"
 #include "scene_load.h"
 #include "water_load.h"
@@ -785,6 +786,33 @@ static void test_png_formats(void **state)
     remove_temp_dir(dir);
 }
 
+/* An output of two files whose second cannot be renamed into place (a folder took
+ * its name after it was opened): the first, already in place, is taken back, and
+ * no temporary file stays. */
+static void test_a_failed_rename_takes_back_the_whole_output(void **state)
+{
+    (void)state;
+    char *dir = make_temp_dir();
+    char first[1100], second[1100], inner[1200];
+    snprintf(first, sizeof first, "%s/out.c", dir);
+    snprintf(second, sizeof second, "%s/out.h", dir);
+    const char *const paths[] = {first, second};
+    tarn_atomic_file files[2];
+    tarn_error err;
+    assert_int_equal(tarn_atomic_open_all(files, paths, 2, &err), 0);
+    fputs("source", files[0].file);
+    fputs("header", files[1].file);
+    assert_int_equal(mkdir(second, 0755), 0);
+    snprintf(inner, sizeof inner, "%s/x", second);
+    assert_int_equal(bad_write_text(inner, "x"), 0); /* non-empty: rename cannot replace it */
+    assert_int_equal(tarn_atomic_commit_all(files, 2, &err), -1);
+    assert_non_null(strstr(err.message, "cannot rename"));
+    assert_int_equal(files_in(dir), 1); /* the folder alone */
+    assert_int_equal(unlink(inner), 0);
+    assert_int_equal(rmdir(second), 0);
+    remove_temp_dir(dir);
+}
+
 static void test_png_write_failure_leaves_nothing(void **state)
 {
     (void)state;
@@ -796,17 +824,12 @@ static void test_png_write_failure_leaves_nothing(void **state)
     snprintf(path, sizeof path, "%s/missing/out.png", dir);
     assert_int_equal(tarn_png_write_rgb(path, rgb, 1, 1, &err), -1);
     assert_non_null(strstr(err.message, path));
-    /* the target is a directory: the PNG is written, the rename fails, the
-     * temporary file goes */
+    /* the target is a directory: refused before anything is written */
     snprintf(path, sizeof path, "%s/taken", dir);
     assert_int_equal(mkdir(path, 0755), 0);
-    char inner[1100];
-    snprintf(inner, sizeof inner, "%s/x", path);
-    assert_int_equal(bad_write_text(inner, "x"), 0); /* non-empty: rename cannot replace it */
     assert_int_equal(tarn_png_write_rgb(path, rgb, 1, 1, &err), -1);
-    assert_non_null(strstr(err.message, "cannot rename"));
+    assert_non_null(strstr(err.message, "is a directory"));
     assert_int_equal(files_in(dir), 1);
-    assert_int_equal(unlink(inner), 0);
     assert_int_equal(rmdir(path), 0);
     /* an empty image is refused before anything is created */
     snprintf(path, sizeof path, "%s/empty.png", dir);
@@ -1339,6 +1362,7 @@ int main(void)
         cmocka_unit_test(test_png_round_trip),
         cmocka_unit_test(test_png_formats),
         cmocka_unit_test(test_png_write_failure_leaves_nothing),
+        cmocka_unit_test(test_a_failed_rename_takes_back_the_whole_output),
         cmocka_unit_test(test_pond),
         cmocka_unit_test(test_scene_defaults_and_rotation),
         cmocka_unit_test(test_asset_paths),
