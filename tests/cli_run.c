@@ -34,13 +34,24 @@ static int drain(int fd, char *buffer, size_t *length)
     return got > 0;
 }
 
-static pid_t spawn(char *const argv[], int out_pipe, int err_pipe, int stderr_fd)
+static double now_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static pid_t spawn(char *const argv[], int stdin_fd, int out_pipe, int err_pipe, int stderr_fd)
 {
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    if (stdin_fd >= 0) posix_spawn_file_actions_adddup2(&actions, stdin_fd, STDIN_FILENO);
+    else posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_adddup2(&actions, out_pipe, STDOUT_FILENO);
     posix_spawn_file_actions_adddup2(&actions, stderr_fd >= 0 ? stderr_fd : err_pipe, STDERR_FILENO);
+    /* the test's own ends of the pipes stay out of the child, so that its exit closes them */
+    posix_spawn_file_actions_addclose(&actions, out_pipe);
+    posix_spawn_file_actions_addclose(&actions, err_pipe);
     pid_t pid;
     int spawned = posix_spawn(&pid, argv[0], &actions, NULL, argv, environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -51,18 +62,22 @@ static pid_t spawn(char *const argv[], int out_pipe, int err_pipe, int stderr_fd
     return pid;
 }
 
-void cli_run(char *const argv[], int stderr_fd, unsigned timeout_s, cli_result *r)
+void cli_run(char *const argv[], int stdin_fd, int stderr_fd, unsigned timeout_s, cli_result *r)
 {
     int out_fds[2], err_fds[2];
     if (pipe(out_fds) != 0 || pipe(err_fds) != 0) fail_setup("pipe");
-    pid_t pid = spawn(argv, out_fds[1], err_fds[1], stderr_fd);
+    /* the read ends never reach the child */
+    if (fcntl(out_fds[0], F_SETFD, FD_CLOEXEC) != 0 || fcntl(err_fds[0], F_SETFD, FD_CLOEXEC) != 0)
+        fail_setup("fcntl");
+    const double start = now_seconds();
+    pid_t pid = spawn(argv, stdin_fd, out_fds[1], err_fds[1], stderr_fd);
     close(out_fds[1]);
     close(err_fds[1]);
     memset(r, 0, sizeof *r);
     struct pollfd fds[2] = {{out_fds[0], POLLIN, 0}, {err_fds[0], POLLIN, 0}};
-    const time_t deadline = time(NULL) + (time_t)timeout_s;
+    const double deadline = start + (double)timeout_s;
     while (fds[0].fd >= 0 || fds[1].fd >= 0) {
-        if (time(NULL) >= deadline) {
+        if (now_seconds() >= deadline) {
             r->timed_out = 1;
             kill(pid, SIGKILL);
             break;
@@ -81,6 +96,7 @@ void cli_run(char *const argv[], int stderr_fd, unsigned timeout_s, cli_result *
     int wait_status;
     while (waitpid(pid, &wait_status, 0) < 0)
         if (errno != EINTR) fail_setup("waitpid");
+    r->seconds = now_seconds() - start;
     r->status = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
 }
 

@@ -11,13 +11,14 @@
 typedef struct {
     int status;    /* the exit status; -1 when killed by a signal */
     int timed_out; /* killed after the timeout */
+    double seconds; /* from start to exit */
     char out[CLI_OUTPUT_MAX], err[CLI_OUTPUT_MAX];
     size_t out_length, err_length;
 } cli_result;
 
-/* Runs argv (argv[0] the program) with stdin from /dev/null. stderr_fd >= 0
- * sends stderr there (a terminal, say) instead of capturing it. */
-void cli_run(char *const argv[], int stderr_fd, unsigned timeout_s, cli_result *r);
+/* Runs argv (argv[0] the program). stdin_fd >= 0 is its stdin (else /dev/null);
+ * stderr_fd >= 0 takes its stderr (a terminal, say) instead of the capture. */
+void cli_run(char *const argv[], int stdin_fd, int stderr_fd, unsigned timeout_s, cli_result *r);
 
 /* Whether r->err is exactly one line. */
 int cli_one_line(const cli_result *r);

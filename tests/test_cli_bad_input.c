@@ -12,57 +12,17 @@
 
 #include <errno.h>
 #include <fcntl.h>
-#include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "bad_scene_cases.h"
+#include "cli_run.h"
 
-extern char **environ;
-
-typedef struct {
-    int status;         /* exit status, or -1 if the process did not exit normally */
-    char stderr_text[4096];
-    size_t stderr_length;
-} run_result;
-
-/* Runs `argv` with stdout discarded and stderr captured. */
-static void run(char *const argv[], run_result *out)
-{
-    int pipe_fds[2];
-    assert_int_equal(pipe(pipe_fds), 0);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], STDERR_FILENO);
-    posix_spawn_file_actions_addclose(&actions, pipe_fds[0]);
-    posix_spawn_file_actions_addclose(&actions, pipe_fds[1]);
-    pid_t pid;
-    int spawned = posix_spawn(&pid, argv[0], &actions, NULL, argv, environ);
-    posix_spawn_file_actions_destroy(&actions);
-    close(pipe_fds[1]);
-    if (spawned != 0) fail_msg("cannot run %s: %s", argv[0], strerror(spawned));
-
-    out->stderr_length = 0;
-    for (;;) {
-        size_t room = sizeof out->stderr_text - 1 - out->stderr_length;
-        ssize_t got = read(pipe_fds[0], out->stderr_text + out->stderr_length, room);
-        if (got < 0 && errno == EINTR) continue;
-        if (got <= 0) break;
-        out->stderr_length += (size_t)got;
-        if (out->stderr_length == sizeof out->stderr_text - 1) break;
-    }
-    out->stderr_text[out->stderr_length] = '\0';
-    close(pipe_fds[0]);
-
-    int wait_status;
-    while (waitpid(pid, &wait_status, 0) < 0) assert_int_equal(errno, EINTR);
-    out->status = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
-}
+/* Far longer than any refusal takes. */
+#define RUN_SECONDS_MAX 20
 
 /* Files in `dir` besides those the case wrote: an output or a temporary file. */
 static int stray_files(const char *dir, const bad_scene_case *c, char *name, size_t size)
@@ -95,25 +55,25 @@ static int check_case(const char *tarn, const bad_scene_case *c)
     snprintf(expected, sizeof expected, "tarn: %s/%s%s\n", dir, c->file, c->expect);
 
     char *const argv[] = { (char *)tarn, "render", scene_path, "-o", out_path, NULL };
-    run_result r;
-    run(argv, &r);
+    cli_result r;
+    cli_run(argv, -1, -1, RUN_SECONDS_MAX, &r);
 
     char problem[300] = "";
-    char *first_newline = strchr(r.stderr_text, '\n');
+    char *first_newline = strchr(r.err, '\n');
     if (r.status != TARN_EXIT_BAD_INPUT) {
         snprintf(problem, sizeof problem, "exit status %d, expected 2", r.status);
-    } else if (strncmp(r.stderr_text, "tarn: ", 6) != 0) {
+    } else if (strncmp(r.err, "tarn: ", 6) != 0) {
         snprintf(problem, sizeof problem, "stderr does not start with \"tarn: \"");
     } else if (!first_newline || first_newline[1] != '\0') {
         snprintf(problem, sizeof problem, "stderr is not exactly one line");
-    } else if (strcmp(r.stderr_text, expected) != 0) {
+    } else if (strcmp(r.err, expected) != 0) {
         snprintf(problem, sizeof problem, "stderr is not the expected message");
     } else if (stray_files(dir, c, stray, sizeof stray)) {
         snprintf(problem, sizeof problem, "%s was left behind", stray);
     }
     if (problem[0]) {
         print_error("case \"%s\": %s\n  stderr   %s  expected %s", c->what, problem,
-                    r.stderr_length ? r.stderr_text : "(empty)\n", expected);
+                    r.err_length ? r.err : "(empty)\n", expected);
     }
     bad_case_remove_dir(dir);
     return problem[0] != '\0';
@@ -162,14 +122,14 @@ static void test_cli_unwritable_outputs(void **state)
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         char *const argv[] = {(char *)tarn, (char *)cases[k][0], "scenes/effects/none.json", "-o",
                               (char *)cases[k][1], NULL};
-        run_result r;
-        run(argv, &r);
+        cli_result r;
+        cli_run(argv, -1, -1, RUN_SECONDS_MAX, &r);
         char start[1200];
         snprintf(start, sizeof start, "tarn: %s: %s", cases[k][1], cases[k][2]);
-        const char *newline = strchr(r.stderr_text, '\n');
-        if (r.status != TARN_EXIT_BAD_INPUT || strncmp(r.stderr_text, start, strlen(start)) != 0 ||
+        const char *newline = strchr(r.err, '\n');
+        if (r.status != TARN_EXIT_BAD_INPUT || strncmp(r.err, start, strlen(start)) != 0 ||
             newline == NULL || newline[1] != '\0')
-            fail_msg("%s -o %s: status %d, stderr %s", cases[k][0], cases[k][1], r.status, r.stderr_text);
+            fail_msg("%s -o %s: status %d, stderr %s", cases[k][0], cases[k][1], r.status, r.err);
     }
     DIR *d = opendir(dir);
     assert_non_null(d);
@@ -207,10 +167,10 @@ static void test_cli_unreadable_texture(void **state)
     snprintf(expected, sizeof expected, "tarn: %s: cannot open: Permission denied\n", texture);
     char *const argv[] = {"/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", binary,
                           "render", scene, "-o", out, NULL};
-    run_result r;
-    run(geteuid() == 0 ? argv : argv + 4, &r); /* without setpriv when not root */
+    cli_result r;
+    cli_run(geteuid() == 0 ? argv : argv + 4, -1, -1, RUN_SECONDS_MAX, &r); /* without setpriv when not root */
     assert_int_equal(r.status, TARN_EXIT_BAD_INPUT);
-    assert_string_equal(r.stderr_text, expected);
+    assert_string_equal(r.err, expected);
     assert_int_not_equal(access(out, F_OK), 0);
     unlink(texture);
     unlink(scene);

@@ -35,7 +35,7 @@ static void run_line(const char *line, cli_result *r)
     for (char *word = strtok(buffer, " "); word != NULL && argc <= WORDS_MAX; word = strtok(NULL, " "))
         argv[argc++] = word;
     argv[argc] = NULL;
-    cli_run(argv, -1, TIMEOUT_S, r);
+    cli_run(argv, -1, -1, TIMEOUT_S, r);
 }
 
 static void test_help_on_the_tool_and_every_command(void **state)
@@ -130,7 +130,7 @@ static void test_long_names_keep_their_reason(void **state)
     path[sizeof path - 1] = '\0';
     char *argv[] = {(char *)tarn_bin(), "render", path, "-o", "/tmp/x.png", NULL};
     static cli_result r;
-    cli_run(argv, -1, TIMEOUT_S, &r);
+    cli_run(argv, -1, -1, TIMEOUT_S, &r);
     if (r.status != 2 || !cli_one_line(&r) || strstr(r.err, path) == NULL ||
         strstr(r.err, ": cannot open: No such file or directory\n") == NULL)
         fail_msg("a %zu-byte path: exit %d, stderr of %zu bytes ending '%s'", strlen(path), r.status, r.err_length,
@@ -144,7 +144,7 @@ static void test_names_are_escaped(void **state)
     (void)state;
     char *argv[] = {(char *)tarn_bin(), "render", "x\033[2J\a\xe2\x80\xaeyz.json", "-o", "/tmp/x.png", NULL};
     static cli_result r;
-    cli_run(argv, -1, TIMEOUT_S, &r);
+    cli_run(argv, -1, -1, TIMEOUT_S, &r);
     if (r.status != 2 || !cli_one_line(&r) || strstr(r.err, "x\\x1b[2J\\x07\\u202Eyz.json: cannot open") == NULL)
         fail_msg("stderr '%s': expected the name as x\\x1b[2J\\x07\\u202Eyz.json", r.err);
     for (size_t k = 0; k + 1 < r.err_length; k++)

@@ -18,97 +18,20 @@
 
 #include <errno.h>
 #include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "bad_scene_cases.h"
+#include "cli_run.h"
 #include "mesh_gen.h"
 #include "scene_budget.h"
 
-extern char **environ;
-
 /* Far longer than any refusal takes; a run past it is hung. */
 #define RUN_SECONDS_MAX 20
-
-typedef struct {
-    int status; /* exit status, or -1 if the process did not exit normally */
-    int hung;   /* still running after RUN_SECONDS_MAX, and killed */
-    double seconds;
-    char stderr_text[4096];
-    size_t stderr_length;
-} run_result;
-
-static double now_seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + t.tv_nsec / 1e9;
-}
-
-/* Reads the child's stderr until it closes or the deadline passes: 0 at its end,
- * -1 when the deadline came first. */
-static int read_until_closed(int fd, double deadline, run_result *out)
-{
-    for (;;) {
-        int left_ms = (int)((deadline - now_seconds()) * 1000);
-        if (left_ms <= 0) return -1;
-        struct pollfd p = { fd, POLLIN, 0 };
-        int ready = poll(&p, 1, left_ms);
-        if (ready < 0 && errno == EINTR) continue;
-        if (ready == 0) return -1;
-        size_t room = sizeof out->stderr_text - 1 - out->stderr_length;
-        char discard[256];
-        ssize_t got = room ? read(fd, out->stderr_text + out->stderr_length, room)
-                           : read(fd, discard, sizeof discard);
-        if (got < 0 && errno == EINTR) continue;
-        if (got <= 0) return 0;
-        if (room) out->stderr_length += (size_t)got;
-    }
-}
-
-/* Runs `argv` with stdout discarded, stderr captured and stdin from `stdin_fd` (or
- * /dev/null when it is -1); kills it after RUN_SECONDS_MAX. */
-static void run(char *const argv[], int stdin_fd, run_result *out)
-{
-    memset(out, 0, sizeof *out);
-    int err_pipe[2];
-    assert_int_equal(pipe(err_pipe), 0);
-    assert_int_equal(fcntl(err_pipe[0], F_SETFD, FD_CLOEXEC), 0);
-    assert_int_equal(fcntl(err_pipe[1], F_SETFD, FD_CLOEXEC), 0); /* dup2 clears it on fd 2 */
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    if (stdin_fd >= 0)
-        posix_spawn_file_actions_adddup2(&actions, stdin_fd, STDIN_FILENO);
-    else
-        posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_adddup2(&actions, err_pipe[1], STDERR_FILENO);
-    pid_t pid;
-    double start = now_seconds();
-    int spawned = posix_spawn(&pid, argv[0], &actions, NULL, argv, environ);
-    posix_spawn_file_actions_destroy(&actions);
-    close(err_pipe[1]);
-    if (spawned != 0) fail_msg("cannot run %s: %s", argv[0], strerror(spawned));
-
-    if (read_until_closed(err_pipe[0], start + RUN_SECONDS_MAX, out) != 0) {
-        out->hung = 1;
-        kill(pid, SIGKILL);
-    }
-    out->stderr_text[out->stderr_length] = '\0';
-    close(err_pipe[0]);
-    int wait_status;
-    while (waitpid(pid, &wait_status, 0) < 0) assert_int_equal(errno, EINTR);
-    out->seconds = now_seconds() - start;
-    out->status = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
-}
 
 /* The binary under test ($TARN_BIN, which make check sets); without it the test is
  * skipped. */
@@ -143,16 +66,16 @@ static int stray_file(const char *dir, const char *const inputs[], char *name, s
 
 /* What is wrong with a refused run, or "" when it is right: exit status 2, stderr
  * exactly `expected` (one line), nothing in `dir` but `inputs`. */
-static void check_refusal(const run_result *r, const char *expected, const char *dir,
+static void check_refusal(const cli_result *r, const char *expected, const char *dir,
                           const char *const inputs[], char *problem, size_t size)
 {
     char stray[256];
     problem[0] = '\0';
-    if (r->hung)
+    if (r->timed_out)
         snprintf(problem, size, "hung: still running after %d s", RUN_SECONDS_MAX);
     else if (r->status != TARN_EXIT_BAD_INPUT)
         snprintf(problem, size, "exit status %d, expected 2", r->status);
-    else if (strcmp(r->stderr_text, expected) != 0)
+    else if (strcmp(r->err, expected) != 0)
         snprintf(problem, size, "stderr is not the expected line");
     else if (stray_file(dir, inputs, stray, sizeof stray))
         snprintf(problem, size, "%s was left behind", stray);
@@ -210,8 +133,8 @@ static int check_input_case(const char *tarn, const input_case *c)
     if (c->stdin_pipe) assert_int_equal(pipe(never_written), 0);
     char *const render[] = { (char *)tarn, "render", scene, "-o", out, NULL };
     char *const bake[] = { (char *)tarn, "bake", scene, "-o", out, "--points", points, NULL };
-    run_result r;
-    run(c->bake_points ? bake : render, never_written[0], &r);
+    cli_result r;
+    cli_run(c->bake_points ? bake : render, never_written[0], -1, RUN_SECONDS_MAX, &r);
     if (c->stdin_pipe) {
         close(never_written[0]);
         close(never_written[1]);
@@ -220,7 +143,7 @@ static int check_input_case(const char *tarn, const input_case *c)
     check_refusal(&r, expected, dir, inputs, problem, sizeof problem);
     if (problem[0])
         print_error("case \"%s\": %s\n  stderr   %s  expected %s", c->what, problem,
-                    r.stderr_length ? r.stderr_text : "(empty)\n", expected);
+                    r.err_length ? r.err : "(empty)\n", expected);
     bad_case_remove_dir(dir);
     return problem[0] != '\0';
 }
@@ -254,11 +177,11 @@ static void test_links_to_files_are_read(void **state)
     assert_int_equal(symlink("scene.json", link), 0);
     assert_int_equal(symlink(ground, texture), 0);
     char *const argv[] = { (char *)tarn, "render", link, "-o", out, "--size", "32x32", NULL };
-    run_result r;
-    run(argv, -1, &r);
+    cli_result r;
+    cli_run(argv, -1, -1, RUN_SECONDS_MAX, &r);
     int written = access(out, F_OK) == 0;
     bad_case_remove_dir(dir); /* first: a failure ends the test */
-    if (r.status != 0) fail_msg("status %d, stderr %s", r.status, r.stderr_text);
+    if (r.status != 0) fail_msg("status %d, stderr %s", r.status, r.err);
     assert_true(written);
 }
 
@@ -318,14 +241,14 @@ static void budget_scene_refused(budget_scene *b, const char *file, const char *
     snprintf(out, sizeof out, "%s/out.png", b->dir);
     snprintf(expected, sizeof expected, "tarn: %s/%s: %s\n", b->dir, file, why);
     char *const argv[] = { (char *)tarn_binary(), "render", b->scene, "-o", out, NULL };
-    run_result r;
-    run(argv, -1, &r);
+    cli_result r;
+    cli_run(argv, -1, -1, RUN_SECONDS_MAX, &r);
     check_refusal(&r, expected, b->dir, inputs, problem, sizeof problem);
     if (!problem[0] && r.seconds > BUDGET_SECONDS_MAX)
         snprintf(problem, sizeof problem, "took %.1f s, more than %.0f", r.seconds, BUDGET_SECONDS_MAX);
     bad_case_remove_dir(b->dir); /* first: a failure ends the test */
     if (problem[0])
-        fail_msg("%s\n  stderr   %s  expected %s", problem, r.stderr_length ? r.stderr_text : "(empty)\n",
+        fail_msg("%s\n  stderr   %s  expected %s", problem, r.err_length ? r.err : "(empty)\n",
                  expected);
 }
 

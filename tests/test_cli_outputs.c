@@ -65,7 +65,7 @@ static const char *in_folder(const char *name)
 static void render_to(const char *out, cli_result *r)
 {
     char *argv[] = {(char *)tarn_bin(), "render", SCENE, "--size", "32x32", "-o", (char *)out, NULL};
-    cli_run(argv, -1, TIMEOUT_S, r);
+    cli_run(argv, -1, -1, TIMEOUT_S, r);
 }
 
 static size_t file_bytes(const char *path, char *buffer, size_t size)
@@ -192,7 +192,7 @@ static void test_a_sweep_checks_before_its_work(void **state)
                     (char *)out, "--extremes", (char *)in_folder("none"), NULL};
     static cli_result r;
     const time_t start = time(NULL);
-    cli_run(argv, -1, TIMEOUT_S, &r);
+    cli_run(argv, -1, -1, TIMEOUT_S, &r);
     if (r.status != 2 || !cli_one_line(&r) || strstr(r.err, "--extremes: no scene") == NULL)
         fail_msg("sweep --extremes (none): exit %d, stderr '%s'", r.status, r.err);
     if (time(NULL) - start > 2) fail_msg("sweep --extremes (none): the error took %ld s", (long)(time(NULL) - start));
@@ -217,7 +217,7 @@ static void test_progress_on_a_terminal_only(void **state)
     static char shown[8192];
     for (int quiet = 0; quiet <= 1; quiet++) {
         argv[9] = quiet ? "--quiet" : NULL;
-        cli_run(argv, screen, TIMEOUT_S, &r);
+        cli_run(argv, -1, screen, TIMEOUT_S, &r);
         assert_int_equal(r.status, 0);
         ssize_t length = read(terminal, shown, sizeof shown - 1);
         shown[length > 0 ? length : 0] = '\0';
@@ -227,7 +227,7 @@ static void test_progress_on_a_terminal_only(void **state)
     close(screen);
     close(terminal);
     argv[9] = NULL;
-    cli_run(argv, -1, TIMEOUT_S, &r);
+    cli_run(argv, -1, -1, TIMEOUT_S, &r);
     if (r.status != 0 || r.err_length != 0) fail_msg("--frames into a pipe: stderr '%s'", r.err);
 }
 
