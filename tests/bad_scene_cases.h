@@ -231,7 +231,12 @@ static const bad_scene_case BAD_SCENE_CASES[] = {
       "pit.png", ": heightfield image is 300x300; expected sides 2..256" },
     { "heightfield over the triangle limit", BAD_HEIGHTFIELD_SCENE,
       { { "pit.png", BAD_PNG, NULL, 200, 200 } }, "pit.png",
-      ": needs 79202 triangles; a tarn mesh holds at most 65535" },
+      ": heightfield image is 200x200, whose grid needs 79202 triangles; a tarn mesh holds at most 65535 "
+      "(a square image up to 182x182)" },
+    { "heightfield one past the triangle limit", BAD_HEIGHTFIELD_SCENE,
+      { { "pit.png", BAD_PNG, NULL, 183, 183 } }, "pit.png",
+      ": heightfield image is 183x183, whose grid needs 66248 triangles; a tarn mesh holds at most 65535 "
+      "(a square image up to 182x182)" },
     /* a triangle spanning more texels than the core interpolates precisely enough */
     { "texture spanned too far",
       "{" BAD_CAMERA ", \"materials\": {\"m\": {\"texture\": \"tex.png\"}}, \"objects\": ["

@@ -344,6 +344,31 @@ static double covered_area2_xz(const tarn_mesh *m)
     return sum;
 }
 
+/* The largest heightfields a mesh holds are read; one row more is refused. */
+static void test_heightfield_size_limit(void **state)
+{
+    (void)state;
+    char *dir = make_temp_dir();
+    char path[1100];
+    snprintf(path, sizeof path, "%s/hf.png", dir);
+    static uint8_t rgb[3 * 256 * 256];
+    static const struct {
+        unsigned width, height;
+        int accepted;
+    } sizes[] = {{182, 182, 1}, {2, 256, 1}, {256, 129, 1}, {183, 182, 0}, {256, 130, 0}};
+    for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++) {
+        tarn_error err;
+        tarn_image image;
+        assert_int_equal(tarn_png_write_rgb(path, rgb, sizes[k].width, sizes[k].height, &err), 0);
+        const int read = tarn_png_read_heightfield(path, &image, &err) == 0;
+        if (read != sizes[k].accepted)
+            fail_msg("a %ux%u heightfield was %s", sizes[k].width, sizes[k].height, read ? "read" : err.message);
+        if (read) tarn_image_free(&image);
+    }
+    unlink(path);
+    remove_temp_dir(dir);
+}
+
 static void test_heightfield_merges_level_squares(void **state)
 {
     (void)state;
@@ -1346,6 +1371,7 @@ int main(void)
         cmocka_unit_test(test_box),
         cmocka_unit_test(test_sphere),
         cmocka_unit_test(test_heightfield),
+        cmocka_unit_test(test_heightfield_size_limit),
         cmocka_unit_test(test_heightfield_merges_level_squares),
         cmocka_unit_test(test_random_heightfields_merge_watertight),
         cmocka_unit_test(test_water_heightfield_stays_whole),

@@ -169,12 +169,15 @@ static int check_texture_size(const char *path, uint32_t width, uint32_t height,
 static int check_heightfield_size(const char *path, uint32_t width, uint32_t height,
                                   tarn_error *err)
 {
-    if (width >= 2 && height >= 2 && width <= TARN_HEIGHTFIELD_SIZE_MAX &&
-        height <= TARN_HEIGHTFIELD_SIZE_MAX) {
-        return 0;
-    }
-    return tarn_fail(err, "%s: heightfield image is %ux%u; expected sides 2..%u", path, width,
-                     height, TARN_HEIGHTFIELD_SIZE_MAX);
+    if (width < 2 || height < 2 || width > TARN_HEIGHTFIELD_SIZE_MAX || height > TARN_HEIGHTFIELD_SIZE_MAX)
+        return tarn_fail(err, "%s: heightfield image is %ux%u; expected sides 2..%u", path, width,
+                         height, TARN_HEIGHTFIELD_SIZE_MAX);
+    const uint32_t triangles = 2u * (width - 1u) * (height - 1u);
+    if (triangles > TARN_MESH_TRIANGLES_MAX)
+        return tarn_fail(err, "%s: heightfield image is %ux%u, whose grid needs %u triangles; a tarn mesh "
+                         "holds at most %u (a square image up to 182x182)", path, width, height, triangles,
+                         TARN_MESH_TRIANGLES_MAX);
+    return 0;
 }
 
 int tarn_png_read_texture(const char *path, tarn_image *out, tarn_error *err)

@@ -13,8 +13,9 @@
 #include <stdint.h>
 #include "error.h"
 
-/* Heightfields become one vertex per pixel; 256 keeps the index math in range
- * (the mesh generator checks the tighter vertex and triangle limits). */
+/* Heightfields become one vertex per pixel and two triangles per square of four,
+ * in one tarn mesh (TARN_MESH_TRIANGLES_MAX): a side may reach 256 as long as the
+ * grid's 2 * (w - 1) * (h - 1) triangles fit, so a square image up to 182x182. */
 #define TARN_HEIGHTFIELD_SIZE_MAX 256u
 
 /* The largest PNG file read, checked before its first byte. The biggest image a
