@@ -199,8 +199,8 @@ static void test_a_sweep_checks_before_its_work(void **state)
     if (access(out, F_OK) == 0) fail_msg("a failed sweep left %s behind", out);
 }
 
-/* On a terminal, --frames draws its progress on stderr and erases it; --quiet, or
- * stderr not a terminal, draws none. */
+/* On a terminal, --frames and bake draw their progress on stderr and erase it;
+ * --quiet, or stderr not a terminal, draws none. */
 static void test_progress_on_a_terminal_only(void **state)
 {
     (void)state;
@@ -224,6 +224,13 @@ static void test_progress_on_a_terminal_only(void **state)
         const int drawn = strstr(shown, "tarn render: frames: 0/12") != NULL && strstr(shown, "\r\033[K") != NULL;
         if (drawn == quiet) fail_msg("--frames %s: the terminal shows '%s'", quiet ? "--quiet" : "", shown);
     }
+    /* bake shows its tables being written the same way */
+    char *bake[] = {(char *)tarn_bin(), "bake", SCENE, "-o", (char *)in_folder("x.c"), NULL};
+    cli_run(bake, -1, screen, TIMEOUT_S, &r);
+    ssize_t length = read(terminal, shown, sizeof shown - 1);
+    shown[length > 0 ? length : 0] = '\0';
+    if (r.status != 0 || strstr(shown, "tarn bake: tables written: 0/") == NULL)
+        fail_msg("bake on a terminal: exit %d, the terminal shows '%s'", r.status, shown);
     close(screen);
     close(terminal);
     argv[9] = NULL;

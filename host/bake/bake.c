@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "atomic_file.h"
+#include "progress.h"
 #include "bake_points.h"
 #include "backdrop.h"
 #include "static_view.h"
@@ -1172,7 +1173,14 @@ static int write_outputs(const bake_plan *p, const tarn_bake_options *o, const b
     if (tarn_atomic_open_all(files, paths, 3, err) != 0) return -1;
     emitter e = {files[0].file, p, 0};
     print_source_comment(files[0].file, p, o, totals);
-    for (size_t k = 0; k < p->item_count; k++) print_item(&e, &p->items[k]);
+    /* a scene near the budget is millions of triangles, and seconds of text */
+    tarn_progress progress;
+    tarn_progress_start(&progress, "tarn bake: tables written", p->item_count, o->quiet);
+    for (size_t k = 0; k < p->item_count; k++) {
+        print_item(&e, &p->items[k]);
+        tarn_progress_step(&progress, k + 1u);
+    }
+    tarn_progress_end(&progress);
     print_header(files[1].file, p, o, totals);
     print_link_header(files[2].file, p, o, totals);
     if (e.unresolved) {

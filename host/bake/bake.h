@@ -48,6 +48,7 @@ typedef struct {
     tarn_frame_config config; /* frame size and quality; its time_ms is baked as 0 */
     int argc;                /* the command line, shown in the header comment */
     char *const *argv;
+    int quiet;               /* no progress line while the files are written (progress.h) */
 } tarn_bake_options;
 
 typedef struct {

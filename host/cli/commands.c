@@ -271,7 +271,7 @@ static int bake_to_c(const tarn_cli_options *o, const tarn_loaded_scene *scene,
                      const tarn_frame_config *config, tarn_error *err)
 {
     tarn_bake_options options = {o->scene_path, o->output_path, o->name, o->points_path, !o->no_static_view, o->backdrop,
-                                  *config, o->argc, o->argv};
+                                  *config, o->argc, o->argv, o->quiet};
     tarn_bake_result result;
     if (tarn_bake(scene, &options, &result, err) != 0) return -1;
     printf("bake scene=%s const_bytes=%zu memory_bytes=%zu\n", result.name, result.const_bytes,

@@ -33,7 +33,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     output[sizeof output - 1] = '\0';
     const int backdrop = (int)(size % 3u); /* each kind of backdrop, by the input's length */
     tarn_bake_options options = {"scene.json", output, NULL, NULL, 1, backdrop,
-                                 {scene.width, scene.height, tarn_quality_default(), 0}, 0, NULL};
+                                 {scene.width, scene.height, tarn_quality_default(), 0}, 0, NULL, 1};
     tarn_bake_result result;
     const int status = tarn_bake(&scene, &options, &result, &err);
     const int written = outputs_written_then_removed();
