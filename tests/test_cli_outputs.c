@@ -123,6 +123,9 @@ static void test_stdout_takes_the_image(void **state)
     render_to("-", &r);
     expect_written("-o -", &r, r.out, r.out_length);
     if (access("-", F_OK) == 0) fail_msg("-o - made a file named '-'");
+    /* a link that names the pipe (as /dev/stdout does) reaches it */
+    render_to("/proc/self/fd/1", &r);
+    expect_written("-o /proc/self/fd/1 on a pipe", &r, r.out, r.out_length);
 }
 
 /* A FIFO with a reader gets the image and stays a FIFO; one without a reader is an

@@ -146,7 +146,7 @@ static int check_combination(tarn_cli_options *o, tarn_error *err)
         return tarn_fail(err, "accuracy: unexpected argument '%s'", o->scene_path);
     if (o->command == TARN_CMD_ACCURACY)
         return o->math ? 0 : tarn_fail(err, "accuracy: expected --math");
-    if (o->scene_path == NULL) return tarn_fail(err, "expected a scene file");
+    if (o->scene_path == NULL || o->scene_path[0] == '\0') return tarn_fail(err, "expected a scene file");
     if (o->command == TARN_CMD_RENDER && o->output_path == NULL)
         return tarn_fail(err, "render: expected -o OUT.png");
     if (o->command == TARN_CMD_BAKE && o->output_path == NULL) return tarn_fail(err, "bake: expected -o OUT.c");

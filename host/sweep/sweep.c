@@ -68,7 +68,7 @@ static int parse_sources(sweep_options *o, const char *list, tarn_error *err)
 
 static int parse_option(sweep_options *o, const char *name, const char *value, tarn_error *err)
 {
-    if (value == NULL) return tarn_fail(err, "%s: expected a value", name);
+    if (value == NULL || *value == '\0') return tarn_fail(err, "%s: expected a value", name);
     if (strcmp(name, "--out") == 0) o->out_dir = value;
     else if (strcmp(name, "--extremes") == 0) o->extremes_dir = value;
     else if (strcmp(name, "--boards") == 0) return parse_sources(o, value, err);

@@ -58,12 +58,14 @@ static char *follow_links(const char *path, tarn_error *err)
     return NULL;
 }
 
-/* Standard output, or a target that is no regular file, written in place. A FIFO
- * is opened without waiting: with no reader that is an error (ENXIO). */
+/* Standard output, or a target that is no regular file, written in place through
+ * the path as given (so that /dev/stdout and /proc/self/fd/N reach the pipe they
+ * stand for). A FIFO is opened without waiting: with no reader that is an error
+ * (ENXIO). */
 static int open_through(tarn_atomic_file *f, tarn_error *err)
 {
     int fd = strcmp(f->path, "-") == 0 ? dup(STDOUT_FILENO)
-                                      : open(f->target, O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+                                      : open(f->path, O_WRONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
         return tarn_fail(err, "%s: cannot write: %s", f->path,
                          errno == ENXIO ? "no process reads this FIFO" : strerror(errno));
@@ -97,14 +99,15 @@ static int open_temporary(tarn_atomic_file *f, tarn_error *err)
     return 0;
 }
 
-/* How the target is written: through (1), by a temporary file renamed over it
- * (0), or not at all (-1: a directory). */
-static int written_through(const tarn_atomic_file *f, tarn_error *err)
+/* How the output is written: through (1), by a temporary file renamed over the
+ * end of its links (0), or not at all (-1: a directory). stat follows every link,
+ * /proc's too, to what a write would reach. */
+static int written_through(const char *path, tarn_error *err)
 {
     struct stat info;
-    if (strcmp(f->path, "-") == 0) return 1;
-    if (stat(f->target, &info) != 0) return 0;
-    if (S_ISDIR(info.st_mode)) return tarn_fail(err, "%s: is a directory, expected a file name", f->path);
+    if (strcmp(path, "-") == 0) return 1;
+    if (stat(path, &info) != 0) return 0;
+    if (S_ISDIR(info.st_mode)) return tarn_fail(err, "%s: is a directory, expected a file name", path);
     return !S_ISREG(info.st_mode);
 }
 
@@ -113,12 +116,14 @@ int tarn_atomic_open(tarn_atomic_file *f, const char *path, tarn_error *err)
     f->path = path;
     f->file = NULL;
     f->temp_path = NULL;
-    f->target = strcmp(path, "-") == 0 ? strdup(path) : follow_links(path, err);
-    if (f->target == NULL) return strcmp(path, "-") == 0 ? tarn_fail(err, "-: out of memory") : -1;
-    int through = written_through(f, err);
-    int failed = through < 0 || (through ? open_through(f, err) : open_temporary(f, err));
-    if (failed) tarn_atomic_abandon(f);
-    return failed ? -1 : 0;
+    f->target = NULL;
+    const int through = written_through(path, err);
+    if (through < 0) return -1;
+    f->target = through ? strdup(path) : follow_links(path, err);
+    if (f->target == NULL) return through ? tarn_fail(err, "%s: out of memory", path) : -1;
+    if ((through ? open_through(f, err) : open_temporary(f, err)) == 0) return 0;
+    tarn_atomic_abandon(f);
+    return -1;
 }
 
 void tarn_atomic_abandon(tarn_atomic_file *f)
