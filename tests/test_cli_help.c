@@ -92,6 +92,7 @@ static void test_usage_errors_are_one_line(void **state)
         {"", "expected a command: render, compare, memory, bake, show, sweep or accuracy", "tarn --help"},
         {"frob", "unknown command 'frob'", "tarn --help"},
         {"help frob", "no command 'frob'", "tarn --help"},
+        {"help render extra", "help: unexpected argument 'extra'", "tarn --help"},
         {"render scenes/pond.json --tile 3 -o x.png", "--tile: expected a whole number 8..64", "tarn render --help"},
         {"render scenes/pond.json -o a.png -o b.png", "-o: given twice", "tarn render --help"},
         {"render scenes/pond.json -o a.png --tile 8 --tile 16", "--tile: given twice", "tarn render --help"},

@@ -22,10 +22,11 @@ static int help(int argc, char **argv)
     }
     int overview = word != NULL && (strcmp(word, "--help") == 0 || strcmp(word, "-h") == 0);
     if (overview && argc == 2) return tarn_cli_print_help(NULL, stdout) == 0 ? 0 : 1;
-    if (word != NULL && strcmp(word, "help") == 0 && argc <= 3) {
-        if (tarn_cli_print_help(argc == 3 ? argv[2] : NULL, stdout) == 0) return 0;
+    if (word != NULL && strcmp(word, "help") == 0) {
         tarn_error err;
-        tarn_fail(&err, "help: no command '%s'", argv[2]);
+        if (argc > 3) tarn_fail(&err, "help: unexpected argument '%s'", argv[3]);
+        else if (tarn_cli_print_help(argc == 3 ? argv[2] : NULL, stdout) == 0) return 0;
+        else tarn_fail(&err, "help: no command '%s'", argv[2]);
         return tarn_usage_error(NULL, &err);
     }
     if (word != NULL && word[0] != '-' && tarn_cli_wants_help(argc, argv) &&
