@@ -18,7 +18,7 @@ GPIOD_VERSION := $(shell pkg-config --modversion libgpiod 2>/dev/null)
 GPIO_LINES_SRC := $(if $(GPIOD_VERSION),$(if $(filter 1.%,$(GPIOD_VERSION)),host/display/gpio_lines_gpiod1.c,host/display/gpio_lines_gpiod2.c),host/display/gpio_lines_none.c)
 HIDAPI_PKG := $(shell pkg-config --exists hidapi-hidraw 2>/dev/null && echo hidapi-hidraw)
 MCP2210_USB_SRC := $(if $(HIDAPI_PKG),host/display/mcp2210_hidapi.c,host/display/mcp2210_hidapi_none.c)
-HOST_PKGS := libpng jansson $(if $(GPIOD_VERSION),libgpiod) $(HIDAPI_PKG)
+HOST_PKGS := libpng jansson libgif $(if $(GPIOD_VERSION),libgpiod) $(HIDAPI_PKG)
 # host/ is in folders by job (host/*/README.md); every folder is on the include path,
 # so a host header is included by its name alone wherever it lives.
 HOST_INCLUDES := -Icore -Icore/include $(patsubst %/,-I%,$(sort $(wildcard host/*/)))

@@ -4,7 +4,7 @@
 BLOCKS: a block's name -> a function of the measurer giving the block's text, its
     figures as Fig parts (their kinds say how each is checked).
 KEYS: a key -> a function of the measurer giving one figure.
-IMAGES: a PNG in docs/ -> the tarn command (without -o) that renders it.
+IMAGES: a PNG (or an animated GIF) in docs/ -> the tarn command (without -o) that renders it.
 TOOLS: a tool's name -> a function running it, whose output blocks and keys read.
 """
 
@@ -21,6 +21,10 @@ TOOLS = {}
 
 IMAGES = {"docs/images/%s.png" % s: ["render", "scenes/%s.json" % s]
           for s in ("pond", "beach", "murky", "lake", "underwater")}
+# the README's first picture: the orbiting pond's whole 8-second circle, 10 frames a
+# second, so that the loop meets itself
+IMAGES["docs/images/pond-orbit.gif"] = ["render", "scenes/pond-orbit.json", "--frames", "80", "--fps", "10",
+                                        "--quiet"]
 
 
 def block(fn):

@@ -12,6 +12,7 @@ want make command -v make
 want gcc command -v gcc
 want libpng-dev pkg-config --exists libpng
 want libjansson-dev pkg-config --exists jansson
+want libgif-dev pkg-config --exists libgif           # tarn render -o NAME.gif
 want libgpiod-dev pkg-config --exists libgpiod       # tarn show: DC/reset lines, GPIO bit-bang
 want libhidapi-dev pkg-config --exists hidapi-hidraw # tarn show: the MCP2210 bridge
 want valgrind test -e /usr/include/valgrind/callgrind.h # tarn sweep: host instruction counts

@@ -49,14 +49,17 @@ static const char backdrop_usage[] =
     "               water blocks share\n";
 
 static const char render_usage[] =
-    "usage: tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]\n"
-    "                   [--reference [--snapped]] [--backdrop on|off|still] [--quiet] [QUALITY]\n"
+    "usage: tarn render SCENE -o OUT.png|OUT.gif [--size WxH] [--time MS] [--frames N [--fps F]]\n"
+    "                   [--reference [--snapped]] [--backdrop on|off|still] [--rgb565] [--quiet]\n"
+    "                   [QUALITY]\n"
     "  -o OUT.png   the image; - writes it to standard output. A regular file is replaced only\n"
     "               once complete, a link's target is written, a device or FIFO written through\n"
+    "  -o OUT.gif   one animated GIF of the frames (one palette for all; F at most 50)\n"
     "  --size WxH   the frame (the scene's own by default)\n"
     "  --time MS    the clock: water, sparkles and camera paths move with it (0 by default)\n"
     "  --frames N   a sequence: OUT-0000.png onward, frame k at MS + k * 1000 / F (F 30 by default)\n"
     "  --reference  the float reference instead of the core; --snapped on the core's own triangles\n"
+    "  --rgb565     each frame as the panel shows it: RGB565 with the boards' ordered dither\n"
     "  --quiet      no progress line on stderr\n";
 
 static const char compare_usage[] =

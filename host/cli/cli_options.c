@@ -1,6 +1,7 @@
 #include "cli_options.h"
 #include "backdrop.h"
 #include "option_values.h"
+#include "gif_io.h"
 #include "quality_options.h"
 
 #include <stdio.h>
@@ -107,6 +108,7 @@ static int parse_flag(const char *name, tarn_cli_options *o)
     else if (strcmp(name, "--snapped") == 0) o->snapped = 1;
     else if (strcmp(name, "--math") == 0) o->math = 1;
     else if (strcmp(name, "--quiet") == 0) o->quiet = 1;
+    else if (strcmp(name, "--rgb565") == 0) o->rgb565 = 1;
     else return 1;
     return 0;
 }
@@ -150,6 +152,9 @@ static int check_combination(tarn_cli_options *o, tarn_error *err)
     if (o->command == TARN_CMD_RENDER && o->output_path == NULL)
         return tarn_fail(err, "render: expected -o OUT.png");
     if (o->command == TARN_CMD_BAKE && o->output_path == NULL) return tarn_fail(err, "bake: expected -o OUT.c");
+    if (o->rgb565 && o->command != TARN_CMD_RENDER) return tarn_fail(err, "--rgb565 applies to render");
+    if (tarn_cli_writes_gif(o) && o->fps > TARN_GIF_FPS_MAX)
+        return tarn_fail(err, "--fps: a GIF shows at most %u frames a second, got %u", TARN_GIF_FPS_MAX, o->fps);
     if (o->quiet && o->command != TARN_CMD_RENDER && o->command != TARN_CMD_BAKE)
         return tarn_fail(err, "--quiet applies to render and bake");
     if (o->output_path && strcmp(o->output_path, "-") == 0 && (o->frames || o->command == TARN_CMD_BAKE))
@@ -180,6 +185,12 @@ int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
     if (tarn_cli_apply_preset(argc - 2, argv + 2, &o->quality, err) != 0) return -1;
     if (tarn_parse_arguments(argc, argv, &o->scene_path, read_option, o, err) != 0) return -1;
     return check_combination(o, err);
+}
+
+int tarn_cli_writes_gif(const tarn_cli_options *o)
+{
+    const size_t length = o->output_path ? strlen(o->output_path) : 0;
+    return o->command == TARN_CMD_RENDER && length >= 4 && strcmp(o->output_path + length - 4, ".gif") == 0;
 }
 
 int tarn_cli_frame_path(const char *output, unsigned index, char *out, size_t size)

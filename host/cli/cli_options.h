@@ -1,7 +1,7 @@
 /* cli_options.h: the command line of the `tarn` tool, parsed and range-checked.
  *
- *   tarn render SCENE -o OUT.png [--size WxH] [--time MS] [--frames N [--fps F]]
- *               [--reference [--snapped]] [--backdrop on|off|still] [--quiet] [QUALITY]
+ *   tarn render SCENE -o OUT.png|OUT.gif [--size WxH] [--time MS] [--frames N [--fps F]]
+ *               [--reference [--snapped]] [--backdrop on|off|still] [--rgb565] [--quiet] [QUALITY]
  *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png]
  *                [--backdrop on|off|still] [QUALITY]   (the core, through a backdrop with
  *                                              --backdrop, on the yardstick: yardstick.h)
@@ -52,6 +52,7 @@ typedef struct {
     int snapped;             /* the reference rasterizes the core's snapped triangles */
     int math;                /* accuracy --math */
     int quiet;               /* render, bake --quiet: no progress line on stderr */
+    int rgb565;              /* render --rgb565: each frame as the panel shows it */
     tarn_quality quality;
     int argc;                /* the whole command line, as given */
     char **argv;
@@ -61,6 +62,14 @@ typedef struct {
 int tarn_cli_parse(int argc, char **argv, tarn_cli_options *options, tarn_error *err);
 
 #define TARN_CLI_FRAMES_MAX 10000u
+
+/* The most pixels (frames times width times height) one GIF chooses its palette
+ * over: 7 bytes each while it does (the frames, the palette's work, the indices),
+ * so about 1 GB; 10 s of a 240x240 scene at 30 frames a second is 17.3 M. */
+#define TARN_CLI_GIF_PIXELS_MAX 150000000u
+
+/* Whether render writes one animated GIF (-o NAME.gif) rather than PNG. */
+int tarn_cli_writes_gif(const tarn_cli_options *options);
 
 /* Frame `index` of a --frames sequence: "out.png" -> "out-0007.png" (a name without
  * ".png" gains "-0007.png"). 0, or -1 if it does not fit `size` bytes. */

@@ -2,11 +2,14 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "accuracy_math.h"
 #include "bake.h"
 #include "compare.h"
 #include "core_render.h"
+#include "gif_io.h"
+#include "option_values.h"
 #include "png_io.h"
 #include "progress.h"
 #include "reference.h"
@@ -102,14 +105,26 @@ static int run_on_scene(const tarn_cli_options *o, scene_action action)
     return failed ? report(&err) : 0;
 }
 
-/* One frame into `f` and then to `path`, by the renderer the options pick. */
+/* One frame into `f`, by the renderer the options pick; with --rgb565 as the
+ * panel shows it. */
+static int render_frame(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+                        const tarn_frame_config *config, frame_image *f, tarn_error *err)
+{
+    int failed = o->reference ? render_reference(scene, config, o->snapped, f, err)
+                              : tarn_core_render(&scene->scene, config, f->rgb, f->covered, err);
+    if (!failed && o->rgb565) tarn_as_panel_shows(f->rgb, config->width, config->height, f->rgb);
+    return failed;
+}
+
+/* One frame into `f` and then to `path`. */
 static int render_frame_to(const char *path, const tarn_cli_options *o,
                            const tarn_loaded_scene *scene, const tarn_frame_config *config,
                            frame_image *f, tarn_error *err)
 {
-    int failed = o->reference ? render_reference(scene, config, o->snapped, f, err)
-                              : tarn_core_render(&scene->scene, config, f->rgb, f->covered, err);
-    return failed || tarn_png_write_rgb(path, f->rgb, config->width, config->height, err) ? -1 : 0;
+    return render_frame(o, scene, config, f, err) ||
+                   tarn_png_write_rgb(path, f->rgb, config->width, config->height, err)
+               ? -1
+               : 0;
 }
 
 /* Frames [0, count) of the sequence, which this run wrote. */
@@ -145,13 +160,45 @@ static int render_sequence(const tarn_cli_options *o, const tarn_loaded_scene *s
     return failed ? -1 : 0;
 }
 
+/* -o NAME.gif: every frame is held until the last, since one palette is chosen
+ * over them all (gif_io.h), then the one file is written. */
+static int render_gif(const tarn_cli_options *o, const tarn_loaded_scene *scene,
+                      const tarn_frame_config *config, frame_image *f, tarn_error *err)
+{
+    const unsigned frames = o->frames ? o->frames : 1u;
+    const size_t frame_pixels = (size_t)config->width * config->height, frame_bytes = 3u * frame_pixels;
+    if (frame_pixels * frames > TARN_CLI_GIF_PIXELS_MAX)
+        return tarn_fail(err, "%s: %u frames of %ux%u are %zu pixels to choose one palette over; a GIF holds at "
+                         "most %lu (fewer frames, or a smaller --size)", o->output_path, frames, config->width,
+                         config->height, frame_pixels * frames, (unsigned long)TARN_CLI_GIF_PIXELS_MAX);
+    uint8_t *all = malloc(frame_bytes * frames);
+    if (all == NULL) return tarn_fail(err, "%s: out of memory for %u frames", o->output_path, frames);
+    tarn_frame_config at = *config;
+    tarn_progress progress;
+    tarn_progress_start(&progress, "tarn render: frames", frames, o->quiet);
+    int failed = 0;
+    for (unsigned k = 0; k < frames && !failed; k++) {
+        at.time_ms = tarn_cli_frame_time(o, k);
+        failed = render_frame(o, scene, &at, f, err);
+        memcpy(all + k * frame_bytes, f->rgb, frame_bytes);
+        tarn_progress_step(&progress, k + 1u);
+    }
+    tarn_progress_end(&progress);
+    const tarn_gif_animation animation = {config->width, config->height, frames,
+                                          o->fps ? o->fps : TARN_CLI_FPS_DEFAULT, all};
+    failed = failed || tarn_gif_write(o->output_path, &animation, err);
+    free(all);
+    return failed ? -1 : 0;
+}
+
 static int render_images(const tarn_cli_options *o, const tarn_loaded_scene *scene,
                          const tarn_frame_config *config, tarn_error *err)
 {
     frame_image f = {0, 0, NULL, NULL};
     int failed = frame_alloc(&f, config->width, config->height, err) ||
-                 (o->frames ? render_sequence(o, scene, config, &f, err)
-                            : render_frame_to(o->output_path, o, scene, config, &f, err));
+                 (tarn_cli_writes_gif(o)  ? render_gif(o, scene, config, &f, err)
+                  : o->frames ? render_sequence(o, scene, config, &f, err)
+                              : render_frame_to(o->output_path, o, scene, config, &f, err));
     frame_free(&f);
     return failed ? -1 : 0;
 }

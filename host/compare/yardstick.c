@@ -41,8 +41,7 @@ int tarn_continuous_reference_render(const tarn_scene *scene, const char *scene_
     return 0;
 }
 
-/* The image through the panel's RGB565 conversion and back, as the glass shows it. */
-static void as_panel_shows(const uint8_t *rgb, int width, int height, uint8_t *out)
+void tarn_as_panel_shows(const uint8_t *rgb, int width, int height, uint8_t *out)
 {
     for (int y = 0; y < height; y++)
         for (int x = 0; x < width; x++) {
@@ -56,8 +55,8 @@ static double panel_psnr(const uint8_t *rgb, const uint8_t *shading_rgb, int wid
                          uint8_t *scratch_a, uint8_t *scratch_b)
 {
     tarn_compare_metrics m;
-    as_panel_shows(rgb, width, height, scratch_a);
-    as_panel_shows(shading_rgb, width, height, scratch_b);
+    tarn_as_panel_shows(rgb, width, height, scratch_a);
+    tarn_as_panel_shows(shading_rgb, width, height, scratch_b);
     tarn_compare_images(scratch_a, scratch_b, NULL, NULL, width, height, &m);
     return m.psnr_db;
 }

@@ -47,6 +47,10 @@ int tarn_yardstick_measure(const tarn_scene *scene, const char *scene_name, cons
                            const uint8_t *rgb, const tarn_continuous_reference *reference,
                            tarn_yardstick *out, uint8_t *surface_differs, tarn_error *err);
 
+/* An RGB888 image through the panel's RGB565 conversion with the boards' ordered
+ * dither and back, as the glass shows it (`out` may be `rgb`). */
+void tarn_as_panel_shows(const uint8_t *rgb, int width, int height, uint8_t *out);
+
 /* The one line:
  *   compare scene=NAME size=WxH time=MS psnr=NN.NN maxerr=N over2=P% over8=P%
  *   shading_psnr=NN.NN shading_over2=P% panel_psnr=NN.NN coverage=P%
