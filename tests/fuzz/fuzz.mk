@@ -39,10 +39,14 @@ $(FUZZ_DIR)/%.o: %.c
 $(FUZZ_DIR)/fuzz_%: $(FUZZ_DIR)/tests/fuzz/fuzz_%.o $(FUZZ_LIB_OBJ)
 	$(FUZZ_CC) $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $^ $(HOST_LIBS)
 
+# Each target's line says which of them it is and when it and the whole run end, so
+# that an hour's run shows how far it has come.
 fuzz: fuzz-build
-	@for t in $(FUZZ_TARGETS); do \
+	@n=0; count=$(words $(FUZZ_TARGETS)); for t in $(FUZZ_TARGETS); do \
+		n=$$((n + 1)); now=$$(date +%s); \
 		mkdir -p $(FUZZ_DIR)/corpus/$$t || exit 1; \
-		echo "== $$t for $(FUZZ_SECONDS) s"; \
+		echo "== $$t ($$n of $$count) for $(FUZZ_SECONDS) s: ends about $$(date -d @$$((now + $(FUZZ_SECONDS))) +%H:%M)," \
+			"the last target about $$(date -d @$$((now + (count - n + 1) * $(FUZZ_SECONDS))) +%H:%M)"; \
 		$(FUZZ_DIR)/$$t $(FUZZ_OPTIONS) -max_total_time=$(FUZZ_SECONDS) -artifact_prefix=$(FUZZ_DIR)/$$t- \
 			$(FUZZ_DIR)/corpus/$$t tests/fuzz/corpus/$$t > $(FUZZ_DIR)/$$t.log 2>&1; \
 		status=$$?; grep -E "^stat::|^Done|ERROR|SUMMARY" $(FUZZ_DIR)/$$t.log | tail -8; \
