@@ -5,6 +5,26 @@ BUILD ?= build/release
 SAN ?= 0
 CC ?= cc
 
+# A short line a file built ("  CC      build/release/core/raster/raster.o", LD, AR,
+# and in firmware/firmware.mk BAKE, RUN, ...); make V=1 prints every command in
+# full instead, make -s neither. A recipe shows its line with $(call show,TAG,FILE)
+# and runs its command as $(Q)command; a command that is always hidden (@) is
+# printed with V=1 by $(call show_command,COMMAND).
+V ?= 0
+ifeq ($(V),1)
+Q :=
+show = @:
+show_command = @printf '%s\n' '$(subst ','\'',$(strip $(1)))'
+else
+Q := @
+show = @printf '  %-7s %s\n' '$(1)' '$(2)'
+show_command = @:
+endif
+ifneq ($(findstring s,$(firstword -$(MAKEFLAGS))),)
+show = @:
+show_command = @:
+endif
+
 WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes
 OPT := -O2 -g
 ifeq ($(SAN),1)
@@ -128,22 +148,27 @@ docs-figures: deps-test
 	@TARN_BIN=build/release/tarn scripts/docs_figures.py write
 
 $(TARN): $(BUILD)/host/cli/main.o $(HOST_OBJ) $(CORE_OBJ)
-	$(CC) $(OPT) -o $@ $^ $(HOST_LIBS)
+	$(call show,LD,$@)
+	$(Q)$(CC) $(OPT) -o $@ $^ $(HOST_LIBS)
 
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(TEST_SUPPORT_OBJ) $(HOST_OBJ) $(CORE_OBJ)
-	$(CC) $(OPT) -o $@ $^ $(HOST_LIBS) $(TEST_LIBS)
+	$(call show,LD,$@)
+	$(Q)$(CC) $(OPT) -o $@ $^ $(HOST_LIBS) $(TEST_LIBS)
 
 $(BUILD)/core/%.o: core/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CORE_CFLAGS) -MMD -MP -c -o $@ $<
+	$(call show,CC,$@)
+	$(Q)$(CC) $(CORE_CFLAGS) -MMD -MP -c -o $@ $<
 
 $(BUILD)/host/%.o: host/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(HOST_CFLAGS) -MMD -MP -c -o $@ $<
+	$(call show,CC,$@)
+	$(Q)$(CC) $(HOST_CFLAGS) -MMD -MP -c -o $@ $<
 
 $(BUILD)/tests/%.o: tests/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(HOST_CFLAGS) -Itests $(shell pkg-config --cflags cmocka 2>/dev/null) -MMD -MP -c -o $@ $<
+	$(call show,CC,$@)
+	$(Q)$(CC) $(HOST_CFLAGS) -Itests $(shell pkg-config --cflags cmocka 2>/dev/null) -MMD -MP -c -o $@ $<
 
 clean:
 	rm -rf build pond.png
@@ -173,7 +198,8 @@ lib libtarn:
 # the same name; the archive is made anew each time so a removed file leaves it.
 $(BUILD)/libtarn.a: $(CORE_OBJ)
 	@rm -f $@
-	$(AR) qcs $@ $^
+	$(call show,AR,$@)
+	$(Q)$(AR) qcs $@ $^
 
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include/tarn

@@ -236,8 +236,9 @@ endif
 FW_BAKE := $(strip $(FW_TARN) bake $(FW_SCENE) -o $(FW_DIR)/scene.c --name scene $(FW_BAKE_FLAGS) $(FW_POINTS_FLAGS))
 $(FW_DIR)/scene.c: $(FW_SCENE) $(FW_TARN) $(FW_DIR)/firmware.conf $(if $(FW_POINTS_FLAGS),$(POINTS)) | fw-toolchain
 	@mkdir -p $(FW_DIR)
-	@echo "$(FW_BAKE)" >&2
-	@$(FW_BAKE) >&2
+	$(call show,BAKE,$@)
+	$(call show_command,$(FW_BAKE))
+	@$(FW_BAKE) $(if $(Q),> /dev/null,>&2)
 
 $(FW_DIR)/scene.h $(FW_DIR)/scene_link.h: $(FW_DIR)/scene.c
 
@@ -267,25 +268,30 @@ $(FW_SIZE_OBJ): FW_DEFINES += -Os
 
 $(FW_DIR)/obj/%.o: %.c | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(FW_CFLAGS) $(FW_DEFINES) -MMD -MP -c -o $@ $<
+	$(call show,CC,$@)
+	$(Q)$(FW_CC) $(FW_CFLAGS) $(FW_DEFINES) -MMD -MP -c -o $@ $<
 
 $(FW_DIR)/obj/%.o: $(FW_DIR)/%.c | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(FW_CFLAGS) -MMD -MP -c -o $@ $<
+	$(call show,CC,$@)
+	$(Q)$(FW_CC) $(FW_CFLAGS) -MMD -MP -c -o $@ $<
 
 $(FW_DIR)/obj/%.o: %.S | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(BOARD_CPU) $(BOARD_INCLUDE) -MMD -MP -c -o $@ $<
+	$(call show,AS,$@)
+	$(Q)$(FW_CC) $(BOARD_CPU) $(BOARD_INCLUDE) -MMD -MP -c -o $@ $<
 
 # A link that overflows a memory region names the region and the bytes over; the
 # note after it says what to change. A linked image whose deepest call chain
 # (firmware/stack_bound.sh: GCC's call graphs, no recursion allowed) needs more
 # stack than the board reserves is refused too.
+FW_LINK = $(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LDSCRIPT) -Lboards/common \
+	-Wl,--gc-sections -Wl,-Map=$(FW_DIR)/firmware.map -Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES) \
+	-o $(FW_ELF) $(FW_OBJ) $(FW_LIBS)
 $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) $(wildcard boards/common/*.ld) | fw-toolchain
-	@if ! $(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LDSCRIPT) -Lboards/common \
-		-Wl,--gc-sections -Wl,-Map=$(FW_DIR)/firmware.map \
-		-Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES) \
-		-o $@ $(FW_OBJ) $(FW_LIBS) 2> $(FW_DIR)/link.err; then \
+	$(call show,LD,$@)
+	$(call show_command,$(FW_LINK))
+	@if ! $(FW_LINK) 2> $(FW_DIR)/link.err; then \
 		cat $(FW_DIR)/link.err >&2; \
 		if grep -q "region .RAM. overflowed" $(FW_DIR)/link.err; then \
 			echo "tarn: $(BOARD) has too little RAM for $(FW_SCENE) [$(strip $(FW_BAKE_FLAGS) $(FW_POINTS_FLAGS))]: the renderer needs" \
@@ -310,35 +316,43 @@ $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) $(wildcard boards/common/*.ld) | fw-toolc
 # The host tools (firmware/tools/): the boot2 checksum and the UF2 writer.
 $(FW_TOOLS)/%: firmware/tools/%.c
 	@mkdir -p $(dir $@)
-	$(FW_HOST_CC) -std=c99 -Wall -Wextra -Werror -O2 -o $@ $<
+	$(call show,HOSTCC,$@)
+	$(Q)$(FW_HOST_CC) -std=c99 -Wall -Wextra -Werror -O2 -o $@ $<
 
 # boot2: assembled and linked where the bootrom runs it (it is position-independent
 # anyway), cut to its bytes, then padded to 252 with the CRC32 the bootrom checks
 # appended, as a .boot2 section.
 $(FW_DIR)/boot2.bin: $(BOARD_BOOT2) boards/$(BOARD)/board.mk | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -Wl,-Ttext=0x20041f00 -Wl,-e,boot2_entry -o $(FW_DIR)/boot2.elf $<
-	$(FW_CROSS)objcopy -O binary -j .text $(FW_DIR)/boot2.elf $@
+	$(call show,LD,$(FW_DIR)/boot2.elf)
+	$(Q)$(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -Wl,-Ttext=0x20041f00 -Wl,-e,boot2_entry -o $(FW_DIR)/boot2.elf $<
+	$(call show,OBJCOPY,$@)
+	$(Q)$(FW_CROSS)objcopy -O binary -j .text $(FW_DIR)/boot2.elf $@
 
 $(FW_TOOLS)/boot2_crc: firmware/tools/crc32_boot2.h
 
 $(FW_DIR)/boot2_crc.S: $(FW_DIR)/boot2.bin $(FW_TOOLS)/boot2_crc
-	$(FW_TOOLS)/boot2_crc $< $@
+	$(call show,GEN,$@)
+	$(Q)$(FW_TOOLS)/boot2_crc $< $@
 
 $(FW_DIR)/obj/boot2_crc.o: $(FW_DIR)/boot2_crc.S | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(BOARD_CPU) -c -o $@ $<
+	$(call show,AS,$@)
+	$(Q)$(FW_CC) $(BOARD_CPU) -c -o $@ $<
 
 # UF2 for a bootloader that takes files (RP2040: hold BOOTSEL, copy the file): the
 # flash image from its lowest load address, in 256-byte blocks.
 $(FW_DIR)/firmware.uf2: $(FW_ELF) $(FW_TOOLS)/uf2
-	$(FW_CROSS)objcopy -O binary $(FW_ELF) $(FW_DIR)/firmware.bin
-	$(FW_TOOLS)/uf2 $(FW_DIR)/firmware.bin $(BOARD_FLASH_BASE) $(BOARD_UF2_FAMILY) $@
+	$(call show,OBJCOPY,$(FW_DIR)/firmware.bin)
+	$(Q)$(FW_CROSS)objcopy -O binary $(FW_ELF) $(FW_DIR)/firmware.bin
+	$(call show,UF2,$@)
+	$(Q)$(FW_TOOLS)/uf2 $(FW_DIR)/firmware.bin $(BOARD_FLASH_BASE) $(BOARD_UF2_FAMILY) $@
 
 # One emulated run. QEMU's exit status is the firmware's.
 $(FW_DIR)/report.txt: $(FW_ELF) | fw-qemu
 	@rm -f $@ $@.tmp $(FW_DIR)/panel.stream $(FW_DIR)/panel.stream.tmp
-	@echo "run $(BOARD) under $(BOARD_QEMU) -icount shift=0" >&2
+	$(call show,RUN,$(FW_DIR) ($(BOARD_QEMU) -icount shift=0))
+	$(call show_command,timeout $(FW_TIMEOUT) $(call BOARD_RUN,$(FW_ELF),$(FW_DIR)/panel.stream.tmp,$@.tmp))
 	@timeout $(FW_TIMEOUT) $(call BOARD_RUN,$(FW_ELF),$(FW_DIR)/panel.stream.tmp,$@.tmp) \
 		< /dev/null; status=$$?; \
 	if [ $$status -ne 0 ]; then echo "tarn: $(BOARD) exited with status $$status" \
