@@ -25,6 +25,16 @@ show = @:
 show_command = @:
 endif
 
+# Parallel by default: as many jobs as cores, unless a -j was given. (GNU make 4.3
+# shows no -j of the command line in MAKEFLAGS while it reads the makefiles, but a
+# -j given there outranks this one; a make run by another make finds the caller's
+# -j in the MAKEFLAGS of its environment and shares the caller's jobs.) A recipe line
+# that runs a program which runs make itself (tarn sweep, the check scripts) starts
+# with + so that the jobs are passed on to it.
+ifeq ($(filter -j% --jobs%,$(shell printenv MAKEFLAGS)),)
+MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 1)
+endif
+
 WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes
 OPT := -O2 -g
 ifeq ($(SAN),1)
@@ -89,16 +99,16 @@ demo: deps
 # and a short run of each (tests/fuzz/fuzz.mk).
 test: deps-test
 	@$(MAKE) --no-print-directory firmware-run BOARD=
-	@tests/check_firmware_sweep.sh
+	+@tests/check_firmware_sweep.sh
 	@$(MAKE) --no-print-directory $(TARN)
-	@TARN_BIN=$(TARN) tests/check_sweep.sh
+	+@TARN_BIN=$(TARN) tests/check_sweep.sh
 	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
 	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
 	@$(MAKE) --no-print-directory core-purity
 	@tests/check_packages.sh
 	@TARN_BIN=build/release/tarn WATER_COST_OUT=build/release/water-cost.txt tests/check_water_cost.sh
 	@$(MAKE) --no-print-directory firmware-check BOARD=
-	@tests/check_firmware_link.sh
+	+@tests/check_firmware_link.sh
 	@BUILD=build/release tests/check_layering.sh
 	@tests/check_doc_paths.sh
 	@TARN_BIN=build/release/tarn tests/check_doc_figures.sh
@@ -127,8 +137,9 @@ bench-panels: $(TARN)
 # and the lake (none) on the host, qemu-m0 and qemu-rv32, and each knob value's
 # worst case over scenes/extremes, into docs/sweep/.
 SWEEP_SCENES := pond lake
-sweep-docs: deps-test $(TARN)
-	$(TARN) sweep $(SWEEP_SCENES:%=scenes/%.json) --out build/sweep --extremes scenes/extremes
+sweep-docs: deps-test
+	@$(MAKE) --no-print-directory $(TARN)
+	+$(TARN) sweep $(SWEEP_SCENES:%=scenes/%.json) --out build/sweep --extremes scenes/extremes
 	@mkdir -p docs/sweep
 	cp build/sweep/sweep.csv build/sweep/front.md build/sweep/stability.md $(SWEEP_SCENES:%=build/sweep/%.png) docs/sweep/
 

@@ -71,7 +71,7 @@ bench-target:
 # (fw-dirs).
 firmware-check: firmware-run
 	@tests/check_firmware.sh $$(for b in $(FW_BOARDS); do $(MAKE) --no-print-directory -s fw-dirs BOARD=$$b || exit 1; done)
-	@tests/check_real_boards.sh
+	+@tests/check_real_boards.sh
 
 else ifeq ($(filter $(BOARD),$(FW_BOARDS)),)
 

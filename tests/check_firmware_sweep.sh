@@ -22,7 +22,7 @@ pass() { passed=$((passed + 1)); }
 fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
 mkdir -p "$top"
 
-if make --no-print-directory -s -j4 firmware-sweep BOARD=$board SCENE=$scene BAKE_FLAGS="$flags" \
+if make --no-print-directory -s firmware-sweep BOARD=$board SCENE=$scene BAKE_FLAGS="$flags" \
     POINTS=tests/sweep_points.txt FW_BUILD_DIR="$dir" > "$top/sweep.log" 2>&1; then
     pass
     grep -E '^(point|sweep) ' "$dir/report.txt"

@@ -32,7 +32,7 @@ fuzz-deps:
 
 fuzz-build: fuzz-deps $(FUZZ_BIN)
 
-$(FUZZ_DIR)/%.o: %.c
+$(FUZZ_DIR)/%.o: %.c | fuzz-deps
 	@mkdir -p $(dir $@)
 	$(call show,CC,$@)
 	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) -MMD -MP -c -o $@ $<
