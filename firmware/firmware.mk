@@ -5,7 +5,9 @@
 #                                 builds build/firmware/BOARD/firmware.elf
 #   make firmware-run BOARD=...   also runs an emulated board under QEMU (-icount
 #                                 shift=0): build/firmware/BOARD/panel.stream is what
-#                                 it sent the panel, report.txt its report line
+#                                 it sent the panel, report.txt its report line, of
+#                                 which it prints the figures (size, instructions a
+#                                 pixel, stack peak), a line a scene
 #   make bench-target             runs every emulated board and prints one line for
 #                                 each of its scenes
 #   make profile-target BOARD=qemu-m0 [TOP=N]   where an emulated board's
@@ -41,7 +43,7 @@ FW_TIMEOUT ?= 120
 # core renders alone, and the one make bench-target's panel_psnr measures.
 FW_TIMES := 0,1000,5000
 
-.PHONY: firmware firmware-run firmware-check bench-target profile-target firmware-sweep fw-dirs
+.PHONY: firmware firmware-run fw-run firmware-check bench-target profile-target firmware-sweep fw-dirs
 
 # The program an emulated board runs: main (firmware/main.c, the measured run) or
 # sweep (firmware/sweep_main.c: every point of the bake's --points, one boot), which
@@ -62,6 +64,10 @@ firmware:
 firmware-run:
 	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory firmware-run BOARD=$$b || exit 1; done
 
+# firmware-run without the result lines, for firmware-check (make test has printed them)
+fw-run:
+	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory fw-run BOARD=$$b || exit 1; done
+
 bench-target:
 	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory -s bench-target BOARD=$$b || exit 1; done
 
@@ -69,23 +75,23 @@ bench-target:
 # real boards built and checked, and their bad builds (too little RAM, no compiler)
 # failing as they should. The builds to check: each board's, a directory a scene
 # (fw-dirs).
-firmware-check: firmware-run
+firmware-check: fw-run
 	@tests/check_firmware.sh $$(for b in $(FW_BOARDS); do $(MAKE) --no-print-directory -s fw-dirs BOARD=$$b || exit 1; done)
 	+@tests/check_real_boards.sh
 
 else ifeq ($(filter $(BOARD),$(FW_BOARDS)),)
 
-firmware firmware-run bench-target firmware-check profile-target firmware-sweep fw-dirs:
+firmware firmware-run fw-run bench-target firmware-check profile-target firmware-sweep fw-dirs:
 	@echo "tarn: no board '$(BOARD)'; the boards are: $(FW_BOARDS)" >&2; exit 1
 
 else ifeq ($(filter $(FW_MAIN),main sweep),)
 
-firmware firmware-run bench-target firmware-check profile-target firmware-sweep:
+firmware firmware-run fw-run bench-target firmware-check profile-target firmware-sweep:
 	@echo "tarn: no program FW_MAIN='$(FW_MAIN)'; expected main or sweep" >&2; exit 1
 
 else ifeq ($(FW_MAIN)$(POINTS),sweep)
 
-firmware firmware-run bench-target firmware-check profile-target firmware-sweep:
+firmware firmware-run fw-run bench-target firmware-check profile-target firmware-sweep:
 	@echo "tarn: the sweep needs POINTS=FILE: one line of quality options per point (docs/firmware.md)" >&2; exit 1
 
 else
@@ -168,14 +174,21 @@ fw-dirs:
 	@echo $(foreach s,$(BOARD_SCENES),$(call fw_scene_dir,$(s)))
 
 ifneq ($(FW_EACH_SCENE),)
-firmware firmware-run bench-target firmware-check:
+firmware firmware-run fw-run bench-target firmware-check:
 	@for s in $(BOARD_SCENES); do $(MAKE) --no-print-directory $@ BOARD=$(BOARD) FW_BOARD_SCENE=$$s || exit 1; done
 else
 firmware: $(FW_OUTPUTS)
 	@$(FW_CROSS)size $(FW_ELF)
 
 ifneq ($(value BOARD_RUN),)
-firmware-run: $(FW_DIR)/report.txt
+fw-run: $(FW_DIR)/report.txt
+
+# the run's figures from its report line ("target board=B scene=S size=WxH
+# insn_per_pixel=N ..."): "B S WxH: insn_per_pixel=N render_insn_per_pixel=N
+# stack_peak_bytes=N"; a report of another form as it is
+firmware-run: fw-run
+	@sed -e 's/^target board=\([^ ]*\) scene=\([^ ]*\) size=\([^ ]*\) /\1 \2 \3: /' \
+		-e 's/ frame_insn=[^ ]*//' -e 's/ counter_check=[^ ]*//' -e q $(FW_DIR)/report.txt
 
 bench-target: $(FW_DIR)/report.txt $(FW_ELF)
 	@tests/check_firmware.sh --bench $(FW_DIR)
@@ -184,7 +197,9 @@ firmware-check: $(FW_DIR)/report.txt
 	@tests/check_firmware.sh $(FW_DIR)
 else
 # a real board: built, never run here
-firmware-run: $(FW_OUTPUTS)
+fw-run: $(FW_OUTPUTS)
+
+firmware-run: fw-run
 	@echo "$(BOARD) is a real board: built ($(FW_OUTPUTS)), not run" >&2
 
 bench-target: $(FW_OUTPUTS)
