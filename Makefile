@@ -117,7 +117,7 @@ test: deps-test
 		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'
 
 check: $(TARN) $(TEST_BIN)
-	@TARN_BIN=$(TARN) SUMMARY_FILE=$(BUILD)/summary tests/run_suites.sh $(TEST_BIN)
+	@TARN_BIN=$(TARN) SUMMARY_FILE=$(BUILD)/summary FAILED_FILE=$(BUILD)/failed tests/run_suites.sh $(TEST_BIN)
 
 # Re-records tests/golden/frames.txt, the checksums of the frames tests/test_golden.c
 # draws: only for a change meant to move pixels, which its commit says.
