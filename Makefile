@@ -75,7 +75,9 @@ TARN := $(BUILD)/tarn
 .DELETE_ON_ERROR:
 .SECONDARY:
 
+# (a recipe, so that make says nothing when tarn is up to date)
 all: $(TARN)
+	@:
 
 deps:
 	@scripts/ensure-deps.sh demo
@@ -97,24 +99,37 @@ demo: deps
 # sizes, stack and counter, then every measured figure of the docs against what the
 # code measures now (tests/check_doc_figures.sh), then the fuzz targets' seed corpora
 # and a short run of each (tests/fuzz/fuzz.mk).
+# A step that fails is noted in build/test-failed and the next one runs, so that one
+# run finds every failure; the last lines name the steps (and suites) that failed,
+# if any, then the cmocka suites' totals, "tests: N passed, F failed, S skipped",
+# and the exit status is non-zero if anything failed.
+TEST_FAILED := build/test-failed
+# $(call test_failed,STEP): a step's tail that notes it when it fails
+test_failed = || echo '$(1)' >> $(TEST_FAILED)
 test: deps-test
-	@$(MAKE) --no-print-directory firmware-run BOARD=
-	+@tests/check_firmware_sweep.sh
-	@$(MAKE) --no-print-directory $(TARN)
-	+@TARN_BIN=$(TARN) tests/check_sweep.sh
-	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
-	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
-	@$(MAKE) --no-print-directory core-purity
-	@tests/check_packages.sh
-	@TARN_BIN=build/release/tarn WATER_COST_OUT=build/release/water-cost.txt tests/check_water_cost.sh
-	@$(MAKE) --no-print-directory firmware-check BOARD=
-	+@tests/check_firmware_link.sh
-	@BUILD=build/release tests/check_layering.sh
-	@tests/check_doc_paths.sh
-	@TARN_BIN=build/release/tarn tests/check_doc_figures.sh
-	@$(MAKE) --no-print-directory fuzz-replay
-	@cat build/release/summary build/san/summary | \
-		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'
+	@mkdir -p build && rm -f $(TEST_FAILED) $(foreach b,release san,build/$(b)/summary build/$(b)/failed)
+	@$(MAKE) --no-print-directory firmware-run BOARD= $(call test_failed,make firmware-run)
+	+@tests/check_firmware_sweep.sh $(call test_failed,tests/check_firmware_sweep.sh)
+	@$(MAKE) --no-print-directory all $(call test_failed,make $(TARN))
+	+@TARN_BIN=$(TARN) tests/check_sweep.sh $(call test_failed,tests/check_sweep.sh)
+	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0 || \
+		echo "make check BUILD=build/release: $$(cat build/release/failed 2>/dev/null | tr '\n' ' ')" >> $(TEST_FAILED)
+	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1 || \
+		echo "make check BUILD=build/san SAN=1: $$(cat build/san/failed 2>/dev/null | tr '\n' ' ')" >> $(TEST_FAILED)
+	@$(MAKE) --no-print-directory core-purity $(call test_failed,make core-purity)
+	@tests/check_packages.sh $(call test_failed,tests/check_packages.sh)
+	@TARN_BIN=build/release/tarn WATER_COST_OUT=build/release/water-cost.txt tests/check_water_cost.sh \
+		$(call test_failed,tests/check_water_cost.sh)
+	@$(MAKE) --no-print-directory firmware-check BOARD= $(call test_failed,make firmware-check)
+	+@tests/check_firmware_link.sh $(call test_failed,tests/check_firmware_link.sh)
+	@BUILD=build/release tests/check_layering.sh $(call test_failed,tests/check_layering.sh)
+	@tests/check_doc_paths.sh $(call test_failed,tests/check_doc_paths.sh)
+	@TARN_BIN=build/release/tarn tests/check_doc_figures.sh $(call test_failed,tests/check_doc_figures.sh)
+	@$(MAKE) --no-print-directory fuzz-replay $(call test_failed,make fuzz-replay)
+	@if [ -s $(TEST_FAILED) ]; then echo "make test: failed:"; sed 's/ *$$//; s/^/  /' $(TEST_FAILED); fi; \
+	cat build/release/summary build/san/summary 2>/dev/null | \
+		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'; \
+	[ ! -s $(TEST_FAILED) ]
 
 check: $(TARN) $(TEST_BIN)
 	@TARN_BIN=$(TARN) SUMMARY_FILE=$(BUILD)/summary FAILED_FILE=$(BUILD)/failed tests/run_suites.sh $(TEST_BIN)
