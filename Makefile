@@ -34,6 +34,15 @@ endif
 ifeq ($(filter -j% --jobs%,$(shell printenv MAKEFLAGS)),)
 MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 1)
 endif
+# Goals given together are made one after another when one of them is not a file of
+# a build (make clean all, make firmware-run bench-target): clean would remove what
+# the other builds, and two loops over the boards would build the same files at
+# once. Each goal's own work (and the makes it runs) still takes the jobs.
+ifneq ($(filter-out 0 1,$(words $(MAKECMDGOALS))),)
+ifneq ($(filter-out build/% $(BUILD)/%,$(MAKECMDGOALS)),)
+.NOTPARALLEL:
+endif
+endif
 
 WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes
 OPT := -O2 -g
