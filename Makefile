@@ -5,6 +5,45 @@ BUILD ?= build/release
 SAN ?= 0
 CC ?= cc
 
+# A short line a file built ("  CC      build/release/core/raster/raster.o", LD, AR,
+# and in firmware/firmware.mk BAKE, RUN, ...); make V=1 prints every command in
+# full instead, make -s neither. A recipe shows its line with $(call show,TAG,FILE)
+# and runs its command as $(Q)command; a command that is always hidden (@) is
+# printed with V=1 by $(call show_command,COMMAND).
+V ?= 0
+ifeq ($(V),1)
+Q :=
+show = @:
+show_command = @printf '%s\n' '$(subst ','\'',$(strip $(1)))'
+else
+Q := @
+show = @printf '  %-7s %s\n' '$(1)' '$(2)'
+show_command = @:
+endif
+ifneq ($(findstring s,$(firstword -$(MAKEFLAGS))),)
+show = @:
+show_command = @:
+endif
+
+# Parallel by default: as many jobs as cores, unless a -j was given. (GNU make 4.3
+# shows no -j of the command line in MAKEFLAGS while it reads the makefiles, but a
+# -j given there outranks this one; a make run by another make finds the caller's
+# -j in the MAKEFLAGS of its environment and shares the caller's jobs.) A recipe line
+# that runs a program which runs make itself (tarn sweep, the check scripts) starts
+# with + so that the jobs are passed on to it.
+ifeq ($(filter -j% --jobs%,$(shell printenv MAKEFLAGS)),)
+MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 1)
+endif
+# Goals given together are made one after another when one of them is not a file of
+# a build (make clean all, make firmware-run bench-target): clean would remove what
+# the other builds, and two loops over the boards would build the same files at
+# once. Each goal's own work (and the makes it runs) still takes the jobs.
+ifneq ($(filter-out 0 1,$(words $(MAKECMDGOALS))),)
+ifneq ($(filter-out build/% $(BUILD)/%,$(MAKECMDGOALS)),)
+.NOTPARALLEL:
+endif
+endif
+
 WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes
 OPT := -O2 -g
 ifeq ($(SAN),1)
@@ -45,7 +84,9 @@ TARN := $(BUILD)/tarn
 .DELETE_ON_ERROR:
 .SECONDARY:
 
+# (a recipe, so that make says nothing when tarn is up to date)
 all: $(TARN)
+	@:
 
 deps:
 	@scripts/ensure-deps.sh demo
@@ -67,27 +108,40 @@ demo: deps
 # sizes, stack and counter, then every measured figure of the docs against what the
 # code measures now (tests/check_doc_figures.sh), then the fuzz targets' seed corpora
 # and a short run of each (tests/fuzz/fuzz.mk).
+# A step that fails is noted in build/test-failed and the next one runs, so that one
+# run finds every failure; the last lines name the steps (and suites) that failed,
+# if any, then the cmocka suites' totals, "tests: N passed, F failed, S skipped",
+# and the exit status is non-zero if anything failed.
+TEST_FAILED := build/test-failed
+# $(call test_failed,STEP): a step's tail that notes it when it fails
+test_failed = || echo '$(1)' >> $(TEST_FAILED)
 test: deps-test
-	@$(MAKE) --no-print-directory firmware-run BOARD=
-	@tests/check_firmware_sweep.sh
-	@$(MAKE) --no-print-directory $(TARN)
-	@TARN_BIN=$(TARN) tests/check_sweep.sh
-	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0
-	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1
-	@$(MAKE) --no-print-directory core-purity
-	@tests/check_packages.sh
-	@TARN_BIN=build/release/tarn WATER_COST_OUT=build/release/water-cost.txt tests/check_water_cost.sh
-	@$(MAKE) --no-print-directory firmware-check BOARD=
-	@tests/check_firmware_link.sh
-	@BUILD=build/release tests/check_layering.sh
-	@tests/check_doc_paths.sh
-	@TARN_BIN=build/release/tarn tests/check_doc_figures.sh
-	@$(MAKE) --no-print-directory fuzz-replay
-	@cat build/release/summary build/san/summary | \
-		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'
+	@mkdir -p build && rm -f $(TEST_FAILED) $(foreach b,release san,build/$(b)/summary build/$(b)/failed)
+	@$(MAKE) --no-print-directory firmware-run BOARD= $(call test_failed,make firmware-run)
+	+@tests/check_firmware_sweep.sh $(call test_failed,tests/check_firmware_sweep.sh)
+	@$(MAKE) --no-print-directory all $(call test_failed,make $(TARN))
+	+@TARN_BIN=$(TARN) tests/check_sweep.sh $(call test_failed,tests/check_sweep.sh)
+	@$(MAKE) --no-print-directory check BUILD=build/release SAN=0 || \
+		echo "make check BUILD=build/release: $$(cat build/release/failed 2>/dev/null | tr '\n' ' ')" >> $(TEST_FAILED)
+	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1 || \
+		echo "make check BUILD=build/san SAN=1: $$(cat build/san/failed 2>/dev/null | tr '\n' ' ')" >> $(TEST_FAILED)
+	@$(MAKE) --no-print-directory core-purity $(call test_failed,make core-purity)
+	@tests/check_packages.sh $(call test_failed,tests/check_packages.sh)
+	@TARN_BIN=build/release/tarn WATER_COST_OUT=build/release/water-cost.txt tests/check_water_cost.sh \
+		$(call test_failed,tests/check_water_cost.sh)
+	@$(MAKE) --no-print-directory firmware-check BOARD= $(call test_failed,make firmware-check)
+	+@tests/check_firmware_link.sh $(call test_failed,tests/check_firmware_link.sh)
+	@BUILD=build/release tests/check_layering.sh $(call test_failed,tests/check_layering.sh)
+	@tests/check_doc_paths.sh $(call test_failed,tests/check_doc_paths.sh)
+	@TARN_BIN=build/release/tarn tests/check_doc_figures.sh $(call test_failed,tests/check_doc_figures.sh)
+	@$(MAKE) --no-print-directory fuzz-replay $(call test_failed,make fuzz-replay)
+	@if [ -s $(TEST_FAILED) ]; then echo "make test: failed:"; sed 's/ *$$//; s/^/  /' $(TEST_FAILED); fi; \
+	cat build/release/summary build/san/summary 2>/dev/null | \
+		awk '{p += $$1; f += $$2; s += $$3} END {printf "tests: %d passed, %d failed, %d skipped\n", p, f, s}'; \
+	[ ! -s $(TEST_FAILED) ]
 
 check: $(TARN) $(TEST_BIN)
-	@TARN_BIN=$(TARN) SUMMARY_FILE=$(BUILD)/summary tests/run_suites.sh $(TEST_BIN)
+	@TARN_BIN=$(TARN) SUMMARY_FILE=$(BUILD)/summary FAILED_FILE=$(BUILD)/failed tests/run_suites.sh $(TEST_BIN)
 
 # Re-records tests/golden/frames.txt, the checksums of the frames tests/test_golden.c
 # draws: only for a change meant to move pixels, which its commit says.
@@ -107,8 +161,9 @@ bench-panels: $(TARN)
 # and the lake (none) on the host, qemu-m0 and qemu-rv32, and each knob value's
 # worst case over scenes/extremes, into docs/sweep/.
 SWEEP_SCENES := pond lake
-sweep-docs: deps-test $(TARN)
-	$(TARN) sweep $(SWEEP_SCENES:%=scenes/%.json) --out build/sweep --extremes scenes/extremes
+sweep-docs: deps-test
+	@$(MAKE) --no-print-directory $(TARN)
+	+$(TARN) sweep $(SWEEP_SCENES:%=scenes/%.json) --out build/sweep --extremes scenes/extremes
 	@mkdir -p docs/sweep
 	cp build/sweep/sweep.csv build/sweep/front.md build/sweep/stability.md $(SWEEP_SCENES:%=build/sweep/%.png) docs/sweep/
 
@@ -128,22 +183,27 @@ docs-figures: deps-test
 	@TARN_BIN=build/release/tarn scripts/docs_figures.py write
 
 $(TARN): $(BUILD)/host/cli/main.o $(HOST_OBJ) $(CORE_OBJ)
-	$(CC) $(OPT) -o $@ $^ $(HOST_LIBS)
+	$(call show,LD,$@)
+	$(Q)$(CC) $(OPT) -o $@ $^ $(HOST_LIBS)
 
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(TEST_SUPPORT_OBJ) $(HOST_OBJ) $(CORE_OBJ)
-	$(CC) $(OPT) -o $@ $^ $(HOST_LIBS) $(TEST_LIBS)
+	$(call show,LD,$@)
+	$(Q)$(CC) $(OPT) -o $@ $^ $(HOST_LIBS) $(TEST_LIBS)
 
 $(BUILD)/core/%.o: core/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CORE_CFLAGS) -MMD -MP -c -o $@ $<
+	$(call show,CC,$@)
+	$(Q)$(CC) $(CORE_CFLAGS) -MMD -MP -c -o $@ $<
 
 $(BUILD)/host/%.o: host/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(HOST_CFLAGS) -MMD -MP -c -o $@ $<
+	$(call show,CC,$@)
+	$(Q)$(CC) $(HOST_CFLAGS) -MMD -MP -c -o $@ $<
 
 $(BUILD)/tests/%.o: tests/%.c
 	@mkdir -p $(dir $@)
-	$(CC) $(HOST_CFLAGS) -Itests $(shell pkg-config --cflags cmocka 2>/dev/null) -MMD -MP -c -o $@ $<
+	$(call show,CC,$@)
+	$(Q)$(CC) $(HOST_CFLAGS) -Itests $(shell pkg-config --cflags cmocka 2>/dev/null) -MMD -MP -c -o $@ $<
 
 clean:
 	rm -rf build pond.png
@@ -173,7 +233,8 @@ lib libtarn:
 # the same name; the archive is made anew each time so a removed file leaves it.
 $(BUILD)/libtarn.a: $(CORE_OBJ)
 	@rm -f $@
-	$(AR) qcs $@ $^
+	$(call show,AR,$@)
+	$(Q)$(AR) qcs $@ $^
 
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include/tarn

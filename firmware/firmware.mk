@@ -5,7 +5,9 @@
 #                                 builds build/firmware/BOARD/firmware.elf
 #   make firmware-run BOARD=...   also runs an emulated board under QEMU (-icount
 #                                 shift=0): build/firmware/BOARD/panel.stream is what
-#                                 it sent the panel, report.txt its report line
+#                                 it sent the panel, report.txt its report line, of
+#                                 which it prints the figures (size, instructions a
+#                                 pixel, stack peak), a line a scene
 #   make bench-target             runs every emulated board and prints one line for
 #                                 each of its scenes
 #   make profile-target BOARD=qemu-m0 [TOP=N]   where an emulated board's
@@ -41,7 +43,7 @@ FW_TIMEOUT ?= 120
 # core renders alone, and the one make bench-target's panel_psnr measures.
 FW_TIMES := 0,1000,5000
 
-.PHONY: firmware firmware-run firmware-check bench-target profile-target firmware-sweep fw-dirs
+.PHONY: firmware firmware-run fw-run firmware-check bench-target profile-target firmware-sweep fw-dirs
 
 # The program an emulated board runs: main (firmware/main.c, the measured run) or
 # sweep (firmware/sweep_main.c: every point of the bake's --points, one boot), which
@@ -62,6 +64,10 @@ firmware:
 firmware-run:
 	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory firmware-run BOARD=$$b || exit 1; done
 
+# firmware-run without the result lines, for firmware-check (make test has printed them)
+fw-run:
+	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory fw-run BOARD=$$b || exit 1; done
+
 bench-target:
 	@for b in $(FW_BOARDS); do $(MAKE) --no-print-directory -s bench-target BOARD=$$b || exit 1; done
 
@@ -69,23 +75,23 @@ bench-target:
 # real boards built and checked, and their bad builds (too little RAM, no compiler)
 # failing as they should. The builds to check: each board's, a directory a scene
 # (fw-dirs).
-firmware-check: firmware-run
+firmware-check: fw-run
 	@tests/check_firmware.sh $$(for b in $(FW_BOARDS); do $(MAKE) --no-print-directory -s fw-dirs BOARD=$$b || exit 1; done)
-	@tests/check_real_boards.sh
+	+@tests/check_real_boards.sh
 
 else ifeq ($(filter $(BOARD),$(FW_BOARDS)),)
 
-firmware firmware-run bench-target firmware-check profile-target firmware-sweep fw-dirs:
+firmware firmware-run fw-run bench-target firmware-check profile-target firmware-sweep fw-dirs:
 	@echo "tarn: no board '$(BOARD)'; the boards are: $(FW_BOARDS)" >&2; exit 1
 
 else ifeq ($(filter $(FW_MAIN),main sweep),)
 
-firmware firmware-run bench-target firmware-check profile-target firmware-sweep:
+firmware firmware-run fw-run bench-target firmware-check profile-target firmware-sweep:
 	@echo "tarn: no program FW_MAIN='$(FW_MAIN)'; expected main or sweep" >&2; exit 1
 
 else ifeq ($(FW_MAIN)$(POINTS),sweep)
 
-firmware firmware-run bench-target firmware-check profile-target firmware-sweep:
+firmware firmware-run fw-run bench-target firmware-check profile-target firmware-sweep:
 	@echo "tarn: the sweep needs POINTS=FILE: one line of quality options per point (docs/firmware.md)" >&2; exit 1
 
 else
@@ -168,14 +174,21 @@ fw-dirs:
 	@echo $(foreach s,$(BOARD_SCENES),$(call fw_scene_dir,$(s)))
 
 ifneq ($(FW_EACH_SCENE),)
-firmware firmware-run bench-target firmware-check:
+firmware firmware-run fw-run bench-target firmware-check:
 	@for s in $(BOARD_SCENES); do $(MAKE) --no-print-directory $@ BOARD=$(BOARD) FW_BOARD_SCENE=$$s || exit 1; done
 else
 firmware: $(FW_OUTPUTS)
 	@$(FW_CROSS)size $(FW_ELF)
 
 ifneq ($(value BOARD_RUN),)
-firmware-run: $(FW_DIR)/report.txt
+fw-run: $(FW_DIR)/report.txt
+
+# the run's figures from its report line ("target board=B scene=S size=WxH
+# insn_per_pixel=N ..."): "B S WxH: insn_per_pixel=N render_insn_per_pixel=N
+# stack_peak_bytes=N"; a report of another form as it is
+firmware-run: fw-run
+	@sed -e 's/^target board=\([^ ]*\) scene=\([^ ]*\) size=\([^ ]*\) /\1 \2 \3: /' \
+		-e 's/ frame_insn=[^ ]*//' -e 's/ counter_check=[^ ]*//' -e q $(FW_DIR)/report.txt
 
 bench-target: $(FW_DIR)/report.txt $(FW_ELF)
 	@tests/check_firmware.sh --bench $(FW_DIR)
@@ -184,7 +197,9 @@ firmware-check: $(FW_DIR)/report.txt
 	@tests/check_firmware.sh $(FW_DIR)
 else
 # a real board: built, never run here
-firmware-run: $(FW_OUTPUTS)
+fw-run: $(FW_OUTPUTS)
+
+firmware-run: fw-run
 	@echo "$(BOARD) is a real board: built ($(FW_OUTPUTS)), not run" >&2
 
 bench-target: $(FW_OUTPUTS)
@@ -236,8 +251,9 @@ endif
 FW_BAKE := $(strip $(FW_TARN) bake $(FW_SCENE) -o $(FW_DIR)/scene.c --name scene $(FW_BAKE_FLAGS) $(FW_POINTS_FLAGS))
 $(FW_DIR)/scene.c: $(FW_SCENE) $(FW_TARN) $(FW_DIR)/firmware.conf $(if $(FW_POINTS_FLAGS),$(POINTS)) | fw-toolchain
 	@mkdir -p $(FW_DIR)
-	@echo "$(FW_BAKE)" >&2
-	@$(FW_BAKE) >&2
+	$(call show,BAKE,$@)
+	$(call show_command,$(FW_BAKE))
+	@$(FW_BAKE) $(if $(Q),> /dev/null,>&2)
 
 $(FW_DIR)/scene.h $(FW_DIR)/scene_link.h: $(FW_DIR)/scene.c
 
@@ -267,25 +283,30 @@ $(FW_SIZE_OBJ): FW_DEFINES += -Os
 
 $(FW_DIR)/obj/%.o: %.c | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(FW_CFLAGS) $(FW_DEFINES) -MMD -MP -c -o $@ $<
+	$(call show,CC,$@)
+	$(Q)$(FW_CC) $(FW_CFLAGS) $(FW_DEFINES) -MMD -MP -c -o $@ $<
 
 $(FW_DIR)/obj/%.o: $(FW_DIR)/%.c | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(FW_CFLAGS) -MMD -MP -c -o $@ $<
+	$(call show,CC,$@)
+	$(Q)$(FW_CC) $(FW_CFLAGS) -MMD -MP -c -o $@ $<
 
 $(FW_DIR)/obj/%.o: %.S | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(BOARD_CPU) $(BOARD_INCLUDE) -MMD -MP -c -o $@ $<
+	$(call show,AS,$@)
+	$(Q)$(FW_CC) $(BOARD_CPU) $(BOARD_INCLUDE) -MMD -MP -c -o $@ $<
 
 # A link that overflows a memory region names the region and the bytes over; the
 # note after it says what to change. A linked image whose deepest call chain
 # (firmware/stack_bound.sh: GCC's call graphs, no recursion allowed) needs more
 # stack than the board reserves is refused too.
+FW_LINK = $(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LDSCRIPT) -Lboards/common \
+	-Wl,--gc-sections -Wl,-Map=$(FW_DIR)/firmware.map -Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES) \
+	-o $(FW_ELF) $(FW_OBJ) $(FW_LIBS)
 $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) $(wildcard boards/common/*.ld) | fw-toolchain
-	@if ! $(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LDSCRIPT) -Lboards/common \
-		-Wl,--gc-sections -Wl,-Map=$(FW_DIR)/firmware.map \
-		-Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES) \
-		-o $@ $(FW_OBJ) $(FW_LIBS) 2> $(FW_DIR)/link.err; then \
+	$(call show,LD,$@)
+	$(call show_command,$(FW_LINK))
+	@if ! $(FW_LINK) 2> $(FW_DIR)/link.err; then \
 		cat $(FW_DIR)/link.err >&2; \
 		if grep -q "region .RAM. overflowed" $(FW_DIR)/link.err; then \
 			echo "tarn: $(BOARD) has too little RAM for $(FW_SCENE) [$(strip $(FW_BAKE_FLAGS) $(FW_POINTS_FLAGS))]: the renderer needs" \
@@ -310,35 +331,43 @@ $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) $(wildcard boards/common/*.ld) | fw-toolc
 # The host tools (firmware/tools/): the boot2 checksum and the UF2 writer.
 $(FW_TOOLS)/%: firmware/tools/%.c
 	@mkdir -p $(dir $@)
-	$(FW_HOST_CC) -std=c99 -Wall -Wextra -Werror -O2 -o $@ $<
+	$(call show,HOSTCC,$@)
+	$(Q)$(FW_HOST_CC) -std=c99 -Wall -Wextra -Werror -O2 -o $@ $<
 
 # boot2: assembled and linked where the bootrom runs it (it is position-independent
 # anyway), cut to its bytes, then padded to 252 with the CRC32 the bootrom checks
 # appended, as a .boot2 section.
 $(FW_DIR)/boot2.bin: $(BOARD_BOOT2) boards/$(BOARD)/board.mk | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -Wl,-Ttext=0x20041f00 -Wl,-e,boot2_entry -o $(FW_DIR)/boot2.elf $<
-	$(FW_CROSS)objcopy -O binary -j .text $(FW_DIR)/boot2.elf $@
+	$(call show,LD,$(FW_DIR)/boot2.elf)
+	$(Q)$(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -Wl,-Ttext=0x20041f00 -Wl,-e,boot2_entry -o $(FW_DIR)/boot2.elf $<
+	$(call show,OBJCOPY,$@)
+	$(Q)$(FW_CROSS)objcopy -O binary -j .text $(FW_DIR)/boot2.elf $@
 
 $(FW_TOOLS)/boot2_crc: firmware/tools/crc32_boot2.h
 
 $(FW_DIR)/boot2_crc.S: $(FW_DIR)/boot2.bin $(FW_TOOLS)/boot2_crc
-	$(FW_TOOLS)/boot2_crc $< $@
+	$(call show,GEN,$@)
+	$(Q)$(FW_TOOLS)/boot2_crc $< $@
 
 $(FW_DIR)/obj/boot2_crc.o: $(FW_DIR)/boot2_crc.S | fw-toolchain
 	@mkdir -p $(dir $@)
-	$(FW_CC) $(BOARD_CPU) -c -o $@ $<
+	$(call show,AS,$@)
+	$(Q)$(FW_CC) $(BOARD_CPU) -c -o $@ $<
 
 # UF2 for a bootloader that takes files (RP2040: hold BOOTSEL, copy the file): the
 # flash image from its lowest load address, in 256-byte blocks.
 $(FW_DIR)/firmware.uf2: $(FW_ELF) $(FW_TOOLS)/uf2
-	$(FW_CROSS)objcopy -O binary $(FW_ELF) $(FW_DIR)/firmware.bin
-	$(FW_TOOLS)/uf2 $(FW_DIR)/firmware.bin $(BOARD_FLASH_BASE) $(BOARD_UF2_FAMILY) $@
+	$(call show,OBJCOPY,$(FW_DIR)/firmware.bin)
+	$(Q)$(FW_CROSS)objcopy -O binary $(FW_ELF) $(FW_DIR)/firmware.bin
+	$(call show,UF2,$@)
+	$(Q)$(FW_TOOLS)/uf2 $(FW_DIR)/firmware.bin $(BOARD_FLASH_BASE) $(BOARD_UF2_FAMILY) $@
 
 # One emulated run. QEMU's exit status is the firmware's.
 $(FW_DIR)/report.txt: $(FW_ELF) | fw-qemu
 	@rm -f $@ $@.tmp $(FW_DIR)/panel.stream $(FW_DIR)/panel.stream.tmp
-	@echo "run $(BOARD) under $(BOARD_QEMU) -icount shift=0" >&2
+	$(call show,RUN,$(FW_DIR) ($(BOARD_QEMU) -icount shift=0))
+	$(call show_command,timeout $(FW_TIMEOUT) $(call BOARD_RUN,$(FW_ELF),$(FW_DIR)/panel.stream.tmp,$@.tmp))
 	@timeout $(FW_TIMEOUT) $(call BOARD_RUN,$(FW_ELF),$(FW_DIR)/panel.stream.tmp,$@.tmp) \
 		< /dev/null; status=$$?; \
 	if [ $$status -ne 0 ]; then echo "tarn: $(BOARD) exited with status $$status" \

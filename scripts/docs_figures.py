@@ -785,6 +785,11 @@ def main(argv):
     sys.modules.setdefault("docs_figures", sys.modules[__name__])  # one module, run or imported
     import docs_figures_catalogue as cat
     os.chdir(ROOT)
+    # The makes run below are makes of their own, each with the Makefile's jobs: a
+    # calling make's jobserver (MAKEFLAGS) would not reach them through subprocess,
+    # which closes its descriptors.
+    for var in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL"):
+        os.environ.pop(var, None)
     reuse = "--reuse" in argv
     quiet = "--quiet" in argv
     args = [a for a in argv if not a.startswith("--")]

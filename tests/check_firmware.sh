@@ -18,6 +18,9 @@
 # board's other scenes in build/firmware/BOARD@SCENE, or a build of FW_BUILD_DIR=;
 # its firmware.conf names the board and the scene.
 #
+# Prints a line of figures a build (flash, RAM, stack), a FAIL line for each check
+# that fails, and the totals; make firmware-run has printed the runs' own figures.
+#
 # Checks, per build: the run finished and reported; the board's counter measured a
 # loop of known length within 0.01%; the stack bound and the measured peak fit the
 # reserved stack; the image links no floating-point helper, allocator or stdio; the
@@ -77,7 +80,6 @@ for dir in "$@"; do
     emulated=$(conf emulated)
     if [ "$emulated" = 0 ]; then
         [ $bench = 1 ] && continue
-        echo "== $board: a real board, built only"
         report="" peak=""
     else
         report=$(cat "$dir/report.txt" 2>/dev/null || true)
@@ -101,7 +103,6 @@ for dir in "$@"; do
     fi
 
     if [ "$emulated" != 0 ]; then
-        echo "== $board: $report"
         counter=$(field counter_check "$report")
         measured=${counter%/*} expected=${counter#*/}
         if [ -n "$counter" ] && [ $((measured - expected)) -le $((expected / 10000)) ] &&
@@ -127,7 +128,7 @@ for dir in "$@"; do
     if [ -z "$code_max" ] || [ "$code" -le "$code_max" ]; then pass; else
         fail "$what: the code takes $code bytes of flash besides the scene, over the board's $code_max"; fi
 
-    echo "$what: flash $flash bytes ($scene_bytes scene, $code code), RAM $ram bytes, stack bound $stack, peak ${peak:-(not run)}, reserved $reserved"
+    echo "$what: flash $flash bytes ($scene_bytes scene, $code code), RAM $ram bytes, stack bound $stack, peak ${peak:-(a real board, not run)}, reserved $reserved"
 done
 
 [ $bench = 1 ] && exit $((failed > 0))

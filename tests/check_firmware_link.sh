@@ -17,8 +17,10 @@
 # with arm-none-eabi-nm: each effect's function (core/water/water_*.c, core/water/underwater.c)
 # must be in the image exactly when the scene uses that effect. The expectations are
 # written out here, not read from the baked scene_link.h, so that a bake that links
-# too much (or too little) fails. Prints the code bytes of each image (flash minus
-# the baked scene's const data), which is what each effect costs in flash.
+# too much (or too little) fails. Writes the code bytes of each image (flash minus
+# the baked scene's const data), which is what each effect costs in flash, to
+# build/firmware-link/code-bytes.txt, a line an image; prints a FAIL line for each
+# symbol linked or left out against the expectation, then the totals.
 set -u
 board=qemu-m0
 flags="--apron off --tile 16 --depth 16"
@@ -27,6 +29,9 @@ tarn__water_depth_colour tarn__water_fresnel_alpha tarn__water_specular tarn__wa
 tarn__underwater_tile span_end tarn__vertex_shade tarn__exact_depth_at tarn__backdrop_fill tarn__water_still_tile"
 passed=0
 failed=0
+sizes=build/firmware-link/code-bytes.txt
+mkdir -p build/firmware-link
+: > "$sizes"
 
 # check SCENE EXPECTED...: build, then compare the effect symbols with EXPECTED
 check() {
@@ -58,7 +63,7 @@ check() {
     set -- $(arm-none-eabi-size "$dir/firmware.elf" | awk 'NR == 2 {print $1, $2}')
     scene_bytes=$(arm-none-eabi-nm -S -t d --defined-only "$dir/firmware.elf" | awk '
         NF == 4 && $4 ~ /^scene_/ { n += $2 } END { print n + 0 }')
-    echo "firmware-link board=$board scene=$(basename "$scene" .json)$extra_name code_bytes=$(($1 + $2 - scene_bytes))"
+    echo "firmware-link board=$board scene=$(basename "$scene" .json)$extra_name code_bytes=$(($1 + $2 - scene_bytes))" >> "$sizes"
 }
 
 extra_name= extra_flags=
@@ -85,5 +90,5 @@ check scenes/effects/fog.json tarn__backdrop_fill tarn__water_still_tile
 check scenes/effects/foam.json tarn__water_foam tarn__backdrop_fill tarn__water_still_tile
 extra_name=-still-apron extra_flags=" --backdrop still --apron 4"
 check scenes/effects/refraction.json tarn__water_surface_normal tarn__backdrop_fill tarn__water_still_tile
-echo "firmware-link: $passed passed, $failed failed"
+echo "firmware-link: $passed passed, $failed failed (each image's code bytes: $sizes)"
 [ $failed -eq 0 ]

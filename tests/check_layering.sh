@@ -17,7 +17,10 @@ set -u
 BUILD=${BUILD:-build/release}
 CORE_STAGES="math scene geometry tile raster water frame panel"
 status=0
-fail() { echo "FAIL: $*"; status=1; }
+passed=0
+failed=0
+fail() { echo "FAIL: $*"; status=1; failed=$((failed + 1)); }
+ok() { passed=$((passed + 1)); } # ok WHAT: a check passed (said only in the count)
 
 # "caller callee" pairs of source files (without .o) below $BUILD/$1
 file_edges() {
@@ -36,7 +39,7 @@ no_circle() { # WHAT PAIRS
     loop=$(printf '%s\n' "$2" | grep . | tsort 2>&1 >/dev/null | sed -n 's/^tsort: //p' |
         grep -v 'input contains a loop' | tr '\n' ' ')
     if [ -n "$loop" ]; then fail "$1 call each other in a circle: $loop"; return; fi
-    echo "ok: no circle of $1"
+    ok "no circle of $1"
 }
 
 [ -d "$BUILD/core" ] || { echo "FAIL: no objects in $BUILD/core: build first"; exit 1; }
@@ -62,7 +65,7 @@ for pair in $(printf '%s\n' "$core" | tr ' ' ':'); do
     if [ "$a" -eq 0 ]; then fail "$caller.c is in no stage folder of core/ ($CORE_STAGES)"; backward=1
     elif [ "$b" -gt "$a" ]; then fail "$caller.c calls $callee.c, a later stage"; backward=1; fi
 done
-[ $backward -eq 0 ] && echo "ok: each core/ stage calls only itself and the stages before it"
+[ $backward -eq 0 ] && ok "each core/ stage calls only itself and the stages before it"
 
 # The include rule: every #include "..." of core/, resolved as the compiler does.
 bad=0
@@ -96,7 +99,7 @@ for src in $(find host tests firmware boards -name '*.c' -o -name '*.h' 2>/dev/n
         fi
     done
 done
-[ $bad -eq 0 ] && echo "ok: core/ includes follow the stages; host/, tests/ and firmware/ include only tarn/ and tarn_internal.h"
+[ $bad -eq 0 ] && ok "core/ includes follow the stages; host/, tests/ and firmware/ include only tarn/ and tarn_internal.h"
 
 # The API line: a global symbol of the core is declared in a public header, or is
 # marked internal with two underscores (tarn__); no public header names one.
@@ -105,9 +108,10 @@ unmarked=$(find "$BUILD/core" -name '*.o' | while read -r o; do
         f=${o#"$BUILD"/}; [ -f "${f%.o}.c" ] && nm -g "$o"; done |
     awk '$2 ~ /^[TDBR]$/ {print $3}' | sort -u | grep -v '^tarn__' | grep -vxF "$public" | tr '\n' ' ')
 if [ -n "$unmarked" ]; then fail "core/ defines symbols neither public nor marked tarn__: $unmarked"
-else echo "ok: every symbol of core/ is declared in core/include/tarn/ or named tarn__"; fi
+else ok "every symbol of core/ is declared in core/include/tarn/ or named tarn__"; fi
 leaked=$(for h in core/include/tarn/*.h; do perl -0pe 's:/\*.*?\*/::gs' "$h" | grep -q 'tarn__' && echo "$h"; done |
     tr '\n' ' ')
 if [ -n "$leaked" ]; then fail "public headers name internal tarn__ functions: $leaked"
-else echo "ok: no public header names an internal function"; fi
+else ok "no public header names an internal function"; fi
+echo "layering: $passed passed, $failed failed (circles of files and folders; stages, includes and symbols as core/README.md says)"
 exit $status

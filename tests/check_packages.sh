@@ -15,8 +15,10 @@
 #  (d) each public header compiles alone, as C99 (-pedantic) and as C++11;
 #  (e) core/library.json is valid JSON naming what PlatformIO needs, and its version,
 #      tarn.pc's and the program's are TARN_VERSION_STRING.
-# One line per check, ok: or FAIL:; exits non-zero on any failure. Writes only to a
-# temporary directory and to build/release (make install's library).
+# A FAIL: line for each check that fails (with the end of its log), then the totals;
+# exits non-zero on any failure. PACKAGES_VERBOSE=1 prints an ok: line for each
+# check that passes too. Writes only to a temporary directory and to build/release
+# (make install's library).
 set -u
 cd "$(dirname "$0")/.." || exit 1
 root=$(pwd)
@@ -24,7 +26,8 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/tarn-packages.XXXXXX") || exit 1
 trap 'rm -rf "$tmp"' EXIT
 trap 'exit 1' INT TERM
 failed=0
-ok() { echo "ok: $*"; }
+passed=0
+ok() { passed=$((passed + 1)); [ "${PACKAGES_VERBOSE:-0}" = 1 ] && echo "ok: $*"; return 0; }
 fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
 # quiet NAME COMMAND...: runs COMMAND with its output in $tmp/NAME.log, shown on failure
 quiet() {
@@ -261,5 +264,5 @@ else
     fail "core/library.json is not valid JSON"
 fi
 
-if [ "$failed" -eq 0 ]; then echo "packages: every check passed"; else echo "packages: $failed checks failed"; fi
+echo "packages: $passed passed, $failed failed (make install, CMake, the Cortex-M0 build, the headers alone, library.json)"
 [ "$failed" -eq 0 ]

@@ -1,21 +1,41 @@
 #!/bin/sh
-# Runs cmocka suites, shows their output, and writes their summed counts to
-# SUMMARY_FILE as "passed failed skipped". Exit status: non-zero if any failed.
-# Usage: SUMMARY_FILE=path tests/run_suites.sh SUITE...
+# Runs cmocka suites: one line for a suite that passes, its whole output for one that
+# fails. Writes their summed counts to SUMMARY_FILE as "passed failed skipped" and,
+# when FAILED_FILE is set, the suites that failed to it, a line each. A suite that
+# exits non-zero without counting a failed test (a crash, a sanitizer's report)
+# counts as one failed test. Exit status: non-zero if any failed.
+# Usage: SUMMARY_FILE=path [FAILED_FILE=path] tests/run_suites.sh SUITE...
 set -u
 passed=0
 failed=0
 skipped=0
 status=0
+failed_suites=
+plural() { if [ "$1" -eq 1 ]; then echo "$1 $2"; else echo "$1 $2s"; fi; }
 for suite in "$@"; do
-    echo "== $suite"
-    out=$("$suite" 2>&1) || status=1
-    printf '%s\n' "$out"
-    count() { printf '%s\n' "$out" | sed -n "s/^\[  $1 *\] \([0-9]*\) test(s).*/\1/p" | head -1; }
-    passed=$((passed + $(count PASSED | grep . || echo 0)))
-    failed=$((failed + $(count FAILED | grep . || echo 0)))
-    skipped=$((skipped + $(count SKIPPED | grep . || echo 0)))
+    out=$("$suite" 2>&1)
+    suite_status=$?
+    count() { printf '%s\n' "$out" | sed -n "s/^\[  $1 *\] \([0-9]*\) test(s).*/\1/p" | head -1 | grep . || echo 0; }
+    p=$(count PASSED) f=$(count FAILED) s=$(count SKIPPED)
+    if [ "$suite_status" -ne 0 ] || [ "$f" -gt 0 ]; then
+        echo "== $suite"
+        printf '%s\n' "$out"
+        if [ "$f" -gt 0 ]; then
+            echo "  FAIL  $suite ($f of $((p + f + s)) tests failed)"
+        else
+            f=1
+            echo "  FAIL  $suite (exit status $suite_status, no test counted as failed: counted as one)"
+        fi
+        failed_suites="$failed_suites$suite
+"
+        status=1
+    else
+        echo "  ok    $suite ($(plural "$p" test)$([ "$s" -gt 0 ] && echo ", $s skipped"))"
+    fi
+    passed=$((passed + p))
+    failed=$((failed + f))
+    skipped=$((skipped + s))
 done
-[ "$failed" -gt 0 ] && status=1
 echo "$passed $failed $skipped" > "${SUMMARY_FILE:?}"
+[ -n "${FAILED_FILE:-}" ] && printf '%s' "$failed_suites" > "$FAILED_FILE"
 exit $status

@@ -471,7 +471,7 @@ static void test_gpio_real_error_paths(void **state)
     unsigned offset;
     size_t fds = open_fds();
     assert_int_equal(tarn_gpio_line_request("--dc", "gpiochip99", 25, 1, &line, &err), -1);
-    print_message("%s backend: %s\n", tarn_gpio_backend, err.message);
+    print_message("%s backend refuses a chip that is not there, as it must: %s\n", tarn_gpio_backend, err.message);
     assert_non_null(strstr(err.message, "--dc: "));
     assert_non_null(strstr(err.message, "gpiochip99"));
     assert_null(line.set);

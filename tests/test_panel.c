@@ -569,13 +569,16 @@ static void test_wrong_offsets_and_madctl_show(void **state)
     wrong[3].madctl |= 0x08;     /* BGR on RGB glass */
     wrong[4].madctl ^= 0x40;     /* rotation 1 without MX: mirrored */
     wrong[5].madctl = tarn_panel_preset(TARN_PANEL_ST7789_240X240, 2).madctl; /* upside down */
+    static const char *const mistake[6] = {"row offset 0",   "column offset 0", "row offset off by one",
+                                           "BGR on RGB glass", "MX left out",     "rotation 2's MADCTL"};
     /* the emulator holds the module as the rotation says; the driver gets it wrong */
     for (size_t i = 0; i < 6; i++) power_up(&targets[i], wrong[i], 0);
     fan_out sink = {targets, 6, {0}};
     assert_int_equal(render_to(&ref, 32, &sink), TARN_OK);
     for (size_t i = 0; i < 6; i++) {
         size_t differing = pixels_differing(&ref, &targets[i]);
-        print_message("wrong panel %zu: %zu of %u pixels differ\n", i, differing, 240u * 240u);
+        print_message("a driver with %s shows another picture, as it must (%zu of %u pixels changed)\n",
+                      mistake[i], differing, 240u * 240u);
         assert_true(differing > 240u * 240u / 4u);
     }
     free_targets(targets, 6);

@@ -121,7 +121,7 @@ static void judge(failures *f, const char *path, uint32_t time_ms, const char *c
     const int share = strstr(check, "over2") != NULL;
     const int worse = share ? value > s->value + 1e-5 : value < s->value - 0.01;
     if (worse) note(f, "%s: %s, worse than the %g listed", key, what, s->value);
-    else print_message("short of the bar, listed: %s: %s\n", key, what);
+    else print_message("short of the bar as %s expects: %s: %s\n", SHORTFALLS_FILE, key, what);
 }
 
 static void measure(const tarn_loaded_scene *s, const tarn_continuous_reference *reference, tarn_preset preset,
