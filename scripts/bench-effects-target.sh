@@ -12,19 +12,20 @@ base=
 mkdir -p build/bench-effects
 for scene in none fog absorption depth_colour ramp fresnel foam sparkles normals refraction underwater; do
     dir=build/bench-effects/$scene
-    extra=
+    scene_flags=$flags
     # the underwater view needs a second full buffer: 16-pixel tiles fit the M0's RAM
-    [ "$scene" = underwater ] && extra="--tile 16"
+    # (in place of the flags' own tile, since an option may be given once)
+    [ "$scene" = underwater ] && scene_flags="$(printf '%s' "$flags" | sed 's/ *--tile [0-9]*//') --tile 16"
     if ! make --no-print-directory -s firmware-run BOARD=qemu-m0 FW_BUILD_DIR="$dir" SCENE="scenes/effects/$scene.json" \
-        BAKE_FLAGS="$flags $extra" > "$dir.log" 2>&1; then
+        BAKE_FLAGS="$scene_flags" > "$dir.log" 2>&1; then
         # a bake that refuses the scene says why in one line (still water and the
         # underwater view); anything else is a failure
         refusal=$(sed -n 's/^tarn: .*: \(--backdrop still: .*\)$/\1/p' "$dir.log" | head -1)
         [ -n "$refusal" ] || { cat "$dir.log"; exit 1; }
-        echo "effect-target board=qemu-m0 scene=$scene flags=\"$flags $extra\" refused=\"$refusal\""
+        echo "effect-target board=qemu-m0 scene=$scene flags=\"$scene_flags\" refused=\"$refusal\""
         continue
     fi
     insn=$(tr ' ' '\n' < "$dir/report.txt" | sed -n 's/^insn_per_pixel=//p')
     [ -z "$base" ] && base=$insn
-    echo "effect-target board=qemu-m0 scene=$scene flags=\"$flags $extra\" insn_per_pixel=$insn over_none=$((insn - base))"
+    echo "effect-target board=qemu-m0 scene=$scene flags=\"$scene_flags\" insn_per_pixel=$insn over_none=$((insn - base))"
 done
