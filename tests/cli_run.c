@@ -1,5 +1,10 @@
 #include "cli_run.h"
 
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <cmocka.h>
+
 #include <errno.h>
 #include <fcntl.h>
 #include <poll.h>
@@ -104,4 +109,37 @@ int cli_one_line(const cli_result *r)
 {
     const char *newline = strchr(r->err, '\n');
     return newline != NULL && newline[1] == '\0';
+}
+
+const char *cli_tarn(void)
+{
+    const char *tarn = getenv("TARN_BIN");
+    if (tarn == NULL || access(tarn, X_OK) != 0) fail_msg("TARN_BIN is not set to a tarn binary (make check sets it)");
+    return tarn;
+}
+
+static char folder[64];
+
+int cli_make_folder(void **state)
+{
+    (void)state;
+    snprintf(folder, sizeof folder, "/tmp/tarn-cli-XXXXXX");
+    return mkdtemp(folder) == NULL ? -1 : 0;
+}
+
+int cli_remove_folder(void **state)
+{
+    (void)state;
+    char command[128];
+    snprintf(command, sizeof command, "rm -rf '%s'", folder);
+    return system(command) == 0 ? 0 : -1;
+}
+
+const char *cli_in_folder(const char *name)
+{
+    static char paths[4][256];
+    static int next;
+    char *path = paths[next++ % 4];
+    snprintf(path, sizeof paths[0], "%s/%s", folder, name);
+    return path;
 }

@@ -23,4 +23,13 @@ void cli_run(char *const argv[], int stdin_fd, int stderr_fd, unsigned timeout_s
 /* Whether r->err is exactly one line. */
 int cli_one_line(const cli_result *r);
 
+/* The binary under test: $TARN_BIN, which make check sets; the test fails without. */
+const char *cli_tarn(void);
+
+/* A fresh folder for each test, as cmocka's setup and teardown, and a file's path
+ * in it (the last four stay valid). */
+int cli_make_folder(void **state);
+int cli_remove_folder(void **state);
+const char *cli_in_folder(const char *name);
+
 #endif

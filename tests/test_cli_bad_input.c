@@ -79,22 +79,10 @@ static int check_case(const char *tarn, const bad_scene_case *c)
     return problem[0] != '\0';
 }
 
-/* The binary under test ($TARN_BIN, which make check sets); without it the test is
- * skipped. */
-static const char *tarn_binary(void)
-{
-    const char *tarn = getenv("TARN_BIN");
-    if (!tarn || access(tarn, X_OK) != 0) {
-        print_message("TARN_BIN is not set to an executable tarn binary; skipping\n");
-        skip();
-    }
-    return tarn;
-}
-
 static void test_cli_bad_inputs(void **state)
 {
     (void)state;
-    const char *tarn = tarn_binary();
+    const char *tarn = cli_tarn();
     int failures = 0; /* every case runs, so one run shows every wrong message */
     for (size_t k = 0; k < BAD_SCENE_CASE_COUNT; k++) {
         failures += check_case(tarn, &BAD_SCENE_CASES[k]);
@@ -108,7 +96,7 @@ static void test_cli_bad_inputs(void **state)
 static void test_cli_unwritable_outputs(void **state)
 {
     (void)state;
-    const char *tarn = tarn_binary();
+    const char *tarn = cli_tarn();
     char dir[] = "/tmp/tarn_cli_out_XXXXXX";
     assert_non_null(mkdtemp(dir));
     char missing_png[1100], missing_c[1100], a_directory[1100];
@@ -146,7 +134,7 @@ static void test_cli_unwritable_outputs(void **state)
 static void test_cli_unreadable_texture(void **state)
 {
     (void)state;
-    const char *tarn = tarn_binary();
+    const char *tarn = cli_tarn();
     char dir[] = "/tmp/tarn_cli_perm_XXXXXX";
     assert_non_null(mkdtemp(dir));
     assert_int_equal(chmod(dir, 0777), 0);

@@ -18,18 +18,11 @@
 #define TIMEOUT_S 20
 #define WORDS_MAX 16
 
-static const char *tarn_bin(void)
-{
-    const char *tarn = getenv("TARN_BIN");
-    if (tarn == NULL) fail_msg("TARN_BIN is not set (make check sets it)");
-    return tarn;
-}
-
 /* `tarn LINE`, words split at spaces. */
 static void run_line(const char *line, cli_result *r)
 {
     static char buffer[1024];
-    char *argv[WORDS_MAX + 2] = {(char *)tarn_bin()};
+    char *argv[WORDS_MAX + 2] = {(char *)cli_tarn()};
     int argc = 1;
     snprintf(buffer, sizeof buffer, "%s", line);
     for (char *word = strtok(buffer, " "); word != NULL && argc <= WORDS_MAX; word = strtok(NULL, " "))
@@ -132,7 +125,7 @@ static void test_long_names_keep_their_reason(void **state)
     memset(path, 'a', sizeof path - 1);
     for (size_t k = 200; k < sizeof path - 1; k += 200) path[k] = '/';
     path[sizeof path - 1] = '\0';
-    char *argv[] = {(char *)tarn_bin(), "render", path, "-o", "/tmp/x.png", NULL};
+    char *argv[] = {(char *)cli_tarn(), "render", path, "-o", "/tmp/x.png", NULL};
     static cli_result r;
     cli_run(argv, -1, -1, TIMEOUT_S, &r);
     if (r.status != 2 || !cli_one_line(&r) || strstr(r.err, path) == NULL ||
@@ -146,7 +139,7 @@ static void test_long_names_keep_their_reason(void **state)
 static void test_names_are_escaped(void **state)
 {
     (void)state;
-    char *argv[] = {(char *)tarn_bin(), "render", "x\033[2J\a\xe2\x80\xaeyz.json", "-o", "/tmp/x.png", NULL};
+    char *argv[] = {(char *)cli_tarn(), "render", "x\033[2J\a\xe2\x80\xaeyz.json", "-o", "/tmp/x.png", NULL};
     static cli_result r;
     cli_run(argv, -1, -1, TIMEOUT_S, &r);
     if (r.status != 2 || !cli_one_line(&r) || strstr(r.err, "x\\x1b[2J\\x07\\u202Eyz.json: cannot open") == NULL)

@@ -33,18 +33,6 @@
 /* Far longer than any refusal takes; a run past it is hung. */
 #define RUN_SECONDS_MAX 20
 
-/* The binary under test ($TARN_BIN, which make check sets); without it the test is
- * skipped. */
-static const char *tarn_binary(void)
-{
-    const char *tarn = getenv("TARN_BIN");
-    if (!tarn || access(tarn, X_OK) != 0) {
-        print_message("TARN_BIN is not set to an executable tarn binary; skipping\n");
-        skip();
-    }
-    return tarn;
-}
-
 /* A name in `dir` other than `inputs` (NULL-terminated): an output or a temporary
  * file left behind. 1 with it in `name`, else 0. */
 static int stray_file(const char *dir, const char *const inputs[], char *name, size_t size)
@@ -151,7 +139,7 @@ static int check_input_case(const char *tarn, const input_case *c)
 static void test_inputs_that_are_not_files(void **state)
 {
     (void)state;
-    const char *tarn = tarn_binary();
+    const char *tarn = cli_tarn();
     int failures = 0; /* every case runs, so one run shows every wrong message */
     for (size_t k = 0; k < sizeof INPUT_CASES / sizeof INPUT_CASES[0]; k++)
         failures += check_input_case(tarn, &INPUT_CASES[k]);
@@ -163,7 +151,7 @@ static void test_inputs_that_are_not_files(void **state)
 static void test_links_to_files_are_read(void **state)
 {
     (void)state;
-    const char *tarn = tarn_binary();
+    const char *tarn = cli_tarn();
     char dir[] = "/tmp/tarn_cli_links_XXXXXX";
     assert_non_null(mkdtemp(dir));
     char cwd[1024], ground[1100], scene[1100], link[1100], texture[1100], out[1100];
@@ -240,7 +228,7 @@ static void budget_scene_refused(budget_scene *b, const char *file, const char *
     char out[1100], expected[1600], problem[300];
     snprintf(out, sizeof out, "%s/out.png", b->dir);
     snprintf(expected, sizeof expected, "tarn: %s/%s: %s\n", b->dir, file, why);
-    char *const argv[] = { (char *)tarn_binary(), "render", b->scene, "-o", out, NULL };
+    char *const argv[] = { (char *)cli_tarn(), "render", b->scene, "-o", out, NULL };
     cli_result r;
     cli_run(argv, -1, -1, RUN_SECONDS_MAX, &r);
     check_refusal(&r, expected, b->dir, inputs, problem, sizeof problem);

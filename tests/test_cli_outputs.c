@@ -28,43 +28,10 @@
 #define TIMEOUT_S 20
 #define SCENE "scenes/effects/fog.json"
 
-static const char *tarn_bin(void)
-{
-    const char *tarn = getenv("TARN_BIN");
-    if (tarn == NULL) fail_msg("TARN_BIN is not set (make check sets it)");
-    return tarn;
-}
-
-static char folder[64];
-
-static int make_folder(void **state)
-{
-    (void)state;
-    snprintf(folder, sizeof folder, "/tmp/tarn-outputs-XXXXXX");
-    return mkdtemp(folder) == NULL ? -1 : 0;
-}
-
-static int remove_folder(void **state)
-{
-    (void)state;
-    char command[128];
-    snprintf(command, sizeof command, "rm -rf %s", folder);
-    return system(command) == 0 ? 0 : -1;
-}
-
-static const char *in_folder(const char *name)
-{
-    static char paths[4][256];
-    static int next;
-    char *path = paths[next++ % 4];
-    snprintf(path, sizeof paths[0], "%s/%s", folder, name);
-    return path;
-}
-
 /* tarn render SCENE at 32x32 -o `out`. */
 static void render_to(const char *out, cli_result *r)
 {
-    char *argv[] = {(char *)tarn_bin(), "render", SCENE, "--size", "32x32", "-o", (char *)out, NULL};
+    char *argv[] = {(char *)cli_tarn(), "render", SCENE, "--size", "32x32", "-o", (char *)out, NULL};
     cli_run(argv, -1, -1, TIMEOUT_S, r);
 }
 
@@ -84,9 +51,9 @@ static size_t reference_length;
 static void render_reference(void)
 {
     static cli_result r;
-    render_to(in_folder("reference.png"), &r);
+    render_to(cli_in_folder("reference.png"), &r);
     if (r.status != 0) fail_msg("a plain render failed: %s", r.err);
-    reference_length = file_bytes(in_folder("reference.png"), reference_png, sizeof reference_png);
+    reference_length = file_bytes(cli_in_folder("reference.png"), reference_png, sizeof reference_png);
     assert_true(reference_length > 8);
 }
 
@@ -103,16 +70,16 @@ static void test_a_link_keeps_pointing_at_its_written_target(void **state)
     render_reference();
     static cli_result r;
     static char got[65536];
-    assert_int_equal(symlink("target.png", in_folder("link.png")), 0);
-    render_to(in_folder("link.png"), &r);
-    expect_written("-o a symlink", &r, got, file_bytes(in_folder("target.png"), got, sizeof got));
+    assert_int_equal(symlink("target.png", cli_in_folder("link.png")), 0);
+    render_to(cli_in_folder("link.png"), &r);
+    expect_written("-o a symlink", &r, got, file_bytes(cli_in_folder("target.png"), got, sizeof got));
     struct stat info;
-    assert_int_equal(lstat(in_folder("link.png"), &info), 0);
+    assert_int_equal(lstat(cli_in_folder("link.png"), &info), 0);
     if (!S_ISLNK(info.st_mode)) fail_msg("-o a symlink: the link was replaced by a regular file");
     /* a dangling link: its target is made */
-    assert_int_equal(symlink("made.png", in_folder("dangling.png")), 0);
-    render_to(in_folder("dangling.png"), &r);
-    expect_written("-o a dangling symlink", &r, got, file_bytes(in_folder("made.png"), got, sizeof got));
+    assert_int_equal(symlink("made.png", cli_in_folder("dangling.png")), 0);
+    render_to(cli_in_folder("dangling.png"), &r);
+    expect_written("-o a dangling symlink", &r, got, file_bytes(cli_in_folder("made.png"), got, sizeof got));
 }
 
 static void test_stdout_takes_the_image(void **state)
@@ -134,7 +101,7 @@ static void test_a_fifo_is_written_through(void **state)
 {
     (void)state;
     render_reference();
-    const char *fifo = in_folder("pipe");
+    const char *fifo = cli_in_folder("pipe");
     assert_int_equal(mkfifo(fifo, 0600), 0);
     static cli_result r;
     const time_t start = time(NULL);
@@ -159,7 +126,7 @@ static void test_a_fifo_is_written_through(void **state)
 static void test_a_device_is_written_through(void **state)
 {
     (void)state;
-    const char *null = in_folder("null"), *full = in_folder("full");
+    const char *null = cli_in_folder("null"), *full = cli_in_folder("full");
     if (mknod(null, S_IFCHR | 0666, makedev(1, 3)) != 0 || mknod(full, S_IFCHR | 0666, makedev(1, 7)) != 0) {
         if (errno == EPERM) skip(); /* device nodes need root (CI runs as root) */
         fail_msg("mknod: %s", strerror(errno));
@@ -181,7 +148,7 @@ static void test_a_folder_is_refused(void **state)
 {
     (void)state;
     static cli_result r;
-    render_to(folder, &r);
+    render_to(cli_in_folder(""), &r);
     if (r.status != 2 || !cli_one_line(&r) || strstr(r.err, "is a directory") == NULL)
         fail_msg("-o a folder: exit %d, stderr '%s'", r.status, r.err);
 }
@@ -190,9 +157,9 @@ static void test_a_folder_is_refused(void **state)
 static void test_a_sweep_checks_before_its_work(void **state)
 {
     (void)state;
-    const char *out = in_folder("sweep");
-    char *argv[] = {(char *)tarn_bin(), "sweep", SCENE, "--grid", "quick", "--boards", "none", "--out",
-                    (char *)out, "--extremes", (char *)in_folder("none"), NULL};
+    const char *out = cli_in_folder("sweep");
+    char *argv[] = {(char *)cli_tarn(), "sweep", SCENE, "--grid", "quick", "--boards", "none", "--out",
+                    (char *)out, "--extremes", (char *)cli_in_folder("none"), NULL};
     static cli_result r;
     const time_t start = time(NULL);
     cli_run(argv, -1, -1, TIMEOUT_S, &r);
@@ -214,7 +181,7 @@ static void test_progress_on_a_terminal_only(void **state)
     int screen = open(ptsname(terminal), O_RDWR | O_NOCTTY);
     assert_true(screen >= 0);
     fcntl(terminal, F_SETFL, O_NONBLOCK); /* what the child drew is there once it has ended */
-    char *argv[] = {(char *)tarn_bin(), "render", SCENE, "--size", "32x32", "-o", (char *)in_folder("seq.png"),
+    char *argv[] = {(char *)cli_tarn(), "render", SCENE, "--size", "32x32", "-o", (char *)cli_in_folder("seq.png"),
                     "--frames", "12", NULL, NULL};
     static cli_result r;
     static char shown[8192];
@@ -228,7 +195,7 @@ static void test_progress_on_a_terminal_only(void **state)
         if (drawn == quiet) fail_msg("--frames %s: the terminal shows '%s'", quiet ? "--quiet" : "", shown);
     }
     /* bake shows its tables being written the same way */
-    char *bake[] = {(char *)tarn_bin(), "bake", SCENE, "-o", (char *)in_folder("x.c"), NULL};
+    char *bake[] = {(char *)cli_tarn(), "bake", SCENE, "-o", (char *)cli_in_folder("x.c"), NULL};
     cli_run(bake, -1, screen, TIMEOUT_S, &r);
     ssize_t length = read(terminal, shown, sizeof shown - 1);
     shown[length > 0 ? length : 0] = '\0';
@@ -244,13 +211,13 @@ static void test_progress_on_a_terminal_only(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test_setup_teardown(test_a_link_keeps_pointing_at_its_written_target, make_folder, remove_folder),
-        cmocka_unit_test_setup_teardown(test_stdout_takes_the_image, make_folder, remove_folder),
-        cmocka_unit_test_setup_teardown(test_a_fifo_is_written_through, make_folder, remove_folder),
-        cmocka_unit_test_setup_teardown(test_a_device_is_written_through, make_folder, remove_folder),
-        cmocka_unit_test_setup_teardown(test_a_folder_is_refused, make_folder, remove_folder),
-        cmocka_unit_test_setup_teardown(test_a_sweep_checks_before_its_work, make_folder, remove_folder),
-        cmocka_unit_test_setup_teardown(test_progress_on_a_terminal_only, make_folder, remove_folder),
+        cmocka_unit_test_setup_teardown(test_a_link_keeps_pointing_at_its_written_target, cli_make_folder, cli_remove_folder),
+        cmocka_unit_test_setup_teardown(test_stdout_takes_the_image, cli_make_folder, cli_remove_folder),
+        cmocka_unit_test_setup_teardown(test_a_fifo_is_written_through, cli_make_folder, cli_remove_folder),
+        cmocka_unit_test_setup_teardown(test_a_device_is_written_through, cli_make_folder, cli_remove_folder),
+        cmocka_unit_test_setup_teardown(test_a_folder_is_refused, cli_make_folder, cli_remove_folder),
+        cmocka_unit_test_setup_teardown(test_a_sweep_checks_before_its_work, cli_make_folder, cli_remove_folder),
+        cmocka_unit_test_setup_teardown(test_progress_on_a_terminal_only, cli_make_folder, cli_remove_folder),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

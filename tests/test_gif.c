@@ -23,46 +23,13 @@
 /* a power of two, so that the PNG frames read back as textures */
 #define SIZE 128
 
-static char folder[64];
-
-static const char *tarn_bin(void)
-{
-    const char *tarn = getenv("TARN_BIN");
-    if (tarn == NULL) fail_msg("TARN_BIN is not set (make check sets it)");
-    return tarn;
-}
-
-static const char *in_folder(const char *name)
-{
-    static char paths[4][256];
-    static int next;
-    char *path = paths[next++ % 4];
-    snprintf(path, sizeof paths[0], "%s/%s", folder, name);
-    return path;
-}
-
-static int make_folder(void **state)
-{
-    (void)state;
-    snprintf(folder, sizeof folder, "/tmp/tarn-gif-XXXXXX");
-    return mkdtemp(folder) == NULL ? -1 : 0;
-}
-
-static int remove_folder(void **state)
-{
-    (void)state;
-    char command[128];
-    snprintf(command, sizeof command, "rm -rf %s", folder);
-    return system(command) == 0 ? 0 : -1;
-}
-
 /* tarn render SCENE --size SIZExSIZE --frames FRAMES -o `out` [extra]. */
 static void render(const char *out, const char *extra)
 {
     char size[32], frames[16];
     snprintf(size, sizeof size, "%dx%d", SIZE, SIZE);
     snprintf(frames, sizeof frames, "%d", FRAMES);
-    char *argv[] = {(char *)tarn_bin(), "render", SCENE, "--size", size, "--frames", frames, "-o", (char *)out,
+    char *argv[] = {(char *)cli_tarn(), "render", SCENE, "--size", size, "--frames", frames, "-o", (char *)out,
                     (char *)extra, NULL};
     static cli_result r;
     cli_run(argv, -1, -1, TIMEOUT_S, &r);
@@ -143,11 +110,11 @@ static size_t pixels_off_palette(const uint8_t *shown, const uint8_t *png, const
  * frame the palette colour nearest the PNG's. */
 static void check_gif_against_pngs(const char *extra)
 {
-    render(in_folder("pond.gif"), extra);
-    render(in_folder("pond.png"), extra);
+    render(cli_in_folder("pond.gif"), extra);
+    render(cli_in_folder("pond.png"), extra);
     int count, delay, loops, entries;
     GifColorType palette[256];
-    uint8_t *frames = decode(in_folder("pond.gif"), &count, &delay, &loops, palette, &entries);
+    uint8_t *frames = decode(cli_in_folder("pond.gif"), &count, &delay, &loops, palette, &entries);
     if (count != FRAMES) fail_msg("the GIF holds %d frames, not %d", count, FRAMES);
     if (!loops) fail_msg("the GIF does not loop");
     /* 30 frames a second (the default): 12 frames show for 40 hundredths in all */
@@ -157,7 +124,7 @@ static void check_gif_against_pngs(const char *extra)
         snprintf(name, sizeof name, "pond-%04d.png", k);
         tarn_image png;
         tarn_error err;
-        if (tarn_png_read_texture(in_folder(name), &png, &err) != 0) fail_msg("%s", err.message);
+        if (tarn_png_read_texture(cli_in_folder(name), &png, &err) != 0) fail_msg("%s", err.message);
         size_t first = 0;
         const size_t off = pixels_off_palette(frames + (size_t)k * 3u * SIZE * SIZE, png.pixels, palette, entries,
                                               &first);
@@ -182,7 +149,7 @@ static void test_gif_of_the_panel_look(void **state)
     check_gif_against_pngs("--rgb565");
     tarn_image png;
     tarn_error err;
-    if (tarn_png_read_texture(in_folder("pond-0000.png"), &png, &err) != 0) fail_msg("%s", err.message);
+    if (tarn_png_read_texture(cli_in_folder("pond-0000.png"), &png, &err) != 0) fail_msg("%s", err.message);
     for (size_t i = 0; i < (size_t)SIZE * SIZE; i++) {
         const uint8_t *p = &png.pixels[3 * i];
         if (p[0] != ((p[0] >> 3) << 3 | p[0] >> 5) || p[1] != ((p[1] >> 2) << 2 | p[1] >> 6) ||
@@ -196,13 +163,13 @@ static void test_gif_of_the_panel_look(void **state)
 static void test_three_seconds_of_the_pond_stay_small(void **state)
 {
     (void)state;
-    char *argv[] = {(char *)tarn_bin(), "render", SCENE, "--frames", "90", "--fps", "30", "-o",
-                    (char *)in_folder("three.gif"), NULL};
+    char *argv[] = {(char *)cli_tarn(), "render", SCENE, "--frames", "90", "--fps", "30", "-o",
+                    (char *)cli_in_folder("three.gif"), NULL};
     static cli_result r;
     cli_run(argv, -1, -1, TIMEOUT_S, &r);
     if (r.status != 0) fail_msg("tarn render --frames 90 -o three.gif: exit %d, %s", r.status, r.err);
     struct stat info;
-    assert_int_equal(stat(in_folder("three.gif"), &info), 0);
+    assert_int_equal(stat(cli_in_folder("three.gif"), &info), 0);
     print_message("3 s of the pond at 240x240, 30 fps: %lld bytes\n", (long long)info.st_size);
     if (info.st_size >= 2 * 1024 * 1024) fail_msg("3 s of the pond take %lld bytes, over 2 MB", (long long)info.st_size);
 }
@@ -210,9 +177,9 @@ static void test_three_seconds_of_the_pond_stay_small(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test_setup_teardown(test_gif_decodes_to_the_png_frames, make_folder, remove_folder),
-        cmocka_unit_test_setup_teardown(test_gif_of_the_panel_look, make_folder, remove_folder),
-        cmocka_unit_test_setup_teardown(test_three_seconds_of_the_pond_stay_small, make_folder, remove_folder),
+        cmocka_unit_test_setup_teardown(test_gif_decodes_to_the_png_frames, cli_make_folder, cli_remove_folder),
+        cmocka_unit_test_setup_teardown(test_gif_of_the_panel_look, cli_make_folder, cli_remove_folder),
+        cmocka_unit_test_setup_teardown(test_three_seconds_of_the_pond_stay_small, cli_make_folder, cli_remove_folder),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
