@@ -119,9 +119,10 @@ int tarn_atomic_open(tarn_atomic_file *f, const char *path, tarn_error *err)
     f->target = NULL;
     const int through = written_through(path, err);
     if (through < 0) return -1;
-    f->target = through ? strdup(path) : follow_links(path, err);
-    if (f->target == NULL) return through ? tarn_fail(err, "%s: out of memory", path) : -1;
-    if ((through ? open_through(f, err) : open_temporary(f, err)) == 0) return 0;
+    if (through) return open_through(f, err); /* in place: no target to rename over */
+    f->target = follow_links(path, err);
+    if (f->target == NULL) return -1;
+    if (open_temporary(f, err) == 0) return 0;
     tarn_atomic_abandon(f);
     return -1;
 }

@@ -23,7 +23,8 @@
 
 typedef struct {
     const char *path; /* the target as given */
-    char *target;     /* owned: the file written, once the links are followed */
+    char *target;     /* owned: the file a temporary replaces, once the links are
+                         followed; NULL when written through */
     char *temp_path;  /* owned: the temporary file; NULL when written through */
     FILE *file;       /* open on the temporary file (or the target); write to it freely */
 } tarn_atomic_file;
