@@ -15,6 +15,7 @@
 #include "child_process.h"
 #include "option_values.h"
 #include "progress.h"
+#include "quality_text.h"
 #include "scene_load.h"
 #include "sweep_error.h"
 #include "sweep_grid.h"
@@ -187,7 +188,7 @@ static size_t keep_valid_points(const tarn_loaded_scene *loaded, tarn_sweep_poin
             continue;
         }
         char text[TARN_SWEEP_OPTIONS_MAX];
-        tarn_sweep_quality_text(&points[i].quality, text, sizeof text);
+        tarn_quality_text(&points[i].quality, text, sizeof text);
         fprintf(stderr, "tarn sweep: %s refuses [%s] at %ux%u: left out\n", loaded->name, text,
                 (unsigned)loaded->width, (unsigned)loaded->height);
     }

@@ -64,10 +64,6 @@ typedef struct {
     size_t count;
 } tarn_sweep_sources;
 
-/* Every knob as tarn's options, e.g. "--tile 32 --subpixel 4 --perspective pixel ...":
- * what the CSV shows and the points files hold. */
-void tarn_sweep_quality_text(const tarn_quality *q, char *out, size_t size);
-
 /* The command; argv[1] is "sweep". Returns the exit status. */
 int tarn_command_sweep(int argc, char **argv);
 /* The host-cost worker, run under callgrind by the sweep itself:

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "quality_options.h"
+#include "quality_text.h"
 
 #define VALUES_MAX 16
 
@@ -58,9 +59,9 @@ static tarn_quality with_option(tarn_quality q, const char *option, const char *
 static int already_listed(const tarn_sweep_point *points, size_t count, const tarn_quality *q)
 {
     char text[TARN_SWEEP_OPTIONS_MAX], other[TARN_SWEEP_OPTIONS_MAX];
-    tarn_sweep_quality_text(q, text, sizeof text);
+    tarn_quality_text(q, text, sizeof text);
     for (size_t i = 0; i < count; i++) {
-        tarn_sweep_quality_text(&points[i].quality, other, sizeof other);
+        tarn_quality_text(&points[i].quality, other, sizeof other);
         if (strcmp(text, other) == 0) return 1;
     }
     return 0;
@@ -151,56 +152,13 @@ size_t tarn_sweep_variants(tarn_sweep_variant *variants, size_t max)
     return count;
 }
 
-const char *tarn_sweep_perspective_text(const tarn_quality *q, char *buffer, size_t size)
-{
-    if (q->perspective == TARN_PERSPECTIVE_AFFINE) return "affine";
-    if (q->perspective == TARN_PERSPECTIVE_PIXEL) return "pixel";
-    snprintf(buffer, size, "span:%u", (unsigned)q->perspective_span);
-    return buffer;
-}
-
-const char *tarn_sweep_apron_text(const tarn_quality *q, char *buffer, size_t size)
-{
-    if (q->refraction_apron == TARN_APRON_FULL) return "on";
-    if (q->refraction_apron == 0) return "off";
-    snprintf(buffer, size, "%u", (unsigned)q->refraction_apron);
-    return buffer;
-}
-
-const char *tarn_sweep_depth_text(const tarn_quality *q)
-{
-    return q->depth_interpolation == TARN_DEPTH_PLANE ? "plane" : "exact";
-}
-
-void tarn_sweep_quality_text(const tarn_quality *q, char *out, size_t size)
-{
-    char span[16], apron[16];
-    snprintf(out, size,
-             "--perspective %s --recip-steps %u --depth %u --apron %s --exp2 %u:%s --fog-bits %u "
-             "--subpixel %u --tile %u --bins %s --water-block %u --depth-interpolation %s --refraction-normal %s",
-             tarn_sweep_perspective_text(q, span, sizeof span), (unsigned)q->recip_newton_steps,
-             (unsigned)q->depth_bits, tarn_sweep_apron_text(q, apron, sizeof apron), (unsigned)q->exp2.entries,
-             q->exp2.interpolate ? "linear" : "nearest", (unsigned)q->fog_argument_bits,
-             (unsigned)q->subpixel_bits, (unsigned)q->tile_size, q->cluster_bins ? "on" : "off",
-             (unsigned)q->water_block, tarn_sweep_depth_text(q),
-             q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT ? "exact" : "shared");
-    if (q->frame_shape == TARN_FRAME_STRIPS) {
-        const size_t used = strlen(out);
-        snprintf(out + used, size - used, " --frame strips");
-    }
-    if (q->vertex_pass == TARN_VERTICES_PER_FRAME) {
-        const size_t used = strlen(out);
-        snprintf(out + used, size - used, " --vertices frame");
-    }
-}
-
 int tarn_sweep_write_points(const char *path, const tarn_quality *qualities, size_t count, tarn_error *err)
 {
     FILE *f = fopen(path, "w");
     if (f == NULL) return tarn_fail(err, "%s: cannot write: %s", path, strerror(errno));
     for (size_t i = 0; i < count; i++) {
         char text[TARN_SWEEP_OPTIONS_MAX];
-        tarn_sweep_quality_text(&qualities[i], text, sizeof text);
+        tarn_quality_text(&qualities[i], text, sizeof text);
         fprintf(f, "%s\n", text);
     }
     const int failed = ferror(f);

@@ -35,11 +35,4 @@ size_t tarn_sweep_variants(tarn_sweep_variant *variants, size_t max);
  * host-cost workers read): `count` qualities, a line of every knob's option each. */
 int tarn_sweep_write_points(const char *path, const tarn_quality *qualities, size_t count, tarn_error *err);
 
-/* The perspective and apron knobs as their options' values ("span:16", "off"):
- * `buffer` holds the text when it is not a constant. */
-const char *tarn_sweep_perspective_text(const tarn_quality *q, char *buffer, size_t size);
-const char *tarn_sweep_apron_text(const tarn_quality *q, char *buffer, size_t size);
-/* "exact" or "plane": the quality's --depth-interpolation. */
-const char *tarn_sweep_depth_text(const tarn_quality *q);
-
 #endif

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "child_process.h"
+#include "quality_text.h"
 #include "sweep_front.h"
 #include "sweep_grid.h"
 
@@ -45,11 +46,11 @@ static void csv_row(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_poi
     const tarn_quality *q = &p->quality;
     char span[16], apron[16], options[TARN_SWEEP_OPTIONS_MAX];
     fprintf(f, "%s,%s,%s,%u,%u,%s,%u,%s,%u,%u,%u,%s,%u,%s,%.2f,%d,%.3f,%.3f,%.2f,%.3f,%.2f,%.3f,%.2f,%.3g", scene->name,
-            p->preset ? p->preset : "", tarn_sweep_perspective_text(q, span, sizeof span),
-            (unsigned)q->recip_newton_steps, (unsigned)q->depth_bits, tarn_sweep_apron_text(q, apron, sizeof apron),
+            p->preset ? p->preset : "", tarn_quality_perspective_text(q, span, sizeof span),
+            (unsigned)q->recip_newton_steps, (unsigned)q->depth_bits, tarn_quality_apron_text(q, apron, sizeof apron),
             (unsigned)q->exp2.entries, q->exp2.interpolate ? "linear" : "nearest", (unsigned)q->fog_argument_bits,
             (unsigned)q->subpixel_bits, (unsigned)q->tile_size, q->cluster_bins ? "on" : "off",
-            (unsigned)q->water_block, tarn_sweep_depth_text(q), p->error.whole.psnr_db,
+            (unsigned)q->water_block, tarn_quality_depth_text(q), p->error.whole.psnr_db,
             p->error.whole.max_channel_error, 100.0 * p->error.whole.share_over2, 100.0 * p->error.whole.share_over8,
             p->error.shading.psnr_db, 100.0 * p->error.shading.share_over2, p->error.panel_psnr_db,
             100.0 * p->error.coverage_share, p->exp2_max_lsb, p->recip_max_rel);
@@ -61,7 +62,7 @@ static void csv_row(FILE *f, const tarn_sweep_scene *scene, const tarn_sweep_poi
         if (p->convert[s][0] < 0) fprintf(f, ",,");
         else fprintf(f, ",%.0f,%.0f", p->convert[s][0], p->convert[s][1]);
     }
-    tarn_sweep_quality_text(q, options, sizeof options);
+    tarn_quality_text(q, options, sizeof options);
     fprintf(f, ",%s\n", options);
 }
 
@@ -149,7 +150,7 @@ static void front_table(FILE *f, const tarn_sweep_scene *scene, size_t source, c
     for (size_t k = 0; k < n; k++) {
         const tarn_sweep_point *p = &scene->points[front[k]];
         char options[TARN_SWEEP_OPTIONS_MAX];
-        tarn_sweep_quality_text(&p->quality, options, sizeof options);
+        tarn_quality_text(&p->quality, options, sizeof options);
         fprintf(f, "|");
         cost_cell(f, p, source);
         error_cells(f, &p->error);

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "child_process.h"
+#include "quality_text.h"
 #include "static_view.h"
 #include "sweep_grid.h"
 
@@ -111,7 +112,7 @@ static int check_point(tarn_sweep_scene *scene, const char *board, const point_l
                        const tarn_sweep_point *p, tarn_error *err)
 {
     char text[TARN_SWEEP_OPTIONS_MAX];
-    tarn_sweep_quality_text(&p->quality, text, sizeof text);
+    tarn_quality_text(&p->quality, text, sizeof text);
     if (strcmp(line->status, "ok") != 0)
         return tarn_fail(err, "%s: %s could not render [%s]: %s", scene->path, board, text, line->status);
     if (line->checksum != p->checksum)
@@ -161,7 +162,7 @@ static int measure_points(tarn_sweep_scene *scene, const char *board, size_t sou
     snprintf(report, sizeof report, "%s/report.txt", build_dir);
     /* the bake's own quality must fit the board too: the first point's */
     char first[TARN_SWEEP_OPTIONS_MAX];
-    tarn_sweep_quality_text(&fitted[0], first, sizeof first);
+    tarn_quality_text(&fitted[0], first, sizeof first);
     return tarn_sweep_write_points(points, fitted, count, err) ||
                    run_make(board, scene->path, points, first, build_dir, log, err) ||
                    read_report(scene, board, source, report, map, count, err)
