@@ -14,6 +14,7 @@
 
 #include "backdrop.h"
 #include "cli_options.h"
+#include "frame_path.h"
 
 #define ARGS_MAX 32
 
@@ -234,13 +235,13 @@ static void test_frame_sequences_parse(void **state)
     assert_true(tarn_cli_frame_time(&o, 1) == UINT32_MAX);
 
     char path[32];
-    assert_int_equal(tarn_cli_frame_path("out.png", 0, path, sizeof path), 0);
+    assert_int_equal(tarn_frame_path("out.png", 0, path, sizeof path), 0);
     assert_string_equal(path, "out-0000.png");
-    assert_int_equal(tarn_cli_frame_path("dir.v2/frames", 9999, path, sizeof path), 0);
+    assert_int_equal(tarn_frame_path("dir.v2/frames", 9999, path, sizeof path), 0);
     assert_string_equal(path, "dir.v2/frames-9999.png");
-    assert_int_equal(tarn_cli_frame_path("a.png.png", 12, path, sizeof path), 0);
+    assert_int_equal(tarn_frame_path("a.png.png", 12, path, sizeof path), 0);
     assert_string_equal(path, "a.png-0012.png");
-    assert_int_equal(tarn_cli_frame_path("a-long-name.png", 1, path, 16), -1); /* no room */
+    assert_int_equal(tarn_frame_path("a-long-name.png", 1, path, 16), -1); /* no room */
 }
 
 static void test_bad_lines_name_what_was_expected(void **state)

@@ -50,21 +50,24 @@ static const char backdrop_usage[] =
 
 static const char render_usage[] =
     "usage: tarn render SCENE -o OUT.png|OUT.gif [--size WxH] [--time MS] [--frames N [--fps F]]\n"
-    "                   [--reference [--snapped]] [--backdrop on|off|still] [--rgb565] [--quiet]\n"
-    "                   [QUALITY]\n"
+    "                   [--camera X,Y,Z:TX,TY,TZ[:FOV]] [--reference [--snapped]]\n"
+    "                   [--backdrop on|off|still] [--rgb565] [--quiet] [QUALITY]\n"
     "  -o OUT.png   the image; - writes it to standard output. A regular file is replaced only\n"
     "               once complete, a link's target is written, a device or FIFO written through\n"
     "  -o OUT.gif   one animated GIF of the frames (one palette for all; F at most 50)\n"
     "  --size WxH   the frame (the scene's own by default)\n"
     "  --time MS    the clock: water, sparkles and camera paths move with it (0 by default)\n"
     "  --frames N   a sequence: OUT-0000.png onward, frame k at MS + k * 1000 / F (F 30 by default)\n"
+    "  --camera X,Y,Z:TX,TY,TZ[:FOV]  a still camera at X,Y,Z looking at TX,TY,TZ (world units), its\n"
+    "               vertical field of view FOV degrees (the scene's by default), in place of the\n"
+    "               scene's camera and path; tarn view prints the one it shows\n"
     "  --reference  the float reference instead of the core; --snapped on the core's own triangles\n"
     "  --rgb565     each frame as the panel shows it: RGB565 with the boards' ordered dither\n"
     "  --quiet      no progress line on stderr\n";
 
 static const char compare_usage[] =
-    "usage: tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png] [--backdrop on|off|still]\n"
-    "                    [QUALITY]\n"
+    "usage: tarn compare SCENE [--size WxH] [--time MS] [--camera X,Y,Z:TX,TY,TZ[:FOV]]\n"
+    "                    [--diff HEAT.png] [--backdrop on|off|still] [QUALITY]\n"
     "  prints: compare scene= size= time= psnr= maxerr= over2= over8= shading_psnr= shading_over2=\n"
     "  panel_psnr= coverage= (docs/sweep.md says what each isolates)\n"
     "  --diff HEAT.png  the whole error as a heat map, magenta where the surface differs\n";

@@ -90,6 +90,7 @@ static int parse_valued_option(const char *name, const char *value, tarn_cli_opt
         o->name = value; /* checked by bake, so that "" gets the one-line error "3d" gets */
         return value ? 0 : tarn_fail(err, "--name: expected a C identifier");
     } else if (strcmp(name, "--size") == 0) return parse_size(value, o, err);
+    else if (strcmp(name, "--camera") == 0) return tarn_camera_override_parse(value, &o->camera, err);
     else if (strcmp(name, "--frames") == 0 || strcmp(name, "--fps") == 0)
         return parse_sequence_option(name, value, o, err);
     else if (strcmp(name, "--time") == 0) {
@@ -153,6 +154,8 @@ static int check_combination(tarn_cli_options *o, tarn_error *err)
         return tarn_fail(err, "render: expected -o OUT.png");
     if (o->command == TARN_CMD_BAKE && o->output_path == NULL) return tarn_fail(err, "bake: expected -o OUT.c");
     if (o->rgb565 && o->command != TARN_CMD_RENDER) return tarn_fail(err, "--rgb565 applies to render");
+    if (o->camera.given && o->command != TARN_CMD_RENDER && o->command != TARN_CMD_COMPARE)
+        return tarn_fail(err, "--camera applies to render and compare");
     if (tarn_cli_writes_gif(o) && o->fps > TARN_GIF_FPS_MAX)
         return tarn_fail(err, "--fps: a GIF shows at most %u frames a second, got %u", TARN_GIF_FPS_MAX, o->fps);
     if (o->quiet && o->command != TARN_CMD_RENDER && o->command != TARN_CMD_BAKE)
@@ -191,14 +194,6 @@ int tarn_cli_writes_gif(const tarn_cli_options *o)
 {
     const size_t length = o->output_path ? strlen(o->output_path) : 0;
     return o->command == TARN_CMD_RENDER && length >= 4 && strcmp(o->output_path + length - 4, ".gif") == 0;
-}
-
-int tarn_cli_frame_path(const char *output, unsigned index, char *out, size_t size)
-{
-    size_t length = strlen(output);
-    if (length >= 4 && strcmp(output + length - 4, ".png") == 0) length -= 4;
-    int written = snprintf(out, size, "%.*s-%04u.png", (int)length, output, index);
-    return written >= 0 && (size_t)written < size ? 0 : -1;
 }
 
 uint32_t tarn_cli_frame_time(const tarn_cli_options *o, unsigned index)

@@ -1,8 +1,9 @@
 /* cli_options.h: the command line of the `tarn` tool, parsed and range-checked.
  *
  *   tarn render SCENE -o OUT.png|OUT.gif [--size WxH] [--time MS] [--frames N [--fps F]]
- *               [--reference [--snapped]] [--backdrop on|off|still] [--rgb565] [--quiet] [QUALITY]
- *   tarn compare SCENE [--size WxH] [--time MS] [--diff HEAT.png]
+ *               [--camera X,Y,Z:TX,TY,TZ[:FOV]] [--reference [--snapped]]
+ *               [--backdrop on|off|still] [--rgb565] [--quiet] [QUALITY]
+ *   tarn compare SCENE [--size WxH] [--time MS] [--camera ...] [--diff HEAT.png]
  *                [--backdrop on|off|still] [QUALITY]   (the core, through a backdrop with
  *                                              --backdrop, on the yardstick: yardstick.h)
  *   tarn accuracy --math
@@ -22,6 +23,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "camera_override.h"
 #include "error.h"
 #include "tarn/tarn_render.h"
 
@@ -46,6 +48,7 @@ typedef struct {
                                 drawn once (host/bake/backdrop.h) */
     uint16_t width, height;  /* 0: the scene's own frame size */
     uint32_t time_ms;
+    tarn_camera_override camera; /* render, compare --camera: in place of the scene's */
     uint16_t frames;         /* render --frames: 0 for one frame written to -o itself */
     uint8_t fps;             /* frame k is at time_ms + floor(k * 1000 / fps) */
     int reference;           /* render with the float reference */
@@ -70,10 +73,6 @@ int tarn_cli_parse(int argc, char **argv, tarn_cli_options *options, tarn_error 
 
 /* Whether render writes one animated GIF (-o NAME.gif) rather than PNG. */
 int tarn_cli_writes_gif(const tarn_cli_options *options);
-
-/* Frame `index` of a --frames sequence: "out.png" -> "out-0007.png" (a name without
- * ".png" gains "-0007.png"). 0, or -1 if it does not fit `size` bytes. */
-int tarn_cli_frame_path(const char *output, unsigned index, char *out, size_t size);
 
 /* The clock of frame `index`: time_ms + floor(index * 1000 / fps). */
 uint32_t tarn_cli_frame_time(const tarn_cli_options *options, unsigned index);

@@ -8,6 +8,7 @@
 #include "bake.h"
 #include "compare.h"
 #include "core_render.h"
+#include "frame_path.h"
 #include "gif_io.h"
 #include "option_values.h"
 #include "png_io.h"
@@ -98,6 +99,7 @@ static int run_on_scene(const tarn_cli_options *o, scene_action action)
     tarn_error err;
     tarn_loaded_scene scene;
     if (tarn_scene_load(o->scene_path, &scene, &err) != 0) return report(&err);
+    tarn_camera_override_apply(&o->camera, &scene.scene);
     tarn_frame_config config = frame_config(o, &scene);
     int failed = check_refraction_reach(o->scene_path, &scene, &config, &err) ||
                  action(o, &scene, &config, &err);
@@ -132,7 +134,7 @@ static void remove_frames(const char *output, unsigned count)
 {
     char path[FRAME_PATH_MAX];
     for (unsigned k = 0; k < count; k++) {
-        if (tarn_cli_frame_path(output, k, path, sizeof path) == 0) remove(path);
+        if (tarn_frame_path(output, k, path, sizeof path) == 0) remove(path);
     }
 }
 
@@ -144,14 +146,14 @@ static int render_sequence(const tarn_cli_options *o, const tarn_loaded_scene *s
     tarn_frame_config at = *config;
     char path[FRAME_PATH_MAX];
     /* every frame's name is as long as the last one's */
-    if (tarn_cli_frame_path(o->output_path, o->frames - 1u, path, sizeof path) != 0)
+    if (tarn_frame_path(o->output_path, o->frames - 1u, path, sizeof path) != 0)
         return tarn_fail(err, "-o: '%s' is too long for a frame's file name", o->output_path);
     tarn_progress progress;
     tarn_progress_start(&progress, "tarn render: frames", o->frames, o->quiet);
     int failed = 0;
     for (unsigned k = 0; k < o->frames && !failed; k++) {
         at.time_ms = tarn_cli_frame_time(o, k);
-        tarn_cli_frame_path(o->output_path, k, path, sizeof path);
+        tarn_frame_path(o->output_path, k, path, sizeof path);
         failed = render_frame_to(path, o, scene, &at, f, err);
         if (failed) remove_frames(o->output_path, k);
         tarn_progress_step(&progress, k + 1u);
