@@ -57,7 +57,10 @@ GPIOD_VERSION := $(shell pkg-config --modversion libgpiod 2>/dev/null)
 GPIO_LINES_SRC := $(if $(GPIOD_VERSION),$(if $(filter 1.%,$(GPIOD_VERSION)),host/display/gpio_lines_gpiod1.c,host/display/gpio_lines_gpiod2.c),host/display/gpio_lines_none.c)
 HIDAPI_PKG := $(shell pkg-config --exists hidapi-hidraw 2>/dev/null && echo hidapi-hidraw)
 MCP2210_USB_SRC := $(if $(HIDAPI_PKG),host/display/mcp2210_hidapi.c,host/display/mcp2210_hidapi_none.c)
-HOST_PKGS := libpng jansson libgif $(if $(GPIOD_VERSION),libgpiod) $(HIDAPI_PKG)
+# tarn view's window: SDL2 when pkg-config finds it, else a stub that says so.
+SDL2_PKG := $(shell pkg-config --exists sdl2 2>/dev/null && echo sdl2)
+VIEW_WINDOW_SRC := $(if $(SDL2_PKG),host/view/view_window_sdl.c,host/view/view_window_none.c)
+HOST_PKGS := libpng jansson libgif $(if $(GPIOD_VERSION),libgpiod) $(HIDAPI_PKG) $(SDL2_PKG)
 # host/ is in folders by job (host/*/README.md); every folder is on the include path,
 # so a host header is included by its name alone wherever it lives.
 HOST_INCLUDES := -Icore -Icore/include $(patsubst %/,-I%,$(sort $(wildcard host/*/)))
@@ -68,7 +71,8 @@ TEST_LIBS := $(shell pkg-config --libs cmocka zlib 2>/dev/null)
 
 CORE_SRC := $(wildcard core/*/*.c)
 HOST_SRC := $(filter-out host/cli/main.c host/display/gpio_lines_gpiod%.c host/display/gpio_lines_none.c \
-	host/display/mcp2210_hidapi%.c,$(wildcard host/*/*.c)) $(GPIO_LINES_SRC) $(MCP2210_USB_SRC)
+	host/display/mcp2210_hidapi%.c host/view/view_window_%.c,$(wildcard host/*/*.c)) $(GPIO_LINES_SRC) \
+	$(MCP2210_USB_SRC) $(VIEW_WINDOW_SRC)
 # test_gpio_lines_gpiod1.c emulates libgpiod 1.x at its calls: only with that backend
 TEST_SRC := $(filter-out $(if $(filter %gpiod1.c,$(GPIO_LINES_SRC)),,tests/test_gpio_lines_gpiod1.c),\
 	$(wildcard tests/test_*.c))

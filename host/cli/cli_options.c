@@ -7,25 +7,6 @@
 #include <stdio.h>
 #include <string.h>
 
-static int parse_size(const char *text, tarn_cli_options *o, tarn_error *err)
-{
-    const char *x = text ? strchr(text, 'x') : NULL;
-    unsigned long w, h;
-    char width_text[16];
-    if (x != NULL && (size_t)(x - text) < sizeof width_text) {
-        memcpy(width_text, text, (size_t)(x - text));
-        width_text[x - text] = '\0';
-        if (tarn_parse_whole(width_text, 1, TARN_FRAME_SIZE_MAX, &w) == 0 &&
-            tarn_parse_whole(x + 1, 1, TARN_FRAME_SIZE_MAX, &h) == 0) {
-            o->width = (uint16_t)w;
-            o->height = (uint16_t)h;
-            return 0;
-        }
-    }
-    return tarn_fail(err, "--size: expected WxH with each side 1..%u, got '%s'",
-                     TARN_FRAME_SIZE_MAX, text ? text : "");
-}
-
 static const tarn_option_choice commands[] = {
     {"render", TARN_CMD_RENDER, NULL}, {"compare", TARN_CMD_COMPARE, NULL}, {"accuracy", TARN_CMD_ACCURACY, NULL},
     {"memory", TARN_CMD_MEMORY, NULL}, {"bake", TARN_CMD_BAKE, NULL}};
@@ -89,7 +70,7 @@ static int parse_valued_option(const char *name, const char *value, tarn_cli_opt
     } else if (strcmp(name, "--name") == 0) {
         o->name = value; /* checked by bake, so that "" gets the one-line error "3d" gets */
         return value ? 0 : tarn_fail(err, "--name: expected a C identifier");
-    } else if (strcmp(name, "--size") == 0) return parse_size(value, o, err);
+    } else if (strcmp(name, "--size") == 0) return tarn_parse_size(name, value, &o->width, &o->height, err);
     else if (strcmp(name, "--camera") == 0) return tarn_camera_override_parse(value, &o->camera, err);
     else if (strcmp(name, "--frames") == 0 || strcmp(name, "--fps") == 0)
         return parse_sequence_option(name, value, o, err);

@@ -10,6 +10,7 @@
 #include "option_values.h"
 #include "show.h"
 #include "sweep.h"
+#include "view.h"
 
 /* tarn, tarn --help, tarn -h, tarn help [COMMAND], tarn COMMAND --help: exit 0.
  * -1 when the line asks for no help. */
@@ -43,6 +44,7 @@ int main(int argc, char **argv)
     if (helped >= 0) return helped;
     if (argc >= 2 && strcmp(argv[1], "show") == 0) return tarn_command_show(argc, argv);
     if (argc >= 2 && strcmp(argv[1], "sweep") == 0) return tarn_command_sweep(argc, argv);
+    if (argc >= 2 && strcmp(argv[1], "view") == 0) return tarn_command_view(argc, argv);
     if (argc >= 2 && strcmp(argv[1], "sweep-cost-worker") == 0) return tarn_command_sweep_cost_worker(argc, argv);
     if (tarn_cli_parse(argc, argv, &options, &err) != 0)
         return tarn_usage_error(tarn_cli_known_command(argc, argv), &err);

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "tarn/tarn_render.h"
+
 /* Room for the longest list of words with their meanings. */
 #define CHOICE_LIST_MAX 320
 
@@ -92,4 +94,23 @@ int tarn_parse_arguments(int argc, char **argv, const char **scene, tarn_option_
         if (taken == TARN_OPTION_VALUE) i++;
     }
     return 0;
+}
+
+int tarn_parse_size(const char *option, const char *text, uint16_t *width, uint16_t *height, tarn_error *err)
+{
+    const char *x = text ? strchr(text, 'x') : NULL;
+    unsigned long w, h;
+    char width_text[16];
+    if (x != NULL && (size_t)(x - text) < sizeof width_text) {
+        memcpy(width_text, text, (size_t)(x - text));
+        width_text[x - text] = '\0';
+        if (tarn_parse_whole(width_text, 1, TARN_FRAME_SIZE_MAX, &w) == 0 &&
+            tarn_parse_whole(x + 1, 1, TARN_FRAME_SIZE_MAX, &h) == 0) {
+            *width = (uint16_t)w;
+            *height = (uint16_t)h;
+            return 0;
+        }
+    }
+    return tarn_fail(err, "%s: expected WxH with each side 1..%u, got '%s'", option, TARN_FRAME_SIZE_MAX,
+                     text ? text : "");
 }

@@ -8,6 +8,7 @@
 #define TARN_HOST_OPTION_VALUES_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include "error.h"
 
 /* The animation clock of render --frames and of show: frames per second. */
@@ -22,6 +23,9 @@ int tarn_parse_whole(const char *text, unsigned long min, unsigned long max, uns
 int tarn_parse_number(const char *option, const char *text, unsigned long min, unsigned long max,
                       unsigned long *out, tarn_error *err);
 
+/* A frame size "WxH", each side 1..TARN_FRAME_SIZE_MAX: 0, or -1 with
+ * "OPTION: expected WxH with each side 1..1024, got 'text'". */
+int tarn_parse_size(const char *option, const char *text, uint16_t *width, uint16_t *height, tarn_error *err);
 /* A word an option takes and the value it stands for; `meaning`, when not NULL,
  * follows the word in messages: "on (find each cluster's screen box once a frame)". */
 typedef struct {
