@@ -67,7 +67,9 @@ HOST_INCLUDES := -Icore -Icore/include $(patsubst %/,-I%,$(sort $(wildcard host/
 HOST_CFLAGS := -std=c99 $(WARN) $(OPT) -D_POSIX_C_SOURCE=200809L $(HOST_INCLUDES) \
 	$(shell pkg-config --cflags $(HOST_PKGS) 2>/dev/null)
 HOST_LIBS := $(shell pkg-config --libs $(HOST_PKGS) 2>/dev/null) -lm -pthread
-TEST_LIBS := $(shell pkg-config --libs cmocka zlib 2>/dev/null)
+# tests/test_view.c reads tarn view's window back from the X server: libX11 comes
+# with libsdl2-dev.
+TEST_LIBS := $(shell pkg-config --libs cmocka zlib $(if $(SDL2_PKG),x11) 2>/dev/null)
 
 CORE_SRC := $(wildcard core/*/*.c)
 HOST_SRC := $(filter-out host/cli/main.c host/display/gpio_lines_gpiod%.c host/display/gpio_lines_none.c \

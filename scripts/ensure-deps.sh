@@ -15,10 +15,12 @@ want libjansson-dev pkg-config --exists jansson
 want libgif-dev pkg-config --exists libgif           # tarn render -o NAME.gif
 want libgpiod-dev pkg-config --exists libgpiod       # tarn show: DC/reset lines, GPIO bit-bang
 want libhidapi-dev pkg-config --exists hidapi-hidraw # tarn show: the MCP2210 bridge
+want libsdl2-dev pkg-config --exists sdl2            # tarn view: the window
 want valgrind test -e /usr/include/valgrind/callgrind.h # tarn sweep: host instruction counts
 want gnuplot-nox command -v gnuplot                  # tarn sweep: the plot
 if [ "${1:-demo}" = test ]; then
     want libcmocka-dev pkg-config --exists cmocka
+    want xvfb command -v Xvfb                            # tests/test_view.c: a display server
     want cmake command -v cmake                          # tests/check_packages.sh: core/CMakeLists.txt
     want g++ command -v g++                              # tests/check_packages.sh: the headers as C++
     want python3 command -v python3                      # tests/check_packages.sh: core/library.json

@@ -41,7 +41,7 @@ static void test_help_on_the_tool_and_every_command(void **state)
         {"render --help", "usage: tarn render "}, {"compare --help", "usage: tarn compare "},
         {"memory --help", "usage: tarn memory "}, {"bake --help", "usage: tarn bake "},
         {"accuracy --help", "usage: tarn accuracy "}, {"show --help", "usage: tarn show "},
-        {"sweep --help", "usage: tarn sweep "}, {"help bake", "usage: tarn bake "},
+        {"sweep --help", "usage: tarn sweep "}, {"view --help", "usage: tarn view "}, {"help bake", "usage: tarn bake "},
         {"render scenes/pond.json -h", "usage: tarn render "},
     };
     static cli_result r;
@@ -52,7 +52,7 @@ static void test_help_on_the_tool_and_every_command(void **state)
     }
     /* the overview names every command, and where each one's options are */
     run_line("--help", &r);
-    static const char *const commands[] = {"render", "compare", "memory", "bake", "show", "sweep", "accuracy"};
+    static const char *const commands[] = {"render", "compare", "memory", "bake", "show", "view", "sweep", "accuracy"};
     for (size_t k = 0; k < sizeof commands / sizeof commands[0]; k++)
         if (strstr(r.out, commands[k]) == NULL) fail_msg("tarn --help does not name %s", commands[k]);
     if (strstr(r.out, "tarn COMMAND --help") == NULL) fail_msg("tarn --help does not say where the options are");
@@ -71,7 +71,8 @@ static void test_version(void **state)
     snprintf(first, sizeof first, "tarn %s\n", TARN_VERSION_STRING);
     if (r.status != 0 || strncmp(r.out, first, strlen(first)) != 0)
         fail_msg("tarn --version: exit %d, stdout '%s', expected it to start '%s'", r.status, r.out, first);
-    if (strstr(r.out, "link switches: PERSPECTIVE_AFFINE=") == NULL || strstr(r.out, "display backends: gpio=") == NULL)
+    if (strstr(r.out, "link switches: PERSPECTIVE_AFFINE=") == NULL || strstr(r.out, "display backends: gpio=") == NULL ||
+        strstr(r.out, "view window: ") == NULL)
         fail_msg("tarn --version lacks the link switches or the backends: %s", r.out);
 }
 
@@ -82,7 +83,7 @@ static void test_usage_errors_are_one_line(void **state)
     static const struct {
         const char *line, *says, *help;
     } cases[] = {
-        {"", "expected a command: render, compare, memory, bake, show, sweep or accuracy", "tarn --help"},
+        {"", "expected a command: render, compare, memory, bake, show, view, sweep or accuracy", "tarn --help"},
         {"frob", "unknown command 'frob'", "tarn --help"},
         {"help frob", "no command 'frob'", "tarn --help"},
         {"help render extra", "help: unexpected argument 'extra'", "tarn --help"},
@@ -97,6 +98,12 @@ static void test_usage_errors_are_one_line(void **state)
         {"compare scenes/pond.json --diff -", "--diff -:", "tarn compare --help"},
         {"compare scenes/pond.json --quiet", "--quiet applies to render and bake", "tarn compare --help"},
         {"compare scenes/pond.json --rgb565", "--rgb565 applies to render", "tarn compare --help"},
+        {"view scenes/pond.json --scale 9", "--scale: expected a whole number 1..8", "tarn view --help"},
+        {"view", "expected a scene file", "tarn view --help"},
+        {"render scenes/pond.json --camera 0,0,0:0,0,0 -o x.png", "--camera: the position and the target",
+         "tarn render --help"},
+        {"memory scenes/pond.json --camera 0,0,1:0,0,0", "--camera applies to render and compare",
+         "tarn memory --help"},
         {"render scenes/pond.json -o a.gif --frames 2 --fps 60", "--fps: a GIF shows at most 50 frames a second",
          "tarn render --help"},
         {"show scenes/pond.json --panel st7789-240x240 --panel st7789-240x240", "--panel: given twice",

@@ -8,6 +8,9 @@
 #include "show_options.h"
 #include "sweep.h"
 #include "tarn/tarn.h"
+#include "view_options.h"
+#include "view_state.h"
+#include "view_window.h"
 
 static const char overview[] =
     "tarn: an integer-only renderer of small 3D scenes with stylised water, for microcontrollers\n"
@@ -17,6 +20,7 @@ static const char overview[] =
     "  memory    the working memory a frame needs at a quality\n"
     "  bake      a scene as const C data for firmware, with the switches it links\n"
     "  show      stream frames to a panel: an emulator, spidev + GPIO, or an MCP2210 bridge\n"
+    "  view      a window on the PC that draws the scene live: keys for time, presets and knobs\n"
     "  sweep     the speed/accuracy map of the quality knobs\n"
     "  accuracy  the core's arithmetic against double precision\n"
     "'tarn COMMAND --help' gives a command's options; 'tarn --version' this build.\n";
@@ -103,6 +107,14 @@ static const command_help commands[] = {
     {"bake", bake_usage, 1, 1},     {"accuracy", accuracy_usage, 0, 0},
 };
 
+/* tarn view's usage, its keys, then QUALITY. */
+static int print_view_help(FILE *out)
+{
+    char keys[2048];
+    tarn_view_key_help(keys, sizeof keys);
+    return fputs(tarn_view_usage, out) < 0 || fputs(keys, out) < 0 || fputs(quality_usage, out) < 0 ? -1 : 0;
+}
+
 int tarn_cli_wants_help(int argc, char **argv)
 {
     for (int i = 2; i < argc; i++)
@@ -115,6 +127,7 @@ int tarn_cli_print_help(const char *command, FILE *out)
     if (command == NULL) return fputs(overview, out) < 0 ? -1 : 0;
     if (strcmp(command, "show") == 0) return fputs(tarn_show_usage, out) < 0 ? -1 : 0;
     if (strcmp(command, "sweep") == 0) return fputs(tarn_sweep_usage, out) < 0 ? -1 : 0;
+    if (strcmp(command, "view") == 0) return print_view_help(out);
     for (size_t k = 0; k < sizeof commands / sizeof commands[0]; k++) {
         if (strcmp(command, commands[k].name) != 0) continue;
         fputs(commands[k].usage, out);
@@ -154,4 +167,5 @@ void tarn_cli_print_version(FILE *out)
     fprintf(out, "tarn %s\n", tarn_version());
     print_link_switches(out);
     fprintf(out, "display backends: gpio=%s usb=%s\n", tarn_gpio_backend, tarn_mcp2210_usb_backend);
+    fprintf(out, "view window: %s\n", tarn_view_window_backend());
 }

@@ -27,7 +27,7 @@ static int parse_command(const char *word, tarn_cli_options *o, tarn_error *err)
         return 0;
     }
     /* show and sweep have parsers of their own (main.c), but are commands as much */
-    static const char expected[] = "render, compare, memory, bake, show, sweep or accuracy";
+    static const char expected[] = "render, compare, memory, bake, show, view, sweep or accuracy";
     if (word == NULL) return tarn_fail(err, "expected a command: %s", expected);
     return tarn_fail(err, "unknown command '%s'; expected %s", word, expected);
 }

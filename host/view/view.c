@@ -37,6 +37,7 @@ typedef struct {
     int scripted;
     uint32_t frame_number;    /* frames drawn (a script's clock) */
     int waiting_for_edit;
+    int edit_seen;            /* this turn ended a wait: its frame is drawn again */
     int screenshot_due, quit_after_frame;
     char error[TARN_ERROR_MESSAGE_MAX]; /* what went wrong last, shown until it is put right */
     int have_numbers;
@@ -101,6 +102,7 @@ static int look_for_edits(view_session *v)
     v->last_watch = now;
     if (!tarn_view_watch_changed(&v->watch)) return 0;
     reload(v);
+    v->edit_seen = v->waiting_for_edit;
     v->waiting_for_edit = 0;
     return 1;
 }
@@ -241,15 +243,17 @@ static void print_requests(view_session *v)
     fflush(stdout);
 }
 
-/* A hand's clock runs with the wall clock; a script's a frame a turn, and not
- * while it waits for an edit. */
+/* A hand's clock runs with the wall clock; a script's a frame a turn, but not
+ * while it waits for an edit, nor on the turn the edit came, so that the events
+ * after the wait are at their frame. */
 static void advance_clock(view_session *v, double *last_tick)
 {
     if (v->scripted) {
-        if (!v->waiting_for_edit) {
+        if (!v->waiting_for_edit && !v->edit_seen) {
             tarn_view_run_frame(&v->state);
             v->frame_number++;
         }
+        v->edit_seen = 0;
         return;
     }
     const double now = now_ms();

@@ -22,6 +22,7 @@ const char tarn_view_usage[] =
     "  --screenshot OUT.png  with a script, each screenshot to OUT-FRAME.png and a line on stdout\n"
     "               with the render command that draws it; without, the first frame, then exit\n"
     "  Needs a display: DISPLAY or WAYLAND_DISPLAY (over SSH: ssh -X; headless: xvfb-run).\n"
+    "mouse: a drag with the left button turns the camera about its target; the wheel zooms\n"
     "keys:\n";
 
 /* A tarn_option_reader. */
