@@ -214,6 +214,20 @@ static void test_view_without_a_display_is_one_line(void **state)
     free(r);
 }
 
+static void test_a_display_that_does_not_answer_is_one_line(void **state)
+{
+    (void)state;
+    on_display();
+    setenv("DISPLAY", ":9999", 1); /* no server there */
+    char *argv[] = {(char *)cli_tarn(), "view", (char *)scene_path(), NULL};
+    cli_result *r = malloc(sizeof *r);
+    cli_run(argv, -1, -1, 30, r);
+    assert_int_equal(r->status, 2);
+    assert_true(cli_one_line(r));
+    if (strstr(r->err, "cannot open the display :9999") == NULL) fail_msg("the message does not name it: %s", r->err);
+    free(r);
+}
+
 static void test_a_bad_script_line_is_named(void **state)
 {
     (void)state;
@@ -399,6 +413,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_view_without_a_display_is_one_line, cli_make_folder, cli_remove_folder),
+        cmocka_unit_test(test_a_display_that_does_not_answer_is_one_line),
         cmocka_unit_test_setup_teardown(test_a_bad_script_line_is_named, cli_make_folder, cli_remove_folder),
         cmocka_unit_test_setup_teardown(test_view_shows_what_render_draws, cli_make_folder, cli_remove_folder),
         cmocka_unit_test_setup_teardown(test_a_bad_edit_keeps_the_last_picture, cli_make_folder, cli_remove_folder),

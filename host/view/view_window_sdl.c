@@ -45,11 +45,34 @@ static int fit_texture(tarn_view_window *w, int width, int height, tarn_error *e
     return 0;
 }
 
+/* SDL on the display the environment names, Wayland's or X's: left to itself, SDL
+ * falls back on drivers no one sees when that display cannot be reached.
+ * SDL_VIDEODRIVER, when set, is the user's choice and SDL's to follow. */
+static int open_display(tarn_error *err)
+{
+    const char *asked = getenv("SDL_VIDEODRIVER"), *wayland = getenv("WAYLAND_DISPLAY"), *x = getenv("DISPLAY");
+    if (asked != NULL && asked[0] != '\0')
+        return SDL_Init(SDL_INIT_VIDEO) == 0 ? 0 : sdl_failure("cannot open the display", err);
+    /* libwayland finds a relative socket name in XDG_RUNTIME_DIR, and says so on
+     * stderr itself when that is not set */
+    const char *runtime = getenv("XDG_RUNTIME_DIR");
+    if (wayland != NULL && wayland[0] != '\0' && (wayland[0] == '/' || (runtime != NULL && runtime[0] != '\0'))) {
+        SDL_SetHint(SDL_HINT_VIDEODRIVER, "wayland");
+        if (SDL_Init(SDL_INIT_VIDEO) == 0) return 0;
+    }
+    if (x != NULL && x[0] != '\0') {
+        SDL_SetHint(SDL_HINT_VIDEODRIVER, "x11");
+        if (SDL_Init(SDL_INIT_VIDEO) == 0) return 0;
+    }
+    const char *why = SDL_GetError()[0] != '\0' ? SDL_GetError() : "XDG_RUNTIME_DIR, which holds its socket, is not set";
+    return tarn_fail(err, "view: cannot open the display %s: %s", x != NULL && x[0] ? x : wayland, why);
+}
+
 int tarn_view_window_open(const char *title, int width, int height, unsigned scale, tarn_view_window **out,
                           tarn_error *err)
 {
     *out = NULL;
-    if (SDL_Init(SDL_INIT_VIDEO) != 0) return sdl_failure("cannot open the display", err);
+    if (open_display(err) != 0) return -1;
     SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "0"); /* whole pixels, no smoothing */
     tarn_view_window *w = calloc(1, sizeof *w);
     if (w == NULL) return tarn_fail(err, "view: out of memory");
