@@ -31,6 +31,25 @@ extern char **environ;
 static pid_t xvfb;
 static char display_name[32];
 
+/* Whether the server answers a client, as a view's SDL will ask it. */
+static int wait_for_server(void)
+{
+    for (int k = 0; k < 200; k++) {
+        Display *x = XOpenDisplay(display_name);
+        if (x != NULL) {
+            XCloseDisplay(x);
+            return 0;
+        }
+        struct timespec pause = {0, 50000000};
+        nanosleep(&pause, NULL);
+    }
+    int status;
+    const int ended = waitpid(xvfb, &status, WNOHANG) == xvfb;
+    fprintf(stderr, "test_view: Xvfb on %s does not answer after 10 s (%s; its log: /tmp/test_view-xvfb.log)\n",
+            display_name, ended ? "it has ended" : "it is running");
+    return -1;
+}
+
 /* Xvfb on a display number it finds free, which it writes to the pipe. */
 static int start_xvfb(void **state)
 {
@@ -42,7 +61,8 @@ static int start_xvfb(void **state)
     char *argv[] = {"/usr/bin/Xvfb", "-displayfd", fd_text, "-screen", "0", "1024x768x24", "-nolisten", "tcp", NULL};
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/tmp/test_view-xvfb.log", O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
     posix_spawn_file_actions_addclose(&actions, fds[0]);
     const int spawned = posix_spawn(&xvfb, argv[0], &actions, NULL, argv, environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -51,18 +71,25 @@ static int start_xvfb(void **state)
         fprintf(stderr, "test_view: cannot start %s: %s (make test installs xvfb)\n", argv[0], strerror(spawned));
         return -1;
     }
+    /* the number ends with a newline, which may come in a write of its own: the
+     * pipe stays open until it has, or Xvfb fails writing it */
     struct pollfd p = {fds[0], POLLIN, 0};
     char number[16] = "";
-    const ssize_t got = poll(&p, 1, 20000) == 1 ? read(fds[0], number, sizeof number - 1) : -1;
+    ssize_t got = 0;
+    while (strchr(number, '\n') == NULL && got < (ssize_t)sizeof number - 1 && poll(&p, 1, 20000) == 1) {
+        const ssize_t more = read(fds[0], number + got, sizeof number - 1 - (size_t)got);
+        if (more <= 0) break;
+        got += more;
+        number[got] = '\0';
+    }
     close(fds[0]);
-    if (got <= 0) {
-        fprintf(stderr, "test_view: Xvfb gave no display number within 20 s\n");
+    if (strchr(number, '\n') == NULL) {
+        fprintf(stderr, "test_view: Xvfb gave no display number within 20 s (its log: /tmp/test_view-xvfb.log)\n");
         return -1;
     }
-    number[got] = '\0';
     number[strcspn(number, "\n")] = '\0';
     snprintf(display_name, sizeof display_name, ":%s", number);
-    return 0;
+    return wait_for_server();
 }
 
 static int stop_xvfb(void **state)
