@@ -2,7 +2,8 @@
 #include "accuracy_math.h"
 
 #include <math.h>
-#include <time.h>
+
+#include "clock.h"
 
 /* ---- error sweeps ------------------------------------------------------------------*/
 
@@ -321,13 +322,6 @@ uint32_t tarn_math_bench_run(const tarn_math_case *c, const uint32_t inputs[TARN
 #define TIMED_RUNS 5
 #define TIMED_ROUNDS 64u /* 2^18 calls per run: a few milliseconds */
 
-static double seconds_now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + t.tv_nsec * 1e-9;
-}
-
 static void sort_doubles(double *v, int n)
 {
     for (int i = 1; i < n; i++) {
@@ -350,9 +344,9 @@ static double median_ns_per_call(bench_call call, const tarn_math_case *c)
     double ns[TIMED_RUNS];
     tarn_math_bench_inputs(c, inputs);
     for (int run = 0; run < TIMED_RUNS; run++) {
-        double start = seconds_now();
+        double start = tarn_clock_seconds();
         bench_checksum_sink = bench_loop(call, c, inputs, TIMED_ROUNDS);
-        ns[run] = (seconds_now() - start) * 1e9 / ((double)TIMED_ROUNDS * TARN_MATH_BENCH_INPUTS);
+        ns[run] = (tarn_clock_seconds() - start) * 1e9 / ((double)TIMED_ROUNDS * TARN_MATH_BENCH_INPUTS);
     }
     sort_doubles(ns, TIMED_RUNS);
     return ns[TIMED_RUNS / 2];

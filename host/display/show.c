@@ -6,8 +6,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "clock.h"
 #include "display.h"
 #include "frame_sender.h"
 #include "option_values.h"
@@ -69,13 +69,6 @@ typedef struct {
     double wall_s;
 } show_run;
 
-static double now_s(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
 static uint32_t frame_time(const tarn_show_options *o, uint32_t index)
 {
     return o->time_ms + (uint32_t)((uint64_t)index * 1000u / o->fps);
@@ -93,7 +86,7 @@ static int render_into(show_run *r, uint32_t index, uint32_t *frame)
 static int animate(show_run *r, tarn_error *err)
 {
     const tarn_show_options *o = r->options;
-    double start = now_s();
+    double start = tarn_clock_seconds();
     for (uint32_t k = 0; (o->frames == 0 || k < o->frames) && !interrupted; k++) {
         int more = o->frames == 0 || k + 1 < o->frames;
         pthread_t renderer;
@@ -108,7 +101,7 @@ static int animate(show_run *r, tarn_error *err)
         tarn_status sent = tarn_frame_sender_send(&r->sender, r->frames[k & 1u]);
         if (more) pthread_join(renderer, NULL);
         if (sent != TARN_OK) {
-            r->wall_s = now_s() - start;
+            r->wall_s = tarn_clock_seconds() - start;
             return tarn_fail(err, "%s", sent == TARN_ERR_SINK ? tarn_display_failure(&r->display)
                                                               : "a tile does not fit the panel");
         }
@@ -118,7 +111,7 @@ static int animate(show_run *r, tarn_error *err)
         if (more && r->job.status != TARN_OK)
             return tarn_fail(err, "%s: render failed: %s", o->scene_path, tarn_status_text(r->job.status));
     }
-    r->wall_s = now_s() - start;
+    r->wall_s = tarn_clock_seconds() - start;
     return 0;
 }
 

@@ -4,8 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-
+#include "clock.h"
 #include "frame_path.h"
 #include "option_values.h"
 #include "png_io.h"
@@ -45,11 +44,10 @@ typedef struct {
     double last_measure, last_watch, last_title; /* wall-clock ms */
 } view_session;
 
+/* The monotonic clock in ms. */
 static double now_ms(void)
 {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return 1e3 * (double)t.tv_sec + 1e-6 * (double)t.tv_nsec;
+    return 1e3 * tarn_clock_seconds();
 }
 
 static int report(const tarn_error *err)

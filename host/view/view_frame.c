@@ -3,17 +3,9 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-
+#include "clock.h"
 #include "compare.h"
 #include "core_render.h"
-
-static double now_ms(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return 1e3 * (double)t.tv_sec + 1e-6 * (double)t.tv_nsec;
-}
 
 /* The buffers for a width x height picture: 0, or -1 with `err` set. */
 static int fit_buffers(tarn_view_frame *f, int width, int height, tarn_error *err)
@@ -51,9 +43,9 @@ int tarn_view_frame_draw(tarn_view_frame *f, const tarn_scene *scene, const char
 {
     if (fit_buffers(f, config->width, config->height, err) != 0) return -1;
     f->measured = 0;
-    const double start = now_ms();
+    const double start = tarn_clock_seconds();
     if (tarn_core_render(scene, config, f->core, NULL, err) != 0) return -1;
-    f->core_ms = now_ms() - start;
+    f->core_ms = 1e3 * (tarn_clock_seconds() - start);
     measure = measure || picture == TARN_VIEW_HEATMAP;
     if ((picture != TARN_VIEW_CORE || measure) && draw_reference_and_measure(f, scene, name, config, measure, err))
         return -1;
