@@ -226,6 +226,16 @@ static const char *scene_path(void)
     return "scenes/pond.json";
 }
 
+/* Runs argv, which must exit 2 with one line on stderr that holds `says`. */
+static void fails_in_one_line(char *const argv[], const char *says)
+{
+    cli_result *r = malloc(sizeof *r);
+    cli_run(argv, -1, -1, 30, r);
+    if (r->status != 2 || !cli_one_line(r) || strstr(r->err, says) == NULL)
+        fail_msg("exit %d, stderr not one line saying '%s': %s", r->status, says, r->err);
+    free(r);
+}
+
 static void test_view_without_a_display_is_one_line(void **state)
 {
     (void)state;
@@ -233,11 +243,7 @@ static void test_view_without_a_display_is_one_line(void **state)
     unsetenv("WAYLAND_DISPLAY");
     unsetenv("SDL_VIDEODRIVER");
     char *argv[] = {(char *)cli_tarn(), "view", (char *)scene_path(), NULL};
-    cli_result *r = malloc(sizeof *r);
-    cli_run(argv, -1, -1, 30, r);
-    if (r->status != 2 || !cli_one_line(r) || strstr(r->err, "no display") == NULL)
-        fail_msg("exit %d, stderr not one line saying there is no display: %s", r->status, r->err);
-    free(r);
+    fails_in_one_line(argv, "no display");
 }
 
 static void test_a_display_that_does_not_answer_is_one_line(void **state)
@@ -246,11 +252,7 @@ static void test_a_display_that_does_not_answer_is_one_line(void **state)
     on_display();
     setenv("DISPLAY", ":9999", 1); /* no server there */
     char *argv[] = {(char *)cli_tarn(), "view", (char *)scene_path(), NULL};
-    cli_result *r = malloc(sizeof *r);
-    cli_run(argv, -1, -1, 30, r);
-    if (r->status != 2 || !cli_one_line(r) || strstr(r->err, "cannot open the display :9999") == NULL)
-        fail_msg("exit %d, stderr not one line naming the display: %s", r->status, r->err);
-    free(r);
+    fails_in_one_line(argv, "cannot open the display :9999");
 }
 
 static void test_a_bad_script_line_is_named(void **state)
@@ -260,12 +262,8 @@ static void test_a_bad_script_line_is_named(void **state)
     write_file(cli_in_folder("bad.txt"), "0 screenshot\n# fine so far\n3 key NoSuchKey\n");
     char *argv[] = {(char *)cli_tarn(), "view", (char *)scene_path(), "--script", (char *)cli_in_folder("bad.txt"),
                     "--screenshot", (char *)cli_in_folder("s.png"), NULL};
-    cli_result *r = malloc(sizeof *r);
-    cli_run(argv, -1, -1, 30, r);
-    if (r->status != 2 || !cli_one_line(r) || strstr(r->err, "bad.txt:3: expected a key") == NULL)
-        fail_msg("exit %d, stderr not one line naming line 3: %s", r->status, r->err);
+    fails_in_one_line(argv, "bad.txt:3: expected a key");
     assert_int_equal(access(cli_in_folder("s-0000.png"), F_OK), -1);
-    free(r);
 }
 
 static const char view_script[] =

@@ -182,7 +182,7 @@ static int render_gif(const tarn_cli_options *o, const tarn_loaded_scene *scene,
     for (unsigned k = 0; k < frames && !failed; k++) {
         at.time_ms = tarn_cli_frame_time(o, k);
         failed = render_frame(o, scene, &at, f, err);
-        memcpy(all + k * frame_bytes, f->rgb, frame_bytes);
+        if (!failed) memcpy(all + k * frame_bytes, f->rgb, frame_bytes);
         tarn_progress_step(&progress, k + 1u);
     }
     tarn_progress_end(&progress);

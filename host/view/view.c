@@ -38,9 +38,13 @@ typedef struct {
     int waiting_for_edit;
     int edit_seen;            /* this turn ended a wait: its frame is drawn again */
     int screenshot_due, quit_after_frame;
-    char error[TARN_ERROR_MESSAGE_MAX]; /* what went wrong last, shown until it is put right */
+    /* what the title shows, until it is put right: a bad edit until the scene
+     * loads again, a picture the core refused until one is drawn */
+    char edit_error[TARN_ERROR_MESSAGE_MAX], draw_error[TARN_ERROR_MESSAGE_MAX];
     int have_numbers;
     uint32_t measured_at_ms;
+    int camera_chosen;        /* --camera or the mouse chose the last picture's camera, */
+    tarn_camera drawn_camera; /* which was this */
     double last_measure, last_watch, last_title; /* wall-clock ms */
 } view_session;
 
@@ -48,6 +52,12 @@ typedef struct {
 static double now_ms(void)
 {
     return 1e3 * tarn_clock_seconds();
+}
+
+/* The error the title leads with, or "". */
+static const char *shown_error(const view_session *v)
+{
+    return v->edit_error[0] ? v->edit_error : v->draw_error;
 }
 
 static int report(const tarn_error *err)
@@ -82,13 +92,13 @@ static void reload(view_session *v)
     tarn_loaded_scene next;
     tarn_error err;
     if (load_scene(v, &next, &err) != 0) {
-        snprintf(v->error, sizeof v->error, "%s", err.message);
+        snprintf(v->edit_error, sizeof v->edit_error, "%s", err.message);
         fprintf(stderr, "tarn: %s\n", err.message);
         return;
     }
     tarn_scene_free(&v->scene);
     v->scene = next;
-    v->error[0] = '\0';
+    v->edit_error[0] = '\0';
     tarn_view_watch_set(&v->watch, v->options->scene_path, &v->scene);
 }
 
@@ -131,15 +141,13 @@ static tarn_frame_config frame_config(const view_session *v)
 
 /* The scene as drawn now: the mouse's camera in place of the scene's, when it
  * has moved one. */
-static int scene_to_draw(const view_session *v, uint32_t time_ms, tarn_scene *out, tarn_camera *camera,
-                         tarn_error *err)
+static int scene_to_draw(const view_session *v, uint32_t time_ms, tarn_scene *out, tarn_error *err)
 {
     *out = v->scene.scene;
     if (tarn_view_own_camera(&v->state)) return 0;
     if (tarn_view_camera(&v->scene.scene, time_ms, v->state.yaw_degrees, v->state.pitch_degrees, v->state.zoom,
-                         camera, err) != 0)
+                         &out->camera, err) != 0)
         return -1;
-    out->camera = *camera;
     out->camera_path = NULL;
     return 0;
 }
@@ -161,36 +169,32 @@ static void draw(view_session *v, uint8_t **capture, int *cw, int *ch)
     tarn_error err;
     const tarn_frame_config config = frame_config(v);
     tarn_scene scene;
-    tarn_camera camera;
     const int measure = measure_now(v);
-    int failed = scene_to_draw(v, config.time_ms, &scene, &camera, &err) ||
+    int failed = scene_to_draw(v, config.time_ms, &scene, &err) ||
                  tarn_view_frame_draw(&v->frame, &scene, v->scene.name, &config, v->state.picture, v->state.panel,
                                       measure, &err);
-    if (failed) snprintf(v->error, sizeof v->error, "%s", err.message);
-    else if (v->frame.measured) {
-        v->have_numbers = 1;
-        v->measured_at_ms = config.time_ms;
+    if (failed) snprintf(v->draw_error, sizeof v->draw_error, "%s", err.message);
+    else {
+        v->draw_error[0] = '\0';
+        v->camera_chosen = !tarn_view_own_camera(&v->state) || v->options->camera.given;
+        v->drawn_camera = scene.camera;
+        if (v->frame.measured) {
+            v->have_numbers = 1;
+            v->measured_at_ms = config.time_ms;
+        }
     }
     if (tarn_view_window_show(v->window, failed ? NULL : v->frame.shown, v->frame.width, v->frame.height, capture,
                               cw, ch, &err) != 0)
-        snprintf(v->error, sizeof v->error, "%s", err.message);
+        snprintf(v->draw_error, sizeof v->draw_error, "%s", err.message);
 }
 
-/* The command that draws the picture now, to `output`. */
+/* The command that draws the picture now, to `output`: with --camera when the
+ * camera is not the scene's own. */
 static void picture_command(const view_session *v, const char *output, char *out, size_t size)
 {
     const tarn_frame_config config = frame_config(v);
-    tarn_scene scene;
-    tarn_camera camera;
-    tarn_error err;
-    const int own = tarn_view_own_camera(&v->state) && !v->options->camera.given;
-    if (!own && tarn_view_own_camera(&v->state)) camera = v->scene.scene.camera;
-    else if (!own && scene_to_draw(v, config.time_ms, &scene, &camera, &err) != 0) {
-        snprintf(out, size, "(%s)", err.message);
-        return;
-    }
-    tarn_view_command(v->options->scene_path, &v->state, config.width, config.height, own ? NULL : &camera, output,
-                      out, size);
+    tarn_view_command(v->options->scene_path, &v->state, config.width, config.height,
+                      v->camera_chosen ? &v->drawn_camera : NULL, output, out, size);
 }
 
 /* A script's screenshot: the window's pixels to OUT-FRAME.png, and a line on
@@ -206,7 +210,7 @@ static int save_screenshot(view_session *v, const uint8_t *pixels, int width, in
     picture_command(v, "OUT.png", command, sizeof command);
     printf("view screenshot=%s frame=%lu time=%lu scale=%d error=%s command=%s\n", path,
            (unsigned long)v->frame_number, (unsigned long)tarn_view_time_ms(&v->state), width / v->frame.width,
-           v->error[0] ? "yes" : "no", command);
+           shown_error(v)[0] ? "yes" : "no", command);
     fflush(stdout);
     return 0;
 }
@@ -218,7 +222,7 @@ static void update_title(view_session *v)
     v->last_title = now;
     char title[TARN_VIEW_TEXT_MAX];
     const tarn_view_title_parts parts = {v->scene.name, &v->state, &v->frame, v->measured_at_ms, v->have_numbers,
-                                         v->error};
+                                         shown_error(v)};
     tarn_view_title(&parts, title, sizeof title);
     tarn_view_window_title(v->window, title);
     if (v->scripted && v->screenshot_due) printf("view title=%s\n", title);
@@ -263,7 +267,7 @@ static void advance_clock(view_session *v, double *last_tick)
 /* The screenshot this frame asked for, from the pixels the window showed. */
 static int take_screenshot(view_session *v, uint8_t *capture, int width, int height, tarn_error *err)
 {
-    if (capture == NULL) return tarn_fail(err, "%s", v->error);
+    if (capture == NULL) return tarn_fail(err, "%s", v->draw_error);
     const int failed = save_screenshot(v, capture, width, height, err);
     free(capture);
     v->screenshot_due = 0;

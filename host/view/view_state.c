@@ -120,21 +120,18 @@ static void choose_preset(tarn_view_state *s, tarn_preset preset)
     s->quality = tarn_quality_preset(preset);
 }
 
-/* One frame of the view's fps at speed 1. */
-static uint64_t frame_units(void)
-{
-    return 16000u;
-}
+/* One frame of the view's fps at speed 1: 1000 / fps ms of 16 * fps units each. */
+#define FRAME_UNITS 16000u
 
 void tarn_view_press(tarn_view_state *s, const tarn_view_key *key)
 {
     s->message = NULL;
     switch (key->action) {
     case TARN_VIEW_PAUSE: s->paused = !s->paused; break;
-    case TARN_VIEW_STEP_ON: s->paused = 1; s->clock_units += frame_units(); break;
+    case TARN_VIEW_STEP_ON: s->paused = 1; s->clock_units += FRAME_UNITS; break;
     case TARN_VIEW_STEP_BACK:
         s->paused = 1;
-        s->clock_units = s->clock_units > frame_units() ? s->clock_units - frame_units() : 0;
+        s->clock_units = s->clock_units > FRAME_UNITS ? s->clock_units - FRAME_UNITS : 0;
         break;
     case TARN_VIEW_SLOWER: if (s->speed_log2 > TARN_VIEW_SPEED_LOG2_MIN) s->speed_log2--; break;
     case TARN_VIEW_FASTER: if (s->speed_log2 < TARN_VIEW_SPEED_LOG2_MAX) s->speed_log2++; break;
@@ -171,21 +168,21 @@ void tarn_view_wheel(tarn_view_state *s, int steps)
     for (; steps < 0 && s->zoom < ZOOM_MAX; steps++) s->zoom /= 0.9;
 }
 
-/* 2^speed_log2 frames' worth of units for `units` at speed 1, in whole units:
- * units are 16ths, and the speed is at least 1/16. */
-static uint64_t at_speed(const tarn_view_state *s, uint64_t units_times_16)
+/* `units` of clock at speed 1, at the state's speed: exact, as every count of
+ * units given here is a multiple of 16 and the speed is at least 1/16. */
+static uint64_t at_speed(const tarn_view_state *s, uint64_t units)
 {
-    return (units_times_16 << (s->speed_log2 - TARN_VIEW_SPEED_LOG2_MIN)) >> 8;
+    return s->speed_log2 >= 0 ? units << s->speed_log2 : units >> -s->speed_log2;
 }
 
 void tarn_view_run_ms(tarn_view_state *s, uint32_t elapsed_ms)
 {
-    if (!s->paused) s->clock_units += at_speed(s, (uint64_t)elapsed_ms * 16u * 16u * s->fps);
+    if (!s->paused) s->clock_units += at_speed(s, (uint64_t)elapsed_ms * 16u * s->fps);
 }
 
 void tarn_view_run_frame(tarn_view_state *s)
 {
-    if (!s->paused) s->clock_units += at_speed(s, 16u * frame_units());
+    if (!s->paused) s->clock_units += at_speed(s, FRAME_UNITS);
 }
 
 uint32_t tarn_view_time_ms(const tarn_view_state *s)
