@@ -35,8 +35,8 @@ int main(int argc, char **argv)
     return 0;
 }
 EOF
-$CC -std=c99 -O2 -D_POSIX_C_SOURCE=200809L -Icore -Icore/include -Ihost/compare -o "$work/bench" \
-    "$work/bench.c" host/compare/accuracy_math.c core/math/*.c -lm
+$CC -std=c99 -O2 -D_POSIX_C_SOURCE=200809L -Icore -Icore/include -Ihost/compare -Ihost/util -o "$work/bench" \
+    "$work/bench.c" host/compare/accuracy_math.c host/util/clock.c core/math/*.c -lm
 
 printf '%-18s %-15s %12s\n' function config Ir_per_call
 index=0

@@ -93,7 +93,7 @@ static void reload(view_session *v)
     tarn_error err;
     if (load_scene(v, &next, &err) != 0) {
         snprintf(v->edit_error, sizeof v->edit_error, "%s", err.message);
-        fprintf(stderr, "tarn: %s\n", err.message);
+        report(&err); /* on stderr too, whole, beside the title that may cut it */
         return;
     }
     tarn_scene_free(&v->scene);
