@@ -409,15 +409,18 @@ static const tarn_tile_target *draw_strip_water(frame_state *f, tarn_tile_target
     return &f->water.target;
 }
 
-static tarn_status draw_strips(frame_state *f, tarn_tile_sink sink, void *user)
+/* Strips [first, end) of the frame: the part's run of them (tarn_render_frame_part).
+ * Its ring starts with the opaque passes of the strips above `first` that strip
+ * first's refracted samples reach, as a whole frame's ring holds them then. */
+static tarn_status draw_strips(frame_state *f, int32_t first, int32_t end, tarn_tile_sink sink, void *user)
 {
     const tarn_frame_layout *l = &f->layout;
     tarn_tile_target ring = f->opaque; /* the frame's opaque buffers: the ring */
     f->ring = &ring;
     const int32_t strips = (f->config->height + l->tile - 1) / l->tile;
     const int32_t ahead = (l->ring_strips - 1) / 2; /* strips the opaque pass runs ahead */
-    int32_t drawn = 0;                              /* strips whose opaque pass is in the ring */
-    for (int32_t k = 0; k < strips; k++) {
+    int32_t drawn = first > ahead ? first - ahead : 0; /* the next strip whose opaque pass the ring takes */
+    for (int32_t k = first; k < end; k++) {
         for (; drawn < strips && drawn <= k + ahead; drawn++) {
             f->opaque = ring_slot(f, &ring, drawn, drawn % l->ring_strips);
             draw_opaque(f);
@@ -431,9 +434,45 @@ static tarn_status draw_strips(frame_state *f, tarn_tile_sink sink, void *user)
     return TARN_OK;
 }
 
-tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *config,
-                              void *memory, size_t memory_bytes, tarn_tile_sink sink, void *user)
+/* The part's tiles: every `parts`-th, from its own number on (counted round, not
+ * divided: the Cortex-M0 has no divider). */
+static tarn_status draw_tiles(frame_state *f, tarn_frame_part part, tarn_tile_sink sink, void *user)
 {
+    uint16_t turn = 0; /* the tile's number modulo the count; 0 without TARN_LINK_PARTS */
+    for (int32_t y = 0; y < f->config->height; y += f->layout.tile)
+        for (int32_t x = 0; x < f->config->width; x += f->layout.tile) {
+            if ((!TARN_LINK_PARTS || turn == part.index) && draw_tile(f, x, y, sink, user) != 0) return TARN_ERR_SINK;
+            if (TARN_LINK_PARTS) turn = turn + 1u == part.count ? 0u : (uint16_t)(turn + 1u);
+        }
+    return TARN_OK;
+}
+
+/* The first of `count` things that part `part` of `parts` takes when they are shared
+ * out in order, as evenly as they go: ceil(count * part / parts), found without a
+ * division (count is a frame's strips, at most a few hundred). */
+static int32_t share_start(int32_t count, uint32_t part, uint32_t parts)
+{
+    int32_t k = 0;
+    while ((uint32_t)k * parts < (uint32_t)count * part) k++;
+    return k;
+}
+
+/* The part's run of strips. */
+static tarn_status draw_strips_part(frame_state *f, tarn_frame_part part, tarn_tile_sink sink, void *user)
+{
+    const int32_t strips = (f->config->height + f->layout.tile - 1) / f->layout.tile;
+    return draw_strips(f, share_start(strips, part.index, part.count), share_start(strips, part.index + 1u, part.count),
+                       sink, user);
+}
+
+/* Out of line: tarn_render_frame calls it too, and an image that links both should
+ * hold the frame once (a copy inlined into each cost a Cortex-M0 image 1.2 KB). */
+TARN_NOINLINE tarn_status tarn_render_frame_part(const tarn_scene *scene, const tarn_frame_config *config,
+                                                 void *memory, size_t memory_bytes, tarn_frame_part part,
+                                                 tarn_tile_sink sink, void *user)
+{
+    if (TARN_LINK_PARTS ? part.count == 0u || part.index >= part.count : part.count != 1u || part.index != 0u)
+        return TARN_ERR_CONFIG;
     if (tarn__config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
     tarn_status status = tarn__scene_check(scene);
     if (status != TARN_OK) return status;
@@ -452,11 +491,15 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
     frame_begin(&f, memory);
     if (TARN_LINK_FOUND_BINS && f.found_bins != NULL) tarn__bin_clusters(scene, &view, f.found_bins);
     if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn__underwater_setup(&f.underwater, &view, config, scene->underwater);
-    if (TARN_LINK_STRIPS && f.layout.ring_strips != 0) return draw_strips(&f, sink, user);
-    for (int32_t y = 0; y < config->height; y += f.layout.tile)
-        for (int32_t x = 0; x < config->width; x += f.layout.tile)
-            if (draw_tile(&f, x, y, sink, user) != 0) return TARN_ERR_SINK;
-    return TARN_OK;
+    if (TARN_LINK_STRIPS && f.layout.ring_strips != 0) return draw_strips_part(&f, part, sink, user);
+    return draw_tiles(&f, part, sink, user);
+}
+
+tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *config,
+                              void *memory, size_t memory_bytes, tarn_tile_sink sink, void *user)
+{
+    const tarn_frame_part whole = {0u, 1u};
+    return tarn_render_frame_part(scene, config, memory, memory_bytes, whole, sink, user);
 }
 
 typedef struct {

@@ -8,7 +8,8 @@
  *             read from a backdrop), the water pass (in place, from a copy, or over
  *             still water), the underwater view, and the sink; or in strips of the
  *             whole width (TARN_FRAME_STRIPS), each strip's opaque pass drawn once
- *             into a ring, ahead of its water
+ *             into a ring, ahead of its water; tarn_render_frame_part draws one
+ *             part's share of the tiles or strips
  *   status.c  tarn_status_text and tarn_version
  *
  * It takes the scene, the config and the caller's memory, and hands each finished

@@ -155,6 +155,7 @@ static void print_link_switches(FILE *out)
         {"WATER_SHADING", TARN_LINK_WATER_SHADING},           {"APRON", TARN_LINK_APRON},
         {"REFRACTION_EXACT", TARN_LINK_REFRACTION_EXACT},     {"WATER_BLOCKS", TARN_LINK_WATER_BLOCKS},
         {"STRIPS", TARN_LINK_STRIPS},                         {"VERTEX_PASS", TARN_LINK_VERTEX_PASS},
+        {"PARTS", TARN_LINK_PARTS},
     };
     fputs("link switches:", out);
     for (size_t k = 0; k < sizeof switches / sizeof switches[0]; k++)

@@ -135,6 +135,13 @@
 #define TARN_LINK_VERTEX_PASS 1
 #endif
 
+/* A frame drawn in parts by several cores (tarn_render_frame_part with parts > 1):
+ * the code that shares the tiles and strips out. `tarn bake` leaves it to the
+ * build, which knows its cores: firmware/firmware.mk sets 0 on a board of one. */
+#ifndef TARN_LINK_PARTS
+#define TARN_LINK_PARTS 1
+#endif
+
 /* The underwater view (tarn_scene.h's underwater block). */
 #ifndef TARN_LINK_UNDERWATER
 #define TARN_LINK_UNDERWATER 1

@@ -265,6 +265,30 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
                               void *memory, size_t memory_bytes,
                               tarn_tile_sink sink, void *user);
 
+/* One part of a frame drawn by several workers: part `index` of `count`. */
+typedef struct {
+    uint16_t index; /* 0 .. count - 1 */
+    uint16_t count; /* the workers, at least 1 */
+} tarn_frame_part;
+
+/* Renders one part of a frame, so that `part.count` workers, each a core or a thread,
+ * draw a frame together. Each part delivers its own share of the frame's tiles to
+ * its sink, byte for byte as tarn_render_frame draws them; together the parts
+ * deliver every tile once, whatever their count. With tiles, part p draws the tiles
+ * whose number (left to right, top to bottom, from 0) is p modulo the count;
+ * with strips (TARN_FRAME_STRIPS), a run of consecutive strips, first drawing the
+ * opaque pass of the strips above its first that its refracted samples reach. Each
+ * part needs memory of its own, as tarn_render_frame does, and finds the frame's
+ * own work in it (the scene posed, the vertex pass, the cluster bins): that much is
+ * done once a part. The parts share nothing the core writes, so they may run at the
+ * same time; a sink they share must allow that. A count of 0 or an index past it
+ * is TARN_ERR_CONFIG, as is a count above 1 in a build without TARN_LINK_PARTS
+ * (tarn_config.h). tarn_render_frame is part 0 of 1. (One argument for both: a
+ * Cortex-M0 call passes each stack argument with code of its own.) */
+tarn_status tarn_render_frame_part(const tarn_scene *scene, const tarn_frame_config *config,
+                                   void *memory, size_t memory_bytes, tarn_frame_part part,
+                                   tarn_tile_sink sink, void *user);
+
 /* A vertex after transform, clipping and snapping: what the rasterizer sees. */
 typedef struct {
     int32_t x, y;        /* screen position in 1/2^subpixel_bits pixels */

@@ -1,0 +1,162 @@
+/* test_frame_parts.c: a frame drawn in parts (tarn_render_frame_part), each part in a
+ * thread of its own with memory of its own, all at once, is the frame
+ * tarn_render_frame draws, byte for byte, with every pixel delivered once: on every
+ * scene that two ways of drawing are tested on and the moving ones, at each preset,
+ * in tiles and in strips, for two, three and seven parts (seven is more than the
+ * strips of some frames: a part may draw nothing). */
+#include <pthread.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "frame_render.h"
+#include "scene_load.h"
+
+#define WIDTH 160
+#define HEIGHT 120
+#define PARTS_MAX 7u
+
+static const char *const moving_scenes[] = {"scenes/pond-orbit.json", "scenes/lake-drift.json"};
+static const tarn_preset presets[] = {TARN_PRESET_EXACT, TARN_PRESET_BALANCED, TARN_PRESET_FAST};
+static const char *const preset_names[] = {"exact", "balanced", "fast"};
+static const uint16_t part_counts[] = {2u, 3u, PARTS_MAX};
+
+/* The frame the parts draw together: its pixels, and how often each was delivered.
+ * The parts' tiles do not overlap, so the threads write apart. */
+typedef struct {
+    uint8_t rgb[3u * WIDTH * HEIGHT];
+    uint8_t deliveries[WIDTH * HEIGHT];
+} shared_frame;
+
+/* One part, run in its own thread. */
+typedef struct {
+    const tarn_scene *scene;
+    const tarn_frame_config *config;
+    tarn_frame_part part;
+    shared_frame *frame;
+    tarn_status status;
+} part_job;
+
+static int keep_tile(void *user, const tarn_tile *tile)
+{
+    shared_frame *frame = user;
+    for (uint16_t y = 0; y < tile->height; y++)
+        for (uint16_t x = 0; x < tile->width; x++) {
+            const uint32_t rgb = tile->rgb[(size_t)y * tile->stride + x];
+            const size_t k = (size_t)(tile->y + y) * WIDTH + (tile->x + x);
+            frame->rgb[3u * k] = (uint8_t)(rgb >> 16);
+            frame->rgb[3u * k + 1u] = (uint8_t)(rgb >> 8);
+            frame->rgb[3u * k + 2u] = (uint8_t)rgb;
+            frame->deliveries[k]++;
+        }
+    return 0;
+}
+
+static void *run_part(void *arg)
+{
+    part_job *job = arg;
+    const size_t bytes = tarn_frame_memory_bytes(job->config, job->scene);
+    void *memory = malloc(bytes);
+    job->status = memory == NULL ? TARN_ERR_MEMORY
+                                 : tarn_render_frame_part(job->scene, job->config, memory, bytes, job->part,
+                                                          keep_tile, job->frame);
+    free(memory);
+    return NULL;
+}
+
+/* The frame drawn by `parts` threads at once; fails the test if a part fails. */
+static void render_in_parts(const tarn_scene *scene, const tarn_frame_config *config, uint16_t parts,
+                            shared_frame *frame, const char *what)
+{
+    memset(frame, 0, sizeof *frame);
+    part_job jobs[PARTS_MAX];
+    pthread_t threads[PARTS_MAX];
+    for (uint16_t p = 0; p < parts; p++) {
+        const part_job job = {scene, config, {p, parts}, frame, TARN_OK};
+        jobs[p] = job;
+        if (pthread_create(&threads[p], NULL, run_part, &jobs[p]) != 0) fail_msg("%s: cannot start a thread", what);
+    }
+    for (uint16_t p = 0; p < parts; p++) pthread_join(threads[p], NULL);
+    for (uint16_t p = 0; p < parts; p++)
+        if (jobs[p].status != TARN_OK)
+            fail_msg("%s: part %u of %u returned %s", what, (unsigned)p, (unsigned)parts,
+                     tarn_status_text(jobs[p].status));
+}
+
+static void assert_parts_draw_the_frame(const tarn_scene *scene, const tarn_frame_config *config, const char *what)
+{
+    uint8_t *whole = test_render_rgb(scene, config, what);
+    shared_frame *frame = malloc(sizeof *frame);
+    assert_non_null(frame);
+    for (size_t n = 0; n < sizeof part_counts / sizeof part_counts[0]; n++) {
+        render_in_parts(scene, config, part_counts[n], frame, what);
+        for (size_t k = 0; k < (size_t)WIDTH * HEIGHT; k++)
+            if (frame->deliveries[k] != 1u)
+                fail_msg("%s in %u parts: pixel (%zu, %zu) delivered %u times", what, (unsigned)part_counts[n],
+                         k % WIDTH, k / WIDTH, (unsigned)frame->deliveries[k]);
+        if (memcmp(whole, frame->rgb, sizeof frame->rgb) != 0)
+            fail_msg("%s: %u parts draw another frame than one", what, (unsigned)part_counts[n]);
+    }
+    free(frame);
+    free(whole);
+}
+
+static void assert_scene_in_parts(const char *path)
+{
+    tarn_loaded_scene *loaded = malloc(sizeof *loaded);
+    assert_non_null(loaded);
+    tarn_error err;
+    if (tarn_scene_load(path, loaded, &err) != 0) fail_msg("%s", err.message);
+    for (size_t p = 0; p < sizeof presets / sizeof presets[0]; p++) {
+        tarn_frame_config config = {WIDTH, HEIGHT, tarn_quality_preset(presets[p]), 1234u};
+        char what[160];
+        snprintf(what, sizeof what, "%s (%s, tiles)", path, preset_names[p]);
+        assert_parts_draw_the_frame(&loaded->scene, &config, what);
+        config.quality.frame_shape = TARN_FRAME_STRIPS;
+        config.quality.tile_size = 16;
+        snprintf(what, sizeof what, "%s (%s, strips of 16 rows)", path, preset_names[p]);
+        assert_parts_draw_the_frame(&loaded->scene, &config, what);
+    }
+    tarn_scene_free(loaded);
+    free(loaded);
+}
+
+static void test_parts_draw_the_frame_together(void **state)
+{
+    (void)state;
+    for (size_t i = 0; i < TEST_FRAME_SCENE_COUNT; i++) assert_scene_in_parts(test_frame_scenes[i]);
+    for (size_t i = 0; i < sizeof moving_scenes / sizeof moving_scenes[0]; i++) assert_scene_in_parts(moving_scenes[i]);
+}
+
+/* No part 0 of 0, and no part past the last. */
+static void test_a_part_outside_the_parts_is_refused(void **state)
+{
+    (void)state;
+    tarn_loaded_scene loaded;
+    tarn_error err;
+    if (tarn_scene_load("scenes/pond.json", &loaded, &err) != 0) fail_msg("%s", err.message);
+    const tarn_frame_config config = {WIDTH, HEIGHT, tarn_quality_default(), 0u};
+    const size_t bytes = tarn_frame_memory_bytes(&config, &loaded.scene);
+    void *memory = malloc(bytes);
+    assert_non_null(memory);
+    const tarn_frame_part none = {0u, 0u}, past = {2u, 2u}, second = {1u, 2u};
+    assert_int_equal(tarn_render_frame_part(&loaded.scene, &config, memory, bytes, none, NULL, NULL), TARN_ERR_CONFIG);
+    assert_int_equal(tarn_render_frame_part(&loaded.scene, &config, memory, bytes, past, NULL, NULL), TARN_ERR_CONFIG);
+    assert_int_equal(tarn_render_frame_part(&loaded.scene, &config, memory, bytes, second, NULL, NULL), TARN_OK);
+    free(memory);
+    tarn_scene_free(&loaded);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_parts_draw_the_frame_together),
+        cmocka_unit_test(test_a_part_outside_the_parts_is_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
