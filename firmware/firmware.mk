@@ -226,7 +226,7 @@ endif
 $(FW_DIR)/firmware.conf: $(FW_BOARD_MK) firmware/firmware.mk FORCE
 	@mkdir -p $(FW_DIR)
 	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
-		"bake_flags=$(FW_BAKE_FLAGS)" "times=$(FW_TIMES)" "dither=1" "cross=$(FW_CROSS)" \
+		"bake_flags=$(FW_BAKE_FLAGS)" "times=$(FW_TIMES)" "cores=$(or $(BOARD_CORES),1)" "dither=1" "cross=$(FW_CROSS)" \
 		"stack_bytes=$(BOARD_STACK_BYTES)" "stack_entry=$(BOARD_STACK_ENTRY)" "emulated=$(if $(value BOARD_RUN),1,0)" \
 		"code_bytes_max=$(FW_CODE_BYTES_MAX)" "program=$(FW_MAIN)" "points=$(POINTS)" > $@.tmp
 	@if cmp -s $@.tmp $@; then rm $@.tmp; else mv $@.tmp $@; fi
@@ -259,12 +259,16 @@ $(FW_DIR)/scene.h $(FW_DIR)/scene_link.h: $(FW_DIR)/scene.c
 
 FW_CORE_OBJ := $(filter $(FW_DIR)/obj/core/%,$(FW_OBJ))
 $(FW_CORE_OBJ): $(FW_DIR)/scene_link.h
-$(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h
+# the part-sharing code only where the board has the cores to run parts on
+$(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h -DTARN_LINK_PARTS=$(if $(filter-out 0 1,$(or $(BOARD_CORES),1)),1,0)
 
 $(FW_OBJ): firmware/firmware.mk $(FW_BOARD_MK)
 FW_MAIN_OBJ := $(patsubst %,$(FW_DIR)/obj/firmware/%.o,main sweep_main display_main)
 $(FW_MAIN_OBJ): $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
-$(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"' -DFW_TIMES=$(FW_TIMES)
+# BOARD_CORES (board.mk, 1 unless given): the measured run also renders the frame
+# in that many parts and reports the slowest (firmware/main.c)
+$(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"' -DFW_TIMES=$(FW_TIMES) \
+	-DFW_PARTS=$(or $(BOARD_CORES),1) -DFW_STACK_BYTES=$(BOARD_STACK_BYTES)
 $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-distribute-patterns -fno-strict-aliasing
 # Code that runs once a frame, or once a water object a tile (the scene check and the
 # backdrop's, the motion, the view and water setup, the camera's unit vectors, the presets, the report), is compiled for
@@ -303,6 +307,10 @@ $(FW_DIR)/obj/%.o: %.S | fw-toolchain
 FW_LINK = $(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LDSCRIPT) -Lboards/common \
 	-Wl,--gc-sections -Wl,-Map=$(FW_DIR)/firmware.map -Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES) \
 	-o $(FW_ELF) $(FW_OBJ) $(FW_LIBS)
+# Where each core's stack starts, for the bound below (firmware/stack_bound.sh's
+# arguments): core 0's, and on a real board of two cores core 1's
+# (BOARD_SECOND_STACK_ENTRY, display_main.c's), whose stack is as large.
+FW_STACK_ENTRIES := "$(BOARD_STACK_ENTRY)" $(if $(BOARD_SECOND_STACK_ENTRY),"$(BOARD_SECOND_STACK_ENTRY)")
 $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) $(wildcard boards/common/*.ld) | fw-toolchain
 	$(call show,LD,$@)
 	$(call show_command,$(FW_LINK))
@@ -321,12 +329,14 @@ $(FW_ELF): $(FW_OBJ) $(BOARD_LDSCRIPT) $(wildcard boards/common/*.ld) | fw-toolc
 				"(the header of $(FW_DIR)/scene.c counts the bytes)" >&2; fi; \
 		rm -f $@; exit 1; fi
 	@cat $(FW_DIR)/link.err >&2; rm -f $(FW_DIR)/link.err
-	@bound=$$(firmware/stack_bound.sh $(FW_CROSS) $(FW_DIR)/obj $(BOARD_STACK_ENTRY) 2>&1 | sed -n 's/^stack_bytes=//p'); \
+	@for entry in $(FW_STACK_ENTRIES); do \
+	bound=$$(firmware/stack_bound.sh $(FW_CROSS) $(FW_DIR)/obj $$entry 2>&1 | sed -n 's/^stack_bytes=//p'); \
 	if [ -z "$$bound" ] || [ "$$bound" -gt $(BOARD_STACK_BYTES) ]; then \
-		firmware/stack_bound.sh $(FW_CROSS) $(FW_DIR)/obj $(BOARD_STACK_ENTRY) >&2; \
-		echo "tarn: $(BOARD)'s deepest call chain needs $${bound:-an unknown number of} bytes of stack;" \
+		firmware/stack_bound.sh $(FW_CROSS) $(FW_DIR)/obj $$entry >&2; \
+		case $$entry in "$(BOARD_SECOND_STACK_ENTRY)") chain="core 1's deepest call chain";; *) chain="deepest call chain";; esac; \
+		echo "tarn: $(BOARD)'s $$chain needs $${bound:-an unknown number of} bytes of stack;" \
 			"it reserves $(BOARD_STACK_BYTES) (BOARD_STACK_BYTES in boards/$(BOARD)/board.mk)" >&2; \
-		rm -f $@; exit 1; fi
+		rm -f $@; exit 1; fi; done
 
 # The host tools (firmware/tools/): the boot2 checksum and the UF2 writer.
 $(FW_TOOLS)/%: firmware/tools/%.c

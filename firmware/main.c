@@ -5,17 +5,22 @@
  *
  * One run: panel init, a frame at each of the FW_TIMES (ms; firmware.mk gives them:
  * 0, 1000 and 5000), all into the same panel stream, the 'E' record, then the frame
- * at the second time once more into a sink that drops the tiles, and one line of
- * text on the board's report channel:
+ * at the second time once more into a sink that drops the tiles (on a board of
+ * FW_PARTS cores, board.mk's BOARD_CORES, then that frame again in FW_PARTS parts,
+ * tarn_render_frame_part, one after the other, as the cores would draw them side by
+ * side), and one line of text on the board's report channel:
  *   target board=B scene=S size=WxH insn_per_pixel=N render_insn_per_pixel=N
- *          stack_peak_bytes=N frame_insn=N,N,N,N counter_check=N/2000000
+ *          [parts=N parts_insn_per_pixel=N] stack_peak_bytes=N frame_insn=N,N,N,N[,N]
+ *          counter_check=N/2000000
  * insn_per_pixel is the streamed frames' instructions (render, RGB565 conversion and
  * the board's writes of the panel stream) over their pixels, rounded to nearest: an
  * average over the three times (until issue 21 there were two, 0 and 1000 ms, and
- * the figure was their average); render_insn_per_pixel is the core alone (the last
- * frame, at the second time); frame_insn gives every frame's count, the streamed
- * ones first; counter_check is what the counter measured for a loop of exactly
- * 2000000 instructions (the board's tick-to-instruction ratio, checked).
+ * the figure was their average); render_insn_per_pixel is the core alone (the
+ * fourth frame, at the second time); parts_insn_per_pixel is the slowest of its
+ * parts, the core's time for the frame on the board's cores; frame_insn gives
+ * every frame's count, the streamed ones first, the parts together last;
+ * counter_check is what the counter measured for a loop of exactly 2000000
+ * instructions (the board's tick-to-instruction ratio, checked).
  *
  * build/firmware/BOARD/scene.h comes from `tarn bake SCENE -o scene.c --name scene`:
  * it declares scene_scene, scene_config and SCENE_MEMORY_BYTES. */
@@ -35,6 +40,9 @@
 #ifndef FW_DITHER
 #define FW_DITHER 1
 #endif
+#ifndef FW_PARTS
+#define FW_PARTS 1
+#endif
 
 /* The renderer's working memory: the only large buffer. */
 static uint32_t memory[(SCENE_MEMORY_BYTES + 3u) / 4u];
@@ -51,15 +59,25 @@ static int drop_tile(void *user, const tarn_tile *tile)
     return 0;
 }
 
-/* The report line; kept out of main() so that its buffer is not on the stack while
- * the frames render. Returns main's exit status. */
 /* The streamed frames' times, in ms. */
 static const uint32_t times[] = {FW_TIMES};
 #define STREAMED_FRAMES (sizeof times / sizeof times[0])
-#define FRAMES (STREAMED_FRAMES + 1u)
+#define CORE_FRAME STREAMED_FRAMES        /* the core alone, in one part */
+#define PARTS_FRAME (STREAMED_FRAMES + 1u) /* and in FW_PARTS, their sum */
+#define FRAMES (FW_PARTS > 1 ? STREAMED_FRAMES + 2u : STREAMED_FRAMES + 1u)
+#if FW_PARTS < 1
+#error "FW_PARTS: the board's cores (BOARD_CORES), at least 1"
+#endif
 
-static int __attribute__((noinline)) report_run(tarn_status status, const uint64_t frame_instructions[FRAMES],
-                                                uint64_t counter)
+/* What the run measured: every frame's instructions, and the slowest part's. Static:
+ * off the stack the frames render on. */
+static uint64_t frame_instructions[FRAMES];
+static uint64_t slowest_part;
+
+/* The report line, from every frame's instructions (`frames`); kept out of main() so
+ * that its buffer is not on the stack while the frames render. Returns main's exit
+ * status. */
+static int __attribute__((noinline)) report_run(tarn_status status, const uint64_t *frames, uint64_t counter)
 {
     report r = {{0}, 0};
     if (status != TARN_OK) {
@@ -74,17 +92,23 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
     uint64_t pixels = (uint64_t)scene_config.width * scene_config.height;
     report_frame_header(&r, "target", FW_BOARD_NAME, FW_SCENE_LABEL, scene_config.width, scene_config.height);
     uint64_t streamed = 0;
-    for (unsigned i = 0; i < STREAMED_FRAMES; i++) streamed += frame_instructions[i];
+    for (unsigned i = 0; i < STREAMED_FRAMES; i++) streamed += frames[i];
     report_text(&r, " insn_per_pixel=");
     report_number(&r, report_per_pixel(streamed, STREAMED_FRAMES * pixels));
     report_text(&r, " render_insn_per_pixel=");
-    report_number(&r, report_per_pixel(frame_instructions[STREAMED_FRAMES], pixels));
+    report_number(&r, report_per_pixel(frames[CORE_FRAME], pixels));
+    if (FW_PARTS > 1) {
+        report_text(&r, " parts=");
+        report_number(&r, FW_PARTS);
+        report_text(&r, " parts_insn_per_pixel=");
+        report_number(&r, report_per_pixel(slowest_part, pixels));
+    }
     report_text(&r, " stack_peak_bytes=");
     report_number(&r, board_stack_peak());
     report_text(&r, " frame_insn=");
     for (unsigned i = 0; i < FRAMES; i++) {
         if (i > 0) report_text(&r, ",");
-        report_number(&r, frame_instructions[i]);
+        report_number(&r, frames[i]);
     }
     report_text(&r, " counter_check=");
     report_number(&r, counter);
@@ -97,7 +121,7 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
 int main(void)
 {
     static panel_sink sink;
-    uint64_t frame_instructions[FRAMES] = {0};
+    const tarn_frame_part whole_frame = {0, 1};
     tarn_status status;
 
     if (board_init() != 0) return 2;
@@ -110,18 +134,33 @@ int main(void)
         tarn_frame_config config = scene_config;
         config.time_ms = times[i];
         uint64_t start = board_instructions();
-        status = tarn_render_frame(&scene_scene, &config, memory, sizeof memory,
-                                   panel_sink_send_tile, &sink);
+        status = tarn_render_frame_part(&scene_scene, &config, memory, sizeof memory, whole_frame,
+                                        panel_sink_send_tile, &sink);
         frame_instructions[i] = board_instructions() - start;
         status = panel_sink_frame_status(&sink, status);
     }
     if (stream_transport_end((uint8_t)status) != 0) return 2;
-    if (status == TARN_OK) { /* the core alone: the same frame, tiles dropped */
+    /* The core alone: the same frame, tiles dropped (rendered here, not in a helper: a
+     * frame more on the chain would overrun the 16 KB boards' stack reserve). */
+    if (status == TARN_OK) {
         tarn_frame_config config = scene_config;
         config.time_ms = times[1];
         uint64_t start = board_instructions();
-        status = tarn_render_frame(&scene_scene, &config, memory, sizeof memory, drop_tile, 0);
-        frame_instructions[STREAMED_FRAMES] = board_instructions() - start;
+        status = tarn_render_frame_part(&scene_scene, &config, memory, sizeof memory, whole_frame, drop_tile, 0);
+        frame_instructions[CORE_FRAME] = board_instructions() - start;
     }
+#if FW_PARTS > 1
+    /* and on a board of several cores the frame in FW_PARTS parts, one after the other */
+    for (uint16_t part = 0; part < FW_PARTS && status == TARN_OK; part++) {
+        tarn_frame_config config = scene_config;
+        config.time_ms = times[1];
+        const uint64_t start = board_instructions();
+        const tarn_frame_part one_of = {part, FW_PARTS};
+        status = tarn_render_frame_part(&scene_scene, &config, memory, sizeof memory, one_of, drop_tile, 0);
+        const uint64_t counted = board_instructions() - start;
+        frame_instructions[PARTS_FRAME] += counted;
+        if (counted > slowest_part) slowest_part = counted;
+    }
+#endif
     return report_run(status, frame_instructions, report_counter_check());
 }

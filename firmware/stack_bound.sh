@@ -1,12 +1,15 @@
 #!/bin/sh
 # stack_bound.sh: the deepest stack a firmware build can use, from GCC's call graphs.
 #
-# Usage: firmware/stack_bound.sh CROSS OBJDIR ENTRY [HANDLER:EXTRA_BYTES...]
+# Usage: firmware/stack_bound.sh CROSS OBJDIR ENTRY [HANDLER:EXTRA_BYTES | START:core ...]
 #   CROSS    the toolchain prefix (arm-none-eabi-), for readelf
 #   OBJDIR   where the objects and their .ci files are (-fcallgraph-info=su)
 #   ENTRY    the function the stack starts in (reset_handler, main)
 #   HANDLER  an interrupt handler that can preempt at any depth, and the bytes the
 #            hardware pushes before it runs (Cortex-M: 32, plus 4 of alignment)
+#   START    where another core's stack starts (display_main.c's second_core_main,
+#            or the reset handler seen from that core): its address is taken to
+#            start the core, never to be called through a pointer on this stack
 # Prints: stack_bytes=N, then the deepest path, one "bytes function" per line.
 #
 # Each function costs its own frame (.ci "N bytes (static)") plus its deepest callee.
@@ -98,11 +101,14 @@ function deepest(f,    list, n, i, c, d, best, via, k, own, was_tainted, mine) {
 END {
     n = split(taken, list, "\n")
     for (i = 1; i <= n; i++) if (list[i] in frame || list[i] in calls) address_taken[list[i]] = 1
+    n = split(handlers, hl, " ")
+    for (i = 1; i <= n; i++) if (hl[i] ~ /:core$/) { sub(/:core$/, "", hl[i]); delete address_taken[hl[i]] }
     if (!(entry in frame)) { print "stack_bound: no function " entry " in the call graph" > "/dev/stderr"; exit 2 }
     total = deepest(entry)
     worst_handler = 0; worst_name = ""
     n = split(handlers, hl, " ")
     for (i = 1; i <= n; i++) {
+        if (hl[i] ~ /:core$/) continue
         split(hl[i], part, ":")
         d = deepest(part[1]) + part[2]
         if (d > worst_handler) { worst_handler = d; worst_name = hl[i] }

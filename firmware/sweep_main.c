@@ -130,7 +130,8 @@ int main(void)
         config.time_ms = FW_TIME_1;
         sweep_sink sink = {0, 0, 0, 0};
         const uint64_t start = board_instructions();
-        tarn_status status = tarn_render_frame(&scene_scene, &config, memory, sizeof memory, sweep_tile, &sink);
+        const tarn_frame_part whole = {0, 1};
+        tarn_status status = tarn_render_frame_part(&scene_scene, &config, memory, sizeof memory, whole, sweep_tile, &sink);
         const uint64_t frame_instructions = board_instructions() - start - sink.sink_instructions;
         failed |= status != TARN_OK;
         unsent |= report_point(i, &config, status, frame_instructions, &sink) != 0;
