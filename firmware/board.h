@@ -54,4 +54,23 @@ size_t board_stack_peak(void);
  * the transport's delays and timeouts. Wraps after 49 days. */
 uint32_t board_milliseconds(void);
 
+/* ---- Real boards of two cores (BOARD_CORES := 2: firmware/display_main.c) ----
+ * Core 0 runs main(); these let it draw each frame with core 1, a part each
+ * (tarn_render_frame_part), both sending their tiles to the one panel. */
+
+/* Starts `entry` on core 1, on the stack that ends at `stack_top` (8-byte aligned),
+ * with the vector table core 0 runs on. Returns 0, or non-zero when core 1 did not
+ * answer within a second. */
+int board_second_core_start(void (*entry)(void), uint32_t *stack_top);
+
+/* A word to the other core, waiting while its queue is full; and the next word from
+ * it, waiting until one comes. */
+void board_core_send(uint32_t word);
+uint32_t board_core_receive(void);
+
+/* The panel's lock: a core holds it while it sends a tile (its window and pixels
+ * must not mix with the other core's), waiting while the other holds it. */
+void board_panel_lock(void);
+void board_panel_unlock(void);
+
 #endif

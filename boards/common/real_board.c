@@ -1,6 +1,7 @@
 /* real_board.c: board.h's real-board side, the same on every real Cortex-M board:
  * board_init brings the clocks up, starts the millisecond tick and sets up the
- * panel's link; board_milliseconds reads the tick; board_exit (an exit or a fault)
+ * panel's link; board_milliseconds reads the tick (unless the board's clock.h sets
+ * CLOCK_OWN_MILLISECONDS and its clock.c gives its own); board_exit (an exit or a fault)
  * resets the chip, since there is nobody to report to.
  *
  * What differs from board to board comes from the board's own folder (on the
@@ -31,10 +32,12 @@ int board_init(void)
     return 0;
 }
 
+#ifndef CLOCK_OWN_MILLISECONDS /* a board whose clock.c gives its own (clock.h says) */
 uint32_t board_milliseconds(void)
 {
     return (uint32_t)(systick_ticks() / TICKS_PER_MS);
 }
+#endif
 
 /* The DSB before the request lets the writes in flight finish; the one after it
  * completes the request's own write before the loop that waits for the reset (the

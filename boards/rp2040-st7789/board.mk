@@ -3,13 +3,16 @@
 # ST7789 240x240 on SPI0, fed by DMA channel 0 while the next tile renders. The
 # output to flash is firmware.uf2 (hold BOOTSEL, copy it). It renders the moving pond
 # (the camera circling, each frame at the board's millisecond clock) at the default
-# quality: its renderer memory, two 8,192-byte tile
-# buffers and an 8 KB stack in 256 KB (README.md gives the figures). Variables read
+# quality, on both cores, half a frame each: for each core its renderer memory, two
+# 8,192-byte tile buffers and an 8 KB stack in 256 KB (README.md gives the figures). Variables read
 # by firmware/firmware.mk; the rest, as for every real board, from
 # boards/common/real_board.mk.
 BOARD_DIR := boards/rp2040-st7789
 BOARD_CPU := -mcpu=cortex-m0plus -mthumb -mfloat-abi=soft
 BOARD_STACK_BYTES := 8192
+# both cores draw each frame, a part each (firmware/display_main.c, cores.c); core 1
+# has memory, tile buffers and a stack of its own
+BOARD_CORES := 2
 BOARD_SCENES := scenes/pond-orbit.json
 BOARD_BAKE_FLAGS :=
 # the second stage the bootrom loads (checksummed at build time), and the UF2 output
@@ -17,3 +20,8 @@ BOARD_BOOT2 := boards/rp2040-st7789/boot2.S
 BOARD_FLASH_BASE := 0x10000000
 BOARD_UF2_FAMILY := 0xe48bff56
 include boards/common/real_board.mk
+BOARD_SRC += $(BOARD_DIR)/cores.c
+# each core's stack for firmware/stack_bound.sh: core 0's from the reset handler, and
+# core 1's, as large, from its entry; each starts the other's without calling it
+BOARD_STACK_ENTRY += second_core_main:core
+BOARD_SECOND_STACK_ENTRY := second_core_main reset_handler:core

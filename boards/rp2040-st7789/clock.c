@@ -1,7 +1,7 @@
 /* clock.c: the RP2040's clocks, from the datasheet:
  *
  * - Resets (§2.14): every block this board uses (PLL_SYS, IO_BANK0, PADS_BANK0,
- *   SPI0, DMA) is taken out of reset here, and used only once RESET_DONE says so.
+ *   SPI0, DMA, TIMER) is taken out of reset here, and used only once RESET_DONE says so.
  * - XOSC (§2.16): FREQ_RANGE 1_15MHZ for the 12 MHz crystal; STARTUP.DELAY counts
  *   256-cycle units, and 47 of them (about 1 ms) is the crystal's settling time
  *   (§2.16.3); then ENABLE, and STABLE before anything uses it.
@@ -12,9 +12,11 @@
  *   post dividers, then power them up (the order of §2.18.2.1).
  * - clk_sys: AUXSRC clksrc_pll_sys, then SRC to the aux source; clk_peri: enabled,
  *   from clk_sys (§2.15.7).
+ * - The TIMER (§4.6): its microsecond tick is the watchdog's, clk_ref / 12 (§4.7.2).
  *
  * Every wait is a bounded loop: a clock that does not come up makes board_init fail
  * (the board then resets) rather than hang. */
+#include "board.h"
 #include "clock.h"
 #include "rp2040.h"
 #include "wait_for_bits.h"
@@ -24,7 +26,7 @@
 #define PLL_FBDIV 125u
 #define PLL_POSTDIV1 6u
 #define PLL_POSTDIV2 2u
-#define USED_BLOCKS (RESETS_PLL_SYS | RESETS_IO_BANK0 | RESETS_PADS_BANK0 | RESETS_SPI0 | RESETS_DMA)
+#define USED_BLOCKS (RESETS_PLL_SYS | RESETS_IO_BANK0 | RESETS_PADS_BANK0 | RESETS_SPI0 | RESETS_DMA | RESETS_TIMER)
 
 int clock_init(void)
 {
@@ -57,5 +59,18 @@ int clock_init(void)
     if (wait_for_bits(&CLK_SYS_SELECTED, 2u, 2u) != 0) return 1;
 
     CLK_PERI_CTRL = CLK_PERI_CTRL_ENABLE | CLK_PERI_CTRL_AUXSRC_CLK_SYS;
+    WATCHDOG_TICK = WATCHDOG_TICK_ENABLE | CLOCK_REF_HZ / 1000000u;
     return 0;
+}
+
+/* The TIMER's microseconds in milliseconds: the high word read again until the low
+ * one was read within it. */
+uint32_t board_milliseconds(void)
+{
+    uint32_t high, low;
+    do {
+        high = TIMER_TIMERAWH;
+        low = TIMER_TIMERAWL;
+    } while (high != TIMER_TIMERAWH);
+    return (uint32_t)((((uint64_t)high << 32) | low) / 1000u);
 }

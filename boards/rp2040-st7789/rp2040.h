@@ -26,6 +26,7 @@
 #define RESETS_PADS_BANK0 (1u << 8)
 #define RESETS_PLL_SYS (1u << 12)
 #define RESETS_SPI0 (1u << 16)
+#define RESETS_TIMER (1u << 21)
 
 /* Crystal oscillator XOSC, datasheet §2.16 */
 #define XOSC_BASE 0x40024000u
@@ -72,8 +73,16 @@
 #define GPIO_FUNC_SPI 1u
 #define GPIO_FUNC_SIO 5u
 
-/* SIO, datasheet §2.3.1.7: the processor's own GPIO outputs */
+/* SIO, datasheet §2.3.1.7: the processor's own GPIO outputs; §2.3.1.4 the FIFOs
+ * between the cores (each core writes to the other's and reads its own); §2.3.1.3
+ * the 32 hardware spinlocks (a read claims, non-zero when it did; a write frees). */
 #define SIO_BASE 0xD0000000u
+#define SIO_FIFO_ST RP_REG(SIO_BASE + 0x050u)
+#define SIO_FIFO_ST_VLD (1u << 0) /* a word to read */
+#define SIO_FIFO_ST_RDY (1u << 1) /* room to write */
+#define SIO_FIFO_WR RP_REG(SIO_BASE + 0x054u)
+#define SIO_FIFO_RD RP_REG(SIO_BASE + 0x058u)
+#define SIO_SPINLOCK(n) RP_REG(SIO_BASE + 0x100u + 4u * (n))
 #define SIO_GPIO_OUT_SET RP_REG(SIO_BASE + 0x014u)
 #define SIO_GPIO_OUT_CLR RP_REG(SIO_BASE + 0x018u)
 #define SIO_GPIO_OE_SET RP_REG(SIO_BASE + 0x024u)
@@ -95,6 +104,17 @@
 #define SPI0_SSPCPSR RP_REG(SPI0_BASE + 0x010u)
 #define SPI0_SSPDMACR RP_REG(SPI0_BASE + 0x024u)
 #define SSPDMACR_TXDMAE (1u << 1)
+
+/* The watchdog's tick (§4.7.2): clk_ref divided by CYCLES, the TIMER's microsecond;
+ * and the TIMER (§4.6.5), read raw: the high word, the low, the high again. */
+#define WATCHDOG_TICK RP_REG(0x40058000u + 0x02Cu)
+#define WATCHDOG_TICK_ENABLE (1u << 9) /* CYCLES: bits 8:0 */
+#define TIMER_TIMERAWH RP_REG(0x40054000u + 0x024u)
+#define TIMER_TIMERAWL RP_REG(0x40054000u + 0x028u)
+
+/* The core's System Control Block: the vector table's address (VTOR), which boot2
+ * set and core 1 takes too. */
+#define SCB_VTOR RP_REG(0xE000ED08u)
 
 /* DMA, datasheet §2.5.7: channel 0's registers, the abort register, and the
  * transfer request of SPI0's transmit FIFO (DREQ_SPI0_TX, §2.5.3.1). */
