@@ -49,6 +49,11 @@ OPT := -O2 -g
 ifeq ($(SAN),1)
 OPT := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
 endif
+# the frame drawn in parts by threads at once (tests/test_frame_parts.c), under
+# ThreadSanitizer: the parts share nothing the core writes
+ifeq ($(SAN),thread)
+OPT := -O1 -g -fno-omit-frame-pointer -fsanitize=thread
+endif
 
 CORE_CFLAGS := -std=c99 -pedantic $(WARN) $(OPT) -Icore -Icore/include
 # Display backends, each optional and found by pkg-config: libgpiod 1.x (Debian 12)
@@ -109,6 +114,7 @@ demo: deps
 # by tests/test_firmware.c), one sweep of several qualities on qemu-m0
 # (tests/check_firmware_sweep.sh), tarn sweep's quick grid and the published
 # presets re-measured (tests/check_sweep.sh), a plain build, then the same tests under ASan + UBSan,
+# then the frame in parts, by threads at once, under ThreadSanitizer,
 # then the check that core/ stays integer-only on a Cortex-M0, then the core as a
 # package (make install, CMake, PlatformIO: tests/check_packages.sh), then the firmware's
 # sizes, stack and counter, then every measured figure of the docs against what the
@@ -131,6 +137,10 @@ test: deps-test
 		echo "make check BUILD=build/release: $$(cat build/release/failed 2>/dev/null | tr '\n' ' ')" >> $(TEST_FAILED)
 	@$(MAKE) --no-print-directory check BUILD=build/san SAN=1 || \
 		echo "make check BUILD=build/san SAN=1: $$(cat build/san/failed 2>/dev/null | tr '\n' ' ')" >> $(TEST_FAILED)
+	@$(MAKE) --no-print-directory BUILD=build/tsan SAN=thread build/tsan/tests/test_frame_parts && \
+		TSAN_OPTIONS=halt_on_error=1 build/tsan/tests/test_frame_parts >build/tsan/test_frame_parts.log 2>&1 && \
+		echo "threads: the frame in parts under ThreadSanitizer: no race" || \
+		{ tail -30 build/tsan/test_frame_parts.log; echo 'tests/test_frame_parts.c under ThreadSanitizer' >> $(TEST_FAILED); }
 	@$(MAKE) --no-print-directory core-purity $(call test_failed,make core-purity)
 	@tests/check_packages.sh $(call test_failed,tests/check_packages.sh)
 	@TARN_BIN=build/release/tarn WATER_COST_OUT=build/release/water-cost.txt tests/check_water_cost.sh \
