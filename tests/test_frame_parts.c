@@ -2,8 +2,8 @@
  * thread of its own with memory of its own, all at once, is the frame
  * tarn_render_frame draws, byte for byte, with every pixel delivered once: on every
  * scene that two ways of drawing are tested on and the moving ones, at each preset,
- * in tiles and in strips, for two, three and seven parts (seven is more than the
- * strips of some frames: a part may draw nothing). */
+ * in tiles and in strips of 16 and 48 rows, for two, three and seven parts (seven
+ * is more than 48-row strips make of the frame: some parts draw nothing). */
 #include <pthread.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -117,10 +117,13 @@ static void assert_scene_in_parts(const char *path)
         char what[160];
         snprintf(what, sizeof what, "%s (%s, tiles)", path, preset_names[p]);
         assert_parts_draw_the_frame(&loaded->scene, &config, what);
+        static const uint8_t rows[] = {16, 48};
         config.quality.frame_shape = TARN_FRAME_STRIPS;
-        config.quality.tile_size = 16;
-        snprintf(what, sizeof what, "%s (%s, strips of 16 rows)", path, preset_names[p]);
-        assert_parts_draw_the_frame(&loaded->scene, &config, what);
+        for (size_t r = 0; r < sizeof rows; r++) {
+            config.quality.tile_size = rows[r];
+            snprintf(what, sizeof what, "%s (%s, strips of %u rows)", path, preset_names[p], (unsigned)rows[r]);
+            assert_parts_draw_the_frame(&loaded->scene, &config, what);
+        }
     }
     tarn_scene_free(loaded);
     free(loaded);

@@ -434,7 +434,7 @@ static tarn_status draw_strips(frame_state *f, int32_t first, int32_t end, tarn_
     return TARN_OK;
 }
 
-/* The part's tiles: every `parts`-th, from its own number on (counted round, not
+/* The part's tiles: every count-th, from its own index on (counted round, not
  * divided: the Cortex-M0 has no divider). */
 static tarn_status draw_tiles(frame_state *f, tarn_frame_part part, tarn_tile_sink sink, void *user)
 {
