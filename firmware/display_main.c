@@ -39,27 +39,15 @@
 
 #define TILE_BUFFER_BYTES (2u * SCENE_PIECE_WIDTH * SCENE_PIECE_ROWS)
 
-/* The renderer's working memory, and the two tile buffers the DMA sends from. */
-static uint32_t memory[(SCENE_MEMORY_BYTES + 3u) / 4u];
-static uint8_t tile_rgb565[2][TILE_BUFFER_BYTES];
+/* Each core's own: the renderer's working memory, the two tile buffers the DMA
+ * sends from, and the sink that fills them. */
+static uint32_t memory[FW_PARTS][(SCENE_MEMORY_BYTES + 3u) / 4u];
+static uint8_t tile_rgb565[FW_PARTS][2][TILE_BUFFER_BYTES];
+static panel_sink sinks[FW_PARTS];
 
 #if FW_PARTS == 1
-static tarn_status show_frame(panel_sink *sink)
-{
-    tarn_frame_config config = scene_config;
-    config.time_ms = board_milliseconds();
-    const tarn_frame_part whole = {0, 1};
-    tarn_status status = tarn_render_frame_part(&scene_scene, &config, memory, sizeof memory, whole,
-                                                panel_sink_send_tile, sink);
-    return panel_sink_frame_status(sink, status);
-}
-#elif FW_PARTS == 2
-/* Core 1's own: memory, tile buffers, sink and stack. */
-static uint32_t second_memory[(SCENE_MEMORY_BYTES + 3u) / 4u];
-static uint8_t second_tile_rgb565[2][TILE_BUFFER_BYTES];
-static panel_sink second_sink;
-static uint64_t second_stack[FW_STACK_BYTES / 8u];
-
+#define SEND_TILE panel_sink_send_tile
+#else
 /* A tile to the panel while holding its lock. */
 static int send_tile_locked(void *user, const tarn_tile *tile)
 {
@@ -68,32 +56,43 @@ static int send_tile_locked(void *user, const tarn_tile *tile)
     board_panel_unlock();
     return stop;
 }
+#define SEND_TILE send_tile_locked
+#endif
 
-/* The part `part` of the frame at `time_ms` through `sink`, and the frame's status. */
-static tarn_status show_part(uint32_t time_ms, uint32_t *part_memory, uint16_t part, panel_sink *sink)
+/* Part `part` of the frame at `time_ms`, in that part's memory and through its sink;
+ * the frame's status. */
+static tarn_status show_part(uint32_t time_ms, uint16_t part)
 {
     tarn_frame_config config = scene_config;
     config.time_ms = time_ms;
-    const tarn_frame_part half = {part, 2};
-    const tarn_status status = tarn_render_frame_part(&scene_scene, &config, part_memory, sizeof memory, half,
-                                                      send_tile_locked, sink);
-    return panel_sink_frame_status(sink, status);
+    const tarn_frame_part share = {part, FW_PARTS};
+    const tarn_status status = tarn_render_frame_part(&scene_scene, &config, memory[part], sizeof memory[part], share,
+                                                      SEND_TILE, &sinks[part]);
+    return panel_sink_frame_status(&sinks[part], status);
 }
+
+#if FW_PARTS == 1
+static tarn_status show_frame(void)
+{
+    return show_part(board_milliseconds(), 0);
+}
+#elif FW_PARTS == 2
+static uint64_t second_stack[FW_STACK_BYTES / 8u];
 
 /* Core 1: part 1 of each frame whose time core 0 sends, its status sent back. */
 static void second_core_main(void)
 {
     for (;;) {
         const uint32_t time_ms = board_core_receive();
-        board_core_send((uint32_t)show_part(time_ms, second_memory, 1, &second_sink));
+        board_core_send((uint32_t)show_part(time_ms, 1));
     }
 }
 
-static tarn_status show_frame(panel_sink *sink)
+static tarn_status show_frame(void)
 {
     const uint32_t time_ms = board_milliseconds();
     board_core_send(time_ms);
-    const tarn_status own = show_part(time_ms, memory, 0, sink);
+    const tarn_status own = show_part(time_ms, 0);
     const tarn_status second = (tarn_status)board_core_receive();
     return own != TARN_OK ? own : second;
 }
@@ -103,20 +102,19 @@ static tarn_status show_frame(panel_sink *sink)
 
 int main(void)
 {
-    static panel_sink sink;
     if (board_init() != 0) return 2;
     const tarn_panel_transport *transport = board_panel_transport();
     const tarn_panel panel = tarn_panel_preset(TARN_PANEL_ST7789_240X240, 0);
-    panel_sink_init(&sink, panel, transport, tile_rgb565[0], tile_rgb565[1], TILE_BUFFER_BYTES, FW_DITHER);
+    for (uint16_t part = 0; part < FW_PARTS; part++)
+        panel_sink_init(&sinks[part], panel, transport, tile_rgb565[part][0], tile_rgb565[part][1], TILE_BUFFER_BYTES,
+                        FW_DITHER);
 #if FW_PARTS == 2
-    panel_sink_init(&second_sink, panel, transport, second_tile_rgb565[0], second_tile_rgb565[1], TILE_BUFFER_BYTES,
-                    FW_DITHER);
     if (board_second_core_start(second_core_main, (uint32_t *)(second_stack + sizeof second_stack / 8u)) != 0)
         return 2;
 #endif
     for (;;) {
-        tarn_status status = tarn_panel_init(&sink.panel, transport);
-        while (status == TARN_OK) status = show_frame(&sink);
+        tarn_status status = tarn_panel_init(&panel, transport);
+        while (status == TARN_OK) status = show_frame();
         (void)transport->delay_ms(transport->user, RETRY_DELAY_MS);
     }
 }

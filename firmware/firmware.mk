@@ -226,7 +226,7 @@ endif
 $(FW_DIR)/firmware.conf: $(FW_BOARD_MK) firmware/firmware.mk FORCE
 	@mkdir -p $(FW_DIR)
 	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
-		"bake_flags=$(FW_BAKE_FLAGS)" "times=$(FW_TIMES)" "cores=$(or $(BOARD_CORES),1)" "dither=1" "cross=$(FW_CROSS)" \
+		"bake_flags=$(FW_BAKE_FLAGS)" "times=$(FW_TIMES)" "cores=$(FW_CORES)" "dither=1" "cross=$(FW_CROSS)" \
 		"stack_bytes=$(BOARD_STACK_BYTES)" "stack_entry=$(BOARD_STACK_ENTRY)" "emulated=$(if $(value BOARD_RUN),1,0)" \
 		"code_bytes_max=$(FW_CODE_BYTES_MAX)" "program=$(FW_MAIN)" "points=$(POINTS)" > $@.tmp
 	@if cmp -s $@.tmp $@; then rm $@.tmp; else mv $@.tmp $@; fi
@@ -257,18 +257,20 @@ $(FW_DIR)/scene.c: $(FW_SCENE) $(FW_TARN) $(FW_DIR)/firmware.conf $(if $(FW_POIN
 
 $(FW_DIR)/scene.h $(FW_DIR)/scene_link.h: $(FW_DIR)/scene.c
 
+# The board's cores (BOARD_CORES in board.mk, 1 unless given): with more than one,
+# the core is built with the code that shares a frame out (TARN_LINK_PARTS) and the
+# measured run also renders the frame in that many parts (firmware/main.c).
+FW_CORES := $(or $(BOARD_CORES),1)
+FW_LINK_PARTS := $(if $(filter-out 1,$(FW_CORES)),1,0)
 FW_CORE_OBJ := $(filter $(FW_DIR)/obj/core/%,$(FW_OBJ))
-$(FW_CORE_OBJ): $(FW_DIR)/scene_link.h
-# the part-sharing code only where the board has the cores to run parts on
-$(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h -DTARN_LINK_PARTS=$(if $(filter-out 0 1,$(or $(BOARD_CORES),1)),1,0)
+$(FW_CORE_OBJ): $(FW_DIR)/scene_link.h $(FW_DIR)/firmware.conf
+$(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h -DTARN_LINK_PARTS=$(FW_LINK_PARTS)
 
 $(FW_OBJ): firmware/firmware.mk $(FW_BOARD_MK)
 FW_MAIN_OBJ := $(patsubst %,$(FW_DIR)/obj/firmware/%.o,main sweep_main display_main)
 $(FW_MAIN_OBJ): $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
-# BOARD_CORES (board.mk, 1 unless given): the measured run also renders the frame
-# in that many parts and reports the slowest (firmware/main.c)
 $(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"' -DFW_TIMES=$(FW_TIMES) \
-	-DFW_PARTS=$(or $(BOARD_CORES),1) -DFW_STACK_BYTES=$(BOARD_STACK_BYTES)
+	-DFW_PARTS=$(FW_CORES) -DFW_STACK_BYTES=$(BOARD_STACK_BYTES)
 $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-distribute-patterns -fno-strict-aliasing
 # Code that runs once a frame, or once a water object a tile (the scene check and the
 # backdrop's, the motion, the view and water setup, the camera's unit vectors, the presets, the report), is compiled for

@@ -409,15 +409,27 @@ static const tarn_tile_target *draw_strip_water(frame_state *f, tarn_tile_target
     return &f->water.target;
 }
 
-/* Strips [first, end) of the frame: the part's run of them (tarn_render_frame_part).
- * Its ring starts with the opaque passes of the strips above `first` that strip
- * first's refracted samples reach, as a whole frame's ring holds them then. */
-static tarn_status draw_strips(frame_state *f, int32_t first, int32_t end, tarn_tile_sink sink, void *user)
+/* The first of `count` things that part `part` of `parts` takes when they are shared
+ * out in order, as evenly as they go: ceil(count * part / parts), found without a
+ * division (count is a frame's strips, at most a few hundred). */
+static int32_t share_start(int32_t count, uint32_t part, uint32_t parts)
+{
+    int32_t k = 0;
+    while ((uint32_t)k * parts < (uint32_t)count * part) k++;
+    return k;
+}
+
+/* The part's run of strips, shared out in order as evenly as they go. Its ring
+ * starts with the opaque passes of the strips above its first one that the first
+ * one's refracted samples reach, as a whole frame's ring holds them then. */
+static tarn_status draw_strips(frame_state *f, tarn_frame_part part, tarn_tile_sink sink, void *user)
 {
     const tarn_frame_layout *l = &f->layout;
     tarn_tile_target ring = f->opaque; /* the frame's opaque buffers: the ring */
     f->ring = &ring;
     const int32_t strips = (f->config->height + l->tile - 1) / l->tile;
+    const int32_t first = share_start(strips, part.index, part.count);
+    const int32_t end = share_start(strips, part.index + 1u, part.count);
     const int32_t ahead = (l->ring_strips - 1) / 2; /* strips the opaque pass runs ahead */
     int32_t drawn = first > ahead ? first - ahead : 0; /* the next strip whose opaque pass the ring takes */
     for (int32_t k = first; k < end; k++) {
@@ -447,26 +459,8 @@ static tarn_status draw_tiles(frame_state *f, tarn_frame_part part, tarn_tile_si
     return TARN_OK;
 }
 
-/* The first of `count` things that part `part` of `parts` takes when they are shared
- * out in order, as evenly as they go: ceil(count * part / parts), found without a
- * division (count is a frame's strips, at most a few hundred). */
-static int32_t share_start(int32_t count, uint32_t part, uint32_t parts)
-{
-    int32_t k = 0;
-    while ((uint32_t)k * parts < (uint32_t)count * part) k++;
-    return k;
-}
-
-/* The part's run of strips. */
-static tarn_status draw_strips_part(frame_state *f, tarn_frame_part part, tarn_tile_sink sink, void *user)
-{
-    const int32_t strips = (f->config->height + f->layout.tile - 1) / f->layout.tile;
-    return draw_strips(f, share_start(strips, part.index, part.count), share_start(strips, part.index + 1u, part.count),
-                       sink, user);
-}
-
 /* Out of line: tarn_render_frame calls it too, and an image that links both should
- * hold the frame once (a copy inlined into each cost a Cortex-M0 image 1.2 KB). */
+ * hold the frame once (on the Cortex-M0 it is about 1.2 KB of code). */
 TARN_NOINLINE tarn_status tarn_render_frame_part(const tarn_scene *scene, const tarn_frame_config *config,
                                                  void *memory, size_t memory_bytes, tarn_frame_part part,
                                                  tarn_tile_sink sink, void *user)
@@ -491,7 +485,7 @@ TARN_NOINLINE tarn_status tarn_render_frame_part(const tarn_scene *scene, const 
     frame_begin(&f, memory);
     if (TARN_LINK_FOUND_BINS && f.found_bins != NULL) tarn__bin_clusters(scene, &view, f.found_bins);
     if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn__underwater_setup(&f.underwater, &view, config, scene->underwater);
-    if (TARN_LINK_STRIPS && f.layout.ring_strips != 0) return draw_strips_part(&f, part, sink, user);
+    if (TARN_LINK_STRIPS && f.layout.ring_strips != 0) return draw_strips(&f, part, sink, user);
     return draw_tiles(&f, part, sink, user);
 }
 
