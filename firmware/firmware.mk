@@ -286,6 +286,15 @@ FW_SIZE_OBJ := $(patsubst %,$(FW_DIR)/obj/%.o,$(basename $(wildcard core/scene/*
 	core/water/water_setup core/water/underwater_setup core/frame/layout core/frame/status firmware/report \
 	$(if $(BOARD_CODE_BYTES_MAX),core/frame/frame core/geometry/vertex core/geometry/clip core/geometry/project core/raster/triangle_setup))
 $(FW_SIZE_OBJ): FW_DEFINES += -Os
+# Where flash allows (a board without BOARD_CODE_BYTES_MAX), the stages that run
+# once a pixel of water, a vertex, a triangle or a bin, and the arithmetic they
+# call, are compiled for speed: -O3's inlining and unrolling take about 6% off the
+# moving pond's instructions a pixel on qemu-m0-264k and about 2% off the opaque
+# pond's, for about 4.5 KB of code. Not the opaque span loops (core/raster/raster.c):
+# there -O3 made the opaque pond about 4% slower.
+FW_SPEED_OBJ := $(if $(BOARD_CODE_BYTES_MAX),,$(filter-out $(FW_SIZE_OBJ),$(patsubst %.c,$(FW_DIR)/obj/%.o,\
+	$(wildcard core/water/*.c core/math/*.c core/geometry/*.c core/tile/*.c) core/raster/triangle_setup.c)))
+$(FW_SPEED_OBJ): FW_DEFINES += -O3
 
 $(FW_DIR)/obj/%.o: %.c | fw-toolchain
 	@mkdir -p $(dir $@)
