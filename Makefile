@@ -130,6 +130,7 @@ test_failed = || echo '$(1)' >> $(TEST_FAILED)
 test: deps-test
 	@mkdir -p build && rm -f $(TEST_FAILED) $(foreach b,release san,build/$(b)/summary build/$(b)/failed)
 	@$(MAKE) --no-print-directory firmware-run BOARD= $(call test_failed,make firmware-run)
+	@tests/check_ram_code.sh $(call test_failed,tests/check_ram_code.sh)
 	+@tests/check_firmware_sweep.sh $(call test_failed,tests/check_firmware_sweep.sh)
 	@$(MAKE) --no-print-directory all $(call test_failed,make $(TARN))
 	+@TARN_BIN=$(TARN) tests/check_sweep.sh $(call test_failed,tests/check_sweep.sh)

@@ -228,7 +228,7 @@ $(FW_DIR)/firmware.conf: $(FW_BOARD_MK) firmware/firmware.mk FORCE
 	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
 		"bake_flags=$(FW_BAKE_FLAGS)" "times=$(FW_TIMES)" "cores=$(FW_CORES)" "dither=1" "cross=$(FW_CROSS)" \
 		"stack_bytes=$(BOARD_STACK_BYTES)" "stack_entry=$(BOARD_STACK_ENTRY)" "emulated=$(if $(value BOARD_RUN),1,0)" \
-		"code_bytes_max=$(FW_CODE_BYTES_MAX)" "program=$(FW_MAIN)" "points=$(POINTS)" > $@.tmp
+		"code_bytes_max=$(FW_CODE_BYTES_MAX)" "program=$(FW_MAIN)" "points=$(POINTS)" "ram_code=$(BOARD_RAM_CODE)" > $@.tmp
 	@if cmp -s $@.tmp $@; then rm $@.tmp; else mv $@.tmp $@; fi
 
 .PHONY: FORCE fw-toolchain fw-qemu
@@ -295,11 +295,19 @@ $(FW_SIZE_OBJ): FW_DEFINES += -Os
 FW_SPEED_OBJ := $(if $(BOARD_CODE_BYTES_MAX),,$(filter-out $(FW_SIZE_OBJ),$(patsubst %.c,$(FW_DIR)/obj/%.o,\
 	$(wildcard core/water/*.c core/math/*.c core/geometry/*.c core/tile/*.c) core/raster/triangle_setup.c)))
 $(FW_SPEED_OBJ): FW_DEFINES += -O3
+# Code a board runs from RAM (BOARD_RAM_CODE: folders or files of the core), where its
+# flash is slow to fetch from: each object's sections are renamed .ram.* once it is
+# compiled, and the link script copies them into RAM with .data at reset
+# (boards/common/cortex_m_sections.ld). Calls between RAM and flash go through the
+# linker's long-branch veneers: they are a frame's few, not a pixel's.
+FW_RAM_OBJ := $(patsubst %.c,$(FW_DIR)/obj/%.o,$(foreach p,$(BOARD_RAM_CODE),$(if $(filter %.c,$(p)),$(p),$(wildcard $(p)/*.c))))
+$(FW_RAM_OBJ): FW_PLACE = $(FW_CROSS)objcopy --prefix-alloc-sections=.ram $@
 
 $(FW_DIR)/obj/%.o: %.c | fw-toolchain
 	@mkdir -p $(dir $@)
 	$(call show,CC,$@)
 	$(Q)$(FW_CC) $(FW_CFLAGS) $(FW_DEFINES) -MMD -MP -c -o $@ $<
+	$(if $(FW_PLACE),$(Q)$(FW_PLACE))
 
 $(FW_DIR)/obj/%.o: $(FW_DIR)/%.c | fw-toolchain
 	@mkdir -p $(dir $@)

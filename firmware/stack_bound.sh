@@ -31,16 +31,17 @@ objs=$(find "$objdir" -name '*.o' | sort)
 [ -n "$cis" ] || { echo "stack_bound: no .ci files in $objdir (build with -fcallgraph-info=su)" >&2; exit 2; }
 
 # Address-taken functions: non-call relocations in code and data sections that name
-# a function's section (.text.NAME, -ffunction-sections) or a function symbol.
+# a function's section (.text.NAME, -ffunction-sections; .ram.text.NAME for code a
+# board runs from RAM) or a function symbol.
 taken=$(for o in $objs; do "${cross}readelf" -rW "$o"; done | awk '
     /^Relocation section/ {
         s = $3; gsub(/\047/, "", s)
-        use = (s ~ /^\.rela?\.(text|rodata|data|sdata|srodata)/)
+        use = (s ~ /^\.rela?(\.ram)?\.(text|rodata|data|sdata|srodata)/)
         next
     }
     use && NF >= 5 && $3 !~ /(CALL|JUMP|JAL|BRANCH|RELAX|ALIGN|PCREL_LO12|V4BX|TLS)/ {
         name = $5
-        sub(/^\.text\./, "", name)
+        sub(/^(\.ram)?\.text\./, "", name)
         print name
     }' | sort -u)
 

@@ -64,11 +64,13 @@ for dir in "$@"; do
     what="$board $(conf label)"
     cross=$(conf cross)
     reserved=$(conf stack_bytes)
-    # Berkeley format: text data bss
-    set -- $("${cross}size" "$elf" | awk 'NR == 2 {print $1, $2, $3}')
-    text=$1 data=$2 bss=$3
-    flash=$((text + data))
-    ram=$((data + bss))
+    # by section, not Berkeley's text/data/bss: code a board runs from RAM travels in
+    # .data, which Berkeley counts as text because it is code
+    set -- $("${cross}size" -A "$elf" | awk '
+        $1 == ".data" || $1 == ".bss" || $1 == ".stack" { ram += $2 }
+        $1 == ".text" || $1 == ".data" || $1 == ".boot2" || $1 ~ /^\.ARM\.exidx/ { flash += $2 }
+        END { print flash + 0, ram + 0 }')
+    flash=$1 ram=$2
     scene_bytes=$("${cross}nm" -S --defined-only "$elf" | awk '
         function hex(s,    i, v) { v = 0; for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(tolower(s), i, 1)) - 1; return v }
         NF == 4 && $4 ~ /^scene_/ && $3 ~ /^[rRtT]$/ { n += hex($2) }

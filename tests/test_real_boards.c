@@ -324,6 +324,71 @@ static void check_boot2_and_uf2(const char *board, const elf_image *elf, const r
     free(image);
 }
 
+/* Whether an object of the link (a path ending in obj/FILE.o) is one of the board's
+ * BOARD_RAM_CODE entries (folders or .c files of the source tree, space-separated). */
+static int in_ram_code(const char *object, const char *ram_code)
+{
+    const char *file = strstr(object, "/obj/");
+    if (file == NULL) return 0;
+    file += 5;
+    char entries[512];
+    snprintf(entries, sizeof entries, "%s", ram_code);
+    for (char *entry = strtok(entries, " "); entry != NULL; entry = strtok(NULL, " ")) {
+        const size_t n = strlen(entry);
+        if (n > 2 && strcmp(entry + n - 2, ".c") == 0) {
+            if (strncmp(file, entry, n - 2) == 0 && strcmp(file + n - 2, ".o") == 0) return 1;
+        } else if (strncmp(file, entry, n) == 0 && file[n] == '/') {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* The code of the board's BOARD_RAM_CODE runs from RAM and every other function
+ * from flash: each input code section of the map (.text.NAME, or .ram.text.NAME once
+ * firmware.mk renamed it) is placed by its object. Its load image in flash is
+ * checked with the rest (flash_image). */
+static void check_ram_code(const char *board, const char *map_path, const char *ram_code,
+                           const region *regions, size_t n)
+{
+    const region *ram = find_region(regions, n, "RAM");
+    blob map = read_blob(map_path);
+    assert_non_null(map.bytes);
+    char *text = malloc(map.size + 1);
+    assert_non_null(text);
+    memcpy(text, map.bytes, map.size);
+    text[map.size] = '\0';
+    unsigned long ram_bytes = 0, flash_bytes = 0;
+    char *line = strstr(text, "Linker script and memory map");
+    for (; line != NULL; line = strchr(line + 1, '\n')) {
+        char name[256], object[512];
+        unsigned long address, size;
+        const char *at = line + 1; /* past the newline (or the heading's first letter) */
+        if (at[0] != ' ' || at[1] != '.') continue; /* an input section: one space, its name */
+        if (sscanf(at, " %255s", name) != 1) continue;
+        if (strncmp(name, ".text", 5) != 0 && strncmp(name, ".ram.text", 9) != 0) continue;
+        if (sscanf(at, " %*s 0x%lx 0x%lx %511s", &address, &size, object) != 3) {
+            const char *next = strchr(at, '\n'); /* a long name: the rest is on the next line */
+            if (next == NULL || sscanf(next + 1, " 0x%lx 0x%lx %511s", &address, &size, object) != 3) continue;
+        }
+        if (size == 0 || strstr(object, "/obj/") == NULL) continue;
+        const int wanted = in_ram_code(object, ram_code), placed = inside(ram, (uint32_t)address, (uint32_t)size);
+        if (wanted != placed)
+            fail_msg("%s: %s of %s is at 0x%08lx, in %s; BOARD_RAM_CODE (\"%s\") puts it in %s", board, name,
+                     object, address, placed ? "RAM" : "flash", ram_code, wanted ? "RAM" : "flash");
+        if (placed)
+            ram_bytes += size;
+        else
+            flash_bytes += size;
+    }
+    if (ram_code[0] != '\0' && ram_bytes == 0)
+        fail_msg("%s: BOARD_RAM_CODE is \"%s\", but no code of the map lies in RAM", board, ram_code);
+    print_message("%s: %lu bytes of the firmware's own code in RAM (%s), %lu in flash\n", board, ram_bytes,
+                  ram_code[0] != '\0' ? ram_code : "none", flash_bytes);
+    free(text);
+    free(map.bytes);
+}
+
 static void test_real_board(void **state)
 {
     const char *board = *state;
@@ -338,6 +403,14 @@ static void test_real_board(void **state)
     check_link_fit(board, &elf, regions, n);
     check_vector_table(board, &elf, regions, n);
     if (find_section(&elf, ".boot2") != NULL) check_boot2_and_uf2(board, &elf, regions, n);
+    snprintf(path, sizeof path, FIRMWARE_DIR "/%s/firmware.conf", board);
+    char *conf = firmware_read_file(path, NULL);
+    assert_non_null(conf);
+    char ram_code[512];
+    firmware_conf_value(ram_code, sizeof ram_code, conf, "ram_code");
+    free(conf);
+    snprintf(path, sizeof path, FIRMWARE_DIR "/%s/firmware.map", board);
+    check_ram_code(board, path, ram_code, regions, n);
     free(elf.file.bytes);
 }
 
