@@ -874,6 +874,50 @@ FW_VARIANTS.update({
 })
 
 
+# Each real board's own build (its scene, bake flags and cores) counted on the
+# emulated board that stands for its chip: the RP2040's memory and Cortex-M0 code on
+# qemu-m0-264k, the STM32F411's on the Cortex-M3 of qemu-m3 (the M4 runs the M3's
+# instructions; its own build may pick a few of its own). The frame's time is the
+# core's on its cores, its slower part's where it has two; a frame rate from it at the
+# board's clock, one instruction a cycle, is a bound no frame reaches: loads, stores
+# and taken branches take two cycles on both, and flash waits where a cache misses.
+REAL_COUNTED_ON = {"rp2040-st7789": "qemu-m0-264k", "stm32f411-st7789": "qemu-m3"}
+for _b, _on in REAL_COUNTED_ON.items():
+    FW_VARIANTS["real-" + _b] = (_on, board_scenes(_b)[0], board_mk_value(_b, "BOARD_BAKE_FLAGS") or "")
+add_fw_keys()
+
+
+def real_frame_insn(board):
+    """The core's instructions a pixel of a real board's frame on its cores."""
+    def get(m):
+        counted = fw("real-" + board)(m)
+        return counted["parts_insn_per_pixel"] if "parts_insn_per_pixel" in counted else \
+            counted["render_insn_per_pixel"]
+    return get
+
+
+def real_clock_hz(board):
+    return lambda m: m.code("boards/%s/clock.h" % board, r"^#define CLOCK_PROCESSOR_HZ (\d+)u")
+
+
+def real_fps_bound(board):
+    def get(m):
+        frame, clock, size = real_frame_insn(board)(m), real_clock_hz(board)(m), fw("real-" + board)(m)["size"]
+        if m.recording:
+            return Fig("1", 1.0)
+        width, height = map(int, size.text.split("x"))
+        fps = clock.num / (frame.num * width * height)
+        return derived(fps, fps * frame.tol / frame.num, 2)
+    return get
+
+
+for _b in REAL_COUNTED_ON:
+    KEYS["real.%s.frame_insn_per_pixel" % _b] = real_frame_insn(_b)
+    KEYS["real.%s.clock_mhz" % _b] = (lambda b: lambda m: Fig("1", 1.0) if m.recording else exact(
+        int(real_clock_hz(b)(m).num) // 1000000))(_b)
+    KEYS["real.%s.fps_bound" % _b] = real_fps_bound(_b)
+
+
 PROFILE_BOARDS = ("qemu-m0-264k", "qemu-rv32-400k")
 PROFILE_STAGES = [("geometry: transform, clip, project, vertex cache", "vertices: transform, clip, project, light"),
                   ("cluster bins", "cluster bins"),
