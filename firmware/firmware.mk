@@ -177,10 +177,8 @@ ifneq ($(FW_EACH_SCENE),)
 firmware firmware-run fw-run bench-target firmware-check:
 	@for s in $(BOARD_SCENES); do $(MAKE) --no-print-directory $@ BOARD=$(BOARD) FW_BOARD_SCENE=$$s || exit 1; done
 else
-# the sections by name: Berkeley's text/data/bss counts the code a board runs from
-# RAM, which travels in .data, as text
 firmware: $(FW_OUTPUTS)
-	@$(FW_CROSS)size -A $(FW_ELF) | grep -Ev '^\.(debug|comment|ARM\.attributes|riscv\.attributes)|^Total|^$$'
+	@echo "$(FW_ELF): $$(firmware/image_sizes.sh $(FW_CROSS) $(FW_ELF))"
 
 ifneq ($(value BOARD_RUN),)
 fw-run: $(FW_DIR)/report.txt
@@ -292,7 +290,7 @@ $(FW_SIZE_OBJ): FW_DEFINES += -Os
 # once a pixel of water, a vertex, a triangle or a bin, and the arithmetic they
 # call, are compiled for speed: -O3's inlining and unrolling take about 6% off the
 # moving pond's instructions a pixel on qemu-m0-264k and about 2% off the opaque
-# pond's, for about 4.5 KB of code. Not the opaque span loops (core/raster/raster.c):
+# pond's, for about 4 KB of code. Not the opaque span loops (core/raster/raster.c):
 # there -O3 made the opaque pond about 4% slower.
 FW_SPEED_OBJ := $(if $(BOARD_CODE_BYTES_MAX),,$(filter-out $(FW_SIZE_OBJ),$(patsubst %.c,$(FW_DIR)/obj/%.o,\
 	$(wildcard core/water/*.c core/math/*.c core/geometry/*.c core/tile/*.c) core/raster/triangle_setup.c)))

@@ -320,10 +320,9 @@ class Measurer:
         return self._get(("memory", scene, args))
 
     def build(self, board):
-        """A board's own build, as tests/check_firmware.sh sizes it without running it
-        (the real boards): text (boot2, .text), data (.data: its load image in flash,
-        with the code run from RAM), bss (.bss and the stack), flash_bytes, ram_bytes, scene_bytes,
-        code_bytes, stack_bytes (the static bound), memory_bytes (its scene's, as
+        """A board's own build, sized without running it (the real boards): text,
+        data, bss, flash_bytes, ram_bytes, scene_bytes and code_bytes as
+        firmware/image_sizes.sh gives them, stack_bytes (the static bound), memory_bytes (its scene's, as
         baked), and uf2_bytes where the build makes a UF2 file."""
         return self._get(("build", board))
 
@@ -516,26 +515,12 @@ class Measurer:
         with open(os.path.join(ROOT, fw_dir, "firmware.conf")) as f:
             conf = dict(line.rstrip("\n").split("=", 1) for line in f if "=" in line)
         elf = os.path.join(fw_dir, "firmware.elf")
-        # by section, as tests/check_firmware.sh: code a board runs from RAM travels in
-        # .data, which size's Berkeley format counts as text
-        sections = {}
-        for line in run([conf["cross"] + "size", "-A", elf]).splitlines():
-            parts = line.split()
-            if len(parts) == 3 and parts[1].isdigit():
-                sections[parts[0]] = int(parts[1])
-        text = sum(sections.get(n, 0) for n in (".boot2", ".text", ".ARM.exidx"))
-        data = sections.get(".data", 0)
-        bss = sections.get(".bss", 0) + sections.get(".stack", 0)
-        scene = sum(int(parts[1], 16) for parts in (ln.split() for ln in run([conf["cross"] + "nm", "-S",
-                                                                                 "--defined-only", elf]).splitlines())
-                    if len(parts) == 4 and parts[3].startswith("scene_") and parts[2] in "rRtT")
+        sizes = {k: int(v) for k, v in fields(run(["firmware/image_sizes.sh", conf["cross"], elf])).items()}
         bound = run(["firmware/stack_bound.sh", conf["cross"], os.path.join(fw_dir, "obj")] +
                     conf["stack_entry"].split())
         with open(os.path.join(ROOT, fw_dir, "scene.h")) as f:
             memory = re.search(r"^#define SCENE_MEMORY_BYTES (\d+)", f.read(), re.M).group(1)
-        values = {"text": text, "data": data, "bss": bss, "flash_bytes": text + data, "ram_bytes": data + bss,
-                  "scene_bytes": scene, "code_bytes": text + data - scene,
-                  "stack_bytes": int(fields(bound.splitlines()[0])["stack_bytes"]), "memory_bytes": int(memory)}
+        values = dict(sizes, stack_bytes=int(fields(bound.splitlines()[0])["stack_bytes"]), memory_bytes=int(memory))
         uf2 = os.path.join(ROOT, fw_dir, "firmware.uf2")
         if os.path.exists(uf2):
             values["uf2_bytes"] = os.path.getsize(uf2)

@@ -900,6 +900,10 @@ def real_clock_hz(board):
     return lambda m: m.code("boards/%s/clock.h" % board, r"^#define CLOCK_PROCESSOR_HZ (\d+)u")
 
 
+def real_clock_mhz(board):
+    return lambda m: Fig("1", 1.0) if m.recording else exact(int(real_clock_hz(board)(m).num) // 1000000)
+
+
 def real_fps_bound(board):
     def get(m):
         frame, clock, size = real_frame_insn(board)(m), real_clock_hz(board)(m), fw("real-" + board)(m)["size"]
@@ -913,8 +917,7 @@ def real_fps_bound(board):
 
 for _b in REAL_COUNTED_ON:
     KEYS["real.%s.frame_insn_per_pixel" % _b] = real_frame_insn(_b)
-    KEYS["real.%s.clock_mhz" % _b] = (lambda b: lambda m: Fig("1", 1.0) if m.recording else exact(
-        int(real_clock_hz(b)(m).num) // 1000000))(_b)
+    KEYS["real.%s.clock_mhz" % _b] = real_clock_mhz(_b)
     KEYS["real.%s.fps_bound" % _b] = real_fps_bound(_b)
 
 

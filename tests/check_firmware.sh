@@ -8,9 +8,9 @@
 #            scene_bytes=N code_bytes=N
 #            stack_peak_bytes=N stack_reserved_bytes=N panel_psnr=NN.NN
 #
-# ram_bytes: .data + .bss + the stack reserved by the linker script; flash_bytes:
-# .text + .data (the image); scene_bytes: the baked scene's const data (symbols
-# scene_*), code_bytes the rest of the image; stack_bytes: the deepest call chain
+# ram_bytes, flash_bytes, scene_bytes, code_bytes: as firmware/image_sizes.sh finds
+# them (RAM: .data, .bss and the stack reserved by the linker script; flash: the
+# image; the baked scene's const data and the rest of the image); stack_bytes: the deepest call chain
 # GCC's call graphs allow (firmware/stack_bound.sh), stack_peak_bytes what the run
 # really used (startup paints the stack); panel_psnr the board's frame on the
 # yardstick (tarn compare: the panel error, RGB565 with the ordered dither).
@@ -64,18 +64,9 @@ for dir in "$@"; do
     what="$board $(conf label)"
     cross=$(conf cross)
     reserved=$(conf stack_bytes)
-    # by section, not Berkeley's text/data/bss: code a board runs from RAM travels in
-    # .data, which Berkeley counts as text because it is code
-    set -- $("${cross}size" -A "$elf" | awk '
-        $1 == ".data" || $1 == ".bss" || $1 == ".stack" { ram += $2 }
-        $1 == ".text" || $1 == ".data" || $1 == ".boot2" || $1 ~ /^\.ARM\.exidx/ { flash += $2 }
-        END { print flash + 0, ram + 0 }')
-    flash=$1 ram=$2
-    scene_bytes=$("${cross}nm" -S --defined-only "$elf" | awk '
-        function hex(s,    i, v) { v = 0; for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(tolower(s), i, 1)) - 1; return v }
-        NF == 4 && $4 ~ /^scene_/ && $3 ~ /^[rRtT]$/ { n += hex($2) }
-        END { print n + 0 }')
-    code=$((flash - scene_bytes))
+    sizes=$(firmware/image_sizes.sh "$cross" "$elf")
+    flash=$(field flash_bytes "$sizes") ram=$(field ram_bytes "$sizes")
+    scene_bytes=$(field scene_bytes "$sizes") code=$(field code_bytes "$sizes")
     bound_out=$(firmware/stack_bound.sh "$cross" "$dir/obj" $(conf stack_entry))
     bound_status=$?
     stack=$(field stack_bytes "$(printf '%s\n' "$bound_out" | head -1)")

@@ -62,10 +62,8 @@ check() {
             passed=$((passed + 1))
         fi
     done
-    set -- $(arm-none-eabi-size "$dir/firmware.elf" | awk 'NR == 2 {print $1, $2}')
-    scene_bytes=$(arm-none-eabi-nm -S -t d --defined-only "$dir/firmware.elf" | awk '
-        NF == 4 && $4 ~ /^scene_/ { n += $2 } END { print n + 0 }')
-    echo "firmware-link board=$board scene=$(basename "$scene" .json)$extra_name code_bytes=$(($1 + $2 - scene_bytes))" >> "$sizes"
+    code_bytes=$(firmware/image_sizes.sh arm-none-eabi- "$dir/firmware.elf" | sed 's/.* code_bytes=//')
+    echo "firmware-link board=$board scene=$(basename "$scene" .json)$extra_name code_bytes=$code_bytes" >> "$sizes"
 }
 
 extra_name= extra_flags=
