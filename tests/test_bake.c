@@ -431,6 +431,7 @@ static void test_header_declares_memory_and_objects(void **state)
     assert_non_null(strstr(header, define));
     assert_non_null(strstr(header, "extern const tarn_scene foam_header_scene;\n"));
     assert_non_null(strstr(header, "extern const tarn_frame_config foam_header_config;\n"));
+    assert_null(strstr(header, "_PIPELINE_MEMORY_BYTES")); /* a frame in tiles has no strip pipeline */
     free(header);
     char *source = read_all(b.source, NULL);
     snprintf(define, sizeof define, " *   %-15s %9zu\n", "total", b.const_bytes);
@@ -438,6 +439,25 @@ static void test_header_declares_memory_and_objects(void **state)
     assert_non_null(strstr(source, "const tarn_scene foam_header_scene = {\n"));
     assert_non_null(strstr(source, "const tarn_frame_config foam_header_config = {\n    .width = 64,\n"));
     free(source);
+}
+
+/* A frame in strips: the header gives a strip pipeline's memory too, a strip of
+ * the ring (64 pixels, 16 rows, 4 bytes of colour and 4 of depth) and the workers'
+ * state more than the frame's. */
+static void test_header_gives_a_strip_pipeline_memory(void **state)
+{
+    (void)state;
+    baked b;
+    bake("scenes/effects/foam.json", "foam_strips", "--name foam_strips --size 64x64 --quality exact --frame strips --tile 16",
+         &b);
+    char *header = read_all(b.header, NULL);
+    const char *define = strstr(header, "#define FOAM_STRIPS_PIPELINE_MEMORY_BYTES ");
+    if (define == NULL) fail_msg("no FOAM_STRIPS_PIPELINE_MEMORY_BYTES in %s", b.header);
+    const unsigned long bytes = strtoul(define + strlen("#define FOAM_STRIPS_PIPELINE_MEMORY_BYTES "), NULL, 10);
+    const unsigned long strip = 64ul * 16ul * 8ul;
+    if (bytes < b.memory_bytes + strip || bytes > b.memory_bytes + strip + 4096ul)
+        fail_msg("the pipeline's memory is %lu bytes, the frame's %zu", bytes, b.memory_bytes);
+    free(header);
 }
 
 /* --points FILE: the qualities as NAME_points, their count, the largest memory of
@@ -664,6 +684,7 @@ int main(void)
         cmocka_unit_test(test_still_water_bakes_without_loss),
         cmocka_unit_test(test_only_what_is_used_is_baked),
         cmocka_unit_test(test_header_declares_memory_and_objects),
+        cmocka_unit_test(test_header_gives_a_strip_pipeline_memory),
         cmocka_unit_test(test_points_are_baked),
         cmocka_unit_test(test_baked_source_compiles_for_cortex_m0),
         cmocka_unit_test(test_bad_input_exits_2_and_writes_nothing),

@@ -3,7 +3,12 @@
  * tarn_render_frame draws, byte for byte, with every pixel delivered once: on every
  * scene that two ways of drawing are tested on and the moving ones, at each preset,
  * in tiles and in strips of 16 and 48 rows, for two, three and seven parts (seven
- * is more than 48-row strips make of the frame: some parts draw nothing). */
+ * is more than 48-row strips make of the frame: some parts draw nothing).
+ *
+ * So is a frame drawn by a strip pipeline (tarn_strip_pipeline_begin): its two
+ * workers in two threads over one memory, each waiting only as the header says; and
+ * the workers one after the other with the opaque one as far ahead as that lets it
+ * go, the order that would show a ring too shallow for it. */
 #include <pthread.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -88,6 +93,108 @@ static void render_in_parts(const tarn_scene *scene, const tarn_frame_config *co
                      tarn_status_text(jobs[p].status));
 }
 
+/* A strip pipeline's run: its memory, and the strips each worker has done, which
+ * the other waits on. */
+typedef struct {
+    void *memory;
+    tarn_strip_pipeline pipeline;
+    shared_frame *frame;
+    pthread_mutex_t lock;
+    pthread_cond_t moved;
+    int32_t opaque_drawn, water_sent; /* under lock */
+    tarn_status status;               /* the water worker's */
+} pipeline_run;
+
+static void wait_for(pipeline_run *r, const int32_t *count, int32_t at_least)
+{
+    pthread_mutex_lock(&r->lock);
+    while (*count < at_least) pthread_cond_wait(&r->moved, &r->lock);
+    pthread_mutex_unlock(&r->lock);
+}
+
+static void set_count(pipeline_run *r, int32_t *count, int32_t value)
+{
+    pthread_mutex_lock(&r->lock);
+    *count = value;
+    pthread_cond_broadcast(&r->moved);
+    pthread_mutex_unlock(&r->lock);
+}
+
+static void *opaque_worker(void *arg)
+{
+    pipeline_run *r = arg;
+    for (int32_t d = 0; d < r->pipeline.strips; d++) {
+        wait_for(r, &r->water_sent, tarn_strip_pipeline_sent_before_opaque(&r->pipeline, d));
+        tarn_strip_pipeline_opaque(r->memory, d);
+        set_count(r, &r->opaque_drawn, d + 1);
+    }
+    return NULL;
+}
+
+static void *water_worker(void *arg)
+{
+    pipeline_run *r = arg;
+    for (int32_t k = 0; k < r->pipeline.strips && r->status == TARN_OK; k++) {
+        wait_for(r, &r->opaque_drawn, tarn_strip_pipeline_drawn_before_water(&r->pipeline, k));
+        r->status = tarn_strip_pipeline_water(r->memory, k, keep_tile, r->frame);
+        set_count(r, &r->water_sent, r->status == TARN_OK ? k + 1 : INT32_MAX); /* a stop frees the other */
+    }
+    return NULL;
+}
+
+/* The workers one after the other, each opaque strip drawn as soon as the order
+ * allows: when water strip k is drawn, the ring holds as much below it as it can. */
+static tarn_status run_opaque_first(pipeline_run *r)
+{
+    int32_t drawn = 0;
+    for (int32_t k = 0; k < r->pipeline.strips; k++) {
+        for (; drawn < r->pipeline.strips && tarn_strip_pipeline_sent_before_opaque(&r->pipeline, drawn) <= k; drawn++)
+            tarn_strip_pipeline_opaque(r->memory, drawn);
+        const tarn_status status = tarn_strip_pipeline_water(r->memory, k, keep_tile, r->frame);
+        if (status != TARN_OK) return status;
+    }
+    return TARN_OK;
+}
+
+/* The frame drawn by a strip pipeline, its workers in two threads or one after the
+ * other; fails the test if the pipeline fails. */
+static void render_in_pipeline(const tarn_scene *scene, const tarn_frame_config *config, int threads,
+                               shared_frame *frame, const char *what)
+{
+    memset(frame, 0, sizeof *frame);
+    const size_t bytes = tarn_strip_pipeline_memory_bytes(config, scene);
+    pipeline_run r = {malloc(bytes), {0, 0}, frame, PTHREAD_MUTEX_INITIALIZER, PTHREAD_COND_INITIALIZER, 0, 0, TARN_OK};
+    assert_non_null(r.memory);
+    r.status = tarn_strip_pipeline_begin(scene, config, r.memory, bytes, &r.pipeline);
+    if (r.status == TARN_OK && r.pipeline.strips == 0) /* not in strips: the frame as it is */
+        r.status = tarn_render_frame(scene, config, r.memory, bytes, keep_tile, frame);
+    else if (r.status == TARN_OK && !threads)
+        r.status = run_opaque_first(&r);
+    else if (r.status == TARN_OK) {
+        pthread_t opaque, water;
+        if (pthread_create(&opaque, NULL, opaque_worker, &r) != 0 || pthread_create(&water, NULL, water_worker, &r) != 0)
+            fail_msg("%s: cannot start a thread", what);
+        pthread_join(opaque, NULL);
+        pthread_join(water, NULL);
+    }
+    free(r.memory);
+    if (r.status != TARN_OK) fail_msg("%s: the strip pipeline returned %s", what, tarn_status_text(r.status));
+}
+
+/* Every pixel of `frame` delivered once, and the pixels `whole`'s. */
+static void assert_frame_is(const uint8_t *whole, const shared_frame *frame, const char *what, const char *how)
+{
+    for (size_t k = 0; k < (size_t)WIDTH * HEIGHT; k++)
+        if (frame->deliveries[k] != 1u)
+            fail_msg("%s %s: pixel (%zu, %zu) delivered %u times", what, how, k % WIDTH, k / WIDTH,
+                     (unsigned)frame->deliveries[k]);
+    for (size_t k = 0; k < (size_t)WIDTH * HEIGHT; k++)
+        if (memcmp(whole + 3u * k, frame->rgb + 3u * k, 3u) != 0)
+            fail_msg("%s %s: pixel (%zu, %zu) is #%02x%02x%02x, drawn whole #%02x%02x%02x", what, how, k % WIDTH,
+                     k / WIDTH, frame->rgb[3u * k], frame->rgb[3u * k + 1u], frame->rgb[3u * k + 2u], whole[3u * k],
+                     whole[3u * k + 1u], whole[3u * k + 2u]);
+}
+
 static void assert_parts_draw_the_frame(const tarn_scene *scene, const tarn_frame_config *config, const char *what)
 {
     uint8_t *whole = test_render_rgb(scene, config, what);
@@ -95,12 +202,15 @@ static void assert_parts_draw_the_frame(const tarn_scene *scene, const tarn_fram
     assert_non_null(frame);
     for (size_t n = 0; n < sizeof part_counts / sizeof part_counts[0]; n++) {
         render_in_parts(scene, config, part_counts[n], frame, what);
-        for (size_t k = 0; k < (size_t)WIDTH * HEIGHT; k++)
-            if (frame->deliveries[k] != 1u)
-                fail_msg("%s in %u parts: pixel (%zu, %zu) delivered %u times", what, (unsigned)part_counts[n],
-                         k % WIDTH, k / WIDTH, (unsigned)frame->deliveries[k]);
-        if (memcmp(whole, frame->rgb, sizeof frame->rgb) != 0)
-            fail_msg("%s: %u parts draw another frame than one", what, (unsigned)part_counts[n]);
+        char how[48];
+        snprintf(how, sizeof how, "in %u parts", (unsigned)part_counts[n]);
+        assert_frame_is(whole, frame, what, how);
+    }
+    if (config->quality.frame_shape == TARN_FRAME_STRIPS) {
+        render_in_pipeline(scene, config, 1, frame, what);
+        assert_frame_is(whole, frame, what, "in a strip pipeline of two threads");
+        render_in_pipeline(scene, config, 0, frame, what);
+        assert_frame_is(whole, frame, what, "in a strip pipeline, its opaque strips drawn first");
     }
     free(frame);
     free(whole);
@@ -155,11 +265,43 @@ static void test_a_part_outside_the_parts_is_refused(void **state)
     tarn_scene_free(&loaded);
 }
 
+/* A pipeline's ring is a strip deeper than the frame's; a frame in tiles, too little
+ * memory, or a strip past the last is refused. */
+static void test_a_strip_pipeline_takes_one_strip_more(void **state)
+{
+    (void)state;
+    tarn_loaded_scene loaded;
+    tarn_error err;
+    if (tarn_scene_load("scenes/pond.json", &loaded, &err) != 0) fail_msg("%s", err.message);
+    tarn_frame_config config = {WIDTH, HEIGHT, tarn_quality_default(), 0u};
+    config.quality.frame_shape = TARN_FRAME_STRIPS;
+    config.quality.tile_size = 16;
+    const size_t bytes = tarn_strip_pipeline_memory_bytes(&config, &loaded.scene);
+    const size_t strip = (size_t)WIDTH * 16u * (4u + config.quality.depth_bits / 8u);
+    const size_t frame = tarn_frame_memory_bytes(&config, &loaded.scene);
+    if (bytes < frame + strip || bytes > frame + strip + 4096u)
+        fail_msg("a strip pipeline takes %zu bytes, the frame %zu and a strip %zu", bytes, frame, strip);
+    void *memory = malloc(bytes);
+    assert_non_null(memory);
+    tarn_strip_pipeline p;
+    assert_int_equal(tarn_strip_pipeline_begin(&loaded.scene, &config, memory, bytes - 1u, &p), TARN_ERR_MEMORY);
+    assert_int_equal(tarn_strip_pipeline_begin(&loaded.scene, &config, memory, bytes, &p), TARN_OK);
+    assert_int_equal(p.strips, (HEIGHT + 15) / 16);
+    assert_int_equal(tarn_strip_pipeline_water(memory, p.strips, NULL, NULL), TARN_ERR_CONFIG);
+    assert_int_equal(tarn_strip_pipeline_water(memory, -1, NULL, NULL), TARN_ERR_CONFIG);
+    config.quality.frame_shape = TARN_FRAME_TILES;
+    assert_int_equal(tarn_strip_pipeline_begin(&loaded.scene, &config, memory, bytes, &p), TARN_ERR_CONFIG);
+    assert_int_equal(p.strips, 0);
+    free(memory);
+    tarn_scene_free(&loaded);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_parts_draw_the_frame_together),
         cmocka_unit_test(test_a_part_outside_the_parts_is_refused),
+        cmocka_unit_test(test_a_strip_pipeline_takes_one_strip_more),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

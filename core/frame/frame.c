@@ -1,5 +1,6 @@
 /* frame.c: tarn_render_frame, the tile or strip loop that runs every other stage,
- * and tarn_visit_screen_triangles. */
+ * a strip pipeline's two workers (tarn_strip_pipeline_begin), and
+ * tarn_visit_screen_triangles. */
 #include "frame/frame_internal.h"
 
 #include <string.h>
@@ -52,10 +53,19 @@ typedef struct {
     tarn_underwater_context underwater;
 } frame_state;
 
-/* The frame's passes over the buffers carved from its memory: nothing in them
- * depends on the tile yet. */
-static void frame_begin(frame_state *f, void *memory)
+/* f set for a frame of `scene` (posed, as the frame draws it) seen through `view`:
+ * its layout, a pipeline's ring a strip deeper (shared_ring), and its passes over
+ * the buffers carved from `memory`, past the scene; nothing in them depends on the
+ * tile yet. Inline: one copy in an image that draws frames one way only. */
+static TARN_ALWAYS_INLINE void frame_begin(frame_state *f, const tarn_view *view, const tarn_scene *scene,
+                                           const tarn_frame_config *config, void *memory, int shared_ring)
 {
+    f->scene = scene;
+    f->config = config;
+    f->view = view;
+    f->layout = tarn__frame_layout_of(config, scene);
+    /* the strip the opaque worker draws while the water worker reads the others */
+    if (shared_ring && f->layout.ring_strips != 0) f->layout.ring_strips++;
     const tarn_frame_buffers b = tarn__frame_carve(&f->layout, memory);
     f->water_colour = b.water_colour;
     f->water_depth = b.water_depth;
@@ -419,29 +429,52 @@ static int32_t share_start(int32_t count, uint32_t part, uint32_t parts)
     return k;
 }
 
+/* Strip d's opaque pass into its slot of the ring. */
+static void draw_strip_opaque(frame_state *f, const tarn_tile_target *ring, int32_t d)
+{
+    f->opaque = ring_slot(f, ring, d, d % f->layout.ring_strips);
+    draw_opaque(f);
+}
+
+/* Strip k's water over the ring, and the strip to the sink; non-zero when the sink
+ * stopped. */
+static int send_strip(frame_state *f, tarn_tile_target *ring, int32_t k, int32_t strips, tarn_tile_sink sink,
+                      void *user)
+{
+    const tarn_tile_target slot = ring_slot(f, ring, k, k % f->layout.ring_strips);
+    const tarn_tile_target *out = &slot;
+    if (f->layout.water) out = draw_strip_water(f, ring, k, strips, &slot);
+    const tarn_tile tile = tile_of(f, out, &slot.rect);
+    return sink != NULL && sink(user, &tile) != 0;
+}
+
+/* The frame's strips, top to bottom. */
+static int32_t strip_count(const frame_state *f)
+{
+    return (f->config->height + f->layout.tile - 1) / f->layout.tile;
+}
+
+/* Strips below its own that a strip's water reads: the opaque pass runs that far ahead. */
+static int32_t strips_ahead(const tarn_frame_layout *l)
+{
+    return (l->ring_strips - 1) / 2; /* a pipeline's spare strip rounds away */
+}
+
 /* The part's run of strips, shared out in order as evenly as they go. Its ring
  * starts with the opaque passes of the strips above its first one that the first
  * one's refracted samples reach, as a whole frame's ring holds them then. */
 static tarn_status draw_strips(frame_state *f, tarn_frame_part part, tarn_tile_sink sink, void *user)
 {
-    const tarn_frame_layout *l = &f->layout;
     tarn_tile_target ring = f->opaque; /* the frame's opaque buffers: the ring */
     f->ring = &ring;
-    const int32_t strips = (f->config->height + l->tile - 1) / l->tile;
+    const int32_t strips = strip_count(f);
     const int32_t first = share_start(strips, part.index, part.count);
     const int32_t end = share_start(strips, part.index + 1u, part.count);
-    const int32_t ahead = (l->ring_strips - 1) / 2; /* strips the opaque pass runs ahead */
+    const int32_t ahead = strips_ahead(&f->layout);
     int32_t drawn = first > ahead ? first - ahead : 0; /* the next strip whose opaque pass the ring takes */
     for (int32_t k = first; k < end; k++) {
-        for (; drawn < strips && drawn <= k + ahead; drawn++) {
-            f->opaque = ring_slot(f, &ring, drawn, drawn % l->ring_strips);
-            draw_opaque(f);
-        }
-        const tarn_tile_target slot = ring_slot(f, &ring, k, k % l->ring_strips);
-        const tarn_tile_target *out = &slot;
-        if (l->water) out = draw_strip_water(f, &ring, k, strips, &slot);
-        const tarn_tile tile = tile_of(f, out, &slot.rect);
-        if (sink != NULL && sink(user, &tile) != 0) return TARN_ERR_SINK;
+        for (; drawn < strips && drawn <= k + ahead; drawn++) draw_strip_opaque(f, &ring, drawn);
+        if (send_strip(f, &ring, k, strips, sink, user)) return TARN_ERR_SINK;
     }
     return TARN_OK;
 }
@@ -459,6 +492,27 @@ static tarn_status draw_tiles(frame_state *f, tarn_frame_part part, tarn_tile_si
     return TARN_OK;
 }
 
+/* The checks, then the frame's own work in `memory`: the scene it draws (posed, its
+ * vertices found), the view, f over the buffers past the scene, the cluster bins,
+ * the underwater view's constants. A pipeline checks its deeper ring's bytes before. */
+static TARN_ALWAYS_INLINE tarn_status frame_prepare(frame_state *f, tarn_view *view, const tarn_scene *scene,
+                                                    const tarn_frame_config *config, void *memory,
+                                                    size_t memory_bytes, int shared_ring)
+{
+    if (tarn__config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
+    tarn_status status = tarn__scene_check(scene);
+    if (status != TARN_OK) return status;
+    if (memory == NULL || memory_bytes < tarn_frame_memory_bytes(config, scene)) return TARN_ERR_MEMORY;
+    scene = tarn__frame_scene(scene, config, &memory);
+    status = tarn__scene_check_reach(scene, config);
+    if (status != TARN_OK) return status;
+    tarn__view_setup(scene, config, view);
+    frame_begin(f, view, scene, config, memory, shared_ring);
+    if (TARN_LINK_FOUND_BINS && f->found_bins != NULL) tarn__bin_clusters(scene, view, f->found_bins);
+    if (TARN_LINK_UNDERWATER && f->layout.underwater) tarn__underwater_setup(&f->underwater, view, config, scene->underwater);
+    return TARN_OK;
+}
+
 /* Out of line: tarn_render_frame calls it too, and an image that links both should
  * hold the frame once (on the Cortex-M0 it is about 1.2 KB of code). */
 TARN_NOINLINE tarn_status tarn_render_frame_part(const tarn_scene *scene, const tarn_frame_config *config,
@@ -467,26 +521,12 @@ TARN_NOINLINE tarn_status tarn_render_frame_part(const tarn_scene *scene, const 
 {
     if (TARN_LINK_PARTS ? part.count == 0u || part.index >= part.count : part.count != 1u || part.index != 0u)
         return TARN_ERR_CONFIG;
-    if (tarn__config_check(config) != TARN_OK) return TARN_ERR_CONFIG;
-    tarn_status status = tarn__scene_check(scene);
-    if (status != TARN_OK) return status;
-    if (memory == NULL || memory_bytes < tarn_frame_memory_bytes(config, scene)) return TARN_ERR_MEMORY;
-    scene = tarn__frame_scene(scene, config, &memory);
-    status = tarn__scene_check_reach(scene, config);
-    if (status != TARN_OK) return status;
-
     tarn_view view;
-    tarn__view_setup(scene, config, &view);
     frame_state f;
-    f.scene = scene;
-    f.config = config;
-    f.view = &view;
-    f.layout = tarn__frame_layout_of(config, scene);
-    frame_begin(&f, memory);
-    if (TARN_LINK_FOUND_BINS && f.found_bins != NULL) tarn__bin_clusters(scene, &view, f.found_bins);
-    if (TARN_LINK_UNDERWATER && f.layout.underwater) tarn__underwater_setup(&f.underwater, &view, config, scene->underwater);
-    if (TARN_LINK_STRIPS && f.layout.ring_strips != 0) return draw_strips(&f, part, sink, user);
-    return draw_tiles(&f, part, sink, user);
+    const tarn_status status = frame_prepare(&f, &view, scene, config, memory, memory_bytes, 0);
+    if (status != TARN_OK) return status;
+    return TARN_LINK_STRIPS && f.layout.ring_strips != 0 ? draw_strips(&f, part, sink, user)
+                                                        : draw_tiles(&f, part, sink, user);
 }
 
 tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *config,
@@ -494,6 +534,77 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
 {
     const tarn_frame_part whole = {0u, 1u};
     return tarn_render_frame_part(scene, config, memory, memory_bytes, whole, sink, user);
+}
+
+/* ---- a strip pipeline ------------------------------------------------------------
+ * Two workers over one ring (tarn_strip_pipeline_begin): each has a frame_state of
+ * its own, over the same buffers, and a ring target of its own, which the water
+ * worker moves down the frame as it goes. Both live at the start of the memory. */
+typedef struct {
+    tarn_view view;
+    frame_state opaque_worker, water_worker;
+    tarn_tile_target opaque_ring, water_ring;
+    int32_t strips; /* 0: the frame is not drawn in strips */
+} strip_pipeline_state;
+
+/* The state's bytes, with room to align it for its pointers (the memory is only
+ * 4-byte aligned); the frame's memory follows. */
+#define PIPELINE_STATE_BYTES ((sizeof(strip_pipeline_state) + sizeof(void *) + 3u) & ~(size_t)3u)
+
+static strip_pipeline_state *pipeline_state(void *memory)
+{
+    uint8_t *start = memory;
+    return (strip_pipeline_state *)(void *)(start + ((0u - (uintptr_t)start) & (sizeof(void *) - 1u)));
+}
+
+size_t tarn_strip_pipeline_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
+{
+    const size_t frame = tarn_frame_memory_bytes(config, scene);
+    if (frame == 0u) return 0u;
+    /* the ring's spare strip (counted even for a frame drawn in tiles) */
+    const tarn_quality *q = &config->quality;
+    return PIPELINE_STATE_BYTES + frame + (size_t)config->width * q->tile_size * (4u + q->depth_bits / 8u);
+}
+
+tarn_status tarn_strip_pipeline_begin(const tarn_scene *scene, const tarn_frame_config *config, void *memory,
+                                      size_t memory_bytes, tarn_strip_pipeline *pipeline)
+{
+    pipeline->strips = 0;
+    pipeline->ahead = 0;
+    if (config == NULL || config->quality.frame_shape != TARN_FRAME_STRIPS) return TARN_ERR_CONFIG;
+    const size_t needed = tarn_strip_pipeline_memory_bytes(config, scene);
+    if (needed == 0u) return TARN_ERR_CONFIG;
+    if (memory == NULL || memory_bytes < needed) return TARN_ERR_MEMORY;
+    strip_pipeline_state *s = pipeline_state(memory);
+    s->strips = 0;
+    const tarn_status status = frame_prepare(&s->opaque_worker, &s->view, scene, config,
+                                             (uint8_t *)memory + PIPELINE_STATE_BYTES,
+                                             memory_bytes - PIPELINE_STATE_BYTES, 1);
+    if (status != TARN_OK || !TARN_LINK_STRIPS || s->opaque_worker.layout.ring_strips == 0) return status;
+    /* the water worker's state is the opaque one's, over the same buffers, but for
+     * the one pointer into itself */
+    s->water_worker = s->opaque_worker;
+    s->water_worker.water.water = &s->water_worker.water_context;
+    s->opaque_ring = s->opaque_worker.opaque; /* the frame's opaque buffers: the ring */
+    s->water_ring = s->opaque_ring;
+    s->water_worker.ring = &s->water_ring;
+    s->strips = strip_count(&s->opaque_worker);
+    pipeline->strips = s->strips;
+    pipeline->ahead = strips_ahead(&s->opaque_worker.layout);
+    return TARN_OK;
+}
+
+void tarn_strip_pipeline_opaque(void *memory, int32_t strip)
+{
+    strip_pipeline_state *s = pipeline_state(memory);
+    if (TARN_LINK_STRIPS && strip >= 0 && strip < s->strips) draw_strip_opaque(&s->opaque_worker, &s->opaque_ring, strip);
+}
+
+tarn_status tarn_strip_pipeline_water(void *memory, int32_t strip, tarn_tile_sink sink, void *user)
+{
+    strip_pipeline_state *s = pipeline_state(memory);
+    if (!TARN_LINK_STRIPS || strip < 0 || strip >= s->strips) return TARN_ERR_CONFIG;
+    return send_strip(&s->water_worker, &s->water_ring, strip, s->strips, sink, user) ? TARN_ERR_SINK : TARN_OK;
 }
 
 typedef struct {

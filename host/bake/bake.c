@@ -1050,6 +1050,11 @@ static void print_header(FILE *out, const bake_plan *p, const tarn_bake_options 
         fprintf(out, "/* tarn_frame_memory_bytes(&%s_config, &%s_scene): a frame's working memory. */\n",
                 p->name, p->name);
     fprintf(out, "#define %s_MEMORY_BYTES %zu\n\n", macro, totals->memory_bytes);
+    if (p->config.quality.frame_shape == TARN_FRAME_STRIPS && !p->points->count)
+        fprintf(out, "/* tarn_strip_pipeline_memory_bytes(&%s_config, &%s_scene): the frame's working memory\n"
+                " * when two workers share its ring of strips (tarn_strip_pipeline_begin). */\n"
+                "#define %s_PIPELINE_MEMORY_BYTES %zu\n\n",
+                p->name, p->name, macro, tarn_strip_pipeline_memory_bytes(&p->config, &p->scene->scene));
     fprintf(out, "/* The widest and tallest piece (tile or strip, tarn_tile) the frame hands its sink%s. */\n"
             "#define %s_PIECE_WIDTH %u\n#define %s_PIECE_ROWS %u\n\n",
             p->points->count ? " at any of them" : "", macro, totals->piece_width, macro, totals->piece_rows);

@@ -289,6 +289,63 @@ tarn_status tarn_render_frame_part(const tarn_scene *scene, const tarn_frame_con
                                    void *memory, size_t memory_bytes, tarn_frame_part part,
                                    tarn_tile_sink sink, void *user);
 
+/* ---- a frame in strips by two workers over one ring ----------------------------
+ *
+ * Parts need memory each, and a ring of strips is most of a frame's: two rarely fit
+ * a small board's RAM. A strip pipeline shares one ring between two workers (two
+ * cores, or threads): the opaque worker draws each strip's opaque pass into the
+ * ring, the water worker draws each strip's water over it and hands the strip to
+ * the sink, the opaque worker running ahead. The ring holds one strip more than
+ * tarn_render_frame's, the one the opaque worker draws while the water worker reads
+ * the others. The strips delivered are tarn_render_frame's (frame_shape
+ * TARN_FRAME_STRIPS), byte for byte.
+ *
+ *     size_t need = tarn_strip_pipeline_memory_bytes(&cfg, &scene);
+ *     tarn_strip_pipeline p;
+ *     tarn_strip_pipeline_begin(&scene, &cfg, memory, need, &p);   once, first
+ *     opaque worker: for d in 0 .. p.strips - 1:
+ *         wait until the water worker has sent tarn_strip_pipeline_sent_before_opaque(&p, d) strips
+ *         tarn_strip_pipeline_opaque(memory, d)
+ *     water worker: for k in 0 .. p.strips - 1:
+ *         wait until the opaque worker has drawn tarn_strip_pipeline_drawn_before_water(&p, k) strips
+ *         tarn_strip_pipeline_water(memory, k, sink, user)
+ *
+ * The waits are the caller's (a FIFO between cores, a condition variable): the core
+ * has no threads. Within those orders the two workers share nothing the core writes.
+ * A frame that cannot be drawn in strips (under the underwater view, or over a
+ * backdrop) sets p.strips to 0: draw it with tarn_render_frame in the same memory.
+ * A config whose frame_shape is not TARN_FRAME_STRIPS is TARN_ERR_CONFIG. */
+typedef struct {
+    int32_t strips; /* the frame's strips, top to bottom; 0: draw it with tarn_render_frame */
+    int32_t ahead;  /* strips below its own that a strip's water reads */
+} tarn_strip_pipeline;
+
+/* The water strips sent before opaque strip d may start (it draws over the slot of
+ * strip d - ahead - 2, which the water of that strip reads last), and the opaque
+ * strips drawn before water strip k may start (those its refracted samples reach). */
+static inline int32_t tarn_strip_pipeline_sent_before_opaque(const tarn_strip_pipeline *p, int32_t d)
+{
+    return d - p->ahead - 1;
+}
+
+static inline int32_t tarn_strip_pipeline_drawn_before_water(const tarn_strip_pipeline *p, int32_t k)
+{
+    return k + p->ahead + 1 < p->strips ? k + p->ahead + 1 : p->strips;
+}
+
+/* The bytes a pipeline's memory needs (the frame's, a strip more of ring, and the
+ * workers' state); 0 when the config is invalid. */
+size_t tarn_strip_pipeline_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene);
+/* Checks the scene and config and finds the frame's own work (the scene posed, the
+ * vertex pass, the cluster bins) in `memory` (4-byte aligned), before either worker. */
+tarn_status tarn_strip_pipeline_begin(const tarn_scene *scene, const tarn_frame_config *config, void *memory,
+                                      size_t memory_bytes, tarn_strip_pipeline *pipeline);
+/* The opaque worker: strip `strip`'s opaque pass into the ring. */
+void tarn_strip_pipeline_opaque(void *memory, int32_t strip);
+/* The water worker: strip `strip`'s water, and the strip to the sink; TARN_ERR_SINK
+ * when the sink stopped. */
+tarn_status tarn_strip_pipeline_water(void *memory, int32_t strip, tarn_tile_sink sink, void *user);
+
 /* A vertex after transform, clipping and snapping: what the rasterizer sees. */
 typedef struct {
     int32_t x, y;        /* screen position in 1/2^subpixel_bits pixels */
