@@ -6,9 +6,10 @@
  * is more than 48-row strips make of the frame: some parts draw nothing).
  *
  * So is a frame drawn by a strip pipeline (tarn_strip_pipeline_begin): its two
- * workers in two threads over one memory, each waiting only as the header says; and
- * the workers one after the other with the opaque one as far ahead as that lets it
- * go, the order that would show a ring too shallow for it. */
+ * workers in two threads over one memory, each taking and waiting only as the
+ * header says; the workers one after the other with the opaque one as far ahead as
+ * that lets it go, the order that would show a ring too shallow for it; and the
+ * water worker drawing every opaque pass itself. */
 #include <pthread.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -93,83 +94,122 @@ static void render_in_parts(const tarn_scene *scene, const tarn_frame_config *co
                      tarn_status_text(jobs[p].status));
 }
 
-/* A strip pipeline's run: its memory, and the strips each worker has done, which
- * the other waits on. */
+/* A strip pipeline's run: its memory, and what each worker has done, which the
+ * other waits on. */
+#define STRIPS_MAX 64
 typedef struct {
     void *memory;
     tarn_strip_pipeline pipeline;
     shared_frame *frame;
     pthread_mutex_t lock;
     pthread_cond_t moved;
-    int32_t opaque_drawn, water_sent; /* under lock */
-    tarn_status status;               /* the water worker's */
+    /* under lock: the next opaque strip no worker has taken, each strip's opaque
+       pass drawn, the water strips sent */
+    int32_t next_opaque;
+    uint8_t drawn[STRIPS_MAX];
+    int32_t water_sent;
+    tarn_status status; /* the water worker's */
 } pipeline_run;
 
-static void wait_for(pipeline_run *r, const int32_t *count, int32_t at_least)
+/* Strip d's opaque pass by `worker`, then marked drawn; called without the lock. */
+static void draw_opaque_strip(pipeline_run *r, tarn_pipeline_worker worker, int32_t d)
 {
+    tarn_strip_pipeline_opaque(r->memory, worker, d);
     pthread_mutex_lock(&r->lock);
-    while (*count < at_least) pthread_cond_wait(&r->moved, &r->lock);
-    pthread_mutex_unlock(&r->lock);
-}
-
-static void set_count(pipeline_run *r, int32_t *count, int32_t value)
-{
-    pthread_mutex_lock(&r->lock);
-    *count = value;
+    r->drawn[d] = 1u;
     pthread_cond_broadcast(&r->moved);
     pthread_mutex_unlock(&r->lock);
 }
 
+/* Whether the opaque passes of strips 0 .. count - 1 are drawn; under lock. */
+static int all_drawn(const pipeline_run *r, int32_t count)
+{
+    for (int32_t d = 0; d < count; d++)
+        if (!r->drawn[d]) return 0;
+    return 1;
+}
+
+/* The opaque worker: the next strip no worker has taken, once the ring has room for it. */
 static void *opaque_worker(void *arg)
 {
     pipeline_run *r = arg;
-    for (int32_t d = 0; d < r->pipeline.strips; d++) {
-        wait_for(r, &r->water_sent, tarn_strip_pipeline_sent_before_opaque(&r->pipeline, d));
-        tarn_strip_pipeline_opaque(r->memory, d);
-        set_count(r, &r->opaque_drawn, d + 1);
+    for (;;) {
+        pthread_mutex_lock(&r->lock);
+        while (r->next_opaque < r->pipeline.strips &&
+               r->water_sent < tarn_strip_pipeline_sent_before_opaque(&r->pipeline, r->next_opaque))
+            pthread_cond_wait(&r->moved, &r->lock);
+        const int32_t d = r->next_opaque < r->pipeline.strips ? r->next_opaque++ : -1;
+        pthread_mutex_unlock(&r->lock);
+        if (d < 0) return NULL;
+        draw_opaque_strip(r, TARN_OPAQUE_WORKER, d);
     }
-    return NULL;
 }
 
+/* The water worker: each strip once the opaque passes it reads are drawn, taking
+ * the next strip no worker has taken, where the ring has room for it, rather than
+ * wait. */
 static void *water_worker(void *arg)
 {
     pipeline_run *r = arg;
     for (int32_t k = 0; k < r->pipeline.strips && r->status == TARN_OK; k++) {
-        wait_for(r, &r->opaque_drawn, tarn_strip_pipeline_drawn_before_water(&r->pipeline, k));
+        const int32_t needed = tarn_strip_pipeline_drawn_before_water(&r->pipeline, k);
+        pthread_mutex_lock(&r->lock);
+        while (!all_drawn(r, needed)) {
+            if (r->next_opaque < r->pipeline.strips &&
+                r->water_sent >= tarn_strip_pipeline_sent_before_opaque(&r->pipeline, r->next_opaque)) {
+                const int32_t d = r->next_opaque++;
+                pthread_mutex_unlock(&r->lock);
+                draw_opaque_strip(r, TARN_WATER_WORKER, d);
+                pthread_mutex_lock(&r->lock);
+            } else {
+                pthread_cond_wait(&r->moved, &r->lock);
+            }
+        }
+        pthread_mutex_unlock(&r->lock);
         r->status = tarn_strip_pipeline_water(r->memory, k, keep_tile, r->frame);
-        set_count(r, &r->water_sent, r->status == TARN_OK ? k + 1 : INT32_MAX); /* a stop frees the other */
+        pthread_mutex_lock(&r->lock);
+        r->water_sent = r->status == TARN_OK ? k + 1 : INT32_MAX; /* a stop frees the other */
+        pthread_cond_broadcast(&r->moved);
+        pthread_mutex_unlock(&r->lock);
     }
     return NULL;
 }
 
-/* The workers one after the other, each opaque strip drawn as soon as the order
- * allows: when water strip k is drawn, the ring holds as much below it as it can. */
-static tarn_status run_opaque_first(pipeline_run *r)
+/* The workers in one thread: the opaque worker as far ahead as the order lets it
+ * go, so that the ring holds as much below each water strip as it can; or the
+ * water worker drawing every opaque pass itself, each just before it is read. */
+static tarn_status run_in_one_thread(pipeline_run *r, tarn_pipeline_worker opaque_by)
 {
     int32_t drawn = 0;
     for (int32_t k = 0; k < r->pipeline.strips; k++) {
-        for (; drawn < r->pipeline.strips && tarn_strip_pipeline_sent_before_opaque(&r->pipeline, drawn) <= k; drawn++)
-            tarn_strip_pipeline_opaque(r->memory, drawn);
+        const int32_t last = opaque_by == TARN_OPAQUE_WORKER ? r->pipeline.strips
+                                                             : tarn_strip_pipeline_drawn_before_water(&r->pipeline, k);
+        for (; drawn < last && tarn_strip_pipeline_sent_before_opaque(&r->pipeline, drawn) <= k; drawn++)
+            tarn_strip_pipeline_opaque(r->memory, opaque_by, drawn);
         const tarn_status status = tarn_strip_pipeline_water(r->memory, k, keep_tile, r->frame);
         if (status != TARN_OK) return status;
     }
     return TARN_OK;
 }
 
-/* The frame drawn by a strip pipeline, its workers in two threads or one after the
- * other; fails the test if the pipeline fails. */
-static void render_in_pipeline(const tarn_scene *scene, const tarn_frame_config *config, int threads,
+/* How a test runs the pipeline's workers. */
+typedef enum { IN_TWO_THREADS, OPAQUE_WORKER_FIRST, WATER_WORKER_ALONE } pipeline_schedule;
+
+/* The frame drawn by a strip pipeline; fails the test if the pipeline fails. */
+static void render_in_pipeline(const tarn_scene *scene, const tarn_frame_config *config, pipeline_schedule how,
                                shared_frame *frame, const char *what)
 {
     memset(frame, 0, sizeof *frame);
     const size_t bytes = tarn_strip_pipeline_memory_bytes(config, scene);
-    pipeline_run r = {malloc(bytes), {0, 0}, frame, PTHREAD_MUTEX_INITIALIZER, PTHREAD_COND_INITIALIZER, 0, 0, TARN_OK};
+    pipeline_run r = {malloc(bytes), {0, 0}, frame, PTHREAD_MUTEX_INITIALIZER, PTHREAD_COND_INITIALIZER, 0, {0}, 0,
+                      TARN_OK};
     assert_non_null(r.memory);
     r.status = tarn_strip_pipeline_begin(scene, config, r.memory, bytes, &r.pipeline);
+    if (r.pipeline.strips > STRIPS_MAX) fail_msg("%s: %d strips, more than the test's %d", what, r.pipeline.strips, STRIPS_MAX);
     if (r.status == TARN_OK && r.pipeline.strips == 0) /* not in strips: the frame as it is */
         r.status = tarn_render_frame(scene, config, r.memory, bytes, keep_tile, frame);
-    else if (r.status == TARN_OK && !threads)
-        r.status = run_opaque_first(&r);
+    else if (r.status == TARN_OK && how != IN_TWO_THREADS)
+        r.status = run_in_one_thread(&r, how == OPAQUE_WORKER_FIRST ? TARN_OPAQUE_WORKER : TARN_WATER_WORKER);
     else if (r.status == TARN_OK) {
         pthread_t opaque, water;
         if (pthread_create(&opaque, NULL, opaque_worker, &r) != 0 || pthread_create(&water, NULL, water_worker, &r) != 0)
@@ -207,10 +247,12 @@ static void assert_parts_draw_the_frame(const tarn_scene *scene, const tarn_fram
         assert_frame_is(whole, frame, what, how);
     }
     if (config->quality.frame_shape == TARN_FRAME_STRIPS) {
-        render_in_pipeline(scene, config, 1, frame, what);
+        render_in_pipeline(scene, config, IN_TWO_THREADS, frame, what);
         assert_frame_is(whole, frame, what, "in a strip pipeline of two threads");
-        render_in_pipeline(scene, config, 0, frame, what);
+        render_in_pipeline(scene, config, OPAQUE_WORKER_FIRST, frame, what);
         assert_frame_is(whole, frame, what, "in a strip pipeline, its opaque strips drawn first");
+        render_in_pipeline(scene, config, WATER_WORKER_ALONE, frame, what);
+        assert_frame_is(whole, frame, what, "in a strip pipeline, its water worker alone");
     }
     free(frame);
     free(whole);

@@ -539,7 +539,8 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
 /* ---- a strip pipeline ------------------------------------------------------------
  * Two workers over one ring (tarn_strip_pipeline_begin): each has a frame_state of
  * its own, over the same buffers, and a ring target of its own, which the water
- * worker moves down the frame as it goes. Both live at the start of the memory. */
+ * worker moves down the frame as it goes; either draws opaque passes with its own.
+ * Both live at the start of the memory. */
 typedef struct {
     tarn_view view;
     frame_state opaque_worker, water_worker;
@@ -594,10 +595,14 @@ tarn_status tarn_strip_pipeline_begin(const tarn_scene *scene, const tarn_frame_
     return TARN_OK;
 }
 
-void tarn_strip_pipeline_opaque(void *memory, int32_t strip)
+void tarn_strip_pipeline_opaque(void *memory, tarn_pipeline_worker worker, int32_t strip)
 {
     strip_pipeline_state *s = pipeline_state(memory);
-    if (TARN_LINK_STRIPS && strip >= 0 && strip < s->strips) draw_strip_opaque(&s->opaque_worker, &s->opaque_ring, strip);
+    if (!TARN_LINK_STRIPS || strip < 0 || strip >= s->strips) return;
+    if (worker == TARN_WATER_WORKER)
+        draw_strip_opaque(&s->water_worker, &s->water_ring, strip);
+    else
+        draw_strip_opaque(&s->opaque_worker, &s->opaque_ring, strip);
 }
 
 tarn_status tarn_strip_pipeline_water(void *memory, int32_t strip, tarn_tile_sink sink, void *user)

@@ -293,32 +293,42 @@ tarn_status tarn_render_frame_part(const tarn_scene *scene, const tarn_frame_con
  *
  * Parts need memory each, and a ring of strips is most of a frame's: two rarely fit
  * a small board's RAM. A strip pipeline shares one ring between two workers (two
- * cores, or threads): the opaque worker draws each strip's opaque pass into the
- * ring, the water worker draws each strip's water over it and hands the strip to
- * the sink, the opaque worker running ahead. The ring holds one strip more than
- * tarn_render_frame's, the one the opaque worker draws while the water worker reads
+ * cores, or threads): the opaque worker draws strips' opaque passes into the ring,
+ * the water worker draws each strip's water over them and hands the strip to the
+ * sink, the opaque passes running ahead. The ring holds one strip more than
+ * tarn_render_frame's, the one an opaque pass is drawn into while the water reads
  * the others. The strips delivered are tarn_render_frame's (frame_shape
  * TARN_FRAME_STRIPS), byte for byte.
  *
  *     size_t need = tarn_strip_pipeline_memory_bytes(&cfg, &scene);
  *     tarn_strip_pipeline p;
  *     tarn_strip_pipeline_begin(&scene, &cfg, memory, need, &p);   once, first
- *     opaque worker: for d in 0 .. p.strips - 1:
- *         wait until the water worker has sent tarn_strip_pipeline_sent_before_opaque(&p, d) strips
- *         tarn_strip_pipeline_opaque(memory, d)
+ *     opaque worker: until every strip is taken:
+ *         take the next strip d no worker has taken, once the water worker has sent
+ *         tarn_strip_pipeline_sent_before_opaque(&p, d) strips (the ring has room for it)
+ *         tarn_strip_pipeline_opaque(memory, TARN_OPAQUE_WORKER, d)
  *     water worker: for k in 0 .. p.strips - 1:
- *         wait until the opaque worker has drawn tarn_strip_pipeline_drawn_before_water(&p, k) strips
+ *         until the opaque passes of strips 0 .. tarn_strip_pipeline_drawn_before_water(&p, k) - 1
+ *         are drawn: take the next strip d no worker has taken, if the ring has room for
+ *         it, and tarn_strip_pipeline_opaque(memory, TARN_WATER_WORKER, d); or wait
  *         tarn_strip_pipeline_water(memory, k, sink, user)
  *
- * The waits are the caller's (a FIFO between cores, a condition variable): the core
- * has no threads. Within those orders the two workers share nothing the core writes.
- * A frame that cannot be drawn in strips (under the underwater view, or over a
- * backdrop) sets p.strips to 0: draw it with tarn_render_frame in the same memory.
- * A config whose frame_shape is not TARN_FRAME_STRIPS is TARN_ERR_CONFIG. */
+ * Each opaque strip is drawn once, by whichever worker takes it: the water worker
+ * takes one where it would otherwise wait (where the opaque passes cost more than
+ * the water over them, as at the top of a frame whose water lies below), and the
+ * two then draw opaque strips side by side. Taking and waiting are the caller's (a
+ * lock and words both cores read, a mutex and a condition variable): the core has
+ * no threads. Within this order the workers share nothing the core writes. A frame that cannot be drawn in strips
+ * (under the underwater view, or over a backdrop) sets p.strips to 0: draw it with
+ * tarn_render_frame in the same memory. A config whose frame_shape is not
+ * TARN_FRAME_STRIPS is TARN_ERR_CONFIG. */
 typedef struct {
     int32_t strips; /* the frame's strips, top to bottom; 0: draw it with tarn_render_frame */
     int32_t ahead;  /* strips below its own that a strip's water reads */
 } tarn_strip_pipeline;
+
+/* The worker drawing an opaque pass: each has state of its own in the memory. */
+typedef enum { TARN_OPAQUE_WORKER = 0, TARN_WATER_WORKER = 1 } tarn_pipeline_worker;
 
 /* The water strips sent before opaque strip d may start (it draws over the slot of
  * strip d - ahead - 2, which the water of that strip reads last), and the opaque
@@ -340,8 +350,8 @@ size_t tarn_strip_pipeline_memory_bytes(const tarn_frame_config *config, const t
  * vertex pass, the cluster bins) in `memory` (4-byte aligned), before either worker. */
 tarn_status tarn_strip_pipeline_begin(const tarn_scene *scene, const tarn_frame_config *config, void *memory,
                                       size_t memory_bytes, tarn_strip_pipeline *pipeline);
-/* The opaque worker: strip `strip`'s opaque pass into the ring. */
-void tarn_strip_pipeline_opaque(void *memory, int32_t strip);
+/* Strip `strip`'s opaque pass into the ring, by `worker`. */
+void tarn_strip_pipeline_opaque(void *memory, tarn_pipeline_worker worker, int32_t strip);
 /* The water worker: strip `strip`'s water, and the strip to the sink; TARN_ERR_SINK
  * when the sink stopped. */
 tarn_status tarn_strip_pipeline_water(void *memory, int32_t strip, tarn_tile_sink sink, void *user);
