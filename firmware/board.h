@@ -55,8 +55,10 @@ size_t board_stack_peak(void);
 uint32_t board_milliseconds(void);
 
 /* ---- Real boards of two cores (BOARD_CORES := 2: firmware/display_main.c) ----
- * Core 0 runs main(); these let it draw each frame with core 1, a part each
- * (tarn_render_frame_part), both sending their tiles to the one panel. */
+ * Core 0 runs main(); these let it draw each frame with core 1: a part each
+ * (tarn_render_frame_part), both sending their tiles to the one panel, or a strip
+ * pipeline's two workers (tarn_strip_pipeline_begin, BOARD_CORE_SPLIT := pipeline),
+ * core 0 sending the strips. */
 
 /* Starts `entry` on core 1, on the stack that ends at `stack_top` (8-byte aligned),
  * with the vector table core 0 runs on. Returns 0, or non-zero when core 1 did not
@@ -67,6 +69,15 @@ int board_second_core_start(void (*entry)(void), uint32_t *stack_top);
  * it, waiting until one comes. */
 void board_core_send(uint32_t word);
 uint32_t board_core_receive(void);
+
+/* Between a core's writes to memory the other core reads and the word that tells
+ * it they are done: the writes first, as the other core sees them. */
+void board_cores_order(void);
+
+/* The strips' lock: a core holds it while it takes the next strip of a strip
+ * pipeline, waiting while the other holds it. */
+void board_strips_lock(void);
+void board_strips_unlock(void);
 
 /* The panel's lock: a core holds it while it sends a tile (its window and pixels
  * must not mix with the other core's), waiting while the other holds it. */

@@ -8,16 +8,20 @@
  * at the second time once more into a sink that drops the tiles (on a board of
  * FW_PARTS cores, board.mk's BOARD_CORES, then that frame again in FW_PARTS parts,
  * tarn_render_frame_part, one after the other, as the cores would draw them side by
- * side), and one line of text on the board's report channel:
+ * side; or, on a board whose cores share one ring, FW_PIPELINE from board.mk's
+ * BOARD_CORE_SPLIT, by a strip pipeline's two workers, one after the other, and
+ * then, not counted, checked against the whole frame by their checksums), and one
+ * line of text on the board's report channel:
  *   target board=B scene=S size=WxH insn_per_pixel=N render_insn_per_pixel=N
- *          [parts=N parts_insn_per_pixel=N] stack_peak_bytes=N frame_insn=N,N,N,N[,N]
- *          counter_check=N/2000000
+ *          [parts=N [split=pipeline] parts_insn_per_pixel=N] stack_peak_bytes=N
+ *          frame_insn=N,N,N,N[,N] counter_check=N/2000000
  * insn_per_pixel is the streamed frames' instructions (render, RGB565 conversion and
  * the board's writes of the panel stream) over their pixels, rounded to nearest: an
  * average over the three times (until issue 21 there were two, 0 and 1000 ms, and
  * the figure was their average); render_insn_per_pixel is the core alone (the
  * fourth frame, at the second time); parts_insn_per_pixel is the slowest of its
- * parts, the core's time for the frame on the board's cores; frame_insn gives
+ * parts, the core's time for the frame on the board's cores (with a pipeline, the
+ * time its two workers' schedule takes, pipeline_schedule below); frame_insn gives
  * every frame's count, the streamed ones first, the parts together last;
  * counter_check is what the counter measured for a loop of exactly 2000000
  * instructions (the board's tick-to-instruction ratio, checked).
@@ -31,6 +35,7 @@
 #include "report.h"
 #include "scene.h"
 #include "stream_transport.h"
+#include "tarn/tarn_checksum.h"
 #include "tarn/tarn_panel.h"
 #include "tarn/tarn_render.h"
 
@@ -43,9 +48,18 @@
 #ifndef FW_PARTS
 #define FW_PARTS 1
 #endif
+#ifndef FW_PIPELINE
+#define FW_PIPELINE 0
+#endif
 
-/* The renderer's working memory: the only large buffer. */
-static uint32_t memory[(SCENE_MEMORY_BYTES + 3u) / 4u];
+/* The renderer's working memory: the only large buffer; with a pipeline, as large as
+ * either way of drawing the frame needs. */
+#if FW_PIPELINE && SCENE_PIPELINE_MEMORY_BYTES > SCENE_MEMORY_BYTES
+#define MEMORY_BYTES SCENE_PIPELINE_MEMORY_BYTES
+#else
+#define MEMORY_BYTES SCENE_MEMORY_BYTES
+#endif
+static uint32_t memory[(MEMORY_BYTES + 3u) / 4u];
 /* A row of the widest piece (tile or strip) in RGB565, and at least 64 pixels: the
  * panel stream needs no more, and sends as many rows of a narrow tile as fit in one
  * write. */
@@ -100,6 +114,7 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
     if (FW_PARTS > 1) {
         report_text(&r, " parts=");
         report_number(&r, FW_PARTS);
+        if (FW_PIPELINE) report_text(&r, " split=pipeline");
         report_text(&r, " parts_insn_per_pixel=");
         report_number(&r, report_per_pixel(slowest_part, pixels));
     }
@@ -117,6 +132,128 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
     report_text(&r, "\n");
     return report_send(&r) != 0 ? 2 : 0;
 }
+
+#if FW_PIPELINE
+#if FW_PARTS != 2
+#error "FW_PIPELINE: a strip pipeline has two workers, on a board of two cores"
+#endif
+/* Each step's instructions in the measured pipeline frame, and when each ends in
+ * the two workers' schedule. Static: off the stack the frame renders on. */
+#define PIPELINE_STRIPS_MAX 256
+static uint64_t opaque_insn[PIPELINE_STRIPS_MAX], water_insn[PIPELINE_STRIPS_MAX];
+static uint64_t opaque_end[PIPELINE_STRIPS_MAX], water_end[PIPELINE_STRIPS_MAX];
+
+/* The strips from `next` on that the opaque worker, free at *opaque_free, starts by
+ * `by`, while the water worker draws strip k (the ring has room up to the strips
+ * whose water is sent); each one's end into opaque_end. Returns the next strip no
+ * worker has taken. */
+static int32_t opaque_worker_takes(const tarn_strip_pipeline *p, int32_t k, int32_t next, uint64_t by,
+                                   uint64_t *opaque_free)
+{
+    for (; next < p->strips; next++) {
+        const int32_t sent = tarn_strip_pipeline_sent_before_opaque(p, next);
+        if (sent > k) break;
+        uint64_t start = *opaque_free;
+        if (sent > 0 && water_end[sent - 1] > start) start = water_end[sent - 1];
+        if (start > by) break;
+        opaque_end[next] = *opaque_free = start + opaque_insn[next];
+    }
+    return next;
+}
+
+/* When the frame ends with two cores each running one worker, from the steps'
+ * counts, the workers taking strips as tarn_render.h says: the begin on one core;
+ * the opaque worker takes the next strip as soon as it is free and the ring has
+ * room for it; the water worker, before each strip, takes the next one itself
+ * wherever it would wait for the passes it reads. The cores' signals to each
+ * other are not counted (a lock taken and a word written a strip). */
+static uint64_t pipeline_schedule(const tarn_strip_pipeline *p, uint64_t begin)
+{
+    uint64_t opaque_free = begin, water_free = begin;
+    int32_t next = 0; /* the next strip no worker has taken */
+    for (int32_t k = 0; k < p->strips; k++) {
+        const int32_t needed = tarn_strip_pipeline_drawn_before_water(p, k);
+        for (;;) {
+            next = opaque_worker_takes(p, k, next, water_free, &opaque_free);
+            uint64_t drawn = 0; /* when the passes it reads are drawn, all of them taken */
+            for (int32_t d = 0; d < needed && next >= needed; d++)
+                if (opaque_end[d] > drawn) drawn = opaque_end[d];
+            if (next >= needed && drawn <= water_free) break;
+            if (next < p->strips && tarn_strip_pipeline_sent_before_opaque(p, next) <= k) {
+                opaque_end[next] = water_free = water_free + opaque_insn[next]; /* rather than wait */
+                next++;
+            } else {
+                water_free = drawn; /* the passes it reads are all taken: it waits */
+            }
+        }
+        water_end[k] = water_free = water_free + water_insn[k];
+    }
+    return water_free;
+}
+
+/* The frame at `time_ms` by a strip pipeline into `sink`, its steps one after the
+ * other on this core, each counted: their sum into *sum, the two cores' time into
+ * *two_cores. */
+static tarn_status pipeline_frame(uint32_t time_ms, tarn_tile_sink sink, uint64_t *sum, uint64_t *two_cores)
+{
+    tarn_frame_config config = scene_config;
+    config.time_ms = time_ms;
+    tarn_strip_pipeline p;
+    const uint64_t start = board_instructions();
+    tarn_status status = tarn_strip_pipeline_begin(&scene_scene, &config, memory, sizeof memory, &p);
+    const uint64_t begin = board_instructions() - start;
+    if (status == TARN_OK && (p.strips == 0 || p.strips > PIPELINE_STRIPS_MAX)) status = TARN_ERR_CONFIG;
+    int32_t drawn = 0;
+    for (int32_t k = 0; k < p.strips && status == TARN_OK; k++) {
+        for (; drawn < tarn_strip_pipeline_drawn_before_water(&p, k); drawn++) {
+            const uint64_t at = board_instructions();
+            tarn_strip_pipeline_opaque(memory, TARN_OPAQUE_WORKER, drawn);
+            opaque_insn[drawn] = board_instructions() - at;
+        }
+        const uint64_t at = board_instructions();
+        status = tarn_strip_pipeline_water(memory, k, sink, 0);
+        water_insn[k] = board_instructions() - at;
+    }
+    *sum = board_instructions() - start;
+    *two_cores = status == TARN_OK ? pipeline_schedule(&p, begin) : 0u;
+    return status;
+}
+
+/* The checksum (tarn_checksum.h) of the tiles a frame gave sum_tile. */
+static uint32_t frame_sum;
+
+static int sum_tile(void *user, const tarn_tile *tile)
+{
+    (void)user;
+    frame_sum = tarn_checksum_tile(frame_sum, tile);
+    return 0;
+}
+
+/* Whether the pipeline's frame at `time_ms` is the one frame tarn_render_frame draws
+ * (their checksums, after the measured frames: summing costs instructions). */
+static int pipeline_draws_the_frame(uint32_t time_ms)
+{
+    tarn_frame_config config = scene_config;
+    config.time_ms = time_ms;
+    frame_sum = 0u;
+    if (tarn_render_frame(&scene_scene, &config, memory, sizeof memory, sum_tile, 0) != TARN_OK) return 0;
+    const uint32_t whole = frame_sum;
+    uint64_t unused[2];
+    frame_sum = 0u;
+    return pipeline_frame(time_ms, sum_tile, &unused[0], &unused[1]) == TARN_OK && frame_sum == whole;
+}
+
+/* The run's report when the pipeline's frame is not the frame. */
+static int report_pipeline_differs(void)
+{
+    report r = {{0}, 0};
+    report_text(&r, "error board=");
+    report_text(&r, FW_BOARD_NAME);
+    report_text(&r, " status=the strip pipeline's frame differs from tarn_render_frame's\n");
+    (void)report_send(&r);
+    return 1;
+}
+#endif
 
 int main(void)
 {
@@ -149,7 +286,12 @@ int main(void)
         status = tarn_render_frame_part(&scene_scene, &config, memory, sizeof memory, whole_frame, drop_tile, 0);
         frame_instructions[CORE_FRAME] = board_instructions() - start;
     }
-#if FW_PARTS > 1
+#if FW_PIPELINE
+    /* and on a board whose two cores share one ring the frame by a strip pipeline */
+    if (status == TARN_OK)
+        status = pipeline_frame(times[1], drop_tile, &frame_instructions[PARTS_FRAME], &slowest_part);
+    if (status == TARN_OK && !pipeline_draws_the_frame(times[1])) return report_pipeline_differs();
+#elif FW_PARTS > 1
     /* and on a board of several cores the frame in FW_PARTS parts, one after the other
      * (a loop of their own: one loop over the whole frame and the parts takes the
      * 16 KB boards' images past their code budget by 28 bytes) */

@@ -296,14 +296,16 @@ class Measurer:
         d["host"] = self.sweep_cost(scene, args)
         return Placeholder(d) if self.recording else d
 
-    def bench(self, board, scene=None, flags=None, may_fail=False, own_scene=None):
+    def bench(self, board, scene=None, flags=None, may_fail=False, own_scene=None, make_vars=()):
         """make bench-target's line for a board's own build (scene None), for the
         build of another of the board's own scenes (own_scene: one of its
         BOARD_SCENES but the first), or for a build of another scene or bake flags
-        in a directory of its own; the run's report fields too (frame_insn,
-        counter_check). may_fail: a build that fails gives {"failed": its output}
-        instead of stopping the measurement."""
-        value = self._get(("bench", board, scene, flags, own_scene))
+        in a directory of its own, with the board's variables `make_vars`
+        ("NAME=value" each: another BOARD_CORE_SPLIT, BOARD_RAM_CODE) where given;
+        the run's report fields too (frame_insn, counter_check). may_fail: a build
+        that fails gives {"failed": its output} instead of stopping the
+        measurement."""
+        value = self._get(("bench", board, scene, flags, own_scene, tuple(make_vars)))
         if isinstance(value, MeasureError):
             if may_fail:
                 return {"failed": str(value)}
@@ -323,7 +325,9 @@ class Measurer:
         """A board's own build, sized without running it (the real boards): text,
         data, bss, flash_bytes, ram_bytes, scene_bytes and code_bytes as
         firmware/image_sizes.sh gives them, stack_bytes (the static bound), memory_bytes (its scene's, as
-        baked), and uf2_bytes where the build makes a UF2 file."""
+        baked), piece_width and piece_rows (the largest tile or strip it sends), pipeline_memory_bytes
+        where it is baked in strips (a strip pipeline's), and uf2_bytes where the build makes a UF2
+        file."""
         return self._get(("build", board))
 
     def bake(self, scene, args=""):
@@ -449,15 +453,15 @@ class Measurer:
                                (len(costs) - costs.count(None), len(costs), scene))
         return costs
 
-    def _m_bench(self, board, scene, flags, own_scene):
-        argv = ["make", "--no-print-directory", "-s", "bench-target", "BOARD=" + board]
+    def _m_bench(self, board, scene, flags, own_scene, make_vars):
+        argv = ["make", "--no-print-directory", "-s", "bench-target", "BOARD=" + board] + list(make_vars)
         if own_scene is not None:
             # where firmware/firmware.mk builds a board's scene after its first
             argv.append("FW_BOARD_SCENE=" + scene_path(own_scene))
             fw_dir = "build/firmware/%s@%s" % (board, os.path.basename(scene_path(own_scene))[:-len(".json")])
         elif scene is not None:
             # short: the emulator's semihosting takes the stream's path, and long ones fail
-            slug = "%s-%s" % (board, hashlib.sha1(("%s\0%s" % (scene, flags)).encode()).hexdigest()[:10])
+            slug = "%s-%s" % (board, hashlib.sha1("\0".join((scene, flags or "") + make_vars).encode()).hexdigest()[:10])
             fw_dir = os.path.join(OUT, "fw", slug)
             argv += ["SCENE=" + scene_path(scene), "BAKE_FLAGS=" + (flags or ""), "FW_BUILD_DIR=" + fw_dir]
         else:
@@ -519,8 +523,14 @@ class Measurer:
         bound = run(["firmware/stack_bound.sh", conf["cross"], os.path.join(fw_dir, "obj")] +
                     conf["stack_entry"].split())
         with open(os.path.join(ROOT, fw_dir, "scene.h")) as f:
-            memory = re.search(r"^#define SCENE_MEMORY_BYTES (\d+)", f.read(), re.M).group(1)
+            header = f.read()
+        memory = re.search(r"^#define SCENE_MEMORY_BYTES (\d+)", header, re.M).group(1)
         values = dict(sizes, stack_bytes=int(fields(bound.splitlines()[0])["stack_bytes"]), memory_bytes=int(memory))
+        for name in ("PIECE_WIDTH", "PIECE_ROWS"):
+            values[name.lower()] = int(re.search(r"^#define SCENE_%s (\d+)" % name, header, re.M).group(1))
+        pipeline = re.search(r"^#define SCENE_PIPELINE_MEMORY_BYTES (\d+)", header, re.M)
+        if pipeline:  # a frame in strips: two workers' shared memory too
+            values["pipeline_memory_bytes"] = int(pipeline.group(1))
         uf2 = os.path.join(ROOT, fw_dir, "firmware.uf2")
         if os.path.exists(uf2):
             values["uf2_bytes"] = os.path.getsize(uf2)

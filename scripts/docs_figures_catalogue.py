@@ -163,6 +163,27 @@ for _b in REAL_BOARDS:
         KEYS["limit.%s.%s" % (_b, _r.lower())] = (lambda f: lambda m: comma(f(m)))(link_length(_b, _r))
     KEYS["real.%s.ram_left" % _b] = (lambda b: lambda m: Fig("1", 1.0) if m.recording else comma(exact(
         link_length(b, "RAM")(m).num - m.build(b)["ram_bytes"].num)))(_b)
+KEYS["real.rp2040-st7789.pipeline_memory_bytes"] = lambda m: comma(m.build("rp2040-st7789")["pipeline_memory_bytes"])
+
+
+def piece_rgb565_bytes(m, board):
+    """The RGB565 bytes of the largest tile or strip a board's build sends."""
+    b = m.build(board)
+    return 2 * b["piece_width"].num * b["piece_rows"].num
+
+
+def rp2040_spi_hz(m):
+    """SPI0's bit rate: clk_peri over the prescaler (boards/rp2040-st7789/panel_spi.c, SCR 0)."""
+    peri = m.code("boards/rp2040-st7789/clock.h", r"^#define CLOCK_PERI_HZ (\d+)u").num
+    return peri / m.code("boards/rp2040-st7789/panel_spi.c", r"^#define SPI_CPSDVSR (\d+)u").num
+
+
+KEYS["real.rp2040-st7789.piece_bytes"] = lambda m: Fig("1", 1.0) if m.recording else comma(exact(
+    int(piece_rgb565_bytes(m, "rp2040-st7789"))))
+KEYS["real.rp2040-st7789.piece_ms"] = lambda m: Fig("1", 1.0) if m.recording else exact(
+    "%.2f" % (1000.0 * 8 * piece_rgb565_bytes(m, "rp2040-st7789") / rp2040_spi_hz(m)))
+KEYS["real.rp2040-st7789.spi_mhz"] = lambda m: Fig("1", 1.0) if m.recording else exact(
+    "%.2f" % (rp2040_spi_hz(m) / 1e6))
 KEYS["real.rp2040-st7789.uf2_bytes"] = lambda m: comma(m.build("rp2040-st7789")["uf2_bytes"])
 KEYS["real.rp2040-st7789.uf2_blocks"] = lambda m: Fig("1", 1.0) if m.recording else exact(
     m.build("rp2040-st7789")["uf2_bytes"].num // 512)
@@ -392,6 +413,8 @@ KEYS["memory.pond.baked_bytes"] = memory_key("pond", "", "baked_bytes")
 KEYS["memory.pond.fast.bytes"] = memory_key("pond", "--quality fast", "bytes")
 KEYS["memory.pond.fast.baked_bytes"] = memory_key("pond", "--quality fast", "baked_bytes")
 KEYS["memory.pond-orbit.strips16.bytes"] = memory_key("pond-orbit", "--quality exact --frame strips --tile 16", "bytes")
+KEYS["memory.pond-orbit.strips16.pipeline_bytes"] = memory_key("pond-orbit", "--quality exact --frame strips --tile 16",
+                                                               "pipeline_bytes")
 KEYS["memory.opaque.tile32"] = memory_key("effects/none", "--tile 32 --depth 32", "baked_bytes")
 KEYS["memory.opaque.tile16_depth16"] = memory_key("effects/none", "--tile 16 --depth 16", "baked_bytes")
 
@@ -451,8 +474,11 @@ FW_VARIANTS = {
 
 
 def fw(name):
-    board, scene, flags = FW_VARIANTS[name]
-    return lambda m: m.bench(board, scene, flags)
+    """A variant's bench line: FW_VARIANTS[name] is (board, scene, bake flags), and
+    the board's variables it sets otherwise ("NAME=value" each) where it has them."""
+    board, scene, flags = FW_VARIANTS[name][:3]
+    make_vars = FW_VARIANTS[name][3] if len(FW_VARIANTS[name]) > 3 else ()
+    return lambda m: m.bench(board, scene, flags, make_vars=make_vars)
 
 
 def fw_key(name, field):
@@ -874,16 +900,22 @@ FW_VARIANTS.update({
 })
 
 
-# Each real board's own build (its scene, bake flags and cores) counted on the
-# emulated board that stands for its chip: the RP2040's memory and Cortex-M0 code on
-# qemu-m0-264k, the STM32F411's on the Cortex-M3 of qemu-m3 (the M4 runs the M3's
-# instructions; its own build may pick a few of its own). The frame's time is the
+# Each real board's own build (its scene, bake flags, cores and code in RAM) counted
+# on the emulated board that stands for its chip: the RP2040's memory and Cortex-M0
+# code on qemu-m0-264k, the STM32F411's on the Cortex-M3 of qemu-m3 (the M4 runs the
+# M3's instructions; its own build may pick a few of its own). The frame's time is the
 # core's on its cores, its slower part's where it has two; a frame rate from it at the
 # board's clock, one instruction a cycle, is a bound no frame reaches: loads, stores
 # and taken branches take two cycles on both, and flash waits where a cache misses.
 REAL_COUNTED_ON = {"rp2040-st7789": "qemu-m0-264k", "stm32f411-st7789": "qemu-m3"}
 for _b, _on in REAL_COUNTED_ON.items():
-    FW_VARIANTS["real-" + _b] = (_on, board_scenes(_b)[0], board_mk_value(_b, "BOARD_BAKE_FLAGS") or "")
+    FW_VARIANTS["real-" + _b] = (_on, board_scenes(_b)[0], board_mk_value(_b, "BOARD_BAKE_FLAGS") or "",
+                                 tuple("%s=%s" % (v, board_mk_value(_b, v)) for v in ("BOARD_CORE_SPLIT", "BOARD_RAM_CODE")
+                                       if board_mk_value(_b, v)))
+# the RP2040's build before its cores shared one ring: the default quality in
+# tiles, a part a core, each with memory of its own
+FW_VARIANTS["rp2040-tile-parts"] = ("qemu-m0-264k", "pond-orbit", "", FW_VARIANTS["real-rp2040-st7789"][3][1:] +
+                                    ("BOARD_CORE_SPLIT=parts",))
 add_fw_keys()
 
 

@@ -4,7 +4,8 @@
 #   tests/check_firmware.sh DIR...          checks (make test, after make firmware-run)
 #   tests/check_firmware.sh --bench DIR...  one line per build (make bench-target):
 #     target board=B scene=S size=WxH insn_per_pixel=N ram_bytes=N flash_bytes=N
-#            stack_bytes=N render_insn_per_pixel=N [parts=N parts_insn_per_pixel=N]
+#            stack_bytes=N render_insn_per_pixel=N
+#            [parts=N [split=pipeline] parts_insn_per_pixel=N]
 #            scene_bytes=N code_bytes=N
 #            stack_peak_bytes=N stack_reserved_bytes=N panel_psnr=NN.NN
 #
@@ -74,7 +75,7 @@ for dir in "$@"; do
     emulated=$(conf emulated)
     if [ "$emulated" = 0 ]; then
         [ $bench = 1 ] && continue
-        report="" peak="" parts=""
+        report="" peak="" parts="" split=""
     else
         report=$(cat "$dir/report.txt" 2>/dev/null || true)
         case $report in
@@ -86,13 +87,14 @@ for dir in "$@"; do
         esac
         peak=$(field stack_peak_bytes "$report")
         parts=$(field parts "$report")
+        split=$(field split "$report")
     fi
 
     if [ $bench = 1 ]; then
         echo "target board=$board scene=$(field scene "$report") size=$(field size "$report")" \
             "insn_per_pixel=$(field insn_per_pixel "$report") ram_bytes=$ram flash_bytes=$flash" \
             "stack_bytes=$stack render_insn_per_pixel=$(field render_insn_per_pixel "$report")" \
-            ${parts:+"parts=$parts parts_insn_per_pixel=$(field parts_insn_per_pixel "$report")"} \
+            ${parts:+"parts=$parts${split:+ split=$split} parts_insn_per_pixel=$(field parts_insn_per_pixel "$report")"} \
             "scene_bytes=$scene_bytes code_bytes=$code stack_peak_bytes=$peak stack_reserved_bytes=$reserved" \
             "panel_psnr=$(board_panel_psnr)"
         continue

@@ -5,13 +5,15 @@
  *   and the entry point, each echoed back; a word that comes back different starts
  *   the sequence again, and before each 0 core 0 empties its own FIFO and signals
  *   an event (SEV), which wakes core 1 (datasheet §2.8.2).
- * - The FIFOs (§2.3.1.4) carry the frames' times and statuses between the cores.
- * - The panel's lock is hardware spinlock 31 (§2.3.1.3): reading it claims it when
- *   it reads non-zero, writing it frees it. */
+ * - The FIFOs (§2.3.1.4) carry the frames' times and statuses between the cores;
+ *   a strip pipeline's counts of strips done are words of SRAM both read.
+ * - The panel's lock is hardware spinlock 31, the strips' spinlock 30 (§2.3.1.3):
+ *   reading one claims it when it reads non-zero, writing it frees it. */
 #include "board.h"
 #include "rp2040.h"
 
 #define PANEL_SPINLOCK 31u
+#define STRIPS_SPINLOCK 30u
 #define START_TIMEOUT_MS 1000u
 
 static void send_event(void)
@@ -59,12 +61,45 @@ int board_second_core_start(void (*entry)(void), uint32_t *stack_top)
     return 0;
 }
 
+/* The Cortex-M0+ keeps its own stores in order and the SRAM has no cache; the
+ * barrier keeps the compiler from moving a store past the count, and the core from
+ * running ahead of its stores (ARMv6-M: DMB). */
+void board_cores_order(void)
+{
+    __asm__ volatile("dmb" ::: "memory");
+}
+
+/* Spinlock n claimed, waiting while the other core holds it; and freed. The claim
+ * and the release order memory as a barrier does: what one core wrote under the
+ * lock, the other reads after taking it. */
+static void spinlock_claim(unsigned n)
+{
+    while (SIO_SPINLOCK(n) == 0u) {}
+    board_cores_order();
+}
+
+static void spinlock_release(unsigned n)
+{
+    board_cores_order();
+    SIO_SPINLOCK(n) = 1u;
+}
+
 void board_panel_lock(void)
 {
-    while (SIO_SPINLOCK(PANEL_SPINLOCK) == 0u) {}
+    spinlock_claim(PANEL_SPINLOCK);
 }
 
 void board_panel_unlock(void)
 {
-    SIO_SPINLOCK(PANEL_SPINLOCK) = 1u;
+    spinlock_release(PANEL_SPINLOCK);
+}
+
+void board_strips_lock(void)
+{
+    spinlock_claim(STRIPS_SPINLOCK);
+}
+
+void board_strips_unlock(void)
+{
+    spinlock_release(STRIPS_SPINLOCK);
 }

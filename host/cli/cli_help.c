@@ -79,7 +79,8 @@ static const char compare_usage[] =
 static const char memory_usage[] =
     "usage: tarn memory SCENE [--size WxH] [QUALITY]\n"
     "  prints the bytes a frame's working memory takes (bytes=), baked (baked_bytes=), and in\n"
-    "  tiles and in strips (tiles_bytes=, strips_bytes=)\n";
+    "  tiles and in strips (tiles_bytes=, strips_bytes=), and in strips shared by two workers\n"
+    "  (pipeline_bytes=, tarn_strip_pipeline_begin)\n";
 
 static const char bake_usage[] =
     "usage: tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]\n"

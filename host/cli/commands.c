@@ -302,12 +302,13 @@ static int print_memory(const tarn_cli_options *o, const tarn_loaded_scene *scen
     const size_t tiles = tarn_frame_memory_bytes(&shaped, &scene->scene);
     shaped.quality.frame_shape = TARN_FRAME_STRIPS;
     const size_t strips = tarn_frame_memory_bytes(&shaped, &scene->scene);
+    const size_t pipeline = tarn_strip_pipeline_memory_bytes(&shaped, &scene->scene);
     printf("memory scene=%s size=%ux%u tile=%u frame=%s depth_bits=%u apron=%d bytes=%zu baked_bytes=%zu "
-           "tiles_bytes=%zu strips_bytes=%zu\n",
+           "tiles_bytes=%zu strips_bytes=%zu pipeline_bytes=%zu\n",
            scene->name, config->width, config->height, config->quality.tile_size,
            config->quality.frame_shape == TARN_FRAME_STRIPS ? "strips" : "tiles", config->quality.depth_bits,
            (int)tarn_frame_apron_pixels(&scene->scene, config), bytes,
-           tarn_static_memory_bytes(config, &scene->scene, config), tiles, strips);
+           tarn_static_memory_bytes(config, &scene->scene, config), tiles, strips, pipeline);
     return 0;
 }
 
