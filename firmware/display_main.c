@@ -18,12 +18,11 @@
  *
  * Where the cores share one ring of strips instead (FW_PIPELINE, from board.mk's
  * BOARD_CORE_SPLIT := pipeline), core 0 begins each frame (tarn_strip_pipeline_begin)
- * and sends core 1 its strips and how far ahead they reach; core 1 draws the opaque
- * strips, core 0 the water over them and sends each strip to the panel, drawing the
- * next opaque strip itself rather than wait for one. A core takes a strip under a
- * hardware spinlock and marks what it has done in words of SRAM the other reads, as
- * tarn_render.h orders them; core 1 tells core 0 when the frame's memory is free
- * again. A frame that cannot be drawn in strips is drawn by core 0 alone.
+ * and wakes core 1; then each core takes the frame's steps (a strip's opaque pass, or
+ * a strip's water and the strip to the panel) as tarn_render.h orders them, under a
+ * hardware spinlock, and marks each step done in SRAM the other reads; core 1 sends
+ * back its status when no step is left. A frame that cannot be drawn in strips is
+ * drawn by core 0 alone.
  *
  * build/firmware/BOARD/scene.h comes from `tarn bake SCENE -o scene.c --name scene`:
  * it declares scene_scene, scene_config and SCENE_MEMORY_BYTES. */
@@ -51,111 +50,23 @@
 
 #define TILE_BUFFER_BYTES (2u * SCENE_PIECE_WIDTH * SCENE_PIECE_ROWS)
 
-#if FW_PIPELINE
-#if FW_PARTS != 2
+#if FW_PIPELINE && FW_PARTS != 2
 #error "FW_PIPELINE: a strip pipeline's two workers, on a board of two cores"
 #endif
-#if SCENE_PIPELINE_MEMORY_BYTES > SCENE_MEMORY_BYTES
+#if FW_PARTS != 1 && FW_PARTS != 2
+#error "FW_PARTS: display_main.c draws a frame on one core or two"
+#endif
+
+/* The renderer's working memory: each core's own, or with a strip pipeline one for
+ * both, as large as either way of drawing the frame needs. */
+#if FW_PIPELINE && SCENE_PIPELINE_MEMORY_BYTES > SCENE_MEMORY_BYTES
 #define MEMORY_BYTES SCENE_PIPELINE_MEMORY_BYTES
 #else
 #define MEMORY_BYTES SCENE_MEMORY_BYTES
 #endif
-/* The cores' one frame memory, and core 0's tile buffers and sink. */
-static uint32_t memory[1][(MEMORY_BYTES + 3u) / 4u];
-static uint8_t tile_rgb565[1][2][TILE_BUFFER_BYTES];
-static panel_sink sinks[1];
-static uint64_t second_stack[FW_STACK_BYTES / 8u];
-/* What each core has done this frame, which the other reads: the next strip no core
- * has taken, each strip's opaque pass drawn, the strips core 0 has sent. */
-#define PIPELINE_STRIPS_MAX 256
-static volatile int32_t next_opaque, water_sent;
-static volatile uint8_t opaque_drawn[PIPELINE_STRIPS_MAX];
-
-/* The next strip no core has taken, now taken, if the ring has room for it; -1
- * otherwise. */
-static int32_t take_strip(const tarn_strip_pipeline *p)
-{
-    board_strips_lock();
-    int32_t d = next_opaque;
-    if (d < p->strips && water_sent >= tarn_strip_pipeline_sent_before_opaque(p, d))
-        next_opaque = d + 1;
-    else
-        d = -1;
-    board_strips_unlock();
-    return d;
-}
-
-/* Strip d's opaque pass by `worker`, then marked drawn for the other core. */
-static void draw_opaque_strip(tarn_pipeline_worker worker, int32_t d)
-{
-    tarn_strip_pipeline_opaque(memory[0], worker, d);
-    board_cores_order();
-    opaque_drawn[d] = 1u;
-}
-
-/* Core 1: the opaque strips of each frame core 0 begins, as the ring has room for
- * them, then a word that the memory is free again. */
-static void second_core_main(void)
-{
-    for (;;) {
-        tarn_strip_pipeline p;
-        p.strips = (int32_t)board_core_receive();
-        p.ahead = (int32_t)board_core_receive();
-        while (next_opaque < p.strips) {
-            const int32_t d = take_strip(&p);
-            if (d >= 0) draw_opaque_strip(TARN_OPAQUE_WORKER, d);
-        }
-        board_core_send(0u);
-    }
-}
-
-/* Core 0: the water strips, each to the panel once the opaque strips it reads are
- * drawn, taking the next opaque strip itself rather than wait; a strip the sink
- * refused lets core 1 run to the end. */
-static tarn_status send_strips(const tarn_strip_pipeline *p)
-{
-    tarn_status status = TARN_OK;
-    int32_t drawn = 0; /* strips 0 .. drawn - 1 are drawn */
-    for (int32_t k = 0; k < p->strips && status == TARN_OK; k++) {
-        while (drawn < tarn_strip_pipeline_drawn_before_water(p, k)) {
-            if (opaque_drawn[drawn]) {
-                drawn++;
-                continue;
-            }
-            const int32_t d = take_strip(p);
-            if (d >= 0) draw_opaque_strip(TARN_WATER_WORKER, d);
-        }
-        board_cores_order();
-        status = tarn_strip_pipeline_water(memory[0], k, panel_sink_send_tile, &sinks[0]);
-        water_sent = status == TARN_OK ? k + 1 : INT32_MAX;
-    }
-    return status;
-}
-
-static tarn_status show_frame(void)
-{
-    tarn_frame_config config = scene_config;
-    config.time_ms = board_milliseconds();
-    tarn_strip_pipeline p;
-    tarn_status status = tarn_strip_pipeline_begin(&scene_scene, &config, memory[0], sizeof memory[0], &p);
-    if (status == TARN_OK && (p.strips == 0 || p.strips > PIPELINE_STRIPS_MAX)) /* in tiles, on core 0 */
-        status = tarn_render_frame(&scene_scene, &config, memory[0], sizeof memory[0], panel_sink_send_tile, &sinks[0]);
-    else if (status == TARN_OK) {
-        next_opaque = 0;
-        water_sent = 0;
-        for (int32_t d = 0; d < p.strips; d++) opaque_drawn[d] = 0u;
-        board_cores_order();
-        board_core_send((uint32_t)p.strips);
-        board_core_send((uint32_t)p.ahead);
-        status = send_strips(&p);
-        (void)board_core_receive(); /* core 1 is done with the frame's memory */
-    }
-    return panel_sink_frame_status(&sinks[0], status);
-}
-#else
-/* Each core's own: the renderer's working memory, the two tile buffers the DMA
- * sends from, and the sink that fills them. */
-static uint32_t memory[FW_PARTS][(SCENE_MEMORY_BYTES + 3u) / 4u];
+#define MEMORIES (FW_PIPELINE ? 1 : FW_PARTS)
+static uint32_t memory[MEMORIES][(MEMORY_BYTES + 3u) / 4u];
+/* Each core's two tile buffers the DMA sends from, and the sink that fills them. */
 static uint8_t tile_rgb565[FW_PARTS][2][TILE_BUFFER_BYTES];
 static panel_sink sinks[FW_PARTS];
 
@@ -173,6 +84,7 @@ static int send_tile_locked(void *user, const tarn_tile *tile)
 #define SEND_TILE send_tile_locked
 #endif
 
+#if !FW_PIPELINE
 /* Part `part` of the frame at `time_ms`, in that part's memory and through its sink;
  * the frame's status. */
 static tarn_status show_part(uint32_t time_ms, uint16_t part)
@@ -184,35 +96,127 @@ static tarn_status show_part(uint32_t time_ms, uint16_t part)
                                                       SEND_TILE, &sinks[part]);
     return panel_sink_frame_status(&sinks[part], status);
 }
+#endif
+
+#if FW_PIPELINE
+/* The frame both cores draw, and what they have done, which both read: the next
+ * strip whose opaque pass, and whose water, no core has taken, each strip's steps
+ * done, and whether a step failed. */
+#define PIPELINE_STRIPS_MAX 256
+static tarn_strip_pipeline pipeline;
+static volatile int32_t next_opaque, next_water, failed;
+static volatile uint8_t opaque_drawn[PIPELINE_STRIPS_MAX], water_sent[PIPELINE_STRIPS_MAX];
+
+/* Whether the first `count` flags are set. */
+static int all_set(const volatile uint8_t *flags, int32_t count)
+{
+    for (int32_t d = 0; d < count; d++)
+        if (!flags[d]) return 0;
+    return 1;
+}
+
+/* The step this core takes next, as tarn_render.h orders them, under the strips'
+ * lock: the next water strip if the opaque passes it reads are drawn, or else the
+ * next opaque strip if the water over its slot is sent; *water says which. -1: none
+ * now. */
+static int32_t take_step(int *water)
+{
+    const tarn_strip_pipeline *p = &pipeline;
+    int32_t step = -1;
+    board_strips_lock();
+    *water = next_water < p->strips && all_set(opaque_drawn, tarn_strip_pipeline_drawn_before_water(p, next_water));
+    if (*water)
+        step = next_water++;
+    else if (next_opaque < p->strips && all_set(water_sent, tarn_strip_pipeline_sent_before_opaque(p, next_opaque)))
+        step = next_opaque++;
+    board_strips_unlock();
+    return step;
+}
+
+/* Core `worker`'s share of the pipeline's frame: steps until every one is taken or
+ * one failed (a strip the sink refused); its status. */
+static tarn_status draw_share(unsigned worker)
+{
+    tarn_status status = TARN_OK;
+    while (!failed && (next_water < pipeline.strips || next_opaque < pipeline.strips)) {
+        int water;
+        const int32_t step = take_step(&water);
+        if (step < 0) continue; /* the other core's step first */
+        if (water)
+            status = tarn_strip_pipeline_water(memory[0], worker, step, SEND_TILE, &sinks[worker]);
+        else
+            tarn_strip_pipeline_opaque(memory[0], worker, step);
+        board_cores_order();
+        (water ? water_sent : opaque_drawn)[step] = 1u;
+        if (status != TARN_OK) failed = 1;
+    }
+    return panel_sink_frame_status(&sinks[worker], status);
+}
+
+/* Core 1's share of the frame core 0 began, for core 0's word. */
+static tarn_status second_share(uint32_t word)
+{
+    (void)word;
+    return draw_share(1);
+}
+
+/* Core 0 begins the frame at `time_ms` (the scene posed, the bins), then both draw
+ * it; a frame that cannot be drawn in strips core 0 draws alone. Returns 0 when core
+ * 1 draws with it, with *status then core 0's share's. */
+static int begin_frame(uint32_t time_ms, tarn_status *status)
+{
+    tarn_frame_config config = scene_config;
+    config.time_ms = time_ms;
+    *status = tarn_strip_pipeline_begin(&scene_scene, &config, memory[0], sizeof memory[0], &pipeline);
+    if (*status == TARN_OK && (pipeline.strips == 0 || pipeline.strips > PIPELINE_STRIPS_MAX)) {
+        /* in tiles, on core 0 alone */
+        *status = tarn_render_frame(&scene_scene, &config, memory[0], sizeof memory[0], SEND_TILE, &sinks[0]);
+        *status = panel_sink_frame_status(&sinks[0], *status);
+        return 1;
+    }
+    if (*status != TARN_OK) return 1;
+    next_opaque = next_water = failed = 0;
+    for (int32_t d = 0; d < pipeline.strips; d++) opaque_drawn[d] = water_sent[d] = 0u;
+    board_cores_order();
+    return 0;
+}
+#elif FW_PARTS == 2
+/* Core 1's share: part 1 of the frame at the time core 0 sends. */
+static tarn_status second_share(uint32_t time_ms)
+{
+    return show_part(time_ms, 1);
+}
+#endif
 
 #if FW_PARTS == 1
 static tarn_status show_frame(void)
 {
     return show_part(board_milliseconds(), 0);
 }
-#elif FW_PARTS == 2
+#else
 static uint64_t second_stack[FW_STACK_BYTES / 8u];
 
-/* Core 1: part 1 of each frame whose time core 0 sends, its status sent back. */
+/* Core 1: its share of each frame core 0 sends it a word for, its status sent back. */
 static void second_core_main(void)
 {
-    for (;;) {
-        const uint32_t time_ms = board_core_receive();
-        board_core_send((uint32_t)show_part(time_ms, 1));
-    }
+    for (;;) board_core_send((uint32_t)second_share(board_core_receive()));
 }
 
 static tarn_status show_frame(void)
 {
     const uint32_t time_ms = board_milliseconds();
+#if FW_PIPELINE
+    tarn_status own;
+    if (begin_frame(time_ms, &own) != 0) return own;
+    board_core_send(time_ms);
+    own = draw_share(0);
+#else
     board_core_send(time_ms);
     const tarn_status own = show_part(time_ms, 0);
+#endif
     const tarn_status second = (tarn_status)board_core_receive();
     return own != TARN_OK ? own : second;
 }
-#else
-#error "FW_PARTS: display_main.c draws a frame on one core or two"
-#endif
 #endif
 
 int main(void)

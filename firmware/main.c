@@ -143,58 +143,59 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
 static uint64_t opaque_insn[PIPELINE_STRIPS_MAX], water_insn[PIPELINE_STRIPS_MAX];
 static uint64_t opaque_end[PIPELINE_STRIPS_MAX], water_end[PIPELINE_STRIPS_MAX];
 
-/* The strips from `next` on that the opaque worker, free at *opaque_free, starts by
- * `by`, while the water worker draws strip k (the ring has room up to the strips
- * whose water is sent); each one's end into opaque_end. Returns the next strip no
- * worker has taken. */
-static int32_t opaque_worker_takes(const tarn_strip_pipeline *p, int32_t k, int32_t next, uint64_t by,
-                                   uint64_t *opaque_free)
+/* A time no step reaches: the step it waits for is not taken yet. */
+#define NEVER UINT64_MAX
+
+/* When the first `count` steps of a kind, ending at `ends`, are all done, of which
+ * the first `taken` are taken; NEVER while one of them is not taken. */
+static uint64_t done_at(const uint64_t *ends, int32_t count, int32_t taken)
 {
-    for (; next < p->strips; next++) {
-        const int32_t sent = tarn_strip_pipeline_sent_before_opaque(p, next);
-        if (sent > k) break;
-        uint64_t start = *opaque_free;
-        if (sent > 0 && water_end[sent - 1] > start) start = water_end[sent - 1];
-        if (start > by) break;
-        opaque_end[next] = *opaque_free = start + opaque_insn[next];
-    }
-    return next;
+    if (taken < count) return NEVER;
+    uint64_t at = 0;
+    for (int32_t i = 0; i < count; i++)
+        if (ends[i] > at) at = ends[i];
+    return at;
 }
 
-/* When the frame ends with two cores each running one worker, from the steps'
- * counts, the workers taking strips as tarn_render.h says: the begin on one core;
- * the opaque worker takes the next strip as soon as it is free and the ring has
- * room for it; the water worker, before each strip, takes the next one itself
- * wherever it would wait for the passes it reads. The cores' signals to each
- * other are not counted (a lock taken and a word written a strip). */
+/* When the frame ends with two cores, from the steps' counts: the begin on one core,
+ * then each core, as soon as it is free, takes the next step tarn_render.h lets it
+ * (the next water strip whose opaque passes are drawn, or else the next opaque strip
+ * the ring has room for) or waits for the first of them. The cores' signals to each
+ * other are not counted (a lock taken and a word written a step). */
 static uint64_t pipeline_schedule(const tarn_strip_pipeline *p, uint64_t begin)
 {
-    uint64_t opaque_free = begin, water_free = begin;
-    int32_t next = 0; /* the next strip no worker has taken */
-    for (int32_t k = 0; k < p->strips; k++) {
-        const int32_t needed = tarn_strip_pipeline_drawn_before_water(p, k);
-        for (;;) {
-            next = opaque_worker_takes(p, k, next, water_free, &opaque_free);
-            uint64_t drawn = 0; /* when the passes it reads are drawn, all of them taken */
-            for (int32_t d = 0; d < needed && next >= needed; d++)
-                if (opaque_end[d] > drawn) drawn = opaque_end[d];
-            if (next >= needed && drawn <= water_free) break;
-            if (next < p->strips && tarn_strip_pipeline_sent_before_opaque(p, next) <= k) {
-                opaque_end[next] = water_free = water_free + opaque_insn[next]; /* rather than wait */
-                next++;
-            } else {
-                water_free = drawn; /* the passes it reads are all taken: it waits */
-            }
+    uint64_t free_at[2] = {begin, begin}, end = begin;
+    int32_t next_opaque = 0, next_water = 0;
+    while (next_water < p->strips) {
+        const unsigned core = free_at[1] < free_at[0];
+        const uint64_t now = free_at[core];
+        const uint64_t water_at =
+            done_at(opaque_end, tarn_strip_pipeline_drawn_before_water(p, next_water), next_opaque);
+        const uint64_t opaque_at = next_opaque < p->strips
+            ? done_at(water_end, tarn_strip_pipeline_sent_before_opaque(p, next_opaque), next_water)
+            : NEVER;
+        if (water_at <= now) {
+            water_end[next_water] = free_at[core] = now + water_insn[next_water];
+            if (free_at[core] > end) end = free_at[core];
+            next_water++;
+        } else if (opaque_at <= now) {
+            opaque_end[next_opaque] = free_at[core] = now + opaque_insn[next_opaque];
+            next_opaque++;
+        } else if (water_at < NEVER || opaque_at < NEVER) {
+            free_at[core] = water_at < opaque_at ? water_at : opaque_at;
+        } else {
+            return NEVER; /* nothing either core could wait for: not an order tarn_render.h gives */
         }
-        water_end[k] = water_free = water_free + water_insn[k];
     }
-    return water_free;
+    return end;
 }
 
 /* The frame at `time_ms` by a strip pipeline into `sink`, its steps one after the
- * other on this core, each counted: their sum into *sum, the two cores' time into
+ * other on this core, each counted, each by worker 0 or, with `alternate`, by the
+ * worker of its strip's parity: their sum into *sum, the two cores' time into
  * *two_cores. */
-static tarn_status pipeline_frame(uint32_t time_ms, tarn_tile_sink sink, uint64_t *sum, uint64_t *two_cores)
+static tarn_status pipeline_frame(uint32_t time_ms, tarn_tile_sink sink, int alternate, uint64_t *sum,
+                                  uint64_t *two_cores)
 {
     tarn_frame_config config = scene_config;
     config.time_ms = time_ms;
@@ -207,11 +208,11 @@ static tarn_status pipeline_frame(uint32_t time_ms, tarn_tile_sink sink, uint64_
     for (int32_t k = 0; k < p.strips && status == TARN_OK; k++) {
         for (; drawn < tarn_strip_pipeline_drawn_before_water(&p, k); drawn++) {
             const uint64_t at = board_instructions();
-            tarn_strip_pipeline_opaque(memory, TARN_OPAQUE_WORKER, drawn);
+            tarn_strip_pipeline_opaque(memory, alternate ? (unsigned)drawn % 2u : 0u, drawn);
             opaque_insn[drawn] = board_instructions() - at;
         }
         const uint64_t at = board_instructions();
-        status = tarn_strip_pipeline_water(memory, k, sink, 0);
+        status = tarn_strip_pipeline_water(memory, alternate ? (unsigned)k % 2u : 0u, k, sink, 0);
         water_insn[k] = board_instructions() - at;
     }
     *sum = board_instructions() - start;
@@ -229,8 +230,9 @@ static int sum_tile(void *user, const tarn_tile *tile)
     return 0;
 }
 
-/* Whether the pipeline's frame at `time_ms` is the one frame tarn_render_frame draws
- * (their checksums, after the measured frames: summing costs instructions). */
+/* Whether the pipeline's frame at `time_ms`, both workers taking steps, is the one
+ * frame tarn_render_frame draws (their checksums, after the measured frames: summing
+ * costs instructions). */
 static int pipeline_draws_the_frame(uint32_t time_ms)
 {
     tarn_frame_config config = scene_config;
@@ -240,7 +242,7 @@ static int pipeline_draws_the_frame(uint32_t time_ms)
     const uint32_t whole = frame_sum;
     uint64_t unused[2];
     frame_sum = 0u;
-    return pipeline_frame(time_ms, sum_tile, &unused[0], &unused[1]) == TARN_OK && frame_sum == whole;
+    return pipeline_frame(time_ms, sum_tile, 1, &unused[0], &unused[1]) == TARN_OK && frame_sum == whole;
 }
 
 /* The run's report when the pipeline's frame is not the frame. */
@@ -289,7 +291,7 @@ int main(void)
 #if FW_PIPELINE
     /* and on a board whose two cores share one ring the frame by a strip pipeline */
     if (status == TARN_OK)
-        status = pipeline_frame(times[1], drop_tile, &frame_instructions[PARTS_FRAME], &slowest_part);
+        status = pipeline_frame(times[1], drop_tile, 0, &frame_instructions[PARTS_FRAME], &slowest_part);
     if (status == TARN_OK && !pipeline_draws_the_frame(times[1])) return report_pipeline_differs();
 #elif FW_PARTS > 1
     /* and on a board of several cores the frame in FW_PARTS parts, one after the other

@@ -6,10 +6,10 @@
  * is more than 48-row strips make of the frame: some parts draw nothing).
  *
  * So is a frame drawn by a strip pipeline (tarn_strip_pipeline_begin): its two
- * workers in two threads over one memory, each taking and waiting only as the
- * header says; the workers one after the other with the opaque one as far ahead as
- * that lets it go, the order that would show a ring too shallow for it; and the
- * water worker drawing every opaque pass itself. */
+ * workers in two threads over one memory, each taking steps and waiting only as the
+ * header says; in one thread, every opaque pass as early as the order allows, the
+ * order that would show a ring too shallow, the workers taking a strip each in
+ * turn; and one worker taking every step. */
 #include <pthread.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -94,8 +94,8 @@ static void render_in_parts(const tarn_scene *scene, const tarn_frame_config *co
                      tarn_status_text(jobs[p].status));
 }
 
-/* A strip pipeline's run: its memory, and what each worker has done, which the
- * other waits on. */
+/* A strip pipeline's run: its memory, and the steps taken and done, which the
+ * workers wait on. */
 #define STRIPS_MAX 64
 typedef struct {
     void *memory;
@@ -103,97 +103,87 @@ typedef struct {
     shared_frame *frame;
     pthread_mutex_t lock;
     pthread_cond_t moved;
-    /* under lock: the next opaque strip no worker has taken, each strip's opaque
-       pass drawn, the water strips sent */
-    int32_t next_opaque;
-    uint8_t drawn[STRIPS_MAX];
-    int32_t water_sent;
-    tarn_status status; /* the water worker's */
+    /* under lock: the next strip whose opaque pass, and whose water, no worker has
+       taken, and each strip's steps done */
+    int32_t next_opaque, next_water;
+    uint8_t drawn[STRIPS_MAX], sent[STRIPS_MAX];
+    tarn_status status; /* the first step that failed */
 } pipeline_run;
 
-/* Strip d's opaque pass by `worker`, then marked drawn; called without the lock. */
-static void draw_opaque_strip(pipeline_run *r, tarn_pipeline_worker worker, int32_t d)
-{
-    tarn_strip_pipeline_opaque(r->memory, worker, d);
-    pthread_mutex_lock(&r->lock);
-    r->drawn[d] = 1u;
-    pthread_cond_broadcast(&r->moved);
-    pthread_mutex_unlock(&r->lock);
-}
-
-/* Whether the opaque passes of strips 0 .. count - 1 are drawn; under lock. */
-static int all_drawn(const pipeline_run *r, int32_t count)
+/* Whether the first `count` flags are set; under lock. */
+static int all_set(const uint8_t *flags, int32_t count)
 {
     for (int32_t d = 0; d < count; d++)
-        if (!r->drawn[d]) return 0;
+        if (!flags[d]) return 0;
     return 1;
 }
 
-/* The opaque worker: the next strip no worker has taken, once the ring has room for it. */
-static void *opaque_worker(void *arg)
+/* The step a worker takes next, as tarn_render.h orders them: the next water strip
+ * if the opaque passes it reads are drawn, or else the next opaque strip if the
+ * water over its slot is done; *water says which. -1: none now; under lock. */
+static int32_t next_step(pipeline_run *r, int *water)
 {
-    pipeline_run *r = arg;
-    for (;;) {
-        pthread_mutex_lock(&r->lock);
-        while (r->next_opaque < r->pipeline.strips &&
-               r->water_sent < tarn_strip_pipeline_sent_before_opaque(&r->pipeline, r->next_opaque))
-            pthread_cond_wait(&r->moved, &r->lock);
-        const int32_t d = r->next_opaque < r->pipeline.strips ? r->next_opaque++ : -1;
-        pthread_mutex_unlock(&r->lock);
-        if (d < 0) return NULL;
-        draw_opaque_strip(r, TARN_OPAQUE_WORKER, d);
-    }
+    const tarn_strip_pipeline *p = &r->pipeline;
+    *water = r->next_water < p->strips && all_set(r->drawn, tarn_strip_pipeline_drawn_before_water(p, r->next_water));
+    if (*water) return r->next_water++;
+    if (r->next_opaque < p->strips && all_set(r->sent, tarn_strip_pipeline_sent_before_opaque(p, r->next_opaque)))
+        return r->next_opaque++;
+    return -1;
 }
 
-/* The water worker: each strip once the opaque passes it reads are drawn, taking
- * the next strip no worker has taken, where the ring has room for it, rather than
- * wait. */
-static void *water_worker(void *arg)
+typedef struct {
+    pipeline_run *run;
+    unsigned worker;
+} worker_job;
+
+/* One worker: the steps it takes, until every step is taken or a step fails. */
+static void *pipeline_worker(void *arg)
 {
-    pipeline_run *r = arg;
-    for (int32_t k = 0; k < r->pipeline.strips && r->status == TARN_OK; k++) {
-        const int32_t needed = tarn_strip_pipeline_drawn_before_water(&r->pipeline, k);
-        pthread_mutex_lock(&r->lock);
-        while (!all_drawn(r, needed)) {
-            if (r->next_opaque < r->pipeline.strips &&
-                r->water_sent >= tarn_strip_pipeline_sent_before_opaque(&r->pipeline, r->next_opaque)) {
-                const int32_t d = r->next_opaque++;
-                pthread_mutex_unlock(&r->lock);
-                draw_opaque_strip(r, TARN_WATER_WORKER, d);
-                pthread_mutex_lock(&r->lock);
-            } else {
-                pthread_cond_wait(&r->moved, &r->lock);
-            }
+    const worker_job *job = arg;
+    pipeline_run *r = job->run;
+    pthread_mutex_lock(&r->lock);
+    while (r->status == TARN_OK && (r->next_water < r->pipeline.strips || r->next_opaque < r->pipeline.strips)) {
+        int water;
+        const int32_t step = next_step(r, &water);
+        if (step < 0) {
+            pthread_cond_wait(&r->moved, &r->lock);
+            continue;
         }
         pthread_mutex_unlock(&r->lock);
-        r->status = tarn_strip_pipeline_water(r->memory, k, keep_tile, r->frame);
+        tarn_status status = TARN_OK;
+        if (water)
+            status = tarn_strip_pipeline_water(r->memory, job->worker, step, keep_tile, r->frame);
+        else
+            tarn_strip_pipeline_opaque(r->memory, job->worker, step);
         pthread_mutex_lock(&r->lock);
-        r->water_sent = r->status == TARN_OK ? k + 1 : INT32_MAX; /* a stop frees the other */
+        (water ? r->sent : r->drawn)[step] = 1u;
+        if (status != TARN_OK) r->status = status;
         pthread_cond_broadcast(&r->moved);
-        pthread_mutex_unlock(&r->lock);
     }
+    pthread_mutex_unlock(&r->lock);
     return NULL;
 }
 
-/* The workers in one thread: the opaque worker as far ahead as the order lets it
- * go, so that the ring holds as much below each water strip as it can; or the
- * water worker drawing every opaque pass itself, each just before it is read. */
-static tarn_status run_in_one_thread(pipeline_run *r, tarn_pipeline_worker opaque_by)
+/* The steps in one thread: every opaque pass as soon as the order allows, so that
+ * the ring holds as much below each water strip as it can, each step by worker k
+ * modulo 2 (its strip's); or each step by worker 0 just before it is needed. */
+static tarn_status run_in_one_thread(pipeline_run *r, int opaque_first)
 {
+    const tarn_strip_pipeline *p = &r->pipeline;
     int32_t drawn = 0;
-    for (int32_t k = 0; k < r->pipeline.strips; k++) {
-        const int32_t last = opaque_by == TARN_OPAQUE_WORKER ? r->pipeline.strips
-                                                             : tarn_strip_pipeline_drawn_before_water(&r->pipeline, k);
-        for (; drawn < last && tarn_strip_pipeline_sent_before_opaque(&r->pipeline, drawn) <= k; drawn++)
-            tarn_strip_pipeline_opaque(r->memory, opaque_by, drawn);
-        const tarn_status status = tarn_strip_pipeline_water(r->memory, k, keep_tile, r->frame);
+    for (int32_t k = 0; k < p->strips; k++) {
+        const int32_t last = opaque_first ? p->strips : tarn_strip_pipeline_drawn_before_water(p, k);
+        for (; drawn < last && tarn_strip_pipeline_sent_before_opaque(p, drawn) <= k; drawn++)
+            tarn_strip_pipeline_opaque(r->memory, opaque_first ? (unsigned)drawn % 2u : 0u, drawn);
+        const tarn_status status =
+            tarn_strip_pipeline_water(r->memory, opaque_first ? (unsigned)k % 2u : 0u, k, keep_tile, r->frame);
         if (status != TARN_OK) return status;
     }
     return TARN_OK;
 }
 
 /* How a test runs the pipeline's workers. */
-typedef enum { IN_TWO_THREADS, OPAQUE_WORKER_FIRST, WATER_WORKER_ALONE } pipeline_schedule;
+typedef enum { IN_TWO_THREADS, OPAQUE_FIRST, ONE_WORKER } pipeline_schedule;
 
 /* The frame drawn by a strip pipeline; fails the test if the pipeline fails. */
 static void render_in_pipeline(const tarn_scene *scene, const tarn_frame_config *config, pipeline_schedule how,
@@ -201,7 +191,7 @@ static void render_in_pipeline(const tarn_scene *scene, const tarn_frame_config 
 {
     memset(frame, 0, sizeof *frame);
     const size_t bytes = tarn_strip_pipeline_memory_bytes(config, scene);
-    pipeline_run r = {malloc(bytes), {0, 0}, frame, PTHREAD_MUTEX_INITIALIZER, PTHREAD_COND_INITIALIZER, 0, {0}, 0,
+    pipeline_run r = {malloc(bytes), {0, 0}, frame, PTHREAD_MUTEX_INITIALIZER, PTHREAD_COND_INITIALIZER, 0, 0, {0}, {0},
                       TARN_OK};
     assert_non_null(r.memory);
     r.status = tarn_strip_pipeline_begin(scene, config, r.memory, bytes, &r.pipeline);
@@ -209,13 +199,17 @@ static void render_in_pipeline(const tarn_scene *scene, const tarn_frame_config 
     if (r.status == TARN_OK && r.pipeline.strips == 0) /* not in strips: the frame as it is */
         r.status = tarn_render_frame(scene, config, r.memory, bytes, keep_tile, frame);
     else if (r.status == TARN_OK && how != IN_TWO_THREADS)
-        r.status = run_in_one_thread(&r, how == OPAQUE_WORKER_FIRST ? TARN_OPAQUE_WORKER : TARN_WATER_WORKER);
+        r.status = run_in_one_thread(&r, how == OPAQUE_FIRST);
     else if (r.status == TARN_OK) {
-        pthread_t opaque, water;
-        if (pthread_create(&opaque, NULL, opaque_worker, &r) != 0 || pthread_create(&water, NULL, water_worker, &r) != 0)
-            fail_msg("%s: cannot start a thread", what);
-        pthread_join(opaque, NULL);
-        pthread_join(water, NULL);
+        worker_job jobs[TARN_STRIP_PIPELINE_WORKERS];
+        pthread_t threads[TARN_STRIP_PIPELINE_WORKERS];
+        for (unsigned w = 0; w < TARN_STRIP_PIPELINE_WORKERS; w++) {
+            jobs[w].run = &r;
+            jobs[w].worker = w;
+            if (pthread_create(&threads[w], NULL, pipeline_worker, &jobs[w]) != 0)
+                fail_msg("%s: cannot start a thread", what);
+        }
+        for (unsigned w = 0; w < TARN_STRIP_PIPELINE_WORKERS; w++) pthread_join(threads[w], NULL);
     }
     free(r.memory);
     if (r.status != TARN_OK) fail_msg("%s: the strip pipeline returned %s", what, tarn_status_text(r.status));
@@ -249,10 +243,10 @@ static void assert_parts_draw_the_frame(const tarn_scene *scene, const tarn_fram
     if (config->quality.frame_shape == TARN_FRAME_STRIPS) {
         render_in_pipeline(scene, config, IN_TWO_THREADS, frame, what);
         assert_frame_is(whole, frame, what, "in a strip pipeline of two threads");
-        render_in_pipeline(scene, config, OPAQUE_WORKER_FIRST, frame, what);
+        render_in_pipeline(scene, config, OPAQUE_FIRST, frame, what);
         assert_frame_is(whole, frame, what, "in a strip pipeline, its opaque strips drawn first");
-        render_in_pipeline(scene, config, WATER_WORKER_ALONE, frame, what);
-        assert_frame_is(whole, frame, what, "in a strip pipeline, its water worker alone");
+        render_in_pipeline(scene, config, ONE_WORKER, frame, what);
+        assert_frame_is(whole, frame, what, "in a strip pipeline, one worker taking every step");
     }
     free(frame);
     free(whole);
@@ -307,8 +301,9 @@ static void test_a_part_outside_the_parts_is_refused(void **state)
     tarn_scene_free(&loaded);
 }
 
-/* A pipeline's ring is a strip deeper than the frame's; a frame in tiles, too little
- * memory, or a strip past the last is refused. */
+/* A pipeline takes the frame's memory, a strip of ring and a second worker's water
+ * buffers more; a frame in tiles, too little memory, or a worker or strip past the
+ * last is refused. */
 static void test_a_strip_pipeline_takes_one_strip_more(void **state)
 {
     (void)state;
@@ -321,7 +316,7 @@ static void test_a_strip_pipeline_takes_one_strip_more(void **state)
     const size_t bytes = tarn_strip_pipeline_memory_bytes(&config, &loaded.scene);
     const size_t strip = (size_t)WIDTH * 16u * (4u + config.quality.depth_bits / 8u);
     const size_t frame = tarn_frame_memory_bytes(&config, &loaded.scene);
-    if (bytes < frame + strip || bytes > frame + strip + 4096u)
+    if (bytes < frame + 2u * strip || bytes > frame + 2u * strip + 8192u)
         fail_msg("a strip pipeline takes %zu bytes, the frame %zu and a strip %zu", bytes, frame, strip);
     void *memory = malloc(bytes);
     assert_non_null(memory);
@@ -329,8 +324,9 @@ static void test_a_strip_pipeline_takes_one_strip_more(void **state)
     assert_int_equal(tarn_strip_pipeline_begin(&loaded.scene, &config, memory, bytes - 1u, &p), TARN_ERR_MEMORY);
     assert_int_equal(tarn_strip_pipeline_begin(&loaded.scene, &config, memory, bytes, &p), TARN_OK);
     assert_int_equal(p.strips, (HEIGHT + 15) / 16);
-    assert_int_equal(tarn_strip_pipeline_water(memory, p.strips, NULL, NULL), TARN_ERR_CONFIG);
-    assert_int_equal(tarn_strip_pipeline_water(memory, -1, NULL, NULL), TARN_ERR_CONFIG);
+    assert_int_equal(tarn_strip_pipeline_water(memory, 0, p.strips, NULL, NULL), TARN_ERR_CONFIG);
+    assert_int_equal(tarn_strip_pipeline_water(memory, 1, -1, NULL, NULL), TARN_ERR_CONFIG);
+    assert_int_equal(tarn_strip_pipeline_water(memory, TARN_STRIP_PIPELINE_WORKERS, 0, NULL, NULL), TARN_ERR_CONFIG);
     config.quality.frame_shape = TARN_FRAME_TILES;
     assert_int_equal(tarn_strip_pipeline_begin(&loaded.scene, &config, memory, bytes, &p), TARN_ERR_CONFIG);
     assert_int_equal(p.strips, 0);

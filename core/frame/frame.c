@@ -538,18 +538,18 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
 
 /* ---- a strip pipeline ------------------------------------------------------------
  * Two workers over one ring (tarn_strip_pipeline_begin): each has a frame_state of
- * its own, over the same buffers, and a ring target of its own, which the water
- * worker moves down the frame as it goes; either draws opaque passes with its own.
- * Both live at the start of the memory. */
+ * its own, over the same ring, and a ring target of its own, which its water moves
+ * down the frame; worker 1's water buffers and blocks' slots lie between the state
+ * and the frame's memory. All of it at the start of the memory. */
 typedef struct {
     tarn_view view;
-    frame_state opaque_worker, water_worker;
-    tarn_tile_target opaque_ring, water_ring;
+    frame_state worker[TARN_STRIP_PIPELINE_WORKERS];
+    tarn_tile_target ring[TARN_STRIP_PIPELINE_WORKERS];
     int32_t strips; /* 0: the frame is not drawn in strips */
 } strip_pipeline_state;
 
 /* The state's bytes, with room to align it for its pointers (the memory is only
- * 4-byte aligned); the frame's memory follows. */
+ * 4-byte aligned). */
 #define PIPELINE_STATE_BYTES ((sizeof(strip_pipeline_state) + sizeof(void *) + 3u) & ~(size_t)3u)
 
 static strip_pipeline_state *pipeline_state(void *memory)
@@ -558,13 +558,34 @@ static strip_pipeline_state *pipeline_state(void *memory)
     return (strip_pipeline_state *)(void *)(start + ((0u - (uintptr_t)start) & (sizeof(void *) - 1u)));
 }
 
+/* At least the bytes of a strip frame's water buffers and blocks' slots (a strip's
+ * pixels, or two rows drawn in place; a slot a block of columns). */
+static size_t second_water_bytes(const tarn_frame_config *config)
+{
+    const tarn_quality *q = &config->quality;
+    const size_t rows = q->tile_size > TARN_WATER_STRIP_ROWS ? q->tile_size : TARN_WATER_STRIP_ROWS;
+    const size_t slots = q->water_block > 1u ? ((size_t)config->width + q->water_block - 1u) / q->water_block : 0u;
+    return (size_t)config->width * rows * (4u + q->depth_bits / 8u) + slots * sizeof(tarn_water_block);
+}
+
+/* Worker 1's water buffers and blocks' slots, at `memory`, the slots cleared. */
+static void carve_second_water(frame_state *f, uint8_t *memory)
+{
+    const size_t pixels = tarn__frame_water_pixels(&f->layout);
+    f->water_colour = (uint32_t *)(void *)memory;
+    f->water_depth = memory + pixels * 4u;
+    uint8_t *blocks = memory + pixels * (4u + f->layout.depth_bytes);
+    f->water_context.blocks = f->layout.blocks != 0u ? (tarn_water_block *)(void *)blocks : NULL;
+    memset(blocks, 0, (size_t)f->layout.blocks * f->layout.block_bytes);
+}
+
 size_t tarn_strip_pipeline_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene)
 {
     const size_t frame = tarn_frame_memory_bytes(config, scene);
     if (frame == 0u) return 0u;
     /* the ring's spare strip (counted even for a frame drawn in tiles) */
-    const tarn_quality *q = &config->quality;
-    return PIPELINE_STATE_BYTES + frame + (size_t)config->width * q->tile_size * (4u + q->depth_bits / 8u);
+    const size_t spare = (size_t)config->width * config->quality.tile_size * (4u + config->quality.depth_bits / 8u);
+    return PIPELINE_STATE_BYTES + second_water_bytes(config) + frame + spare;
 }
 
 tarn_status tarn_strip_pipeline_begin(const tarn_scene *scene, const tarn_frame_config *config, void *memory,
@@ -577,39 +598,40 @@ tarn_status tarn_strip_pipeline_begin(const tarn_scene *scene, const tarn_frame_
     if (needed == 0u) return TARN_ERR_CONFIG;
     if (memory == NULL || memory_bytes < needed) return TARN_ERR_MEMORY;
     strip_pipeline_state *s = pipeline_state(memory);
+    uint8_t *second_water = (uint8_t *)memory + PIPELINE_STATE_BYTES;
+    const size_t before_frame = PIPELINE_STATE_BYTES + second_water_bytes(config);
     s->strips = 0;
-    const tarn_status status = frame_prepare(&s->opaque_worker, &s->view, scene, config,
-                                             (uint8_t *)memory + PIPELINE_STATE_BYTES,
-                                             memory_bytes - PIPELINE_STATE_BYTES, 1);
-    if (status != TARN_OK || !TARN_LINK_STRIPS || s->opaque_worker.layout.ring_strips == 0) return status;
-    /* the water worker's state is the opaque one's, over the same buffers, but for
-     * the one pointer into itself */
-    s->water_worker = s->opaque_worker;
-    s->water_worker.water.water = &s->water_worker.water_context;
-    s->opaque_ring = s->opaque_worker.opaque; /* the frame's opaque buffers: the ring */
-    s->water_ring = s->opaque_ring;
-    s->water_worker.ring = &s->water_ring;
-    s->strips = strip_count(&s->opaque_worker);
+    const tarn_status status = frame_prepare(&s->worker[0], &s->view, scene, config, (uint8_t *)memory + before_frame,
+                                             memory_bytes - before_frame, 1);
+    if (status != TARN_OK || !TARN_LINK_STRIPS || s->worker[0].layout.ring_strips == 0) return status;
+    /* worker 1's state is worker 0's but for its water buffers and the one pointer
+       into itself */
+    s->worker[1] = s->worker[0];
+    s->worker[1].water.water = &s->worker[1].water_context;
+    carve_second_water(&s->worker[1], second_water);
+    for (unsigned w = 0; w < TARN_STRIP_PIPELINE_WORKERS; w++) {
+        s->ring[w] = s->worker[0].opaque; /* the frame's opaque buffers: the ring */
+        s->worker[w].ring = &s->ring[w];
+    }
+    s->strips = strip_count(&s->worker[0]);
     pipeline->strips = s->strips;
-    pipeline->ahead = strips_ahead(&s->opaque_worker.layout);
+    pipeline->ahead = strips_ahead(&s->worker[0].layout);
     return TARN_OK;
 }
 
-void tarn_strip_pipeline_opaque(void *memory, tarn_pipeline_worker worker, int32_t strip)
+void tarn_strip_pipeline_opaque(void *memory, unsigned worker, int32_t strip)
 {
     strip_pipeline_state *s = pipeline_state(memory);
-    if (!TARN_LINK_STRIPS || strip < 0 || strip >= s->strips) return;
-    if (worker == TARN_WATER_WORKER)
-        draw_strip_opaque(&s->water_worker, &s->water_ring, strip);
-    else
-        draw_strip_opaque(&s->opaque_worker, &s->opaque_ring, strip);
+    if (TARN_LINK_STRIPS && worker < TARN_STRIP_PIPELINE_WORKERS && strip >= 0 && strip < s->strips)
+        draw_strip_opaque(&s->worker[worker], &s->ring[worker], strip);
 }
 
-tarn_status tarn_strip_pipeline_water(void *memory, int32_t strip, tarn_tile_sink sink, void *user)
+tarn_status tarn_strip_pipeline_water(void *memory, unsigned worker, int32_t strip, tarn_tile_sink sink, void *user)
 {
     strip_pipeline_state *s = pipeline_state(memory);
-    if (!TARN_LINK_STRIPS || strip < 0 || strip >= s->strips) return TARN_ERR_CONFIG;
-    return send_strip(&s->water_worker, &s->water_ring, strip, s->strips, sink, user) ? TARN_ERR_SINK : TARN_OK;
+    if (!TARN_LINK_STRIPS || worker >= TARN_STRIP_PIPELINE_WORKERS || strip < 0 || strip >= s->strips)
+        return TARN_ERR_CONFIG;
+    return send_strip(&s->worker[worker], &s->ring[worker], strip, s->strips, sink, user) ? TARN_ERR_SINK : TARN_OK;
 }
 
 typedef struct {

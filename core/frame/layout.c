@@ -60,8 +60,7 @@ static int32_t region_height(const tarn_frame_layout *l)
     return TARN_LINK_STRIPS && l->ring_strips != 0 ? l->ring_strips * l->tile : l->region_width;
 }
 
-/* Pixels of the water pass's own colour and depth buffers. */
-static size_t water_pixels(const tarn_frame_layout *l)
+size_t tarn__frame_water_pixels(const tarn_frame_layout *l)
 {
     if (!l->water || l->still) return 0u;
     if (l->in_place) return (size_t)l->piece_width * TARN_WATER_STRIP_ROWS;
@@ -73,7 +72,7 @@ static size_t layout_bytes(const tarn_frame_layout *l)
 {
     const size_t region = (size_t)l->region_width * (size_t)region_height(l);
     const size_t tile = (size_t)l->tile * (size_t)l->tile;
-    return (region + water_pixels(l)) * (4u + l->depth_bytes) + (l->underwater ? tile * 4u : 0u) +
+    return (region + tarn__frame_water_pixels(l)) * (4u + l->depth_bytes) + (l->underwater ? tile * 4u : 0u) +
            (size_t)l->blocks * l->block_bytes + (size_t)l->bins * sizeof(tarn_cluster_bin);
 }
 
@@ -142,7 +141,7 @@ const tarn_scene *tarn__frame_scene(const tarn_scene *scene, const tarn_frame_co
 tarn_frame_buffers tarn__frame_carve(const tarn_frame_layout *l, void *memory)
 {
     const size_t region = (size_t)l->region_width * (size_t)region_height(l);
-    const size_t water = water_pixels(l);
+    const size_t water = tarn__frame_water_pixels(l);
     tarn_frame_buffers b;
     uint8_t *next = memory; /* 4-byte buffers first, so every one stays aligned */
     b.opaque_colour = (uint32_t *)(void *)next;

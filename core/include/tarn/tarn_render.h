@@ -293,46 +293,45 @@ tarn_status tarn_render_frame_part(const tarn_scene *scene, const tarn_frame_con
  *
  * Parts need memory each, and a ring of strips is most of a frame's: two rarely fit
  * a small board's RAM. A strip pipeline shares one ring between two workers (two
- * cores, or threads): the opaque worker draws strips' opaque passes into the ring,
- * the water worker draws each strip's water over them and hands the strip to the
- * sink, the opaque passes running ahead. The ring holds one strip more than
- * tarn_render_frame's, the one an opaque pass is drawn into while the water reads
- * the others. The strips delivered are tarn_render_frame's (frame_shape
- * TARN_FRAME_STRIPS), byte for byte.
+ * cores, or threads). A strip's work is two steps: its opaque pass into the ring,
+ * and its water over the ring, after which the strip goes to the sink. Either
+ * worker takes either step of any strip, in this order:
+ *   - opaque strip d once the water of strips 0 .. d - ahead - 2 is done: the ring,
+ *     one strip deeper than one core's, then has a slot no water still reads;
+ *   - water strip k once the opaque passes of strips 0 .. k + ahead are drawn (or
+ *     of every strip, near the frame's end): all its refracted samples reach.
+ * Each step is taken once; the strips delivered are tarn_render_frame's (frame_shape
+ * TARN_FRAME_STRIPS), byte for byte, though not in order: the two workers call the
+ * sink each with its own strips, perhaps at once.
  *
  *     size_t need = tarn_strip_pipeline_memory_bytes(&cfg, &scene);
  *     tarn_strip_pipeline p;
  *     tarn_strip_pipeline_begin(&scene, &cfg, memory, need, &p);   once, first
- *     opaque worker: until every strip is taken:
- *         take the next strip d no worker has taken, once the water worker has sent
- *         tarn_strip_pipeline_sent_before_opaque(&p, d) strips (the ring has room for it)
- *         tarn_strip_pipeline_opaque(memory, TARN_OPAQUE_WORKER, d)
- *     water worker: for k in 0 .. p.strips - 1:
- *         until the opaque passes of strips 0 .. tarn_strip_pipeline_drawn_before_water(&p, k) - 1
- *         are drawn: take the next strip d no worker has taken, if the ring has room for
- *         it, and tarn_strip_pipeline_opaque(memory, TARN_WATER_WORKER, d); or wait
- *         tarn_strip_pipeline_water(memory, k, sink, user)
+ *     each worker w (0 or 1), until every step is taken:
+ *         take the next water strip k, if tarn_strip_pipeline_drawn_before_water(&p, k)
+ *             opaque passes are drawn: tarn_strip_pipeline_water(memory, w, k, sink, user)
+ *         or else the next opaque strip d, if the water of
+ *             tarn_strip_pipeline_sent_before_opaque(&p, d) strips is done:
+ *             tarn_strip_pipeline_opaque(memory, w, d)
+ *         or else wait for the other worker
  *
- * Each opaque strip is drawn once, by whichever worker takes it: the water worker
- * takes one where it would otherwise wait (where the opaque passes cost more than
- * the water over them, as at the top of a frame whose water lies below), and the
- * two then draw opaque strips side by side. Taking and waiting are the caller's (a
- * lock and words both cores read, a mutex and a condition variable): the core has
- * no threads. Within this order the workers share nothing the core writes. A frame that cannot be drawn in strips
- * (under the underwater view, or over a backdrop) sets p.strips to 0: draw it with
- * tarn_render_frame in the same memory. A config whose frame_shape is not
- * TARN_FRAME_STRIPS is TARN_ERR_CONFIG. */
+ * Taking and waiting are the caller's (a lock and words both cores read, a mutex
+ * and a condition variable): the core has no threads. Within this order the workers
+ * share nothing the core writes; each has its own state and water buffers in the
+ * memory. A frame that cannot be drawn in strips (under the underwater view, or
+ * over a backdrop) sets p.strips to 0: draw it with tarn_render_frame in the same
+ * memory. A config whose frame_shape is not TARN_FRAME_STRIPS is TARN_ERR_CONFIG. */
 typedef struct {
     int32_t strips; /* the frame's strips, top to bottom; 0: draw it with tarn_render_frame */
     int32_t ahead;  /* strips below its own that a strip's water reads */
 } tarn_strip_pipeline;
 
-/* The worker drawing an opaque pass: each has state of its own in the memory. */
-typedef enum { TARN_OPAQUE_WORKER = 0, TARN_WATER_WORKER = 1 } tarn_pipeline_worker;
+#define TARN_STRIP_PIPELINE_WORKERS 2
 
-/* The water strips sent before opaque strip d may start (it draws over the slot of
- * strip d - ahead - 2, which the water of that strip reads last), and the opaque
- * strips drawn before water strip k may start (those its refracted samples reach). */
+/* How many strips' water, from strip 0, is done before opaque strip d may start (it
+ * draws over the slot of strip d - ahead - 2, which that strip's water reads last),
+ * and how many strips' opaque passes are drawn before water strip k may start
+ * (those its refracted samples reach). */
 static inline int32_t tarn_strip_pipeline_sent_before_opaque(const tarn_strip_pipeline *p, int32_t d)
 {
     return d - p->ahead - 1;
@@ -343,18 +342,18 @@ static inline int32_t tarn_strip_pipeline_drawn_before_water(const tarn_strip_pi
     return k + p->ahead + 1 < p->strips ? k + p->ahead + 1 : p->strips;
 }
 
-/* The bytes a pipeline's memory needs (the frame's, a strip more of ring, and the
- * workers' state); 0 when the config is invalid. */
+/* The bytes a pipeline's memory needs (the frame's, a strip more of ring, and each
+ * worker's state and water buffers); 0 when the config is invalid. */
 size_t tarn_strip_pipeline_memory_bytes(const tarn_frame_config *config, const tarn_scene *scene);
 /* Checks the scene and config and finds the frame's own work (the scene posed, the
  * vertex pass, the cluster bins) in `memory` (4-byte aligned), before either worker. */
 tarn_status tarn_strip_pipeline_begin(const tarn_scene *scene, const tarn_frame_config *config, void *memory,
                                       size_t memory_bytes, tarn_strip_pipeline *pipeline);
-/* Strip `strip`'s opaque pass into the ring, by `worker`. */
-void tarn_strip_pipeline_opaque(void *memory, tarn_pipeline_worker worker, int32_t strip);
-/* The water worker: strip `strip`'s water, and the strip to the sink; TARN_ERR_SINK
- * when the sink stopped. */
-tarn_status tarn_strip_pipeline_water(void *memory, int32_t strip, tarn_tile_sink sink, void *user);
+/* Worker `worker` (0 or 1): strip `strip`'s opaque pass into the ring. */
+void tarn_strip_pipeline_opaque(void *memory, unsigned worker, int32_t strip);
+/* Worker `worker`: strip `strip`'s water, and the strip to the sink; TARN_ERR_SINK
+ * when the sink stopped, TARN_ERR_CONFIG for a worker or strip past the last. */
+tarn_status tarn_strip_pipeline_water(void *memory, unsigned worker, int32_t strip, tarn_tile_sink sink, void *user);
 
 /* A vertex after transform, clipping and snapping: what the rasterizer sees. */
 typedef struct {
