@@ -93,7 +93,8 @@ static uint64_t slowest_part;
  * status. */
 static int __attribute__((noinline)) report_run(tarn_status status, const uint64_t *frames, uint64_t counter)
 {
-    report r = {{0}, 0};
+    report r;
+    r.length = 0; /* the text is written up to length only */
     if (status != TARN_OK) {
         report_text(&r, "error board=");
         report_text(&r, FW_BOARD_NAME);
@@ -248,7 +249,8 @@ static int pipeline_draws_the_frame(uint32_t time_ms)
 /* The run's report when the pipeline's frame is not the frame. */
 static int report_pipeline_differs(void)
 {
-    report r = {{0}, 0};
+    report r;
+    r.length = 0; /* the text is written up to length only */
     report_text(&r, "error board=");
     report_text(&r, FW_BOARD_NAME);
     report_text(&r, " status=the strip pipeline's frame differs from tarn_render_frame's\n");

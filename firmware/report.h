@@ -7,9 +7,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* One line being assembled; text past the buffer is dropped. */
+/* One line being assembled; text past the buffer is dropped, so it holds the longest
+ * line (a board of two cores sharing a ring of strips: about 300 characters). */
 typedef struct {
-    char text[256];
+    char text[384];
     size_t length;
 } report;
 
