@@ -3,20 +3,21 @@
 # ST7789 240x240 on SPI0, fed by DMA channel 0 while the next tile renders. The
 # output to flash is firmware.uf2 (hold BOOTSEL, copy it). It renders the moving pond
 # (the camera circling, each frame at the board's millisecond clock) at the exact
-# preset in strips of 8 rows, on both cores sharing one ring of strips: core 1 draws
-# each strip's opaque pass, core 0 the water over it and sends the strip (two rings,
-# one a core, would not fit 264 KB; README.md gives the figures). Variables read by
+# preset in strips of 8 rows, on both cores sharing one ring of strips, each taking
+# a strip's opaque pass or its water and send as it comes free (two rings, one a
+# core, would not fit 264 KB; README.md gives the figures). Variables read by
 # firmware/firmware.mk; the rest, as for every real board, from
 # boards/common/real_board.mk.
 BOARD_DIR := boards/rp2040-st7789
 BOARD_CPU := -mcpu=cortex-m0plus -mthumb -mfloat-abi=soft
 BOARD_STACK_BYTES := 8192
 # both cores draw each frame (firmware/display_main.c, cores.c), sharing its memory
-# (tarn_strip_pipeline_begin); core 1 has a stack of its own
+# (tarn_strip_pipeline_begin); each has its strip buffers and a stack of its own
 BOARD_CORES := 2
 BOARD_CORE_SPLIT := pipeline
 BOARD_SCENES := scenes/pond-orbit.json
-# 8-row strips: the ring and its spare strip in 173 KB, where 16 rows took 220 KB
+# 8-row strips: the ring and its spare strip fit beside the code in SRAM, where
+# 16 rows would not
 BOARD_BAKE_FLAGS := --quality exact --frame strips --tile 8
 # the second stage the bootrom loads (checksummed at build time), and the UF2 output
 BOARD_BOOT2 := boards/rp2040-st7789/boot2.S

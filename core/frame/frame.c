@@ -64,7 +64,7 @@ static TARN_ALWAYS_INLINE void frame_begin(frame_state *f, const tarn_view *view
     f->config = config;
     f->view = view;
     f->layout = tarn__frame_layout_of(config, scene);
-    /* the strip the opaque worker draws while the water worker reads the others */
+    /* the strip an opaque pass is drawn into while the water reads the others */
     if (shared_ring && f->layout.ring_strips != 0) f->layout.ring_strips++;
     const tarn_frame_buffers b = tarn__frame_carve(&f->layout, memory);
     f->water_colour = b.water_colour;

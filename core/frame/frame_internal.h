@@ -10,7 +10,7 @@
  *             whole width (TARN_FRAME_STRIPS), each strip's opaque pass drawn once
  *             into a ring, ahead of its water; tarn_render_frame_part draws one
  *             part's share of the tiles or strips; tarn_strip_pipeline_* let two
- *             workers share one ring, one drawing the opaque strips, one the water
+ *             workers share one ring, each taking a strip's opaque pass or water
  *   status.c  tarn_status_text and tarn_version
  *
  * It takes the scene, the config and the caller's memory, and hands each finished
