@@ -29,6 +29,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "board.h"
+#include "frame_memory.h"
 #include "panel_sink.h"
 #include "scene.h"
 #include "tarn/tarn_panel.h"
@@ -39,9 +40,6 @@
 #endif
 #ifndef FW_PARTS
 #define FW_PARTS 1
-#endif
-#ifndef FW_PIPELINE
-#define FW_PIPELINE 0
 #endif
 
 /* Before the panel is reset again after a failed frame: long enough not to flood a
@@ -58,14 +56,9 @@
 #endif
 
 /* The renderer's working memory: each core's own, or with a strip pipeline one for
- * both, as large as either way of drawing the frame needs. */
-#if FW_PIPELINE && SCENE_PIPELINE_MEMORY_BYTES > SCENE_MEMORY_BYTES
-#define MEMORY_BYTES SCENE_PIPELINE_MEMORY_BYTES
-#else
-#define MEMORY_BYTES SCENE_MEMORY_BYTES
-#endif
+ * both. */
 #define MEMORIES (FW_PIPELINE ? 1 : FW_PARTS)
-static uint32_t memory[MEMORIES][(MEMORY_BYTES + 3u) / 4u];
+static uint32_t memory[MEMORIES][(FW_MEMORY_BYTES + 3u) / 4u];
 /* Each core's two tile buffers the DMA sends from, and the sink that fills them. */
 static uint8_t tile_rgb565[FW_PARTS][2][TILE_BUFFER_BYTES];
 static panel_sink sinks[FW_PARTS];

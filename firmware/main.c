@@ -31,6 +31,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "board.h"
+#include "frame_memory.h"
 #include "panel_sink.h"
 #include "report.h"
 #include "scene.h"
@@ -48,18 +49,9 @@
 #ifndef FW_PARTS
 #define FW_PARTS 1
 #endif
-#ifndef FW_PIPELINE
-#define FW_PIPELINE 0
-#endif
 
-/* The renderer's working memory: the only large buffer; with a pipeline, as large as
- * either way of drawing the frame needs. */
-#if FW_PIPELINE && SCENE_PIPELINE_MEMORY_BYTES > SCENE_MEMORY_BYTES
-#define MEMORY_BYTES SCENE_PIPELINE_MEMORY_BYTES
-#else
-#define MEMORY_BYTES SCENE_MEMORY_BYTES
-#endif
-static uint32_t memory[(MEMORY_BYTES + 3u) / 4u];
+/* The renderer's working memory: the only large buffer. */
+static uint32_t memory[(FW_MEMORY_BYTES + 3u) / 4u];
 /* A row of the widest piece (tile or strip) in RGB565, and at least 64 pixels: the
  * panel stream needs no more, and sends as many rows of a narrow tile as fit in one
  * write. */
@@ -94,7 +86,7 @@ static uint64_t slowest_part;
 static int __attribute__((noinline)) report_run(tarn_status status, const uint64_t *frames, uint64_t counter)
 {
     report r;
-    r.length = 0; /* the text is written up to length only */
+    report_start(&r);
     if (status != TARN_OK) {
         report_text(&r, "error board=");
         report_text(&r, FW_BOARD_NAME);
@@ -250,7 +242,7 @@ static int pipeline_draws_the_frame(uint32_t time_ms)
 static int report_pipeline_differs(void)
 {
     report r;
-    r.length = 0; /* the text is written up to length only */
+    report_start(&r);
     report_text(&r, "error board=");
     report_text(&r, FW_BOARD_NAME);
     report_text(&r, " status=the strip pipeline's frame differs from tarn_render_frame's\n");

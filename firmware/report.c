@@ -4,6 +4,11 @@
 #include "board.h"
 #include "tarn/tarn_math.h"
 
+void report_start(report *r)
+{
+    r->length = 0;
+}
+
 void report_text(report *r, const char *s)
 {
     while (*s != '\0' && r->length < sizeof r->text) r->text[r->length++] = *s++;

@@ -14,6 +14,9 @@ typedef struct {
     size_t length;
 } report;
 
+/* An empty line: only its length is set, the text being written up to it (zeroing
+ * the whole buffer cost each caller a template in flash as large). */
+void report_start(report *r);
 void report_text(report *r, const char *s);
 
 /* Decimal, through the core's tarn_divide, so that the image links no 64-bit

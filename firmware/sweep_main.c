@@ -86,7 +86,7 @@ static int __attribute__((noinline)) report_point(unsigned index, const tarn_fra
 {
     const uint32_t pixels = (uint32_t)config->width * config->height;
     report r;
-    r.length = 0; /* the text is written up to length only */
+    report_start(&r);
     report_text(&r, "point index=");
     report_number(&r, index);
     report_text(&r, " insn_per_pixel=");
@@ -110,7 +110,7 @@ static int __attribute__((noinline)) report_point(unsigned index, const tarn_fra
 static int __attribute__((noinline)) report_sweep(uint64_t counter)
 {
     report r;
-    r.length = 0; /* the text is written up to length only */
+    report_start(&r);
     report_frame_header(&r, "sweep", FW_BOARD_NAME, FW_SCENE_LABEL, scene_config.width, scene_config.height);
     report_text(&r, " points=");
     report_number(&r, SCENE_POINT_COUNT);

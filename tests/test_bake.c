@@ -442,18 +442,19 @@ static void test_header_declares_memory_and_objects(void **state)
 }
 
 /* A frame in strips: the header gives a strip pipeline's memory too, a strip of
- * the ring and the second worker's water strip (64 pixels, 16 rows, 4 bytes of
- * colour and 4 of depth each) and the workers' state more than the frame's. */
+ * the ring and the second worker's water strip (the pond refracts, so its water is
+ * drawn from a copy of the strip: 64 pixels, 16 rows, 4 bytes of colour and 4 of
+ * depth each) and the workers' state more than the frame's. */
 static void test_header_gives_a_strip_pipeline_memory(void **state)
 {
     (void)state;
     baked b;
-    bake("scenes/effects/foam.json", "foam_strips", "--name foam_strips --size 64x64 --quality exact --frame strips --tile 16",
+    bake("scenes/pond.json", "pond_strips", "--name pond_strips --size 64x64 --quality exact --frame strips --tile 16",
          &b);
     char *header = read_all(b.header, NULL);
-    const char *define = strstr(header, "#define FOAM_STRIPS_PIPELINE_MEMORY_BYTES ");
-    if (define == NULL) fail_msg("no FOAM_STRIPS_PIPELINE_MEMORY_BYTES in %s", b.header);
-    const unsigned long bytes = strtoul(define + strlen("#define FOAM_STRIPS_PIPELINE_MEMORY_BYTES "), NULL, 10);
+    const char *define = strstr(header, "#define POND_STRIPS_PIPELINE_MEMORY_BYTES ");
+    if (define == NULL) fail_msg("no POND_STRIPS_PIPELINE_MEMORY_BYTES in %s", b.header);
+    const unsigned long bytes = strtoul(define + strlen("#define POND_STRIPS_PIPELINE_MEMORY_BYTES "), NULL, 10);
     const unsigned long strip = 64ul * 16ul * 8ul;
     if (bytes < b.memory_bytes + 2ul * strip || bytes > b.memory_bytes + 2ul * strip + 8192ul)
         fail_msg("the pipeline's memory is %lu bytes, the frame's %zu", bytes, b.memory_bytes);

@@ -539,8 +539,8 @@ tarn_status tarn_render_frame(const tarn_scene *scene, const tarn_frame_config *
 /* ---- a strip pipeline ------------------------------------------------------------
  * Two workers over one ring (tarn_strip_pipeline_begin): each has a frame_state of
  * its own, over the same ring, and a ring target of its own, which its water moves
- * down the frame; worker 1's water buffers and blocks' slots lie between the state
- * and the frame's memory. All of it at the start of the memory. */
+ * down the frame; worker 1's water buffers and blocks' slots (as large as the frame
+ * in strips has them) lie between the state and the frame's memory. */
 typedef struct {
     tarn_view view;
     frame_state worker[TARN_STRIP_PIPELINE_WORKERS];
@@ -558,14 +558,10 @@ static strip_pipeline_state *pipeline_state(void *memory)
     return (strip_pipeline_state *)(void *)(start + ((0u - (uintptr_t)start) & (sizeof(void *) - 1u)));
 }
 
-/* At least the bytes of a strip frame's water buffers and blocks' slots (a strip's
- * pixels, or two rows drawn in place; a slot a block of columns). */
-static size_t second_water_bytes(const tarn_frame_config *config)
+/* A water pass's own buffers and blocks' slots in a layout: their bytes. */
+static size_t water_buffer_bytes(const tarn_frame_layout *l)
 {
-    const tarn_quality *q = &config->quality;
-    const size_t rows = q->tile_size > TARN_WATER_STRIP_ROWS ? q->tile_size : TARN_WATER_STRIP_ROWS;
-    const size_t slots = q->water_block > 1u ? ((size_t)config->width + q->water_block - 1u) / q->water_block : 0u;
-    return (size_t)config->width * rows * (4u + q->depth_bits / 8u) + slots * sizeof(tarn_water_block);
+    return tarn__frame_water_pixels(l) * (4u + l->depth_bytes) + (size_t)l->blocks * l->block_bytes;
 }
 
 /* Worker 1's water buffers and blocks' slots, at `memory`, the slots cleared. */
@@ -583,9 +579,10 @@ size_t tarn_strip_pipeline_memory_bytes(const tarn_frame_config *config, const t
 {
     const size_t frame = tarn_frame_memory_bytes(config, scene);
     if (frame == 0u) return 0u;
-    /* the ring's spare strip (counted even for a frame drawn in tiles) */
-    const size_t spare = (size_t)config->width * config->quality.tile_size * (4u + config->quality.depth_bits / 8u);
-    return PIPELINE_STATE_BYTES + second_water_bytes(config) + frame + spare;
+    /* beyond the frame's: the ring's spare strip and worker 1's water buffers */
+    const tarn_frame_layout l = tarn__frame_strips_layout(config, scene);
+    const size_t spare = l.ring_strips != 0 ? (size_t)l.region_width * (size_t)l.tile * (4u + l.depth_bytes) : 0u;
+    return PIPELINE_STATE_BYTES + water_buffer_bytes(&l) + frame + spare;
 }
 
 tarn_status tarn_strip_pipeline_begin(const tarn_scene *scene, const tarn_frame_config *config, void *memory,
@@ -599,7 +596,8 @@ tarn_status tarn_strip_pipeline_begin(const tarn_scene *scene, const tarn_frame_
     if (memory == NULL || memory_bytes < needed) return TARN_ERR_MEMORY;
     strip_pipeline_state *s = pipeline_state(memory);
     uint8_t *second_water = (uint8_t *)memory + PIPELINE_STATE_BYTES;
-    const size_t before_frame = PIPELINE_STATE_BYTES + second_water_bytes(config);
+    const tarn_frame_layout strips = tarn__frame_strips_layout(config, scene);
+    const size_t before_frame = PIPELINE_STATE_BYTES + water_buffer_bytes(&strips);
     s->strips = 0;
     const tarn_status status = frame_prepare(&s->worker[0], &s->view, scene, config, (uint8_t *)memory + before_frame,
                                              memory_bytes - before_frame, 1);

@@ -74,6 +74,9 @@ tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const t
  * whose static view holds every vertex as the frame's camera sees it. Otherwise the
  * scene as it is. tarn_frame_memory_bytes counts its bytes. */
 const tarn_scene *tarn__frame_scene(const tarn_scene *scene, const tarn_frame_config *config, void **memory);
+/* The layout with the underwater view off: a frame in strips, which a strip
+ * pipeline draws (a frame under water is drawn in tiles). */
+tarn_frame_layout tarn__frame_strips_layout(const tarn_frame_config *config, const tarn_scene *scene);
 /* Pixels of the water pass's own colour and depth buffers. */
 size_t tarn__frame_water_pixels(const tarn_frame_layout *l);
 /* The buffers carved from `memory` (4-byte aligned, at least

@@ -54,6 +54,11 @@ tarn_frame_layout tarn__frame_layout_of(const tarn_frame_config *config, const t
     return layout_of(config, scene, tarn__underwater_active(scene));
 }
 
+tarn_frame_layout tarn__frame_strips_layout(const tarn_frame_config *config, const tarn_scene *scene)
+{
+    return layout_of(config, scene, 0);
+}
+
 /* Rows of the opaque buffers: the tile's square, or the ring's strips. */
 static int32_t region_height(const tarn_frame_layout *l)
 {
