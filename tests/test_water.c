@@ -462,7 +462,8 @@ static void test_specular_skip_matches_the_normalised_normal(void **state)
                 w.half_vector[1] = (int32_t)lround(32767.0 * 0.6 * sin(theta));
                 w.half_vector[2] = (int32_t)lround(32767.0 * 0.8);
                 /* a direction near h: its largest component in [2^13, 2^14) */
-                tarn_water_normal n = tarn__water_flat_normal();
+                tarn_water_normal n;
+                tarn__water_flat_normal(&n);
                 int32_t v[3];
                 for (int a = 0; a < 3; a++) {
                     seed = seed * 1664525u + 1013904223u;
@@ -488,6 +489,64 @@ static void test_specular_skip_matches_the_normalised_normal(void **state)
     /* both outcomes were exercised: the test would not notice a skip that never runs */
     assert_true(skipped > 10000u);
     assert_true(drawn > 10000u);
+}
+
+/* Where the pixel refracts by the EXACT normal, step 1 finds N itself from the
+ * maps' texels: each component within 3 units of Q1.15 of the unit direction, the
+ * bound the highlight's skip allows for (water_highlights.c), both N.xy in Q1.30
+ * for refraction and N rounded to Q1.15, for texels all around and at every
+ * strength the loader takes; the maps' x components for sparkles are the texels'. */
+static void test_exact_normal_is_the_unit_direction(void **state)
+{
+    (void)state;
+    static const tarn_q16 strengths[] = {TARN_Q16_ONE / 64, TARN_Q16_ONE / 3, TARN_Q16_ONE, 8 * TARN_Q16_ONE};
+    uint8_t texel_a[3], texel_b[3];
+    const tarn_texture map_a = {1, 1, texel_a}, map_b = {1, 1, texel_b};
+    tarn_water water = {0};
+    water.normal_a = &map_a;
+    water.normal_b = &map_b;
+    water.pan_a.scale = water.pan_b.scale = TARN_Q16_ONE;
+    tarn_water_context w = {0};
+    w.water = &water;
+    w.features = TARN_WATER_NORMALS | TARN_WATER_REFRACTION;
+    w.refraction_exact = 1;
+    w.offset_limit = 8;
+    const tarn_water_input in = {0};
+    uint32_t seed = 2024u;
+    double worst_q30 = 0.0, worst_q15 = 0.0;
+    for (size_t k = 0; k < sizeof strengths / sizeof strengths[0]; k++) {
+        water.normal_strength = strengths[k];
+        for (int trial = 0; trial < 5000; trial++) {
+            for (int c = 0; c < 3; c++) {
+                seed = seed * 1664525u + 1013904223u;
+                texel_a[c] = (uint8_t)(seed >> 24);
+                texel_b[c] = (uint8_t)(seed >> 16);
+            }
+            texel_a[2] |= 0x80u; /* z up, as a normal map's */
+            texel_b[2] |= 0x80u;
+            tarn_water_normal n;
+            tarn__water_pixel_normal(&w, &in, &n);
+            double v[3], length = 0.0;
+            const double s = strengths[k] / 65536.0;
+            for (int c = 0; c < 2; c++) v[c] = s * ((2.0 * texel_a[c] - 255.0) + (2.0 * texel_b[c] - 255.0)) / 255.0;
+            v[2] = (2.0 * texel_a[2] - 255.0) * (2.0 * texel_b[2] - 255.0) / (255.0 * 255.0);
+            for (int c = 0; c < 3; c++) length += v[c] * v[c];
+            length = sqrt(length);
+            const int32_t q15[3] = {n.x, n.y, n.z};
+            for (int c = 0; c < 3; c++) {
+                const double unit = v[c] / length;
+                if (c < 2 && fabs(n.xy_q30[c] - unit * 1073741824.0) > worst_q30)
+                    worst_q30 = fabs(n.xy_q30[c] - unit * 1073741824.0);
+                if (fabs(q15[c] - unit * 32768.0) > worst_q15) worst_q15 = fabs(q15[c] - unit * 32768.0);
+            }
+            assert_int_equal(n.length2, 0u); /* N itself: nothing normalises it again */
+            assert_int_equal(n.a_x, tarn__water_normal_component(texel_a[0]));
+            assert_int_equal(n.b_x, tarn__water_normal_component(texel_b[0]));
+        }
+    }
+    if (worst_q30 > 3.0 * 32768.0 || worst_q15 > 3.0)
+        fail_msg("the exact normal is off the unit direction by %.0f units of Q1.30 (at most 98304) and %.3f of "
+                 "Q1.15 (at most 3)", worst_q30, worst_q15);
 }
 
 /* With water blocks too (even tiles), whose slots must survive the fall back to
@@ -547,6 +606,7 @@ int main(void)
         cmocka_unit_test(test_opaque_scenes_pay_nothing_for_water),
         cmocka_unit_test(test_water_in_place_draws_as_the_copy),
         cmocka_unit_test(test_specular_skip_matches_the_normalised_normal),
+        cmocka_unit_test(test_exact_normal_is_the_unit_direction),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -68,7 +68,10 @@ static uint32_t specular_term(const tarn_water_context *w, const tarn_water_norm
     const int64_t dot = (int64_t)(n->x * w->half_vector[0]) + (int64_t)(n->y * w->half_vector[1]) +
                         (int64_t)(n->z * w->half_vector[2]);
     if (dot <= 0) return 0u;
-    const uint64_t cosine = (uint64_t)dot >> 15;
+    const int64_t cosine = dot >> 15;
+    /* at or below the dark cosine the power adds nothing: spared where N came
+     * normalised, so highlight_cannot_show could not look */
+    if (cosine <= w->dark_cosine) return 0u;
     return power_q15((uint32_t)(cosine > Q15_ONE ? Q15_ONE : cosine), w->water->specular_power);
 }
 

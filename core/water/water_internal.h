@@ -288,20 +288,28 @@ typedef struct {
     uint32_t length2; /* the direction's squared length, Q4.26; 0 once (x, y, z) is N */
     int32_t a_x, b_x; /* the maps' own x components, for sparkles */
     int has_b;
+    int32_t xy_q30[2]; /* where the pixel refracts by the EXACT normal: N.xy, Q1.30 */
 } tarn_water_normal;
 
-/* (0, 0, 1): the surface without normal maps. */
-static inline tarn_water_normal tarn__water_flat_normal(void)
+/* (0, 0, 1): the surface without normal maps. Filled field by field, as every
+ * normal is filled in place: copied whole, a struct this size is a call to memcpy
+ * on the Cortex-M0. */
+static inline void tarn__water_flat_normal(tarn_water_normal *n)
 {
-    const tarn_water_normal n = {0, 0, 32768, 0u, 0, 0, 0};
-    return n;
+    n->x = n->y = 0;
+    n->z = 32768;
+    n->length2 = 0u;
+    n->a_x = n->b_x = 0;
+    n->has_b = 0;
+    n->xy_q30[0] = n->xy_q30[1] = 0;
 }
 
-/* Step 1's direction at the pixel from the maps' texel codes, in units of
- * 1 / (2^16 * 255): strength * (a.xy + b.xy) exactly, a.z * b.z to half a unit,
- * each below 2^28; (0, 0, 2^16 * 255) without maps. Refraction scales N by tens of
- * pixels and rounds, so it normalises this, not tarn_water_normal's 14 bits. */
-void tarn__water_exact_direction(const tarn_water_context *w, const tarn_water_input *in, int32_t out[3]);
+/* Whether the context's refracted samples move: the material refracts, the build
+ * links the apron, and the frame gives one (offset_limit). */
+static inline int tarn__water_refracts(const tarn_water_context *w)
+{
+    return TARN_LINK_APRON && tarn__water_uses(w, TARN_WATER_REFRACTION) && w->offset_limit > 0;
+}
 /* N from its direction, in place; nothing when it is N already. */
 void tarn__water_normalise(tarn_water_normal *n);
 
@@ -352,26 +360,36 @@ void tarn__water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop
 /* ---- the effects, a file each: with TARN_LINK_WATER_FEATURES, the ones a scene
  * does not use are never called and so never linked ---- */
 
-/* Step 1 (water_normals.c, TARN_WATER_NORMALS): the direction of N, to be normalised
- * by the steps that need N. */
-tarn_water_normal tarn__water_surface_normal(const tarn_water_context *w, const tarn_water_input *in);
+/* Step 1 (water_normals.c, TARN_WATER_NORMALS) at a pixel, the flat normal without
+ * maps. Where the pixel refracts by the quality's EXACT refraction normal: N itself,
+ * from the maps' texel codes exactly (strength * (a.xy + b.xy), a.z * b.z), each
+ * component within 3 units of Q1.15, with N.xy in Q1.30 for refraction, which
+ * scales it by tens of pixels and rounds. Elsewhere the direction of N in 14 bits, to be normalised by
+ * the steps that need N. */
+void tarn__water_surface_normal(const tarn_water_context *w, const tarn_water_input *in, tarn_water_normal *n);
+/* The same for any material: without normal maps (or a build that links none) the
+ * flat normal, and step 1 is not linked. */
+static inline void tarn__water_pixel_normal(const tarn_water_context *w, const tarn_water_input *in,
+                                            tarn_water_normal *n)
+{
+    if (tarn__water_uses(w, TARN_WATER_NORMALS)) tarn__water_surface_normal(w, in, n); else tarn__water_flat_normal(n);
+}
 /* Only the maps' own x components (a_x, b_x, has_b), which sparkles read: the flat
  * normal with them. */
-tarn_water_normal tarn__water_map_x(const tarn_water_context *w, const tarn_water_input *in);
-/* Step 2 (water_refraction.c, TARN_WATER_REFRACTION): the pixel a refracted sample
- * at (i, j) reads, `target`: moved by N.xy times the material's pixels per unit
- * normal and `reach` (saturate(db - ds), Q0.16), snapped to a whole pixel, at most
- * the context's offset_limit each axis and inside its sample_rect. N.xy is found
- * from the maps' texels again, exactly (tarn__water_exact_direction), with the
- * quality's refraction_normal EXACT; `n` (the direction step 1 found) is
- * normalised for the steps after, and is N.xy otherwise. */
-void tarn__water_refracted_pixel(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
-                                 tarn_water_normal *n, uint32_t reach, int32_t target[2]);
+void tarn__water_map_x(const tarn_water_context *w, const tarn_water_input *in, tarn_water_normal *n);
+/* Step 2 (water_refraction.c, TARN_WATER_REFRACTION), where the context refracts
+ * (tarn__water_refracts): the pixel a refracted sample at (i, j) reads, `target`:
+ * moved by N.xy times the material's pixels per unit normal and `reach`
+ * (saturate(db - ds), Q0.16), snapped to a whole pixel, at most the context's
+ * offset_limit each axis and inside its sample_rect. `n` is step 1's
+ * (tarn__water_pixel_normal): with the quality's EXACT refraction normal its
+ * xy_q30; else it is normalised, for the steps after too, and moves by its N.xy. */
+void tarn__water_refracted_pixel(const tarn_water_context *w, int32_t i, int32_t j, tarn_water_normal *n,
+                                 uint32_t reach, int32_t target[2]);
 /* The refracted sample, or `own` (the pixel's background) where the refracted one
  * would lie in front of the water. */
-tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j,
-                                     const tarn_water_input *in, tarn_water_normal *n, tarn_water_sample own,
-                                     uint32_t surface_depth);
+tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j, tarn_water_normal *n,
+                                     tarn_water_sample own, uint32_t surface_depth);
 /* Steps 4 and 5 (water_fog.c), over `diff` (Q16.16 world units) of water: the share
  * of the background the fog keeps (Q1.15), and what absorption takes from each
  * channel (Q8.8). */

@@ -62,13 +62,12 @@ void tarn__water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, c
                            tarn_water_effects *e)
 {
     const uint32_t surface_depth = tarn__water_depth_of(w, in->inv_depth);
-    tarn_water_normal n =
-        tarn__water_uses(w, TARN_WATER_NORMALS) ? tarn__water_surface_normal(w, in) : tarn__water_flat_normal();
+    tarn_water_normal n;
+    tarn__water_pixel_normal(w, in, &n);
     tarn_water_sample below = tarn__water_background(w, i, j);
     /* without an apron a refracted sample may not move (offset_limit 0): it is the
      * pixel's own, and the M0's fast preset would pay a third of the water pixel for it */
-    if (TARN_LINK_APRON && tarn__water_uses(w, TARN_WATER_REFRACTION) && w->offset_limit > 0)
-        below = tarn__water_refract(w, i, j, in, &n, below, surface_depth);
+    if (tarn__water_refracts(w)) below = tarn__water_refract(w, i, j, &n, below, surface_depth);
     e->offset[0] = (int8_t)(below.x - i); /* within the apron, at most TARN_WATER_APRON_MAX */
     e->offset[1] = (int8_t)(below.y - j);
     const uint32_t diff = below.depth > surface_depth ? below.depth - surface_depth : 0u;
@@ -139,7 +138,8 @@ int tarn__water_sharp_possible(const tarn_water_context *w, const tarn_water_eff
 unsigned tarn__water_sharp_features(const tarn_water_context *w, const tarn_water_input *in,
                                    const tarn_water_effects *e)
 {
-    const tarn_water_normal n = tarn__water_sparkles_possible(w) ? tarn__water_map_x(w, in) : tarn__water_flat_normal();
+    tarn_water_normal n;
+    if (tarn__water_sparkles_possible(w)) tarn__water_map_x(w, in, &n); else tarn__water_flat_normal(&n);
     return tarn__water_sharp_at(w, in, e->foam_band, &n);
 }
 

@@ -64,12 +64,6 @@ static TARN_ALWAYS_INLINE tarn_water_input plane_input(const tarn_still_plane *p
     return in;
 }
 
-/* Step 1's normal at a pixel, or the flat one without normal maps. */
-static tarn_water_normal surface_normal(const tarn_water_context *w, const tarn_water_input *in)
-{
-    return tarn__water_uses(w, TARN_WATER_NORMALS) ? tarn__water_surface_normal(w, in) : tarn__water_flat_normal();
-}
-
 /* Step 8's highlight (Q8.8 a channel) from a pixel's normal. */
 static void highlight_of(const tarn_water_context *w, tarn_water_normal *n, uint32_t highlight[3])
 {
@@ -162,7 +156,7 @@ static still_sample refracted_sample(const tarn_water_context *w, const still_wa
     const uint32_t below = kept_depth(w, walk, i, j);
     const uint32_t reach = below < Q16_ONE ? below : Q16_ONE; /* saturate(db - ds) */
     int32_t target[2];
-    tarn__water_refracted_pixel(w, i, j, in, n, reach, target);
+    tarn__water_refracted_pixel(w, i, j, n, reach, target);
     still_sample moved = {0u, Q16_ONE};
     if (target[0] != i || target[1] != j) {
         moved.colour = tarn__backdrop_colour_at(walk->backdrop, w->width, target[0], target[1]);
@@ -179,7 +173,8 @@ static TARN_ALWAYS_INLINE unsigned sharp_at(const tarn_water_context *w, const s
                                             const tarn_water_input *in, const tarn_water_normal *n, uint32_t still,
                                             int32_t i, int32_t j)
 {
-    const tarn_water_normal maps = n == NULL && tarn__water_sparkles_possible(w) ? tarn__water_map_x(w, in) : tarn__water_flat_normal();
+    tarn_water_normal maps;
+    if (n == NULL && tarn__water_sparkles_possible(w)) tarn__water_map_x(w, in, &maps); else tarn__water_flat_normal(&maps);
     return tarn__water_sharp_at(w, in, foam_band(w, walk, still, i, j), n != NULL ? n : &maps);
 }
 
@@ -225,7 +220,8 @@ static uint32_t refracting_pixel(const tarn_water_context *w, const still_walk *
                                  int shared, uint32_t still, int32_t i, int32_t j)
 {
     const tarn_water_input in = plane_input(walk->plane, w->recip_steps, i, j);
-    tarn_water_normal n = surface_normal(w, &in);
+    tarn_water_normal n;
+    tarn__water_pixel_normal(w, &in, &n);
     uint32_t highlight[3];
     pixel_highlight(w, walk, block, shared, &n, i, j, highlight);
     const still_sample s = refracted_sample(w, walk, &in, &n, still, i, j);
@@ -249,7 +245,8 @@ static uint32_t water_pixel(tarn_water_context *w, const still_walk *walk, uint3
         static const uint32_t dark[3] = {0u, 0u, 0u};
         return over_still(w, still, shared ? block->highlight : dark, sharp_at(w, walk, &in, NULL, still, i, j));
     }
-    tarn_water_normal n = surface_normal(w, &in);
+    tarn_water_normal n;
+    tarn__water_pixel_normal(w, &in, &n);
     uint32_t highlight[3];
     pixel_highlight(w, walk, block, 0, &n, i, j, highlight);
     return over_still(w, still, highlight, sharp ? sharp_at(w, walk, &in, &n, still, i, j) : 0u);
@@ -268,7 +265,7 @@ void tarn__water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop
 {
     const tarn_pixel_rect r = tile->rect;
     const uint32_t mark = (object + 1u) << TARN_BACKDROP_STILL_SHIFT;
-    const int refracts = TARN_LINK_APRON && tarn__water_uses(w, TARN_WATER_REFRACTION) && w->offset_limit > 0;
+    const int refracts = tarn__water_refracts(w);
     still_walk walk = {backdrop, &backdrop->planes[object], ++w->still_walks, mark, sharp_bits(w),
                        tarn__water_uses(w, TARN_WATER_SPECULAR), refracts,
                        tarn__still_keeps_depth(w->water, refracts), r.x0, 0};

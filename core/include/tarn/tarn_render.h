@@ -164,10 +164,13 @@ typedef enum {
 typedef enum {
     TARN_REFRACTION_NORMAL_SHARED = 0, /* the normal the highlight uses: a 14-bit
                                           direction normalised to Q1.15 */
-    TARN_REFRACTION_NORMAL_EXACT = 1   /* found again from the maps' texel codes and
-                                          normalised to 2^-15 of its length: about
-                                          ten times nearer, for two more texel reads
-                                          and a reciprocal square root a pixel */
+    TARN_REFRACTION_NORMAL_EXACT = 1   /* found from the maps' texel codes whole and
+                                          normalised once, N.xy kept to 2^-30: about
+                                          ten times nearer; the highlight takes the
+                                          same N, rounded to Q1.15, where the pixel
+                                          refracts. It normalises every refracting
+                                          pixel's N, where the shared one spares the
+                                          pixels whose highlight cannot show. */
 } tarn_refraction_normal;
 
 #define TARN_FOG_ARGUMENT_BITS_MIN 4u
