@@ -27,7 +27,7 @@
  *    only fast takes them. Depth stepped on a plane saves three exact divisions a
  *    triangle; the images differ from exact depth's only where surfaces meet.
  *    The refraction normal is the shared one: the exact one costs the still-water
- *    board about a third more for nothing visible at this preset. */
+ *    board more for nothing visible at this preset. */
 #include "tarn/tarn_render.h"
 
 static tarn_quality preset_exact(void)
