@@ -122,10 +122,13 @@ static void direction_normal(const tarn_water_context *w, const uint8_t *texel_a
                              tarn_water_normal *n)
 {
     const tarn_water *water = w->water;
-    maps_x(texel_a, texel_b, n);
     int32_t a[3], b[3] = {0, 0, Q15_ONE};
     decode_normal(texel_a, a);
-    if (n->has_b) decode_normal(texel_b, b);
+    if (texel_b != NULL) decode_normal(texel_b, b);
+    tarn__water_flat_normal(n);
+    n->a_x = a[0];
+    n->b_x = b[0];
+    n->has_b = texel_b != NULL;
     const int32_t strength = water->normal_strength;
     int32_t v[3] = {strength_times(a[0] + b[0], strength), strength_times(a[1] + b[1], strength),
                     (a[2] * b[2]) >> 16};
