@@ -12,8 +12,8 @@ import os
 import re
 import subprocess
 
-from docs_figures import (ROOT, TARN, Fig, MeasureError, Placeholder, derived, diff, exact, insn, pct_less,
-                          pct_more, ratio, run, wall)
+from docs_figures import (OUT, PROFILE_TIMES, ROOT, TARN, Fig, MeasureError, Placeholder, derived, diff, exact, insn,
+                          pct_less, pct_more, ratio, run, wall)
 
 BLOCKS = {}
 KEYS = {}
@@ -766,9 +766,10 @@ KEYS["sweep.m0.convert_dither"] = conversion(True)
 
 @tool
 def profile_still(m):
-    """make profile-target BOARD=qemu-m0-still: every instruction of its run, by function."""
-    m.bench("qemu-m0-still")
-    return run(["make", "--no-print-directory", "-s", "profile-target", "BOARD=qemu-m0-still", "TOP=1000"])
+    """make profile-target BOARD=qemu-m0-still FW_TIMES=1000: every instruction of its run, by
+    function (in a directory of its own: the times are not the board's own build's)."""
+    return run(["make", "--no-print-directory", "-s", "profile-target", "BOARD=qemu-m0-still", "TOP=1000",
+                "FW_TIMES=" + PROFILE_TIMES, "FW_BUILD_DIR=" + os.path.join(OUT, "profile", "qemu-m0-still")])
 
 
 def profile_functions(m):
@@ -784,14 +785,8 @@ def profile_functions(m):
     return out
 
 
-def firmware_times():
-    """How many frames firmware/main.c streams: FW_TIMES in firmware/firmware.mk."""
-    with open(os.path.join(ROOT, "firmware/firmware.mk")) as f:
-        return len(re.search(r"^FW_TIMES := (.*)$", f.read(), re.M).group(1).split(","))
-
-
-# a board's run: the streamed frames, then the core alone once more
-STREAMED_FRAMES = firmware_times()
+# a profiled run: its streamed frames (PROFILE_TIMES), then the core alone once more
+STREAMED_FRAMES = len(PROFILE_TIMES.split(","))
 RUN_FRAMES = STREAMED_FRAMES + 1
 
 

@@ -30,7 +30,17 @@
 static const char *const moving_scenes[] = {"scenes/pond-orbit.json", "scenes/lake-drift.json"};
 static const tarn_preset presets[] = {TARN_PRESET_EXACT, TARN_PRESET_BALANCED, TARN_PRESET_FAST};
 static const char *const preset_names[] = {"exact", "balanced", "fast"};
+/* Under ThreadSanitizer (make test's third run of this file, whose work is to find
+ * races; the other two check the pixels of every way) the frame is drawn only the
+ * ways that share memory between threads: three parts share what two and seven do,
+ * and a pipeline in one thread races with nothing. The run is then minutes shorter. */
+#if defined(__SANITIZE_THREAD__)
+#define ONE_THREAD_ORDERS 0
+static const uint16_t part_counts[] = {2u, PARTS_MAX};
+#else
+#define ONE_THREAD_ORDERS 1
 static const uint16_t part_counts[] = {2u, 3u, PARTS_MAX};
+#endif
 
 /* The frame the parts draw together: its pixels, and how often each was delivered.
  * The parts' tiles do not overlap, so the threads write apart. */
@@ -243,6 +253,8 @@ static void assert_parts_draw_the_frame(const tarn_scene *scene, const tarn_fram
     if (config->quality.frame_shape == TARN_FRAME_STRIPS) {
         render_in_pipeline(scene, config, IN_TWO_THREADS, frame, what);
         assert_frame_is(whole, frame, what, "in a strip pipeline of two threads");
+    }
+    if (ONE_THREAD_ORDERS && config->quality.frame_shape == TARN_FRAME_STRIPS) {
         render_in_pipeline(scene, config, OPAQUE_FIRST, frame, what);
         assert_frame_is(whole, frame, what, "in a strip pipeline, its opaque strips drawn first");
         render_in_pipeline(scene, config, ONE_WORKER, frame, what);
