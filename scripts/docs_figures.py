@@ -367,9 +367,12 @@ class Measurer:
             if r[0] in ("bench", "build", "profile"):
                 own = r[0] != "bench" or r[2] is None or r[4] is not None
                 boards.setdefault(("board", r[1]) if own else r, []).append(r)
+        # the tools first in the second phase: one of them profiles a board, the longest
+        # job there, which started last would end the phase on one core
         phases = [[("serial", tuple(jobs)) for jobs in boards.values()],
+                  [r for r in pending if r[0] == "output"] +
                   [("sweep_batch", scene, tuple(args)) for scene, args in sweeps.items()] +
-                  [r for r in pending if r[0] in ("host", "output")]]
+                  [r for r in pending if r[0] == "host"]]
         quick = [r for r in pending if r[0] not in ("bench", "build", "profile", "host", "output", "sweep_cost")]
         with concurrent.futures.ThreadPoolExecutor(2) as pool:
             for k, jobs in enumerate(phases):

@@ -509,8 +509,7 @@ static void test_exact_normal_is_the_unit_direction(void **state)
     tarn_water_context w = {0};
     w.water = &water;
     w.features = TARN_WATER_NORMALS | TARN_WATER_REFRACTION;
-    w.refraction_exact = 1;
-    w.offset_limit = 8;
+    w.exact_normal = 1;
     const tarn_water_input in = {0};
     uint32_t seed = 2024u;
     double worst_q30 = 0.0, worst_q15 = 0.0;

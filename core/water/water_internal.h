@@ -66,7 +66,10 @@ typedef struct tarn_water_context {
        found at its top-left pixel, a slot per block column; NULL with water_block 1 */
     struct tarn_water_block *blocks;
     uint8_t block_shift;   /* log2 of the quality's water_block */
-    uint8_t refraction_exact; /* the quality's refraction_normal is EXACT */
+    /* a refracting pixel finds N exactly, once (tarn__water_surface_normal): the
+       quality's refraction_normal is EXACT and refracted samples move
+       (tarn__water_refracts); decided with the context, not at each pixel */
+    uint8_t exact_normal;
     uint32_t triangle_serial; /* water triangles drawn this frame, 0 before the first */
     /* over a still-water backdrop with the quality's water_block 2 or 4: each
        block's highlight, a slot per block column (tarn_still_block); NULL otherwise */

@@ -149,7 +149,7 @@ void tarn__water_surface_normal(const tarn_water_context *w, const tarn_water_in
     const uint8_t *a, *b;
     if (!map_texels(w, in, &a, &b))
         tarn__water_flat_normal(n);
-    else if (TARN_LINK_REFRACTION_EXACT && w->refraction_exact && tarn__water_refracts(w))
+    else if (TARN_LINK_REFRACTION_EXACT && w->exact_normal)
         exact_normal(w, a, b, n);
     else
         direction_normal(w, a, b, n);

@@ -19,7 +19,7 @@ static TARN_ALWAYS_INLINE void refracted_pixel(const tarn_water_context *w, int3
                                               tarn_water_normal *n, uint32_t reach, int32_t target[2])
 {
     int32_t normal[2] = {n->xy_q30[0], n->xy_q30[1]};
-    if (!TARN_LINK_REFRACTION_EXACT || !w->refraction_exact) {
+    if (!TARN_LINK_REFRACTION_EXACT || !w->exact_normal) {
         tarn__water_normalise(n); /* for the steps after this one */
         normal[0] = n->x * 32768;  /* Q1.15 to Q1.30 */
         normal[1] = n->y * 32768;

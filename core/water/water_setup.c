@@ -66,7 +66,10 @@ void tarn__water_context_setup(tarn_water_context *w, const tarn_view *view,
     w->fog_argument_bits = config->quality.fog_argument_bits;
     w->recip_steps = config->quality.recip_newton_steps;
     w->block_shift = (uint8_t)(config->quality.water_block == 4 ? 2u : config->quality.water_block == 2 ? 1u : 0u);
-    w->refraction_exact = config->quality.refraction_normal == TARN_REFRACTION_NORMAL_EXACT;
+    /* after features; the frame set offset_limit before the first context */
+    w->exact_normal = (uint8_t)(TARN_LINK_REFRACTION_EXACT &&
+                                config->quality.refraction_normal == TARN_REFRACTION_NORMAL_EXACT &&
+                                tarn__water_refracts(w));
     const tarn_panning *pans[3] = {&water->pan_a, &water->pan_b, &water->foam_pan};
     uint32_t *offsets[3] = {w->pan_a, w->pan_b, w->foam_pan};
     for (int k = 0; k < 3; k++) {
