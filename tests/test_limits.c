@@ -92,6 +92,29 @@ static void bits(void **state)
     assert_int_equal(tarn_clz32(0x0000FFFFu), 16);
 }
 
+/* The Cortex-M0's high word (four 16x16 products and their carries) is the native
+ * product's, at the carries' edges and at random. */
+static void high_word_by_halves(void **state)
+{
+    (void)state;
+    static const uint32_t edges[] = {0u, 1u, 0xFFFFu, 0x10000u, 0x1FFFFu, 0x7FFFFFFFu, 0x80000000u, 0xFFFF0000u,
+                                     0xFFFF0001u, UINT32_MAX - 1u, UINT32_MAX};
+    const size_t n = sizeof edges / sizeof edges[0];
+    uint32_t seed = 12345u;
+    for (size_t k = 0; k < n * n + 1000000u; k++) {
+        uint32_t a, b;
+        if (k < n * n) {
+            a = edges[k / n];
+            b = edges[k % n];
+        } else {
+            a = seed = seed * 1664525u + 1013904223u;
+            b = seed = seed * 1664525u + 1013904223u;
+        }
+        const uint32_t want = (uint32_t)(((uint64_t)a * b) >> 32), got = tarn_mul_hi_u32_by_halves(a, b);
+        if (got != want) fail_msg("the high word of 0x%08x * 0x%08x by halves is 0x%08x, not 0x%08x", a, b, got, want);
+    }
+}
+
 static void products(void **state)
 {
     (void)state;
@@ -227,6 +250,7 @@ int main(void)
         cmocka_unit_test(rounding_shifts),
         cmocka_unit_test(q16_arithmetic),
         cmocka_unit_test(bits),
+        cmocka_unit_test(high_word_by_halves),
         cmocka_unit_test(products),
         cmocka_unit_test(divisions_used_once),
         cmocka_unit_test(frame_helpers),
