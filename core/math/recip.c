@@ -30,13 +30,18 @@ static uint32_t recip_newton_step(uint32_t m, uint32_t y)
     return newton_corrected(y, m_y, tarn_mul_hi_u32(y, newton_error(m_y)));
 }
 
-/* mul_hi(x, seed << 15) = floor(x * seed / 2^17), exactly, from x's halves times the
- * 16-bit seed (each below 2^32) joined by nested floors: two 16x16 products where
- * the general high product takes four. For x = m the sum stays near 2^31 (the seed
- * is 1/m to 2^-8); for the step's error term it is far smaller. */
+/* mul_hi(x, seed << 15) = floor(x * seed / 2^17), exactly. Without a native high
+ * word, from x's halves times the 16-bit seed (each below 2^32) joined by nested
+ * floors: two 16x16 products where the general high product takes four. For x = m
+ * the sum stays near 2^31 (the seed is 1/m to 2^-8); for the step's error term it
+ * is far smaller. */
 static uint32_t times_seed(uint32_t x, uint32_t seed)
 {
+#if TARN_NATIVE_MUL_HI
+    return tarn_mul_hi_u32(x, seed << 15);
+#else
     return ((x >> 16) * seed + (((x & 0xFFFFu) * seed) >> 16)) >> 1;
+#endif
 }
 
 /* recip_newton_step(m, seed << 15), the same number, by times_seed. */

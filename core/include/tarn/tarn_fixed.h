@@ -102,6 +102,15 @@ static inline unsigned tarn_clz32(uint32_t v)
     return v >> 8 ? 16u + tarn_clz8[v >> 8] : 24u + tarn_clz8[v];
 }
 
+/* 1 where the core multiplies 32x32 to a 64-bit product's high word in an
+ * instruction (RISC-V with M: mulhu; the Cortex-M3/M4: umull; a PC), 0 on the
+ * Cortex-M0 and RISC-V without M, whose products are 32-bit only. */
+#if defined(__ARM_ARCH_6M__) || (defined(__riscv) && !defined(__riscv_mul))
+#define TARN_NATIVE_MUL_HI 0
+#else
+#define TARN_NATIVE_MUL_HI 1
+#endif
+
 /* High 32 bits of an unsigned 32x32 product from four 16x16 partial products,
  * summed in 32-bit words: for a core without a high-word multiply (the Cortex-M0,
  * a RISC-V core without M), about 20 instructions where libgcc's 64x64 multiply
@@ -121,10 +130,10 @@ static inline uint32_t tarn_mul_hi_u32_by_halves(uint32_t a, uint32_t b)
  * the native product, one instruction; the others the partial products. */
 static inline uint32_t tarn_mul_hi_u32(uint32_t a, uint32_t b)
 {
-#if defined(__ARM_ARCH_6M__) || (defined(__riscv) && !defined(__riscv_mul))
-    return tarn_mul_hi_u32_by_halves(a, b);
-#else
+#if TARN_NATIVE_MUL_HI
     return (uint32_t)(((uint64_t)a * b) >> 32);
+#else
+    return tarn_mul_hi_u32_by_halves(a, b);
 #endif
 }
 
