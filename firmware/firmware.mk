@@ -144,9 +144,12 @@ FW_LIBC_INCLUDE := -Ifirmware/libc
 endif
 FW_QEMU_PKG := $(if $(filter qemu-system-arm,$(BOARD_QEMU)),qemu-system-arm,qemu-system-misc)
 
-FW_CC := $(FW_CROSS)gcc
+# Through ccache where it is installed (make test installs it): a board's builds of
+# other scenes and qualities compile most of the core to the same objects.
+FW_CCACHE := $(shell command -v ccache 2>/dev/null)
+FW_CC := $(FW_CCACHE) $(FW_CROSS)gcc
 FW_CFLAGS := -std=c99 -Wall -Wextra -Werror -O2 -g -ffreestanding -fno-common \
-	-ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su $(BOARD_CPU) \
+	-ffunction-sections -fdata-sections -fstack-usage $(BOARD_CPU) \
 	-Icore -Icore/include -Ifirmware -I$(FW_DIR) $(BOARD_INCLUDE) $(FW_LIBC_INCLUDE)
 # The program: an emulated board runs the measured run and sends the panel stream
 # through its writes; a real board shows the scene forever through SPI and DMA.
@@ -235,7 +238,7 @@ $(FW_DIR)/firmware.conf: $(FW_BOARD_MK) firmware/firmware.mk FORCE
 FORCE:
 
 fw-toolchain:
-	@command -v $(FW_CC) >/dev/null 2>&1 || { echo "tarn: $(FW_CC) not found; install it: sudo apt-get install $(FW_CROSS_PKG)" >&2; exit 1; }
+	@command -v $(FW_CROSS)gcc >/dev/null 2>&1 || { echo "tarn: $(FW_CROSS)gcc not found; install it: sudo apt-get install $(FW_CROSS_PKG)" >&2; exit 1; }
 
 fw-qemu:
 	@command -v $(BOARD_QEMU) >/dev/null 2>&1 || { echo "tarn: $(BOARD_QEMU) not found; install it: sudo apt-get install $(FW_QEMU_PKG)" >&2; exit 1; }
@@ -257,6 +260,13 @@ $(FW_DIR)/scene.c: $(FW_SCENE) $(FW_TARN) $(FW_DIR)/firmware.conf $(if $(FW_POIN
 
 $(FW_DIR)/scene.h $(FW_DIR)/scene_link.h: $(FW_DIR)/scene.c
 
+# The core takes scene_link.h's switches as -D options (a response file), not as
+# -include scene_link.h: the preprocessed source then names no file of this build,
+# so a file the switches leave alone is the same object in every build, and ccache
+# serves it from another.
+$(FW_DIR)/scene_link.opts: $(FW_DIR)/scene_link.h
+	@sed -n 's/^#define \(TARN_LINK_[A-Z0-9_]*\) \(.*\)$$/-D\1="\2"/p' $< > $@.tmp && mv $@.tmp $@
+
 # The board's cores (BOARD_CORES in board.mk, 1 unless given): with more than one,
 # the core is built with the code that shares a frame out (TARN_LINK_PARTS) and the
 # measured run also renders the frame in that many parts (firmware/main.c).
@@ -272,8 +282,8 @@ $(error BOARD_CORE_SPLIT of $(BOARD): "$(FW_CORE_SPLIT)"; expected parts or pipe
 endif
 FW_PIPELINE := $(if $(filter pipeline,$(FW_CORE_SPLIT)),1,0)
 FW_CORE_OBJ := $(filter $(FW_DIR)/obj/core/%,$(FW_OBJ))
-$(FW_CORE_OBJ): $(FW_DIR)/scene_link.h $(FW_DIR)/firmware.conf
-$(FW_CORE_OBJ): FW_DEFINES = -include $(FW_DIR)/scene_link.h -DTARN_LINK_PARTS=$(FW_LINK_PARTS)
+$(FW_CORE_OBJ): $(FW_DIR)/scene_link.opts $(FW_DIR)/firmware.conf
+$(FW_CORE_OBJ): FW_DEFINES = @$(FW_DIR)/scene_link.opts -DTARN_LINK_PARTS=$(FW_LINK_PARTS)
 
 $(FW_OBJ): firmware/firmware.mk $(FW_BOARD_MK)
 FW_MAIN_OBJ := $(patsubst %,$(FW_DIR)/obj/firmware/%.o,main sweep_main display_main)
@@ -330,9 +340,9 @@ $(FW_DIR)/obj/%.o: %.S | fw-toolchain
 
 # A link that overflows a memory region names the region and the bytes over; the
 # note after it says what to change. A linked image whose deepest call chain
-# (firmware/stack_bound.sh: GCC's call graphs, no recursion allowed) needs more
+# (firmware/stack_bound.sh: the objects' calls and frames, no recursion allowed) needs more
 # stack than the board reserves is refused too.
-FW_LINK = $(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LDSCRIPT) -Lboards/common \
+FW_LINK = $(FW_CROSS)gcc $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LDSCRIPT) -Lboards/common \
 	-Wl,--gc-sections -Wl,-Map=$(FW_DIR)/firmware.map -Wl,--defsym=__stack_size=$(BOARD_STACK_BYTES) \
 	-o $(FW_ELF) $(FW_OBJ) $(FW_LIBS)
 # Where each core's stack starts, for the bound below (firmware/stack_bound.sh's
@@ -378,7 +388,7 @@ $(FW_TOOLS)/%: firmware/tools/%.c
 $(FW_DIR)/boot2.bin: $(BOARD_BOOT2) boards/$(BOARD)/board.mk | fw-toolchain
 	@mkdir -p $(dir $@)
 	$(call show,LD,$(FW_DIR)/boot2.elf)
-	$(Q)$(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -Wl,-Ttext=0x20041f00 -Wl,-e,boot2_entry -o $(FW_DIR)/boot2.elf $<
+	$(Q)$(FW_CROSS)gcc $(BOARD_CPU) -nostdlib -nostartfiles -Wl,-Ttext=0x20041f00 -Wl,-e,boot2_entry -o $(FW_DIR)/boot2.elf $<
 	$(call show,OBJCOPY,$@)
 	$(Q)$(FW_CROSS)objcopy -O binary -j .text $(FW_DIR)/boot2.elf $@
 

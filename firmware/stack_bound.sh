@@ -1,9 +1,9 @@
 #!/bin/sh
-# stack_bound.sh: the deepest stack a firmware build can use, from GCC's call graphs.
+# stack_bound.sh: the deepest stack a firmware build can use, from its objects.
 #
 # Usage: firmware/stack_bound.sh CROSS OBJDIR ENTRY [HANDLER:EXTRA_BYTES | START:core ...]
-#   CROSS    the toolchain prefix (arm-none-eabi-), for readelf
-#   OBJDIR   where the objects and their .ci files are (-fcallgraph-info=su)
+#   CROSS    the toolchain prefix (arm-none-eabi-), for objdump and readelf
+#   OBJDIR   where the objects and their .su files are (-fstack-usage)
 #   ENTRY    the function the stack starts in (reset_handler, main)
 #   HANDLER  an interrupt handler that can preempt at any depth, and the bytes the
 #            hardware pushes before it runs (Cortex-M: 32, plus 4 of alignment)
@@ -12,13 +12,15 @@
 #            start the core, never to be called through a pointer on this stack
 # Prints: stack_bytes=N, then the deepest path, one "bytes function" per line.
 #
-# Each function costs its own frame (.ci "N bytes (static)") plus its deepest callee.
-# An indirect call (GCC's __indirect_call node) may reach any function whose address
-# the program takes (a relocation from code or data to a function that is not a
-# call or a branch) and that is not already on the chain: an over-estimate, since
-# a tile sink is counted as reachable from the panel transport and the other way
-# round, but one that needs no list of who calls which pointer. Functions without a call graph (libgcc's and newlib's: memset,
-# __aeabi_uldivmod...) are leaves costing LIBRARY_BYTES each; they are listed.
+# Each function costs its own frame (its .su line) plus its deepest callee. The calls
+# are the code's own: each call relocation in a function's section (-ffunction-sections),
+# which is what the compiler left after inlining and folding, and each call through a
+# register. Such an indirect call may reach any function whose address the program
+# takes (a relocation from code or data to a function that is not a call or a branch)
+# and that is not already on the chain: an over-estimate, since a tile sink is counted
+# as reachable from the panel transport and the other way round, but one that needs no
+# list of who calls which pointer. Functions without a frame (libgcc's and newlib's:
+# memset, __aeabi_uldivmod...) are leaves costing LIBRARY_BYTES each; they are listed.
 # Recursion, or a frame of dynamic size, makes the bound unknown: exit status 1.
 set -eu
 [ $# -ge 3 ] || { echo "usage: $0 CROSS OBJDIR ENTRY [HANDLER:BYTES...]" >&2; exit 2; }
@@ -26,9 +28,10 @@ cross=$1 objdir=$2 entry=$3
 shift 3
 LIBRARY_BYTES=${LIBRARY_BYTES:-64}
 
-cis=$(find "$objdir" -name '*.ci' | sort)
-objs=$(find "$objdir" -name '*.o' | sort)
-[ -n "$cis" ] || { echo "stack_bound: no .ci files in $objdir (build with -fcallgraph-info=su)" >&2; exit 2; }
+sus=$(find "$objdir" -name '*.su' | sort)
+[ -n "$sus" ] || { echo "stack_bound: no .su files in $objdir (build with -fstack-usage)" >&2; exit 2; }
+# the objects compiled from C, each beside its .su: the only ones whose frames are known
+objs=$(for su in $sus; do [ -f "${su%.su}.o" ] && echo "${su%.su}.o"; done)
 
 # Address-taken functions: non-call relocations in code and data sections that name
 # a function's section (.text.NAME, -ffunction-sections; .ram.text.NAME for code a
@@ -41,29 +44,39 @@ taken=$(for o in $objs; do "${cross}readelf" -rW "$o"; done | awk '
     }
     use && NF >= 5 && $3 !~ /(CALL|JUMP|JAL|BRANCH|RELAX|ALIGN|PCREL_LO12|V4BX|TLS)/ {
         name = $5
-        sub(/^(\.ram)?\.text\./, "", name)
+        sub(/^(\.ram)?\.text\.(startup\.|unlikely\.)?/, "", name)
+        sub(/\.[0-9]+$/, "", name)
         print name
     }' | sort -u)
 
-cat $cis | awk -v entry="$entry" -v handlers="$*" -v taken="$taken" -v library="$LIBRARY_BYTES" '
-function bare(title) { sub(/^.*:/, "", title); return title }
-/^node:/ {
-    title = $0; sub(/^node: \{ title: "/, "", title); sub(/".*$/, "", title)
-    name = bare(title)
-    label = $0; sub(/^.* label: "/, "", label); sub(/".*$/, "", label)
-    if (label ~ /[0-9]+ bytes \(/) {
-        bytes = label; sub(/^.*\\n/, "", bytes)
-        n = bytes + 0
-        if (bytes ~ /dynamic/ && bytes !~ /bounded/) dynamic[name] = 1
-        if (!(name in frame) || n > frame[name]) frame[name] = n
-    }
+# The call graph: "frame NAME BYTES dynamic|static" from each .su line, and "call
+# FROM TO" for each call or tail call in the code (a call relocation: bl, b.w, call,
+# tail, jal) and each indirect one (blx/bx through a register on Arm, jalr/jr through
+# a register but ra's own return on RISC-V: TO is __indirect_call). A clone's name
+# (NAME.isra.0, .constprop.0, .part.0) loses its number, as GCC's .su gives it.
+graph() {
+    cat $sus | awk -F '\t' '{ name = $1; sub(/^.*:/, "", name); sub(/\.[0-9]+$/, "", name); print "frame", name, $2, ($3 ~ /dynamic/ && $3 !~ /bounded/) ? "dynamic" : "static" }'
+    for o in $objs; do "${cross}objdump" -dr --no-show-raw-insn "$o"; done | awk '
+        function bare(name) { sub(/\+0x[0-9a-f]+$/, "", name); sub(/^(\.ram)?\.text\.(startup\.|unlikely\.)?/, "", name); sub(/\.[0-9]+$/, "", name); return name }
+        /^Disassembly of section/ { fn = ""; next }
+        /^[0-9a-f]+ <[^.][^>]*>:$/ { fn = $2; gsub(/[<>:]/, "", fn); fn = bare(fn); next }
+        fn == "" { next }
+        /R_(ARM_(THM_CALL|THM_JUMP24|CALL|JUMP24)|RISCV_(CALL|CALL_PLT|JAL|RVC_JUMP))[ \t]/ {
+            to = bare($NF)
+            if (to !~ /^\./ && to != fn) print "call", fn, to
+            next
+        }
+        /\t(blx|bx)\tr([0-9]|1[0-2])$/ || /\t(jalr|jr)\t[a-z0-9]+$/ { print "call", fn, "__indirect_call" }'
+}
+
+graph | awk -v entry="$entry" -v handlers="$*" -v taken="$taken" -v library="$LIBRARY_BYTES" '
+$1 == "frame" {
+    if ($4 == "dynamic") dynamic[$2] = 1
+    if (!($2 in frame) || $3 + 0 > frame[$2]) frame[$2] = $3 + 0
     next
 }
-/^edge:/ {
-    s = $0; sub(/^edge: \{ sourcename: "/, "", s); sub(/".*$/, "", s)
-    t = $0; sub(/^.* targetname: "/, "", t); sub(/".*$/, "", t)
-    s = bare(s); t = bare(t)
-    if (!((s, t) in seen)) { seen[s, t] = 1; calls[s] = calls[s] " " t }
+$1 == "call" {
+    if (!(($2, $3) in seen)) { seen[$2, $3] = 1; calls[$2] = calls[$2] " " $3 }
 }
 # deepest(f): bytes from entering f to the bottom of its deepest call chain. An
 # indirect call skips the targets already on the chain (a function pointer that

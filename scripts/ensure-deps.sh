@@ -24,6 +24,7 @@ if [ "${1:-demo}" = test ]; then
     want cmake command -v cmake                          # tests/check_packages.sh: core/CMakeLists.txt
     want g++ command -v g++                              # tests/check_packages.sh: the headers as C++
     want python3 command -v python3                      # tests/check_packages.sh: core/library.json
+    want ccache command -v ccache                        # firmware builds of other scenes share objects
     want gcc-arm-none-eabi command -v arm-none-eabi-gcc
     want libnewlib-arm-none-eabi test -e /usr/lib/arm-none-eabi/newlib
     want binutils-arm-none-eabi command -v arm-none-eabi-nm

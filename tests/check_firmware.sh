@@ -12,7 +12,7 @@
 # ram_bytes, flash_bytes, scene_bytes, code_bytes: as firmware/image_sizes.sh finds
 # them (RAM: .data, .bss and the stack reserved by the linker script; flash: the
 # image; the baked scene's const data and the rest of the image); stack_bytes: the deepest call chain
-# GCC's call graphs allow (firmware/stack_bound.sh), stack_peak_bytes what the run
+# the objects' calls and frames allow (firmware/stack_bound.sh), stack_peak_bytes what the run
 # really used (startup paints the stack); panel_psnr the board's frame on the
 # yardstick (tarn compare: the panel error, RGB565 with the ordered dither).
 #
