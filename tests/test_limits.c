@@ -8,8 +8,10 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <cmocka.h>
 
+#include "scene_load.h"
 #include "tarn/tarn_math.h"
 #include "tarn/tarn_panel.h"
 #include "tarn/tarn_render.h"
@@ -92,6 +94,21 @@ static void bits(void **state)
     assert_int_equal(tarn_clz32(0x0000FFFFu), 16);
 }
 
+/* The table's count of leading zeros (the Cortex-M0's) is the instruction's, at each
+ * power of two and its neighbours and at random. */
+static void leading_zeros_by_table(void **state)
+{
+    (void)state;
+    uint32_t seed = 777u;
+    for (uint32_t k = 0; k < 96u + 1000000u; k++) {
+        const uint32_t v = k < 96u ? (1u << (k / 3u % 32u)) + k % 3u - 1u : (seed = seed * 1664525u + 1013904223u) >> (k % 32u);
+        if (tarn_clz32_by_table(v) != tarn_clz32(v))
+            fail_msg("leading zeros of 0x%08x: %u by the table, %u by the instruction", v, tarn_clz32_by_table(v),
+                     tarn_clz32(v));
+    }
+    assert_int_equal(tarn_clz32_by_table(0), 32);
+}
+
 /* The Cortex-M0's high word (four 16x16 products and their carries) is the native
  * product's, at the carries' edges and at random. */
 static void high_word_by_halves(void **state)
@@ -113,6 +130,55 @@ static void high_word_by_halves(void **state)
         const uint32_t want = (uint32_t)(((uint64_t)a * b) >> 32), got = tarn_mul_hi_u32_by_halves(a, b);
         if (got != want) fail_msg("the high word of 0x%08x * 0x%08x by halves is 0x%08x, not 0x%08x", a, b, got, want);
     }
+}
+
+/* Every position of `mesh` and the coordinates' edges in each combination: the same
+ * view position whole (a core with 64-bit products) and by halves (the Cortex-M0's). */
+static void positions_agree(const tarn_object_xform *xform, const tarn_mesh *mesh, const char *what)
+{
+    static const int32_t edges[] = {INT32_MIN, INT32_MIN + 1, -65537, -65536, -1, 0, 1, 65535, 65536, INT32_MAX};
+    const size_t n = sizeof edges / sizeof edges[0];
+    for (size_t k = 0; k < mesh->vertex_count + n * n * n; k++) {
+        const tarn_vec3 p = k < mesh->vertex_count ? mesh->positions[k]
+                                                   : (tarn_vec3){edges[(k - mesh->vertex_count) / (n * n)],
+                                                                 edges[(k - mesh->vertex_count) / n % n],
+                                                                 edges[(k - mesh->vertex_count) % n]};
+        tarn_view_vertex whole, halves;
+        tarn__vertex_position(xform, &p, &whole);
+        tarn__vertex_position_by_halves(xform, &p, &halves);
+        if (whole.x != halves.x || whole.y != halves.y || whole.d != halves.d)
+            fail_msg("%s, position (%d, %d, %d): (%d, %d, %d) whole, (%d, %d, %d) by halves", what, p.x, p.y, p.z,
+                     whole.x, whole.y, whole.d, halves.x, halves.y, halves.d);
+    }
+}
+
+/* The vertex transform by halves is the whole one's, for the orbiting pond's objects
+ * seen at three times, as they are and scaled and moved to the extremes. */
+static void vertex_position_by_halves(void **state)
+{
+    (void)state;
+    tarn_loaded_scene s;
+    tarn_error err;
+    if (tarn_scene_load("scenes/pond-orbit.json", &s, &err) != 0) fail_msg("%s", err.message);
+    static const tarn_q16 scales[] = {65536, 1, 1 << 24, INT32_MAX};
+    static const int32_t places[] = {0, -(1 << 30), INT32_MAX};
+    for (uint32_t time_ms = 0; time_ms <= 5000; time_ms += 2500) {
+        const tarn_frame_config config = {s.width, s.height, tarn_quality_preset(TARN_PRESET_EXACT), time_ms};
+        tarn_view view;
+        tarn__view_setup(&s.scene, &config, &view);
+        for (uint32_t i = 0; i < s.scene.object_count; i++)
+            for (size_t k = 0; k < sizeof scales / sizeof scales[0]; k++) {
+                tarn_object object = s.scene.objects[i];
+                object.scale = scales[k];
+                object.position.x = object.position.z = places[k % 3];
+                tarn_object_xform xform;
+                tarn__object_xform_setup(&view, &object, &xform);
+                char what[64];
+                snprintf(what, sizeof what, "object %u, scale %d, %u ms", (unsigned)i, scales[k], (unsigned)time_ms);
+                positions_agree(&xform, object.mesh, what);
+            }
+    }
+    tarn_scene_free(&s);
 }
 
 static void products(void **state)
@@ -250,7 +316,9 @@ int main(void)
         cmocka_unit_test(rounding_shifts),
         cmocka_unit_test(q16_arithmetic),
         cmocka_unit_test(bits),
+        cmocka_unit_test(leading_zeros_by_table),
         cmocka_unit_test(high_word_by_halves),
+        cmocka_unit_test(vertex_position_by_halves),
         cmocka_unit_test(products),
         cmocka_unit_test(divisions_used_once),
         cmocka_unit_test(frame_helpers),

@@ -58,13 +58,21 @@ typedef struct {
 /* Per-object constants for one frame. */
 typedef struct {
     /* to_view (basis * scale * rotation, `to_view_frac_bits` fraction bits, entries
-     * within +-2^29) as high * 2^16 + low, for 32-bit products in tarn__vertex_position */
+     * within +-2^29) as high * 2^16 + low, for the 32-bit products of
+     * tarn__vertex_position_by_halves */
     uint16_t to_view_low[3][3];
     int16_t to_view_high[3][3];
-    /* per row, what tarn__vertex_position's sum starts from (the object's origin in view
-     * space, the rounding half and the offsets of its unsigned forms), in 16-bit columns */
+    /* per row, what tarn__vertex_position_by_halves's sum starts from (the object's
+     * origin in view space, the rounding half and the offsets of its unsigned forms),
+     * in 16-bit columns */
     uint16_t row_start_low[3];
     uint32_t row_start_middle[3], row_start_high[3];
+#if TARN_NATIVE_MUL_HI
+    /* the same two for a core with 32x32 -> 64-bit products: to_view's entries, and
+     * the origin times 2^to_view_frac_bits plus the rounding half */
+    int32_t to_view[3][3];
+    int64_t row_start[3];
+#endif
     unsigned to_view_frac_bits;
     tarn_q16 light_dir[3];  /* light direction in object space, Q16.16 unit */
     uint32_t tint_q16[3];   /* material colour / 255 per channel, Q0.16 */
@@ -82,8 +90,19 @@ void tarn__view_setup(const tarn_scene *scene, const tarn_frame_config *config, 
  * (they come lit), its lighting constants. */
 void tarn__object_xform_setup(const tarn_view *view, const tarn_object *object,
                              tarn_object_xform *xform);
+/* The vertex's view position (x, y, d; their low bits 0): to_view times the object
+ * position plus the origin, rounded to Q16.16 and saturated. A core with a 64-bit
+ * product (TARN_NATIVE_MUL_HI) takes it whole; the Cortex-M0 and RISC-V without M
+ * by tarn__vertex_position_by_halves, the same numbers in 16x16-bit products, which
+ * every target compiles for the test that holds the two together. */
+void tarn__vertex_position_by_halves(const tarn_object_xform *xform, const tarn_vec3 *object_pos,
+                                     tarn_view_vertex *out);
+#if TARN_NATIVE_MUL_HI
 void tarn__vertex_position(const tarn_object_xform *xform, const tarn_vec3 *object_pos,
                           tarn_view_vertex *out);
+#else
+#define tarn__vertex_position tarn__vertex_position_by_halves
+#endif
 void tarn__vertex_shade(const tarn_view *view, const tarn_object_xform *xform,
                        const tarn_mesh *mesh, uint16_t index, tarn_view_vertex *out);
 /* The vector with each component cut to [-2, 2] (Q16.16): unit vectors unchanged. */

@@ -11,8 +11,9 @@ static unsigned bit_length_u64(uint64_t v)
 /* The view position's row i is floor(S / 2^f), saturated, f = to_view_frac_bits
  * (11..30), where S = sum_k m_k p_k + origin_i 2^f + 2^(f-1): the rounded shift of
  * the products' sum plus the origin, taken in one step (adding a multiple of 2^f
- * before the floor is adding it after). tarn__vertex_position takes S in 32-bit
- * words, with each product split into four of 16-bit halves:
+ * before the floor is adding it after). A core with 32x32 -> 64-bit products sums S
+ * whole (tarn__vertex_position); the others (tarn__vertex_position_by_halves) take
+ * it in 32-bit words, with each product split into four of 16-bit halves:
  *   m = mh 2^16 + ml   (ml in [0, 2^16), mh in [-2^13, 2^13] as |m| <= 2^29)
  *   P = p + 2^31 = ph 2^16 + pl   (the coordinate's bits with the top one flipped:
  *                                  ph, pl in [0, 2^16))
@@ -60,11 +61,16 @@ static void object_to_view_matrix(const tarn_view *view, const tarn_object *obje
             const int32_t low = (int32_t)((uint32_t)m & 0xFFFFu);
             xform->to_view_low[i][j] = (uint16_t)low;
             xform->to_view_high[i][j] = (int16_t)((m - low) / 65536); /* exact */
+#if TARN_NATIVE_MUL_HI
+            xform->to_view[i][j] = m;
+#endif
             entries += m;
         }
-        const int64_t start = tarn_mul_i32_wide(origin[i], (int32_t)1 << f) + ((int32_t)1 << (f - 1u)) -
-                              2 * tarn_mul_i32_wide(entries, (int32_t)1 << 30);
-        const uint64_t bits = (uint64_t)start;
+        const int64_t rounded_origin = tarn_mul_i32_wide(origin[i], (int32_t)1 << f) + ((int32_t)1 << (f - 1u));
+#if TARN_NATIVE_MUL_HI
+        xform->row_start[i] = rounded_origin;
+#endif
+        const uint64_t bits = (uint64_t)(rounded_origin - 2 * tarn_mul_i32_wide(entries, (int32_t)1 << 30));
         xform->row_start_low[i] = (uint16_t)(bits & 0xFFFFu);
         xform->row_start_middle[i] = ((uint32_t)bits >> 16) + 0x60000000u;
         xform->row_start_high[i] = (uint32_t)(bits >> 32) - 0x6000u;
@@ -128,8 +134,8 @@ void tarn__object_xform_setup(const tarn_view *view, const tarn_object *object,
         object_lighting_setup(view, object, xform);
 }
 
-void tarn__vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,
-                          tarn_view_vertex *out)
+void tarn__vertex_position_by_halves(const tarn_object_xform *xform, const tarn_vec3 *p,
+                                     tarn_view_vertex *out)
 {
     /* the arithmetic and its bounds: above object_to_view_matrix. Each coordinate's
      * bits with the top one flipped, p + 2^31, in 16-bit halves. */
@@ -164,6 +170,28 @@ void tarn__vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p,
         *dest[i] = v;
     }
 }
+
+#if TARN_NATIVE_MUL_HI
+/* floor(v / 2^s) for s < 64, without >> of a negative number: a negative v's floor
+ * is -(~v >> s) - 1, ~v being -v - 1, not negative. */
+static int64_t floor_shift_i64(int64_t v, unsigned s)
+{
+    return v >= 0 ? (int64_t)((uint64_t)v >> s) : -(int64_t)(~(uint64_t)v >> s) - 1;
+}
+
+void tarn__vertex_position(const tarn_object_xform *xform, const tarn_vec3 *p, tarn_view_vertex *out)
+{
+    /* |S| < 2^63: the bounds above object_to_view_matrix */
+    const int32_t c[3] = {p->x, p->y, p->z};
+    tarn_q16 *dest[3] = {&out->x, &out->y, &out->d};
+    out->x_low = out->y_low = out->d_low = 0u;
+    for (int i = 0; i < 3; i++) {
+        int64_t sum = xform->row_start[i];
+        for (int k = 0; k < 3; k++) sum += (int64_t)xform->to_view[i][k] * c[k];
+        *dest[i] = tarn_sat_i64_to_i32(floor_shift_i64(sum, xform->to_view_frac_bits));
+    }
+}
+#endif
 
 /* (a * b + 2^15) >> 16, for a result within 32 bits: one 32-bit product when both
  * are below 2^16 (a shade, a colour, a unit dot product: nearly always), which

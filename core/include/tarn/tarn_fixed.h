@@ -91,15 +91,35 @@ static inline int tarn_is_power_of_two(uint32_t v)
 /* Leading zero bits of each byte value, 8 for 0 (core/math/math_tables.c). */
 extern const uint8_t tarn_clz8[256];
 
-/* Number of leading zero bits of a 32-bit value (32 for 0). Portable: the
- * Cortex-M0 has no CLZ instruction, and the result must match on every target.
- * Two tests find the highest non-zero byte and a table counts its zeros: it runs
- * about a dozen times a pixel (reciprocals, depth encoding, normalisation), where
- * a five-step binary search cost the M0 twice the instructions. */
-static inline unsigned tarn_clz32(uint32_t v)
+/* Number of leading zero bits of a 32-bit value (32 for 0), for a core without a
+ * CLZ instruction (the Cortex-M0, RISC-V without Zbb): two tests find the highest
+ * non-zero byte and a table counts its zeros. It runs about a dozen times a pixel
+ * (reciprocals, depth encoding, normalisation), where a five-step binary search
+ * cost the M0 twice the instructions. */
+static inline unsigned tarn_clz32_by_table(uint32_t v)
 {
     if (v >> 16) return v >> 24 ? tarn_clz8[v >> 24] : 8u + tarn_clz8[v >> 16];
     return v >> 8 ? 16u + tarn_clz8[v >> 8] : 24u + tarn_clz8[v];
+}
+
+/* 1 where the compiler counts leading zeros in an instruction or two: the
+ * Cortex-M3/M4 (CLZ), RISC-V with Zbb, a PC. */
+#if defined(__GNUC__) && (defined(__ARM_FEATURE_CLZ) || defined(__riscv_zbb) || defined(__x86_64__) || \
+                          defined(__i386__) || defined(__aarch64__))
+#define TARN_NATIVE_CLZ 1
+#else
+#define TARN_NATIVE_CLZ 0
+#endif
+
+/* Number of leading zero bits of a 32-bit value (32 for 0): the same number on
+ * every target, through the instruction where the core has one. */
+static inline unsigned tarn_clz32(uint32_t v)
+{
+#if TARN_NATIVE_CLZ
+    return v == 0u ? 32u : (unsigned)__builtin_clz(v);
+#else
+    return tarn_clz32_by_table(v);
+#endif
 }
 
 /* 1 where the core multiplies 32x32 to a 64-bit product's high word in an
