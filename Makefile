@@ -117,7 +117,8 @@ demo: deps
 # then the frame in parts, by threads at once, under ThreadSanitizer,
 # then the check that core/ stays integer-only on a Cortex-M0, then the core as a
 # package (make install, CMake, PlatformIO: tests/check_packages.sh), then the firmware's
-# sizes, stack and counter, then every measured figure of the docs against what the
+# sizes, stack and counter, and the stack bound on chains of known shape
+# (tests/check_stack_bound.sh), then every measured figure of the docs against what the
 # code measures now (tests/check_doc_figures.sh), then the fuzz targets' seed corpora
 # and a short run of each (tests/fuzz/fuzz.mk).
 # A step that fails is noted in build/test-failed and the next one runs, so that one
@@ -147,6 +148,7 @@ test: deps-test
 	@TARN_BIN=build/release/tarn WATER_COST_OUT=build/release/water-cost.txt tests/check_water_cost.sh \
 		$(call test_failed,tests/check_water_cost.sh)
 	@$(MAKE) --no-print-directory firmware-check BOARD= $(call test_failed,make firmware-check)
+	@tests/check_stack_bound.sh $(call test_failed,tests/check_stack_bound.sh)
 	+@tests/check_firmware_link.sh $(call test_failed,tests/check_firmware_link.sh)
 	@BUILD=build/release tests/check_layering.sh $(call test_failed,tests/check_layering.sh)
 	@tests/check_doc_paths.sh $(call test_failed,tests/check_doc_paths.sh)
