@@ -113,14 +113,14 @@ static inline unsigned tarn_clz32_by_table(uint32_t v)
 
 /* Number of leading zero bits of a 32-bit value (32 for 0): the same number on
  * every target, through the instruction where the core has one. */
+#if TARN_NATIVE_CLZ
 static inline unsigned tarn_clz32(uint32_t v)
 {
-#if TARN_NATIVE_CLZ
     return v == 0u ? 32u : (unsigned)__builtin_clz(v);
-#else
-    return tarn_clz32_by_table(v);
-#endif
 }
+#else
+#define tarn_clz32 tarn_clz32_by_table
+#endif
 
 /* 1 where the core multiplies 32x32 to a 64-bit product's high word in an
  * instruction (RISC-V with M: mulhu; the Cortex-M3/M4: umull; a PC), 0 on the
