@@ -33,31 +33,38 @@ sus=$(find "$objdir" -name '*.su' | sort)
 # the objects compiled from C, each beside its .su: the only ones whose frames are known
 objs=$(for su in $sus; do [ -f "${su%.su}.o" ] && echo "${su%.su}.o"; done)
 
+# A function's name as every graph below keys it: a section's (.text.NAME;
+# .ram.text.NAME for code a board runs from RAM; .text.startup.main) and a
+# relocation's (NAME+0x4) lose what is not the name, and a clone's (NAME.isra.0,
+# .constprop.0, .part.0) its number, as GCC's .su gives it.
+BARE='function bare(name) {
+    sub(/\+0x[0-9a-f]+$/, "", name)
+    sub(/^(\.ram)?\.text\.(startup\.|unlikely\.)?/, "", name)
+    sub(/\.[0-9]+$/, "", name)
+    return name
+}'
+
 # Address-taken functions: non-call relocations in code and data sections that name
 # a function's section (.text.NAME, -ffunction-sections; .ram.text.NAME for code a
 # board runs from RAM) or a function symbol.
-taken=$(for o in $objs; do "${cross}readelf" -rW "$o"; done | awk '
+taken=$(for o in $objs; do "${cross}readelf" -rW "$o"; done | awk "$BARE"'
     /^Relocation section/ {
         s = $3; gsub(/\047/, "", s)
         use = (s ~ /^\.rela?(\.ram)?\.(text|rodata|data|sdata|srodata)/)
         next
     }
     use && NF >= 5 && $3 !~ /(CALL|JUMP|JAL|BRANCH|RELAX|ALIGN|PCREL_LO12|V4BX|TLS)/ {
-        name = $5
-        sub(/^(\.ram)?\.text\.(startup\.|unlikely\.)?/, "", name)
-        sub(/\.[0-9]+$/, "", name)
-        print name
+        print bare($5)
     }' | sort -u)
 
 # The call graph: "frame NAME BYTES dynamic|static" from each .su line, and "call
 # FROM TO" for each call or tail call in the code (a call relocation: bl, b.w, call,
 # tail, jal) and each indirect one (blx/bx through a register on Arm, jalr/jr through
-# a register but ra's own return on RISC-V: TO is __indirect_call). A clone's name
-# (NAME.isra.0, .constprop.0, .part.0) loses its number, as GCC's .su gives it.
+# a register but ra's own return on RISC-V: TO is __indirect_call).
 graph() {
-    cat $sus | awk -F '\t' '{ name = $1; sub(/^.*:/, "", name); sub(/\.[0-9]+$/, "", name); print "frame", name, $2, ($3 ~ /dynamic/ && $3 !~ /bounded/) ? "dynamic" : "static" }'
-    for o in $objs; do "${cross}objdump" -dr --no-show-raw-insn "$o"; done | awk '
-        function bare(name) { sub(/\+0x[0-9a-f]+$/, "", name); sub(/^(\.ram)?\.text\.(startup\.|unlikely\.)?/, "", name); sub(/\.[0-9]+$/, "", name); return name }
+    cat $sus | awk -F '\t' "$BARE"'
+        { name = $1; sub(/^.*:/, "", name); print "frame", bare(name), $2, ($3 ~ /dynamic/ && $3 !~ /bounded/) ? "dynamic" : "static" }'
+    for o in $objs; do "${cross}objdump" -dr --no-show-raw-insn "$o"; done | awk "$BARE"'
         /^Disassembly of section/ { fn = ""; next }
         /^[0-9a-f]+ <[^.][^>]*>:$/ { fn = $2; gsub(/[<>:]/, "", fn); fn = bare(fn); next }
         fn == "" { next }
