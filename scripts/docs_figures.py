@@ -566,9 +566,8 @@ class Measurer:
             values["count." + m.group(2)] = exact(m.group(3))
             if m.group(1) in sizes:
                 values["bytes." + m.group(2)] = exact(sizes[m.group(1)] * int(m.group(3)))
-        for m in re.finditer(r"^/\* backdrop: the (\d+) colours .*? padded with the last to (\d+): every (\d+)-bit",
-                             text, re.M):
-            values["backdrop.colours"], values["backdrop.palette"], values["backdrop.bits"] = map(exact, m.groups())
+        for m in re.finditer(r"^/\* backdrop: the (\d+) colours .*? each named by a (\d+)-bit index", text, re.M):
+            values["backdrop.colours"], values["backdrop.bits"] = map(exact, m.groups())
         return values
 
     def _m_code(self, path, pattern):

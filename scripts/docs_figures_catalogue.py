@@ -1170,7 +1170,6 @@ KEYS["bake.backdrop-refraction.panel_psnr"] = lambda m: m.compare("pond", BACKDR
 
 KEYS["bake.backdrop.indices_bytes"] = lambda m: comma(backdrop_bake(m)["bytes.backdrop_colour"])
 KEYS["bake.backdrop.colours"] = lambda m: comma(backdrop_bake(m)["backdrop.colours"])
-KEYS["bake.backdrop.palette_colours"] = lambda m: comma(backdrop_bake(m)["backdrop.palette"])
 KEYS["bake.backdrop.index_bits"] = lambda m: backdrop_bake(m)["backdrop.bits"]
 KEYS["bake.backdrop.palette_bytes"] = lambda m: comma(backdrop_bake(m)["bytes.backdrop_palette"])
 KEYS["bake.backdrop.depth_bytes"] = lambda m: comma(backdrop_bake(m)["bytes.backdrop_depth"])

@@ -144,9 +144,8 @@ static void test_backdrop_keeps_what_the_water_reads(void **state)
     assert_non_null(b->water.scene.objects[0].material->water);
     const tarn_backdrop *backdrop = b->water.scene.static_view->backdrop;
     assert_ptr_equal(backdrop, &b->image.backdrop);
-    assert_int_equal(b->image.colours, 5719);
     assert_int_equal(backdrop->index_bits, 13);
-    assert_int_equal(backdrop->palette_count, 8192);
+    assert_int_equal(backdrop->palette_count, 5719); /* not padded to 8,192 */
     assert_int_equal(b->image.colour_words, 240u * 240u * 13u / 16u);
     assert_int_equal(backdrop->row_spans[1] - backdrop->row_spans[0], 0); /* the sky */
     assert_int_equal(backdrop->row_spans[240] - backdrop->row_spans[239], 0); /* the near shore */
@@ -189,8 +188,8 @@ static void test_another_frame_is_refused(void **state)
     pond_backdrop_free(&pond);
 }
 
-/* Each malformed field is refused before a tile is drawn: a palette shorter than
- * its indices can spell too. */
+/* Each malformed field is refused before a tile is drawn: a palette longer than
+ * its indices can spell, or empty, too. */
 static void test_malformed_backdrop_is_refused(void **state)
 {
     (void)state;
@@ -200,7 +199,7 @@ static void test_malformed_backdrop_is_refused(void **state)
     tarn_backdrop_scene *b = &pond.b;
     tarn_backdrop *backdrop = &b->image.backdrop;
     const tarn_backdrop saved = *backdrop;
-    backdrop->index_bits = 12; /* a 4,096-colour palette is not 8,192 */
+    backdrop->index_bits = 12; /* 4,096 indices for 5,719 colours */
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
     backdrop->index_bits = 17;
@@ -212,9 +211,10 @@ static void test_malformed_backdrop_is_refused(void **state)
     backdrop->palette = NULL;
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
-    b->image.palette[8191] = 0x01000000u; /* a bit the water pass marks pixels with */
+    const uint32_t last = b->image.palette[5718];
+    b->image.palette[5718] = 0x01000000u; /* a bit the water pass marks pixels with */
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
-    b->image.palette[8191] = 0u;
+    b->image.palette[5718] = last;
     backdrop->depth_count -= 1u; /* the last span now reads past it */
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     *backdrop = saved;
@@ -237,10 +237,34 @@ static void test_malformed_backdrop_is_refused(void **state)
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
     b->image.row_spans[120] = first;
     assert_int_equal(test_render_status(&b->water.scene, &config), TARN_OK);
-    backdrop->palette_count -= 1u; /* index 8,191 would name no colour */
-    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_ERR_SCENE);
-    *backdrop = saved;
-    assert_int_equal(test_render_status(&b->water.scene, &config), TARN_OK);
+    pond_backdrop_free(&pond);
+}
+
+/* A pixel's index past the palette's end reads its last colour: a palette cut to
+ * one colour draws that colour wherever no water does, and reads nothing past it
+ * (the ASan build would stop). */
+static void test_index_past_the_palette_reads_its_last_colour(void **state)
+{
+    (void)state;
+    static pond_backdrop pond;
+    pond_backdrop_make(&pond);
+    tarn_backdrop *backdrop = &pond.b.image.backdrop;
+    const uint32_t only = 0x123456u;
+    static uint32_t one[1];
+    one[0] = only;
+    backdrop->palette = one;
+    backdrop->palette_count = 1u;
+    uint8_t *rgb = test_render_rgb(&pond.b.water.scene, &pond.config, "over a one-colour palette");
+    const uint8_t *sky = rgb; /* pixel (0, 0): no water above the horizon */
+    assert_int_equal(sky[0], 0x12);
+    assert_int_equal(sky[1], 0x34);
+    assert_int_equal(sky[2], 0x56);
+    size_t other = 0;
+    for (size_t k = 0; k < 240u * 240u; k++)
+        if (rgb[3 * k] != 0x12 || rgb[3 * k + 1] != 0x34 || rgb[3 * k + 2] != 0x56) other++;
+    /* only the water's pixels differ */
+    assert_true(other > 0u && other < 240u * 240u / 2u);
+    free(rgb);
     pond_backdrop_free(&pond);
 }
 
@@ -276,6 +300,7 @@ int main(void)
         cmocka_unit_test(test_backdrop_keeps_what_the_water_reads),
         cmocka_unit_test(test_another_frame_is_refused),
         cmocka_unit_test(test_malformed_backdrop_is_refused),
+        cmocka_unit_test(test_index_past_the_palette_reads_its_last_colour),
         cmocka_unit_test(test_too_many_colours_are_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

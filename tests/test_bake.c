@@ -365,8 +365,8 @@ static void test_backdrop_bakes_without_loss(void **state)
     assert_int_equal(occurrences(source, "ground.png"), 0);
     assert_int_equal(occurrences(source, "static const tarn_mesh "), 1);
     assert_non_null(strstr(source, "static const tarn_object pond_backdrop_objects[1] = {"));
-    assert_non_null(strstr(source, "static const uint32_t pond_backdrop_backdrop_palette[8192] = {"));
-    assert_non_null(strstr(source, "the 5719 colours the opaque objects draw, ascending, padded with the last to 8192"));
+    assert_non_null(strstr(source, "static const uint32_t pond_backdrop_backdrop_palette[5719] = {"));
+    assert_non_null(strstr(source, "the 5719 colours the opaque objects draw, ascending, each named by a 13-bit index"));
     assert_non_null(strstr(source, "    .backdrop = &pond_backdrop_backdrop\n"));
     assert_non_null(strstr(source, " *   backdrop "));
     free(source);
@@ -388,7 +388,7 @@ static void test_still_water_bakes_without_loss(void **state)
     snprintf(path, sizeof path, "%s/pond_still.c", work_dir);
     char *source = read_all(path, NULL);
     assert_non_null(strstr(source, "the opaque objects and the still water (with its marks) draw, ascending, "
-                                   "padded with the last to 16384"));
+                                   "each named by a 14-bit index"));
     assert_non_null(strstr(source, "where foam can show"));
     free(source);
     snprintf(path, sizeof path, "%s/pond_still_link.h", work_dir);

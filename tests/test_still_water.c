@@ -213,7 +213,7 @@ static void test_overlapping_water_objects_are_told_apart(void **state)
     still_make(&two, &config, &b);
     size_t marked[3] = {0, 0, 0};
     const tarn_backdrop *backdrop = &b.image.backdrop;
-    for (uint32_t k = 0; k < b.image.colours; k++) {
+    for (uint32_t k = 0; k < backdrop->palette_count; k++) {
         const uint32_t object = (backdrop->palette[k] & TARN_BACKDROP_STILL_OBJECT) >> TARN_BACKDROP_STILL_SHIFT;
         assert_true(object <= 2u);
         marked[object]++;
@@ -270,12 +270,12 @@ static void test_backdrop_keeps_the_still_water(void **state)
     assert_int_equal(backdrop->water_block, 2);
     size_t water_colours = 0;
     size_t foam_colours = 0;
-    for (uint32_t k = 0; k < b->image.colours; k++) {
+    for (uint32_t k = 0; k < backdrop->palette_count; k++) {
         water_colours += (backdrop->palette[k] & TARN_BACKDROP_STILL_OBJECT) == 1u << TARN_BACKDROP_STILL_SHIFT;
         foam_colours += (backdrop->palette[k] & TARN_BACKDROP_STILL_FOAM) != 0u;
     }
     assert_true(foam_colours > 100u && foam_colours < 3000u);
-    assert_true(water_colours > 5000u && water_colours < b->image.colours);
+    assert_true(water_colours > 5000u && water_colours < backdrop->palette_count);
     assert_true(backdrop->depth_count > 1000u && backdrop->depth_count < 4000u);
     assert_true(backdrop->span_count > 100u && backdrop->span_count < 600u);
     const size_t bytes = tarn_frame_memory_bytes(&config, &b->water.scene);

@@ -96,14 +96,14 @@ static int planes_valid(const tarn_backdrop *b, const tarn_scene *scene)
     return 1;
 }
 
-/* A palette of 2^index_bits colours holds every index the bits can spell, so no
- * pixel's index needs checking: checked, they would cost each frame as much again
- * as reading them. */
+/* A palette of 1 to 2^index_bits colours: a pixel's index past its end reads the
+ * last (backdrop_read.c), so no index needs checking here, where checking them
+ * would cost each frame as much again as reading them. */
 int tarn__backdrop_valid(const tarn_backdrop *b, const tarn_scene *scene)
 {
     if (b->palette == NULL || b->colour == NULL || b->row_spans == NULL || (b->span_count > 0u && b->spans == NULL) ||
         b->index_bits < 1u ||
-        b->index_bits > 16u || b->palette_count != (1u << b->index_bits) ||
+        b->index_bits > 16u || b->palette_count < 1u || b->palette_count > (1u << b->index_bits) ||
         (b->depth_bits != 16 && b->depth_bits != 32) || (b->depth_count > 0u && b->depth == NULL) ||
         b->still_water > (TARN_LINK_STILL_WATER ? 1u : 0u))
         return 0;

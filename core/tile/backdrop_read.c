@@ -29,6 +29,15 @@ static void fill_depth_row(const tarn_backdrop *b, int32_t j, int32_t x0, int32_
     memset(to + (size_t)(filled - x0) * bytes, IN_FRONT_OF_ALL, (size_t)(x1 - filled) * bytes);
 }
 
+/* An index the palette holds: one past its end reads its last colour. tarn bake
+ * writes no such index, and a palette unpadded to 2^index_bits saves the flash of
+ * the colours it does not use (a quarter of the pond's 8,192) for a compare a pixel;
+ * the clamp keeps any other picture's reads inside the palette. */
+static inline uint32_t palette_index(const tarn_backdrop *b, uint32_t index)
+{
+    return index < b->palette_count ? index : b->palette_count - 1u;
+}
+
 uint32_t tarn__backdrop_colour_at(const tarn_backdrop *b, uint16_t frame_width, int32_t i, int32_t j)
 {
     const uint32_t first = ((uint32_t)j * frame_width + (uint32_t)i) * b->index_bits;
@@ -37,7 +46,7 @@ uint32_t tarn__backdrop_colour_at(const tarn_backdrop *b, uint16_t frame_width, 
      * when it does, so no read passes the picture's last word */
     uint32_t bits = (uint32_t)word[0] >> (first & 15u);
     if ((first & 15u) + b->index_bits > 16u) bits |= (uint32_t)word[1] << (16u - (first & 15u));
-    return b->palette[bits & ((1u << b->index_bits) - 1u)];
+    return b->palette[palette_index(b, bits & ((1u << b->index_bits) - 1u))];
 }
 
 /* Row j's colours over [x0, x1) into `to`. */
@@ -57,7 +66,7 @@ static void fill_colour_row(const tarn_backdrop *b, uint16_t frame_width, int32_
             window |= (uint32_t)*next++ << held;
             held += 16u;
         }
-        *to++ = b->palette[window & mask];
+        *to++ = b->palette[palette_index(b, window & mask)];
         window >>= bits;
         held -= bits;
     }

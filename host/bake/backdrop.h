@@ -24,8 +24,6 @@
 
 typedef struct {
     tarn_backdrop backdrop; /* points into the arrays below */
-    uint32_t colours;       /* the distinct ones the opaque objects draw; the palette
-                               pads them to 2^index_bits */
     uint32_t *palette;
     uint16_t *colour;
     size_t colour_words; /* uint16_t entries of colour */

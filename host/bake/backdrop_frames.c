@@ -93,9 +93,8 @@ static void pack_index(uint16_t *words, size_t k, unsigned bits, uint32_t index)
     }
 }
 
-/* The frame's distinct colours, sorted and padded with the last to a power of two
- * (every index the bits can spell names one), and each pixel's index among them,
- * packed (tarn_backdrop.colour). */
+/* The frame's distinct colours, sorted, and each pixel's index among them, packed
+ * (tarn_backdrop.colour). */
 int tarn_backdrop_index_colours(const uint32_t *rgb, size_t pixels, tarn_backdrop_image *b, tarn_error *err)
 {
     b->palette = calloc(pixels > TARN_BACKDROP_COLOURS_MAX ? pixels : TARN_BACKDROP_COLOURS_MAX,
@@ -117,11 +116,9 @@ int tarn_backdrop_index_colours(const uint32_t *rgb, size_t pixels, tarn_backdro
         const uint32_t *found = bsearch(&rgb[k], b->palette, count, sizeof *b->palette, compare_u32);
         pack_index(b->colour, k, bits, (uint32_t)(found - b->palette));
     }
-    for (size_t k = count; k < ((size_t)1 << bits); k++) b->palette[k] = b->palette[count - 1u];
-    b->colours = (uint32_t)count;
     b->backdrop.index_bits = (uint8_t)bits;
     b->backdrop.palette = b->palette;
-    b->backdrop.palette_count = 1u << bits;
+    b->backdrop.palette_count = (uint32_t)count;
     b->backdrop.colour = b->colour;
     return 0;
 }

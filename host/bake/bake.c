@@ -329,7 +329,6 @@ typedef struct {
     const tarn_bake_points *points; /* --points: qualities baked as NAME_points; count 0 without */
     uint32_t static_bin_count;      /* the static view's bins, when the scene has one */
     size_t backdrop_colour_words;   /* its backdrop's packed indices, when it has one */
-    uint32_t backdrop_colours;      /* and the colours its palette pads */
 } bake_plan;
 
 /* `array` with room for one element past `count`: itself, moved, or NULL when out
@@ -578,10 +577,8 @@ static void plan_backdrop(bake_plan *p, const tarn_static_view *view)
     const tarn_backdrop *b = view->backdrop;
     if (b == NULL) return;
     note(add_item(p, BYTES_BACKDROP, &T_RGB, b->palette, b->palette_count, "%s_backdrop_palette", p->name),
-         "backdrop: the %lu colours the opaque objects%s draw, ascending, padded with the last to %lu: every "
-         "%u-bit index names one", (unsigned long)p->backdrop_colours,
-         b->still_water ? " and the still water (with its marks)" : "", (unsigned long)b->palette_count,
-         b->index_bits);
+         "backdrop: the %lu colours the opaque objects%s draw, ascending, each named by a %u-bit index",
+         (unsigned long)b->palette_count, b->still_water ? " and the still water (with its marks)" : "", b->index_bits);
     note(add_item(p, BYTES_BACKDROP, &T_U16, b->colour, p->backdrop_colour_words, "%s_backdrop_colour", p->name),
          "backdrop: a %u-bit palette index per pixel, rows top to bottom, packed low bits first", b->index_bits);
     if (!b->still_water)
@@ -1359,7 +1356,6 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
         plan.scene = &with_static.loaded;
         plan.static_bin_count = static_bin_count(&with_static);
         plan.backdrop_colour_words = o->backdrop ? with_static.over_backdrop.image.colour_words : 0u;
-        plan.backdrop_colours = o->backdrop ? with_static.over_backdrop.image.colours : 0u;
     }
     tarn_bake_points points = {NULL, NULL, NULL, 0};
     plan.points = &points;

@@ -197,8 +197,8 @@ typedef struct {
     const uint32_t *palette;   /* 0xRRGGBB colours; with still_water, a water pixel's
                                   also holds its marks (TARN_BACKDROP_STILL_*), and
                                   they are in ascending order */
-    uint32_t palette_count;    /* 2^index_bits (tarn bake pads the colours it needs
-                                  with the last), so that every index names one */
+    uint32_t palette_count;    /* 1..2^index_bits: an index past the last colour
+                                  reads the last (tarn bake writes none) */
     const uint16_t *colour;    /* a palette index per pixel, rows top to bottom: pixel
                                   (i, j)'s index_bits bits start at bit
                                   (j * width + i) * index_bits, counted from bit 0 of
