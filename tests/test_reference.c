@@ -496,7 +496,7 @@ static void test_colours_interpolate_perspective_correctly(void **state)
 
 /* 4x4 texels, texel (x, y) = (60x, 60y, 7 + x + 4y): every texel distinct. */
 static uint8_t texels[4 * 4 * 3];
-static const tarn_texture texture4 = { 4, 4, texels };
+static const tarn_texture texture4 = { 4, 4, texels, 0 };
 
 static void fill_texels(void)
 {
@@ -656,8 +656,8 @@ static void test_bad_input_is_rejected(void **state)
     tarn_scene scene = scene_of(&obj, 1);
     assert_int_equal(render_mode(&scene, 0), TARN_ERR_SCENE);
 
-    static const tarn_texture no_texels = { 4, 4, NULL };
-    static const tarn_texture not_power_of_two = { 3, 4, texels };
+    static const tarn_texture no_texels = { 4, 4, NULL, 0 };
+    static const tarn_texture not_power_of_two = { 3, 4, texels, 0 };
     const tarn_texture *bad_textures[2] = { &no_texels, &not_power_of_two };
     for (int k = 0; k < 2; k++) {
         tarn_material material = { 0xFFFFFF, bad_textures[k], TARN_CULL_NONE, 1, NULL };

@@ -1023,6 +1023,34 @@ static const tarn_water *only_water(const tarn_loaded_scene *s)
     return found;
 }
 
+/* A foam map another field reads too keeps its three channels: a normal map reads
+ * green and blue. */
+static void test_a_foam_map_read_otherwise_keeps_rgb(void **state)
+{
+    (void)state;
+    static const uint8_t up[3] = { 128, 128, 255 };
+    char *dir = make_temp_dir();
+    write_flat_png(dir, "a.png", 4, 4, up);
+    write_flat_png(dir, "foam.png", 8, 8, up);
+    const char *path = write_temp(
+        dir, "w.json",
+        "{\"frame\": {\"width\": 100, \"height\": 80},"
+        " \"camera\": {\"position\": [0, 2, 6], \"target\": [0, 0, 0], \"fov\": 60},"
+        " \"materials\": {\"shared\": {\"water\": {"
+        "   \"normal_maps\": [{\"image\": \"a.png\", \"scale\": 4}],"
+        "   \"foam\": {\"texture\": \"a.png\", \"distance\": 0.4}}},"
+        "   \"own\": {\"water\": {\"foam\": {\"texture\": \"foam.png\", \"distance\": 0.4}}}},"
+        " \"objects\": []}");
+    tarn_loaded_scene s;
+    tarn_error err = { "" };
+    if (tarn_scene_load(path, &s, &err)) fail_msg("%s", err.message);
+    assert_ptr_equal(s.materials[0].water->foam_texture, s.materials[0].water->normal_a);
+    assert_int_equal(s.materials[0].water->foam_texture->red_only, 0);
+    assert_int_equal(s.materials[1].water->foam_texture->red_only, 1);
+    tarn_scene_free(&s);
+    remove_temp_dir(dir);
+}
+
 static void test_water_fields(void **state)
 {
     (void)state;
@@ -1090,6 +1118,10 @@ static void test_water_fields(void **state)
     assert_int_equal(w->specular, 32768);
     assert_int_equal(w->specular_power, 64);
     assert_int_equal(w->foam_texture->width, 8);
+    assert_int_equal(w->foam_texture->red_only, 1); /* read as foam alone: its red bytes */
+    for (int k = 0; k < 64; k++) assert_int_equal(w->foam_texture->rgb[k], 90);
+    assert_int_equal(w->normal_a->red_only, 0);
+    assert_int_equal(w->colour_ramp->red_only, 0);
     assert_int_equal(w->foam_pan.scale, 3 * 65536);
     assert_int_equal(w->foam_pan.speed_u, 655);  /* 655.36 */
     assert_int_equal(w->foam_pan.speed_v, 1311); /* 1310.72 */
@@ -1255,7 +1287,7 @@ static void test_normal_xy_max(void **state)
     uint8_t a_rgb[TEXELS * 3], b_rgb[TEXELS * 3];
     make_normal_texels(a_rgb, TEXELS, 1);
     make_normal_texels(b_rgb, TEXELS, 2);
-    const tarn_texture a = { SIDE, SIDE, a_rgb }, b = { SIDE, SIDE, b_rgb };
+    const tarn_texture a = { SIDE, SIDE, a_rgb, 0 }, b = { SIDE, SIDE, b_rgb, 0 };
     static const double strengths[] = { 0, 0.25, 0.6, 1, 2.5, 8 };
     tarn_q16 previous_one = -1, previous_two = -1;
     for (size_t k = 0; k < sizeof strengths / sizeof strengths[0]; k++) {
@@ -1393,6 +1425,7 @@ int main(void)
         cmocka_unit_test(test_scene_defaults_and_rotation),
         cmocka_unit_test(test_asset_paths),
         cmocka_unit_test(test_water_fields),
+        cmocka_unit_test(test_a_foam_map_read_otherwise_keeps_rgb),
         cmocka_unit_test(test_water_defaults),
         cmocka_unit_test(test_water_scenes),
         cmocka_unit_test(test_normal_xy_max),

@@ -344,6 +344,57 @@ static void test_blend_factors_out_of_range_are_refused(void **state)
     free(wet);
 }
 
+/* A foam map kept as its red bytes alone (tarn_texture.red_only) draws what the
+ * same map in R G B does, its green and blue unlike its red; a normal map or a
+ * flag other than 0 or 1 so is refused. */
+static void test_a_red_only_texture_is_a_foam_map(void **state)
+{
+    (void)state;
+    water_scene *wet = new_scene(1);
+    wet->water.features = TARN_WATER_FOG | TARN_WATER_FOAM;
+    wet->water.fog_density = TARN_Q16_ONE / 8;
+    wet->water.foam_distance = 8 * TARN_Q16_ONE; /* 3 units deep: foam where red >= 96 */
+    wet->water.foam_opacity = TARN_Q16_ONE;
+    wet->water.foam_rgb = 0xFFFFFF;
+    /* the water's four vertices, the builder's last, over a repeat: every texel shows */
+    static tarn_uv uvs[BUILDER_VERTICES_MAX];
+    const uint32_t first = wet->b.vertex_count - 4u;
+    for (uint32_t v = 0; v < 4u; v++)
+        uvs[first + v] = (tarn_uv){(tarn_q16)(v & 1u) * TARN_Q16_ONE, (tarn_q16)(v >> 1) * TARN_Q16_ONE};
+    wet->b.meshes[1].uvs = uvs;
+    wet->water.foam_pan.scale = TARN_Q16_ONE;
+    uint8_t foam_rgb[16 * 3], foam_red[16];
+    for (int t = 0; t < 16; t++) {
+        foam_red[t] = foam_rgb[3 * t] = (uint8_t)(255 - t * 17); /* every place from all to no foam */
+        foam_rgb[3 * t + 1] = (uint8_t)(t * 17);
+        foam_rgb[3 * t + 2] = 0;
+    }
+    tarn_texture foam = {4, 4, foam_rgb, 0};
+    wet->water.foam_texture = &foam;
+    uint8_t *from_rgb = render(wet, config_of());
+    foam.rgb = foam_red;
+    foam.red_only = 1;
+    uint8_t *from_red = render(wet, config_of());
+    assert_memory_equal(from_rgb, from_red, 3u * W * H);
+    wet->water.foam_opacity = 0; /* the foam showed: without it the frame differs */
+    uint8_t *without = render(wet, config_of());
+    assert_memory_not_equal(from_rgb, without, 3u * W * H);
+    free(without);
+    wet->water.foam_opacity = TARN_Q16_ONE;
+    foam.red_only = 2;
+    assert_int_equal(test_render_status(&wet->b.scene, &(tarn_frame_config){W, H, tarn_quality_default(), 0}),
+                     TARN_ERR_SCENE);
+    foam.red_only = 1;
+    constant_normal_map(wet, 128, 128);
+    wet->water.features |= TARN_WATER_NORMALS | TARN_WATER_SPECULAR;
+    wet->water.normal_a = &foam; /* a normal map reads green and blue too */
+    assert_int_equal(test_render_status(&wet->b.scene, &(tarn_frame_config){W, H, tarn_quality_default(), 0}),
+                     TARN_ERR_SCENE);
+    free(from_rgb);
+    free(from_red);
+    free(wet);
+}
+
 static void test_opaque_scenes_pay_nothing_for_water(void **state)
 {
     (void)state;
@@ -501,7 +552,7 @@ static void test_exact_normal_is_the_unit_direction(void **state)
     (void)state;
     static const tarn_q16 strengths[] = {TARN_Q16_ONE / 64, TARN_Q16_ONE / 3, TARN_Q16_ONE, 8 * TARN_Q16_ONE};
     uint8_t texel_a[3], texel_b[3];
-    const tarn_texture map_a = {1, 1, texel_a}, map_b = {1, 1, texel_b};
+    const tarn_texture map_a = {1, 1, texel_a, 0}, map_b = {1, 1, texel_b, 0};
     tarn_water water = {0};
     water.normal_a = &map_a;
     water.normal_b = &map_b;
@@ -602,6 +653,7 @@ int main(void)
         cmocka_unit_test(test_coplanar_water_and_camera_on_the_surface),
         cmocka_unit_test(test_extreme_normal_maps_and_views),
         cmocka_unit_test(test_blend_factors_out_of_range_are_refused),
+        cmocka_unit_test(test_a_red_only_texture_is_a_foam_map),
         cmocka_unit_test(test_opaque_scenes_pay_nothing_for_water),
         cmocka_unit_test(test_water_in_place_draws_as_the_copy),
         cmocka_unit_test(test_specular_skip_matches_the_normalised_normal),

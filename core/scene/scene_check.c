@@ -2,10 +2,18 @@
  * or the passes read lies outside the arrays the scene gives. */
 #include "scene/scene_internal.h"
 
-static int texture_valid(const tarn_texture *t)
+/* Sides, texels, and red alone only where it may be: a foam map reads no other
+ * channel, every other texture all three. */
+static int texels_valid(const tarn_texture *t, int red_only_allowed)
 {
     return t->rgb != NULL && tarn_is_power_of_two(t->width) && tarn_is_power_of_two(t->height) &&
-           t->width <= TARN_TEXTURE_SIZE_MAX && t->height <= TARN_TEXTURE_SIZE_MAX;
+           t->width <= TARN_TEXTURE_SIZE_MAX && t->height <= TARN_TEXTURE_SIZE_MAX &&
+           t->red_only <= (red_only_allowed ? 1u : 0u);
+}
+
+static int texture_valid(const tarn_texture *t)
+{
+    return texels_valid(t, 0);
 }
 
 /* Clusters, when given, must cover the triangles exactly once and in order. */
@@ -44,7 +52,7 @@ static int water_valid(const tarn_water *w)
     if ((w->features & TARN_WATER_FOAM) && (w->foam_texture == NULL || w->foam_distance <= 0)) return 0;
     if ((w->features & TARN_WATER_DEPTH_COLOUR) && w->depth_scale <= 0) return 0;
     return optional_texture_valid(w->normal_a) && optional_texture_valid(w->normal_b) &&
-           optional_texture_valid(w->foam_texture) && optional_texture_valid(w->colour_ramp) &&
+           (w->foam_texture == NULL || texels_valid(w->foam_texture, 1)) && optional_texture_valid(w->colour_ramp) &&
            w->specular_power >= 1 && w->specular_power <= 256 &&
            w->normal_strength >= 0 && w->normal_strength <= 8 * TARN_Q16_ONE;
 }

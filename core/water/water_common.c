@@ -47,7 +47,8 @@ const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, 
      * without finding the log: one multiply, where clz costs the M0 a dozen
      * instructions. Exact: the fraction is below 2^16 and a side at most 2^10. */
     const uint32_t x = (u_fraction * t->width) >> 16, y = (v_fraction * t->height) >> 16;
-    return &t->rgb[3u * (y * t->width + x)];
+    const uint32_t texel = y * t->width + x;
+    return &t->rgb[t->red_only ? texel : 3u * texel];
 }
 
 uint32_t tarn__water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps)

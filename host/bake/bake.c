@@ -96,7 +96,8 @@ STRUCT_TYPE(T_CLUSTER, tarn_cluster, ONE_LINE,
             FIELD(tarn_cluster, centre, T_VEC3), FIELD(tarn_cluster, radius, T_Q16),
             FIELD(tarn_cluster, first_triangle, T_U16), FIELD(tarn_cluster, triangle_count, T_U16));
 STRUCT_TYPE(T_TEXTURE, tarn_texture, BLOCK,
-            FIELD(tarn_texture, width, T_U16), FIELD(tarn_texture, height, T_U16), FIELD(tarn_texture, rgb, T_REF));
+            FIELD(tarn_texture, width, T_U16), FIELD(tarn_texture, height, T_U16), FIELD(tarn_texture, rgb, T_REF),
+            FIELD(tarn_texture, red_only, T_U8));
 STRUCT_TYPE(T_MESH, tarn_mesh, BLOCK,
             FIELD(tarn_mesh, positions, T_REF),     FIELD(tarn_mesh, normals, T_REF),
             FIELD(tarn_mesh, uvs, T_REF),           FIELD(tarn_mesh, colours, T_REF),
@@ -424,8 +425,10 @@ static void plan_textures(bake_plan *p)
     for (size_t k = 0; k < s->texture_count; k++) {
         const tarn_texture *t = &s->textures[k];
         if (!texture_used(&s->scene, t)) continue;
-        note(add_item(p, BYTES_TEXTURE, &T_BYTE, t->rgb, 3u * t->width * t->height, "%s_texture_%zu_rgb", p->name, k),
-             "%s: %ux%u texels, R G B, rows top to bottom", s->texture_paths[k], t->width, t->height);
+        note(add_item(p, BYTES_TEXTURE, &T_BYTE, t->rgb, (t->red_only ? 1u : 3u) * t->width * t->height,
+                      "%s_texture_%zu_rgb", p->name, k),
+             "%s: %ux%u texels, %s, rows top to bottom", s->texture_paths[k], t->width, t->height,
+             t->red_only ? "red only (a foam map)" : "R G B");
         add_item(p, BYTES_TEXTURE, &T_TEXTURE, t, 0, "%s_texture_%zu", p->name, k);
     }
 }

@@ -47,5 +47,6 @@ const uint8_t *tarn_ref_sample_texel(const tarn_texture *tex, const double uv[2]
     double ty = fmod(texel_floor(uv[1] * tex->height), tex->height);
     if (tx < 0) tx += tex->width;
     if (ty < 0) ty += tex->height;
-    return tex->rgb + 3 * ((size_t)ty * tex->width + (size_t)tx);
+    const size_t texel = (size_t)ty * tex->width + (size_t)tx;
+    return tex->rgb + (tex->red_only ? texel : 3 * texel);
 }

@@ -628,6 +628,7 @@ static int load_root(tarn_loader *l, const json_t *root)
         load_underwater(l, root) || load_objects(l, root) || place_moving_camera(l)) {
         return -1;
     }
+    tarn_narrow_foam_maps(l->out);
     return 0;
 }
 

@@ -55,3 +55,27 @@ int tarn_get_texture(tarn_loader *l, const json_t *object, const char *parent, c
     free(path);
     return result;
 }
+
+/* Whether texture t is read as anything but a water's foam map, which reads red alone. */
+static int read_beyond_red(const tarn_loaded_scene *s, const tarn_texture *t)
+{
+    if (s->underwater.normal_map == t) return 1;
+    for (size_t k = 0; k < s->material_count; k++) {
+        const tarn_material *m = &s->materials[k];
+        const tarn_water *w = m->water;
+        if (m->texture == t || (w && (w->normal_a == t || w->normal_b == t || w->colour_ramp == t))) return 1;
+    }
+    return 0;
+}
+
+void tarn_narrow_foam_maps(tarn_loaded_scene *s)
+{
+    for (size_t k = 0; k < s->texture_count; k++) {
+        tarn_texture *t = &s->textures[k];
+        if (read_beyond_red(s, t)) continue;
+        uint8_t *texels = s->texture_images[k].pixels;
+        const size_t count = (size_t)t->width * t->height;
+        for (size_t n = 0; n < count; n++) texels[n] = texels[3 * n];
+        t->red_only = 1;
+    }
+}

@@ -12,4 +12,9 @@
 int tarn_get_texture(tarn_loader *l, const json_t *object, const char *parent, const char *key,
                      const tarn_texture **out);
 
+/* Each texture read only as a water's foam map, which reads red alone, kept as its
+ * red bytes (tarn_texture.red_only): a third of the flash a bake gives it. Called
+ * once every field that names a texture is loaded. */
+void tarn_narrow_foam_maps(tarn_loaded_scene *s);
+
 #endif

@@ -30,7 +30,11 @@ typedef struct {
 
 typedef struct {
     uint16_t width, height; /* texels; each a power of two, 1..TARN_TEXTURE_SIZE_MAX */
-    const uint8_t *rgb;     /* width*height*3 bytes, rows top to bottom, R then G then B */
+    const uint8_t *rgb;     /* width*height texels, rows top to bottom: 3 bytes each,
+                               R then G then B, or with red_only 1 byte, the red */
+    uint8_t red_only;       /* 0: R G B texels; 1: red alone, for a water's foam map,
+                               which reads no other channel (a third of the bytes);
+                               any other texture with it is refused */
 } tarn_texture;
 
 typedef enum {
