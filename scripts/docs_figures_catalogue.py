@@ -976,6 +976,11 @@ FW_VARIANTS.update({
     "m3-fast-backdrop": ("qemu-m3", "pond", "--quality fast --backdrop on"),
     "m3-fast-still": ("qemu-m3", "pond", "--quality fast --backdrop still --water-block 4"),
     "rv32-fast-backdrop": ("qemu-rv32", "pond", "--quality fast --backdrop on"),
+    # the fast preset over a backdrop, without the refraction qemu-m0-backdrop bakes
+    "m0-fast-backdrop": ("qemu-m0", "pond", "--quality fast --backdrop on"),
+    # qemu-m0-backdrop's flags with no apron: what its refraction adds
+    "m0-backdrop-apron-off": ("qemu-m0", "pond", "--quality fast --backdrop on --apron off --water-block 1 --exp2 64 "
+                              "--perspective pixel --depth 16"),
     "rv32-fast-still": ("qemu-rv32", "pond", "--quality fast --backdrop still --water-block 4"),
     "m0-refraction-apron4": ("qemu-m0", "effects/refraction", "--quality fast --apron 4 --tile 24"),
     "m0-none-apron4": ("qemu-m0", "effects/none", "--quality fast --apron 4 --tile 24"),
@@ -990,6 +995,20 @@ for _s in ("beach", "murky", "lake"):
     FW_VARIANTS["m0-%s-backdrop" % _s] = ("qemu-m0", _s, "--quality fast --backdrop on")
     FW_VARIANTS["m0-%s-still" % _s] = ("qemu-m0", _s, "--quality fast --backdrop still --water-block 4")
 add_fw_keys()
+# qemu-m0-backdrop's flags with 2x2 water blocks: what sharing effects saves once the water refracts
+FW_VARIANTS["m0-backdrop-wb2"] = ("qemu-m0", "pond", "--quality fast --backdrop on --apron 18 --exp2 64 "
+                                  "--perspective pixel --depth 16")
+add_fw_keys()
+# what two of its flags bring: its frame's panel_psnr less that without each (tarn compare at its time)
+BACKDROP_BOARD_TIME = 1000
+for _name, _drop in (("perspective_db", "--perspective pixel"), ("exp2_db", "--exp2 64")):
+    KEYS["board.qemu-m0-backdrop.%s" % _name] = (lambda drop: lambda m: diff(
+        m.compare("pond", board_bake_flags("qemu-m0-backdrop"), BACKDROP_BOARD_TIME)["panel_psnr"],
+        m.compare("pond", board_bake_flags("qemu-m0-backdrop").replace(" " + drop, ""),
+                  BACKDROP_BOARD_TIME)["panel_psnr"], 2))(_drop)
+# what refraction adds on qemu-m0-backdrop: its frame less the same bake without an apron
+KEYS["board.qemu-m0-backdrop.refraction_insn"] = lambda m: diff(
+    m.bench("qemu-m0-backdrop")["insn_per_pixel"], fw("m0-backdrop-apron-off")(m)["insn_per_pixel"])
 
 KEYS["memory.pond.fast.bins_bytes"] = lambda m: diff(m.memory("pond", "--quality fast")["bytes"],
                                                      m.memory("pond", "--quality fast")["baked_bytes"]).fmt("comma")
@@ -1027,7 +1046,7 @@ def fw_cpus(m):
     ins = lambda d: d["insn_per_pixel"]  # noqa: E731
     rows = [["meshes, static view", ins(m.bench("qemu-m0")), ins(fw("m3-fast")(m)), ins(m.bench("qemu-rv32")),
              host_of("--quality fast")(m)],
-            ["backdrop", ins(m.bench("qemu-m0-backdrop")), ins(fw("m3-fast-backdrop")(m)),
+            ["backdrop", ins(fw("m0-fast-backdrop")(m)), ins(fw("m3-fast-backdrop")(m)),
              ins(fw("rv32-fast-backdrop")(m)), KEYS["host.pond.backdrop"](m)],
             ["still water", ins(m.bench("qemu-m0-still")), ins(fw("m3-fast-still")(m)),
              ins(fw("rv32-fast-still")(m)), KEYS["host.pond.still"](m)]]
@@ -1040,8 +1059,9 @@ FITS_ROWS = [  # label, quality flags, board that uses it, note
     ("fast, tile 28", "--quality fast --tile 28", None, ""),
     ("fast, tile 32", "--quality fast --tile 32", None, ""),
     ("fast, tile 40", "--quality fast", "qemu-m0", ": the preset and the boards' choice"),
-    ("fast, tile 40, `--backdrop on`", "--quality fast --backdrop on", "qemu-m0-backdrop",
-     ": `qemu-m0-backdrop`; the backdrop takes flash, not RAM"),
+    ("fast, tile 40, `--backdrop on`", "--quality fast --backdrop on", None, ": the backdrop takes flash, not RAM"),
+    ("fast, tile 40, `--backdrop on --apron 18 --water-block 1`", board_bake_flags("qemu-m0-backdrop"),
+     "qemu-m0-backdrop", ": `qemu-m0-backdrop`; its refracted samples read the picture in flash"),
     ("fast, tile 40, `--backdrop still --water-block 4`", "--quality fast --backdrop still --water-block 4",
      "qemu-m0-still", ": `qemu-m0-still`; no depth buffer, no water pass buffers"),
     ("fast, tile 40, no bins", "--quality fast --bins off", None, "bins"),
@@ -1100,11 +1120,11 @@ KEYS["board.qemu-m0.other_bytes"] = lambda m: exact(int(m0_other_bytes(m))) if n
 def fw_tiles(m):
     """The M0's cost by tile size: builds of the pond at each tile."""
     rows = []
-    for label, name, board in (("insn/pixel", "m0-fast-tile%d", "qemu-m0"),
-                               ("insn/pixel, `--backdrop on`", "m0-backdrop-tile%d", "qemu-m0-backdrop"),
-                               ("insn/pixel, `--backdrop still --water-block 4`", "m0-still-tile%d", "qemu-m0-still")):
-        rows.append([label] + [fw(name % t)(m)["insn_per_pixel"] for t in (16, 28, 32)] +
-                    [m.bench(board)["insn_per_pixel"]])
+    for label, name, at_40 in (("insn/pixel", "m0-fast-tile%d", m.bench("qemu-m0")),
+                               ("insn/pixel, `--backdrop on`", "m0-backdrop-tile%d", fw("m0-fast-backdrop")(m)),
+                               ("insn/pixel, `--backdrop still --water-block 4`", "m0-still-tile%d",
+                                m.bench("qemu-m0-still"))):
+        rows.append([label] + [fw(name % t)(m)["insn_per_pixel"] for t in (16, 28, 32)] + [at_40["insn_per_pixel"]])
     return table(["tile", "16", "28", "32", "40"], rows, ["---", "---:", "---:", "---:", "---:"])
 
 
@@ -1184,12 +1204,13 @@ KEYS["bake.backdrop.water_triangles"] = lambda m: exact(sum(
 def fw_backdrop(m):
     """The pond's M0 boards with and without the backdrop: make bench-target."""
     rows = []
-    for board, label in (("qemu-m0", "`qemu-m0` (meshes, static view)"), ("qemu-m0-backdrop", "`qemu-m0-backdrop`")):
-        b = m.bench(board)
+    for label, b in (("`qemu-m0` (meshes, static view), `--quality fast`", m.bench("qemu-m0")),
+                     ("`--quality fast --backdrop on`", fw("m0-fast-backdrop")(m)),
+                     ("`qemu-m0-backdrop`: `%s`" % board_bake_flags("qemu-m0-backdrop"), m.bench("qemu-m0-backdrop"))):
         rows.append([label, comma(b["scene_bytes"]), comma(b["flash_bytes"]), b["insn_per_pixel"],
-                     b["render_insn_per_pixel"]])
-    return table(["pond, `--quality fast`", "scene data", "flash", "insn/pixel", "core alone"], rows,
-                 ["---", "---:", "---:", "---:", "---:"])
+                     b["render_insn_per_pixel"], b["panel_psnr"]])
+    return table(["pond", "scene data", "flash", "insn/pixel", "core alone", "panel_psnr"], rows,
+                 ["---", "---:", "---:", "---:", "---:", "---:"])
 
 
 @block
@@ -1198,7 +1219,7 @@ def fw_scenes(m):
     rows = []
     for scene, size in (("pond", "240x240"), ("beach", "240x240"), ("murky", "240x240"), ("lake", "240x160")):
         if scene == "pond":
-            bs = [m.bench("qemu-m0"), m.bench("qemu-m0-backdrop"), m.bench("qemu-m0-still")]
+            bs = [m.bench("qemu-m0"), fw("m0-fast-backdrop")(m), m.bench("qemu-m0-still")]
         else:
             bs = [fw("m0-%s" % scene)(m), fw("m0-%s-backdrop" % scene)(m), fw("m0-%s-still" % scene)(m)]
         row = ["%s %s" % (scene, size)]
@@ -1585,10 +1606,10 @@ FW_VARIANTS["m0-static-off-40"] = ("qemu-m0", "pond", "--quality fast --static-v
 def bake_boards(m):
     """The pond's three M0 boards: make bench-target."""
     rows = []
-    for board, label in (("qemu-m0", "meshes, static view (`--quality fast`)"),
-                         ("qemu-m0-backdrop", "backdrop (`--quality fast --backdrop on`)"),
-                         ("qemu-m0-still", "still water (`--quality fast --backdrop still --water-block 4`)")):
-        b = m.bench(board)
+    for label, b in (("meshes, static view (`qemu-m0`: `--quality fast`)", m.bench("qemu-m0")),
+                     ("backdrop (`--quality fast --backdrop on`)", fw("m0-fast-backdrop")(m)),
+                     ("backdrop, refracting (`qemu-m0-backdrop`)", m.bench("qemu-m0-backdrop")),
+                     ("still water (`qemu-m0-still`)", m.bench("qemu-m0-still"))):
         rows.append([label, comma(b["scene_bytes"]), comma(b["flash_bytes"]), b["insn_per_pixel"]])
     return table(["", "scene data", "M0 flash", "M0 insn/pixel"], rows, ["---", "---:", "---:", "---:"])
 
@@ -1597,9 +1618,8 @@ def bake_boards(m):
 def bake_backdrop_boards(m):
     """The pond's M0 boards with and without the backdrop: make bench-target."""
     rows = []
-    for board, label in (("qemu-m0", "meshes, static view (`--quality fast`)"),
-                         ("qemu-m0-backdrop", "backdrop (`--quality fast --backdrop on`)")):
-        b = m.bench(board)
+    for label, b in (("meshes, static view (`--quality fast`)", m.bench("qemu-m0")),
+                     ("backdrop (`--quality fast --backdrop on`)", fw("m0-fast-backdrop")(m))):
         rows.append([label, comma(b["scene_bytes"]), comma(b["flash_bytes"]), b["insn_per_pixel"]])
     return table(["", "scene data", "M0 flash", "M0 insn/pixel"], rows, ["---", "---:", "---:", "---:"])
 

@@ -1,10 +1,10 @@
 # qemu-m0-still: the qemu-m0 board (the same chip, startup, memory and stack) with
 # the pond baked --backdrop still: tarn bake draws the opaque objects and the
 # water's still terms (fog, depth colour, fresnel, the lit surface) once, for this
-# frame and quality, into a palette picture in flash (14-bit indices into 14,524
-# colours padded to 16,384, each water pixel marked with its object and where foam
-# can show, and the depth of water where it is under one unit: 180,432 bytes; the
-# image takes 252,656 of the 262,144), and each frame finds only the water's moving
+# frame and quality, into a palette picture in flash (a 14-bit index a pixel into
+# the colours it uses, each water pixel marked with its object and where foam can
+# show, and the depth of water where it is under one unit; docs/firmware.md gives
+# the bytes), and each frame finds only the water's moving
 # terms over it: the highlights, once a 4x4 block (--water-block 4), the foam lines
 # (docs/bake.md, "Still water") and, with an apron (--apron on), each water pixel's
 # refracted sample, read from the picture wherever it lands, so the apron takes no
