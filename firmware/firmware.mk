@@ -258,7 +258,11 @@ $(FW_DIR)/scene.c: $(FW_SCENE) $(FW_TARN) $(FW_DIR)/firmware.conf $(if $(FW_POIN
 	$(call show_command,$(FW_BAKE))
 	@$(FW_BAKE) $(if $(Q),> /dev/null,>&2)
 
+# The bake writes these; the empty recipe makes make look at their times again after
+# it runs (a rule without one keeps the times from before the bake), so that
+# scene_link.opts follows a bake that changed the switches.
 $(FW_DIR)/scene.h $(FW_DIR)/scene_link.h: $(FW_DIR)/scene.c
+	@:
 
 # The core takes scene_link.h's switches as -D options (a response file), not as
 # -include scene_link.h: the preprocessed source then names no file of this build,
