@@ -636,6 +636,45 @@ static void test_plane_depth_follows_exact_depth(void **state)
     free(plane);
 }
 
+/* The 16-bit depth code of near/d q, as a pixel's depth test takes it. */
+static uint32_t depth16_code(uint32_t q)
+{
+    if ((int32_t)q < 1) q = 1;
+    if (q > (1u << 30)) q = 1u << 30;
+    return tarn_depth16_encode(q);
+}
+
+/* Within the range found around q, every near/d codes as one shift and one add:
+ * checked at both ends of the range and at q, for q at every power of two and its
+ * neighbours, the clamps' edges and a million values of every magnitude. */
+static void test_depth_ranges_code_as_the_encoder(void **state)
+{
+    (void)state;
+    static uint32_t qs[4 * 32 + 1000000];
+    size_t n = 0;
+    for (unsigned k = 0; k < 32; k++) {
+        qs[n++] = 1u << k;
+        qs[n++] = (1u << k) - 1u;
+        qs[n++] = (1u << k) + 1u;
+    }
+    qs[n++] = UINT32_MAX;
+    uint32_t x = 2463534242u; /* xorshift32 */
+    while (n < sizeof qs / sizeof qs[0]) {
+        x ^= x << 13, x ^= x >> 17, x ^= x << 5;
+        qs[n++] = x >> (x % 32u);
+    }
+    for (size_t k = 0; k < n; k++) {
+        tarn_depth_range r = {0u, 0u, 0u, 0u};
+        tarn__depth_range_find(&r, qs[k]);
+        if (qs[k] - r.low >= r.width) fail_msg("near/d %u lies outside its range [%u, +%u)", qs[k], r.low, r.width);
+        const uint32_t inside[3] = {r.low, qs[k], r.low + (r.width - 1u)};
+        for (int e = 0; e < 3; e++)
+            if ((inside[e] >> r.shift) + r.offset != depth16_code(inside[e]))
+                fail_msg("near/d %u (range of %u): coded %u, the encoder gives %u", inside[e], qs[k],
+                         (inside[e] >> r.shift) + r.offset, depth16_code(inside[e]));
+    }
+}
+
 static void test_cull_modes(void **state)
 {
     (void)state;
@@ -727,6 +766,7 @@ int main(void)
         cmocka_unit_test(test_extreme_cameras),
         cmocka_unit_test(test_depth_ties_resolve_like_the_reference),
         cmocka_unit_test(test_plane_depth_follows_exact_depth),
+        cmocka_unit_test(test_depth_ranges_code_as_the_encoder),
         cmocka_unit_test(test_cull_modes),
         cmocka_unit_test(test_configs_out_of_range_are_rejected),
     };

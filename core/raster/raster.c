@@ -343,6 +343,7 @@ void tarn__triangle_rows_begin(tarn_triangle_rows *r, const tarn_attribute_reque
     r->span.triangle = t;
     r->span.set = &r->set;
     r->span.values = r->values;
+    r->span.depth_range.width = 0u; /* found at the first pixel */
     r->row_depth = tarn__depth_at(t, &r->set.depth, r->draw.x0, r->draw.y0);
     row_edges_at(t, r->draw.x0, r->draw.y0, &r->edges);
     r->next_row = r->draw.y0;

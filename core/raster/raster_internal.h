@@ -22,13 +22,16 @@
 
 /* Where inlining decides the per-pixel cost: a function the compiler must inline
  * (a pixel's step, written once and compiled into each loop that takes it), and
- * one it must not (what runs once a span, called from those loops). */
+ * one it must not (what runs once a span, called from those loops); and a branch
+ * a pixel rarely takes, laid out of the loop's way. */
 #if defined(__GNUC__)
 #define TARN_ALWAYS_INLINE __attribute__((always_inline)) inline
 #define TARN_NOINLINE __attribute__((noinline))
+#define TARN_UNLIKELY(condition) __builtin_expect((condition) != 0, 0)
 #else
 #define TARN_ALWAYS_INLINE inline
 #define TARN_NOINLINE
+#define TARN_UNLIKELY(condition) (condition)
 #endif
 
 #define TARN_T_ONE ((uint32_t)1 << 30)
@@ -165,6 +168,22 @@ static inline tarn_exact_value tarn__depth_at(const tarn_triangle_setup *t, cons
     return v;
 }
 
+/* ---- depth codes along a run ---------------------------------------------------
+ *
+ * What a depth buffer holds for near/d q (Q1.30) clamped to [1, 2^30]: q itself in
+ * 32 bits, tarn_depth16_encode(q) in 16; both at least 1. Over a range of q the
+ * code is one shift and one add (depth_code.c): the 16-bit code's exponent stays
+ * while q's leading one does. Along a row q moves a little a pixel, so a pixel
+ * checks that it is still in the range the last one found, and the range is
+ * found again only where q leaves it: a compare a pixel, not the clamps and a
+ * leading-zero count of tarn_depth16_encode. The 32-bit code needs no range: a
+ * pixel checks its clamps. */
+typedef struct {
+    uint32_t low, width; /* low <= q < low + width, compared as q - low < width */
+    uint32_t offset;     /* the code is (q >> shift) + offset */
+    uint8_t shift;
+} tarn_depth_range;
+
 /* ---- spans: the covered pixels of one row ----------------------------------------- */
 
 /* The span perspective mode's interpolation (raster.c): exact values every
@@ -198,6 +217,7 @@ typedef struct {
     uint32_t *values;        /* T values of the attributes: the constant ones set, the
                                 varying ones by tarn__span_attributes */
     tarn_row_attributes row; /* the row's interpolation state */
+    tarn_depth_range depth_range; /* the last pixel's, kept from row to row of the triangle */
 } tarn_span;
 
 /* The T values of the varying attributes at pixel i of the span, into its values,
@@ -205,17 +225,21 @@ typedef struct {
  * one may be skipped in any perspective mode. */
 void tarn__span_attributes(tarn_span *span, int32_t i);
 
-/* The depth at buffer index `index` as the buffer holds it (a tarn_depth16 code or
- * Q1.30, by `depth_bits`), or 0 when inv_depth is not closer than the stored one.
- * Both forms are at least 1. */
-static inline uint32_t tarn__closer_depth(const void *depth, int depth_bits, int32_t index, uint32_t inv_depth)
+/* The 16-bit code's range around q (a width of 0 finds one at the next pixel). */
+void tarn__depth_range_find(tarn_depth_range *range, uint32_t q);
+
+/* The depth at buffer index `index` as the buffer holds it (by `depth_bits`), or 0
+ * when near/d inv_depth is not closer than the stored one. */
+static TARN_ALWAYS_INLINE uint32_t tarn__closer_depth(const void *depth, int depth_bits, tarn_depth_range *range,
+                                                     int32_t index, uint32_t inv_depth)
 {
-    if ((int32_t)inv_depth < 1) inv_depth = 1;
-    if (inv_depth > TARN_T_ONE) inv_depth = TARN_T_ONE;
     if (tarn__depth_is_16_bits((unsigned)depth_bits)) {
-        const uint16_t value = tarn_depth16_encode(inv_depth);
+        if (TARN_UNLIKELY(inv_depth - range->low >= range->width)) tarn__depth_range_find(range, inv_depth);
+        const uint32_t value = (inv_depth >> range->shift) + range->offset;
         return value > ((const uint16_t *)depth)[index] ? value : 0u;
     }
+    if ((int32_t)inv_depth < 1) inv_depth = 1;
+    if (inv_depth > TARN_T_ONE) inv_depth = TARN_T_ONE;
     return inv_depth > ((const uint32_t *)depth)[index] ? inv_depth : 0u;
 }
 
@@ -246,14 +270,16 @@ static TARN_ALWAYS_INLINE void tarn__span_draw(tarn_span *s, tarn_span_pixel pix
     const tarn_exact_step_value step = s->set->depth.step_x;
     const int exact_depth = s->set->depth.exact;
     tarn_exact_value depth = s->depth;
+    tarn_depth_range range = s->depth_range;
     for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
-        const uint32_t closer = tarn__closer_depth(depth_buffer, depth_bits, index, depth.quotient);
+        const uint32_t closer = tarn__closer_depth(depth_buffer, depth_bits, &range, index, depth.quotient);
         if (closer != 0u) {
             colour[index] = pixel(ctx, s, i, index, depth.quotient);
             tarn__store_depth(depth_buffer, depth_bits, index, closer);
         }
         tarn__step_depth(&depth, &step, exact_depth);
     }
+    s->depth_range = range;
 }
 
 /* ---- a triangle into a tile, row by row ---------------------------------------
