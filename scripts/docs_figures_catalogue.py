@@ -882,16 +882,20 @@ def fw_boards(m):
                  ["---", "---", "---:", "---:", "---:", "---:", "---:", "---", "---:"])
 
 
-# the RAM boards' scenes as they were baked before strips and the vertex pass, and
-# the moving pond at a leaner quality than the boards' exact
+# the RAM boards' scenes as they were baked before strips and the vertex pass (at
+# the boards' quality), the moving pond at the exact preset the boards baked
+# before, and at a leaner quality than the boards'
+RAM_BOARD_QUALITY = "--quality balanced --depth-interpolation plane"
 FW_VARIANTS.update({
-    "m0-264k-orbit-tiles": ("qemu-m0-264k", "pond-orbit", "--quality exact --tile 64"),
-    "m0-264k-orbit-lean": ("qemu-m0-264k", "pond-orbit", "--quality balanced --frame strips --tile 16 "
-                           "--depth-interpolation plane --refraction-normal shared"),
-    "m0-264k-opaque-tiles": ("qemu-m0-264k", "pond-opaque", "--quality exact --tile 64"),
-    "m0-264k-opaque-strips": ("qemu-m0-264k", "pond-opaque", "--quality exact --frame strips --tile 64"),
-    "rv32-400k-orbit-tiles": ("qemu-rv32-400k", "pond-orbit", "--quality exact --tile 64"),
-    "rv32-400k-opaque-tiles": ("qemu-rv32-400k", "pond-opaque", "--quality exact --tile 64"),
+    "m0-264k-orbit-tiles": ("qemu-m0-264k", "pond-orbit", RAM_BOARD_QUALITY + " --tile 64"),
+    "m0-264k-orbit-exact": ("qemu-m0-264k", "pond-orbit", "--quality exact --frame strips --tile 16"),
+    "m0-264k-orbit-lean": ("qemu-m0-264k", "pond-orbit", RAM_BOARD_QUALITY + " --frame strips --tile 16 "
+                           "--refraction-normal shared"),
+    "m0-264k-opaque-tiles": ("qemu-m0-264k", "pond-opaque", RAM_BOARD_QUALITY + " --tile 64"),
+    "m0-264k-opaque-strips": ("qemu-m0-264k", "pond-opaque", RAM_BOARD_QUALITY + " --frame strips --tile 64"),
+    "m0-264k-opaque-exact": ("qemu-m0-264k", "pond-opaque", "--quality exact --frame strips --tile 64 --vertices frame"),
+    "rv32-400k-orbit-tiles": ("qemu-rv32-400k", "pond-orbit", RAM_BOARD_QUALITY + " --tile 64"),
+    "rv32-400k-opaque-tiles": ("qemu-rv32-400k", "pond-opaque", RAM_BOARD_QUALITY + " --tile 64"),
 })
 
 

@@ -2,15 +2,17 @@
 # ARMv6-M code runs on it unchanged), held by its link.ld to the RP2040's 2 MB of
 # flash and 264 KB of RAM. It renders the moving pond (scenes/pond-orbit.json: the
 # camera circling, the balls bobbing; each frame poses the scene, nothing frozen)
-# and the same scene without its water, at the exact preset (core/scene/presets.c:
-# refraction with the full apron, 32-bit depth, per-pixel perspective, the finest
-# tables) in strips of the whole width (--frame strips): each strip's opaque pass
-# is drawn once into a ring deep enough for the water's refracted samples, where
-# 64-pixel tiles drew about four times the frame's opaque pixels for their aprons;
-# the same image. 16-row strips keep the ring (five strips, 32 pixels of apron
-# above and below) and the water's strip within 200 KB. Exact rather than balanced:
-# a few percent more instructions for a few dB of panel PSNR (docs/firmware.md
-# gives the figures). The 8 KB stack holds the 4.6 KB bound with
+# and the same scene without its water, at the balanced preset (core/scene/presets.c:
+# refraction with the full apron, 32-bit depth, per-pixel perspective) with its
+# depth stepped on a plane (--depth-interpolation plane: three divisions less a
+# triangle, and the panel as close to the reference as the exact depth's, within
+# 1 dB of the host's balanced frame; the exact preset costs about a tenth more for
+# 8 dB over the 40 the board needs: docs/firmware.md gives the figures), in strips
+# of the whole width (--frame strips): each strip's opaque pass is drawn once into
+# a ring deep enough for the water's refracted samples, where 64-pixel tiles drew
+# about four times the frame's opaque pixels for their aprons; the same image.
+# 16-row strips keep the ring (five strips, 32 pixels of apron above and below)
+# and the water's strip within 200 KB. The 8 KB stack holds the 4.6 KB bound with
 # room to spare. Variables read by firmware/firmware.mk; the rest, as for every
 # emulated Cortex-M board, from boards/common/qemu_cortex_m.mk.
 BOARD_DIR := boards/qemu-m0-264k
@@ -24,9 +26,9 @@ BOARD_CORES := 2
 # build (build/firmware/qemu-m0-264k), each other one builds in
 # build/firmware/qemu-m0-264k@NAME
 BOARD_SCENES := scenes/pond-orbit.json scenes/pond-opaque.json
-BOARD_BAKE_FLAGS := --quality exact --frame strips --tile 16
+BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 16
 # without water nothing refracts: one strip is the ring, and taller strips cut
 # fewer triangles in two; the room left holds every vertex found once a frame
 # (--vertices frame: 74 KB, which the moving pond's ring leaves no room for)
-BOARD_BAKE_FLAGS.pond-opaque := --quality exact --frame strips --tile 64 --vertices frame
+BOARD_BAKE_FLAGS.pond-opaque := --quality balanced --depth-interpolation plane --frame strips --tile 64 --vertices frame
 include boards/common/qemu_cortex_m.mk
