@@ -32,6 +32,6 @@ BOARD_STACK_ENTRY += second_core_main:core
 BOARD_SECOND_STACK_ENTRY := second_core_main reset_handler:core
 # the core's stages that run once a pixel, a triangle or a vertex, their arithmetic
 # and tables, and the panel's conversion, run from SRAM (copied there at reset):
-# from flash every fetch the XIP cache misses is a serial 03h read (boot2.S), and
+# from flash every fetch the XIP cache misses is a quad read of the flash (boot2.S), and
 # the scene's textures and meshes, which stay in flash, have the cache to themselves
 BOARD_RAM_CODE := core/raster core/water core/math core/tile core/geometry core/panel
