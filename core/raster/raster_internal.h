@@ -7,6 +7,8 @@
  *   raster.c          per row: the covered run of pixels, found with the edge
  *                     functions (tarn_span); per pixel of an opaque material:
  *                     depth test, attributes, texel, colour
+ *   depth_code.c      where a pixel's near/d leaves the range of the last: the
+ *                     16-bit depth code's next range
  *
  * It takes the screen triangles of core/tile/'s walk and draws them into a
  * tarn_tile_target. A triangle is set up once for a tile (tarn_triangle_rows),
