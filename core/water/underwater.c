@@ -16,7 +16,7 @@ static int32_t displaced_offset(const tarn_underwater_context *u, int32_t i, int
     const uint32_t sy = tarn_mul_hi_u32((uint32_t)(2 * j + 1) << 16, u->screen_u_per_half);
     const uint32_t fu = tarn__water_map_fraction(sx, 0u, (uint32_t)under->pan.scale) + u->pan[0];
     const uint32_t fv = tarn__water_map_fraction(sy, 0u, (uint32_t)under->pan.scale) + u->pan[1];
-    const uint8_t *texel = tarn__water_texel_at(under->normal_map, fu >> 16, fv >> 16);
+    const uint8_t *texel = tarn__water_texel_at(under->normal_map, fu >> 16, fv >> 16, 3u); /* R G B */
     int32_t target[2] = {i, j};
     for (int k = 0; k < 2; k++) {
         /* N (Q1.15) * pixels per unit normal (Q16.16) / 2^23 -> pixels, Q24.8 */

@@ -41,14 +41,14 @@ uint32_t tarn__squared_argument_q16(uint32_t rate, uint32_t x)
     return up >= 31 || product > ((uint32_t)INT32_MAX >> up) ? (uint32_t)INT32_MAX : product << up;
 }
 
-const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction)
+const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction,
+                                    unsigned texel_bytes)
 {
     /* For a power-of-two side, fraction * side / 2^16 is the shift by 16 - log2(side)
      * without finding the log: one multiply, where clz costs the M0 a dozen
      * instructions. Exact: the fraction is below 2^16 and a side at most 2^10. */
     const uint32_t x = (u_fraction * t->width) >> 16, y = (v_fraction * t->height) >> 16;
-    const uint32_t texel = y * t->width + x;
-    return &t->rgb[t->red_only ? texel : 3u * texel];
+    return &t->rgb[texel_bytes * (y * t->width + x)];
 }
 
 uint32_t tarn__water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps)

@@ -17,7 +17,8 @@ int tarn__water_foam(const tarn_water_context *w, const tarn_water_input *in, ui
     int32_t wave = tarn_sin_q15(turns);
     uint32_t lines = wave > 0 ? ((uint32_t)wave * ((Q16_ONE - f) >> 1)) >> 14 : 0u; /* Q0.16 */
     /* foam where red / 255 >= f - lines: compared exactly, red * 2^16 against 255 * (f - lines) */
-    const int32_t red = tarn__water_panned_texel(water->foam_texture, &water->foam_pan, w->foam_pan, in)[0];
+    const int32_t red =
+        tarn__water_panned_texel(water->foam_texture, w->foam_texel_bytes, &water->foam_pan, w->foam_pan, in)[0];
     return red * 65536 >= 255 * ((int32_t)f - (int32_t)lines); /* both below 2^24 */
 }
 

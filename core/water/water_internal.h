@@ -46,6 +46,7 @@ typedef struct tarn_water_context {
     uint32_t fog_q8[3];         /* the fog's colour, Q8.8 per channel; 0 without fog */
     uint32_t inv_depth_scale;   /* Q16.16 per world unit */
     uint32_t inv_foam_distance; /* Q16.16 per world unit */
+    uint8_t foam_texel_bytes;   /* the foam map's: 1 kept red alone, else 3 */
     uint32_t refraction_px;     /* refraction * width: pixels per unit normal, Q16.16 */
     uint32_t sparkle_threshold; /* sparkle where x^2 (Q2.30) exceeds this */
     int32_t dark_cosine;        /* tarn__water_dark_cosine of the material */
@@ -138,7 +139,8 @@ static inline int32_t tarn__water_normal_component(uint8_t c)
     return ((2 * (int32_t)c - 255) * 257) / 2;
 }
 /* The texel at a repeat fraction (Q0.16 each axis), nearest, power-of-two sides. */
-const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction);
+const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction,
+                                    unsigned texel_bytes);
 /* near / (iz / 2^30) in Q16.16 world units, saturated; `far` for iz 0. */
 uint32_t tarn__water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps);
 /* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.16. */
@@ -254,13 +256,14 @@ static inline uint32_t tarn__water_channel_q8(uint32_t rgb, int c)
 }
 
 /* The texel of a panning texture under the pixel's uv, at the frame's pan offset. */
-static inline const uint8_t *tarn__water_panned_texel(const tarn_texture *t, const tarn_panning *pan,
-                                                     const uint32_t offset[2], const tarn_water_input *in)
+static inline const uint8_t *tarn__water_panned_texel(const tarn_texture *t, unsigned texel_bytes,
+                                                     const tarn_panning *pan, const uint32_t offset[2],
+                                                     const tarn_water_input *in)
 {
     const uint32_t u = tarn__water_map_fraction(in->u, in->u_low, (uint32_t)pan->scale) + offset[0];
     const uint32_t v = tarn__water_map_fraction(in->v, in->v_low, (uint32_t)pan->scale) + offset[1];
     /* a power-of-two side's texel is the Q0.32 fraction's top bits: its top 16 do */
-    return tarn__water_texel_at(t, u >> 16, v >> 16);
+    return tarn__water_texel_at(t, u >> 16, v >> 16, texel_bytes);
 }
 
 /* 2^(-rate * x) for rate, x >= 0 (Q16.16), Q0.16, through the frame's exp2 table. */

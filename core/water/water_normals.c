@@ -33,8 +33,9 @@ static int map_texels(const tarn_water_context *w, const tarn_water_input *in, c
 {
     const tarn_water *water = w->water;
     if (water->normal_a == NULL) return 0;
-    *a = tarn__water_panned_texel(water->normal_a, &water->pan_a, w->pan_a, in);
-    *b = water->normal_b != NULL ? tarn__water_panned_texel(water->normal_b, &water->pan_b, w->pan_b, in) : NULL;
+    /* normal maps are R G B (the scene check refuses red alone) */
+    *a = tarn__water_panned_texel(water->normal_a, 3u, &water->pan_a, w->pan_a, in);
+    *b = water->normal_b != NULL ? tarn__water_panned_texel(water->normal_b, 3u, &water->pan_b, w->pan_b, in) : NULL;
     return 1;
 }
 

@@ -84,6 +84,7 @@ void tarn__water_context_setup(tarn_water_context *w, const tarn_view *view,
     }
     w->inv_depth_scale = reciprocal_q16(water->depth_scale);
     w->inv_foam_distance = reciprocal_q16(water->foam_distance);
+    w->foam_texel_bytes = water->foam_texture != NULL && water->foam_texture->red_only ? 1u : 3u;
     int64_t px = (int64_t)water->refraction * config->width;
     w->refraction_px = px > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)px;
     int64_t threshold = water->sparkle_amount > 0 ? tarn_divide_once_i64((int64_t)1 << 46, (uint32_t)water->sparkle_amount) : INT64_MAX;
