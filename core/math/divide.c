@@ -14,14 +14,14 @@ tarn_divisor tarn_divisor_of(uint32_t divisor)
     return d;
 }
 
-/* (n * recip + bias) / 2^(62 - shift), the low product's bits below 2^32 dropped
- * (worth less than one unit of the result); divisor > 1, so shift <= 30. With no
- * bias it is at most n / divisor, short of it by about 2^-28 of it plus one. */
-static uint64_t times_reciprocal(uint64_t n, const tarn_divisor *d, uint32_t bias)
+/* n * recip / 2^(62 - shift), the low product's bits below 2^32 dropped (worth
+ * less than one unit of the result); divisor > 1, so shift <= 30. At most
+ * n / divisor, short of it by about 2^-28 of it plus one. */
+static uint64_t times_reciprocal(uint64_t n, const tarn_divisor *d)
 {
     const uint64_t high = tarn_mul_u32_wide((uint32_t)(n >> 32), d->recip);
     /* of the low product only its high word counts */
-    return (high + tarn_mul_hi_u32((uint32_t)n, d->recip) + bias) >> (30u - d->shift);
+    return (high + tarn_mul_hi_u32((uint32_t)n, d->recip)) >> (30u - d->shift);
 }
 
 static uint64_t times_divisor(uint64_t q, uint32_t divisor)
@@ -37,7 +37,7 @@ uint64_t tarn_divide_u64(uint64_t n, const tarn_divisor *d, uint32_t *remainder)
         n = 0;
     }
     while (n >= d->divisor) {
-        uint64_t step = times_reciprocal(n, d, 0u);
+        uint64_t step = times_reciprocal(n, d);
         uint64_t product = times_divisor(step, d->divisor);
         if (step == 0u || product > n) { /* the second cannot happen; if it did, a 1 is safe */
             step = 1u;
@@ -65,16 +65,6 @@ int64_t tarn_divide_floor_i64(int64_t n, const tarn_divisor *d, uint32_t *remain
     }
     if (remainder != NULL) *remainder = r != 0u ? d->divisor - r : 0u;
     return -(int64_t)q - (r != 0u);
-}
-
-int64_t tarn_divide_round_approx_i64(int64_t n, const tarn_divisor *d)
-{
-    uint64_t q = magnitude(n);
-    if (d->divisor > 1u) {
-        const unsigned down = 30u - d->shift;
-        q = times_reciprocal(q, d, down > 0u ? 1u << (down - 1u) : 0u); /* half, to round */
-    }
-    return n < 0 ? -(int64_t)q : (int64_t)q;
 }
 
 int64_t tarn_divide_trunc_i64(int64_t n, const tarn_divisor *d)

@@ -118,36 +118,114 @@ static int64_t coefficient_sum(int32_t a1, int32_t d1, int32_t a2, int32_t d2)
     return tarn_mul_i16_i32_wide(a1, d1) + tarn_mul_i16_i32_wide(a2, d2);
 }
 
-/* A plane through the three vertex values (each within [0, 2^30], so their
- * differences fit 32 bits). Its anchor and steps divide by the area in one multiply
- * each (tarn_divide_round_approx_i64): an attribute plane is an approximation
- * already, and the exact division cost the Cortex-M0 several thousand instructions
- * a triangle. */
-static tarn_plane make_plane(const tarn_triangle_setup *t, const tarn_divisor *area2, const plane_anchor *anchor,
-                        const uint32_t value[3])
+/* What every plane of a triangle divides by area2, divided once: the weights of the
+ * anchor's two other vertices (edges next and after over area2) a pixel step along
+ * x, along y, and at the anchor pixel, each times 2^shift. A plane through values
+ * from, from + d1 and from + d2 then steps by (d1 * x[0] + d2 * x[1]) / 2^shift:
+ * two products where a division by area2 cost the Cortex-M0 about 120
+ * instructions, three of them a plane. The largest weight keeps 29 bits or more.
+ * A sliver (a step weight of 1 or more: less than a pixel across) keeps the
+ * divisions: its steps across are so much larger than its steps along that
+ * weights of 29 bits would move its far pixels by hundreds of units (test_raster's
+ * random triangles: 74 units of 2^-30 at most, where weights alone gave 3,681). */
+typedef struct {
+    int32_t x[2], y[2], at[2];
+    unsigned shift;
+    tarn_divisor area2;
+    uint8_t sliver;
+} plane_basis;
+
+static uint32_t magnitude_u32(int32_t v)
 {
-    const unsigned s = t->subpixel_bits;
+    return v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
+}
+
+/* c / area2 = c * recip / 2^(62 - shift) for each edge coefficient or value c
+ * (below 2^23 in magnitude: the guard box's 2^15 subpixels times a pixel's): the
+ * high words of c * 2^up (below 2^31) times the reciprocal (at most 2^31), on the
+ * scale 2^(30 - shift + up). */
+static plane_basis basis_of(const tarn_triangle_setup *t, const plane_anchor *anchor)
+{
     const tarn_edge *e1 = &t->edges[anchor->next], *e2 = &t->edges[anchor->after];
+    const int32_t pixel = 1 << t->subpixel_bits;
+    const int32_t c[6] = {e1->a * pixel, e2->a * pixel, e1->b * pixel, e2->b * pixel, anchor->e_next, anchor->e_after};
+    plane_basis b;
+    b.area2 = tarn_divisor_of((uint32_t)t->area2);
+    uint32_t largest = 1u;
+    for (int k = 0; k < 6; k++) largest |= magnitude_u32(c[k]);
+    const unsigned up = tarn_clz32(largest) - 1u;
+    int32_t w[6];
+    uint32_t steepest = 0u;
+    for (int k = 0; k < 6; k++) {
+        const uint32_t high = tarn_mul_hi_u32(magnitude_u32(c[k]) << up, b.area2.recip);
+        if (k < 4 && high > steepest) steepest = high;
+        w[k] = c[k] < 0 ? -(int32_t)high : (int32_t)high;
+    }
+    b.shift = 30u - b.area2.shift + up;
+    for (int k = 0; k < 2; k++) {
+        b.x[k] = w[k];
+        b.y[k] = w[2 + k];
+        b.at[k] = w[4 + k];
+    }
+    b.sliver = b.shift < 31u && (steepest >> b.shift) != 0u; /* a step weight of 1 or more */
+    return b;
+}
+
+/* (d1 * w[0] + d2 * w[1]) / 2^shift, rounded: |d| <= 2^30 and |w| <= 2^30, so the
+ * sum stays below 2^61. */
+static uint32_t weighted(int32_t d1, int32_t d2, const int32_t w[2], unsigned shift)
+{
+    return (uint32_t)tarn_round_shift_i64(tarn_mul_i32_wide(d1, w[0]) + tarn_mul_i32_wide(d2, w[1]), shift);
+}
+
+/* n / area2 rounded to nearest (halves away from 0), exactly (|n| < 2^61), modulo 2^32. */
+static uint32_t over_area(int64_t n, const tarn_divisor *area2)
+{
+    const uint64_t magnitude = (n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n) + area2->divisor / 2u;
+    const uint32_t q = (uint32_t)tarn_divide_u64(magnitude, area2, NULL);
+    return n < 0 ? 0u - q : q;
+}
+
+/* A sliver's plane: each of its three sums divided by area2 exactly. */
+static void sliver_plane(const tarn_triangle_setup *t, const plane_basis *basis, const plane_anchor *anchor,
+                         int32_t d1, int32_t d2, tarn_plane *p)
+{
+    const int64_t pixel = (int64_t)1 << t->subpixel_bits;
+    const tarn_edge *e1 = &t->edges[anchor->next], *e2 = &t->edges[anchor->after];
+    p->step_x = over_area(coefficient_sum(e1->a, d1, e2->a, d2) * pixel, &basis->area2);
+    p->step_y = over_area(coefficient_sum(e1->b, d1, e2->b, d2) * pixel, &basis->area2);
+    p->anchor = over_area(weighted_sum(anchor->e_next, d1, anchor->e_after, d2), &basis->area2);
+}
+
+/* A plane through the three vertex values (each within [0, 2^30], so their
+ * differences fit 32 bits), from the triangle's basis. */
+static tarn_plane make_plane(const tarn_triangle_setup *t, const plane_basis *basis, const plane_anchor *anchor,
+                             const uint32_t value[3])
+{
     const uint32_t from = value[anchor->far];
     const int32_t d1 = (int32_t)(value[anchor->next] - from), d2 = (int32_t)(value[anchor->after] - from);
-    if (d1 == 0 && d2 == 0) { /* a flat plane: every quotient below would be 0 */
+    if (d1 == 0 && d2 == 0) { /* a flat plane: every product below would be 0 */
         const tarn_plane flat = {from, 0u, 0u};
         return flat;
     }
     tarn_plane p;
-    p.step_x = (uint32_t)tarn_divide_round_approx_i64(coefficient_sum(e1->a, d1, e2->a, d2) * ((int64_t)1 << s), area2);
-    p.step_y = (uint32_t)tarn_divide_round_approx_i64(coefficient_sum(e1->b, d1, e2->b, d2) * ((int64_t)1 << s), area2);
+    if (basis->sliver) {
+        sliver_plane(t, basis, anchor, d1, d2, &p);
+    } else {
+        p.step_x = weighted(d1, d2, basis->x, basis->shift);
+        p.step_y = weighted(d1, d2, basis->y, basis->shift);
+        p.anchor = weighted(d1, d2, basis->at, basis->shift);
+    }
     /* found at the anchor pixel, carried to the box's corner, where tarn__plane_at counts from */
-    p.anchor = from + (uint32_t)tarn_divide_round_approx_i64(weighted_sum(anchor->e_next, d1, anchor->e_after, d2), area2) +
-               p.step_x * (uint32_t)(t->box.x0 - anchor->i) + p.step_y * (uint32_t)(t->box.y0 - anchor->j);
+    p.anchor += from + p.step_x * (uint32_t)(t->box.x0 - anchor->i) + p.step_y * (uint32_t)(t->box.y0 - anchor->j);
     return p;
 }
 
 /* An attribute's three T values (each at most 2^30), with the shift that makes
  * them the attribute (attribute = T >> shift): their range and, with q, their plane;
  * an attribute below set->first_varying is constant and gets no plane. */
-static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_anchor *anchor,
-                          uint32_t scaled[3], unsigned shift, const uint32_t q[3])
+static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t, const plane_basis *basis,
+                          const plane_anchor *anchor, uint32_t scaled[3], unsigned shift, const uint32_t q[3])
 {
     const int k = set->count++;
     /* at most T_ONE: the signed least and largest are the same numbers */
@@ -157,7 +235,7 @@ static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t,
     if (k < set->first_varying) return; /* constant: no plane */
     if (set->perspective != TARN_PERSPECTIVE_AFFINE)
         for (int n = 0; n < 3; n++) scaled[n] = (uint32_t)(tarn_mul_u32_wide(scaled[n], q[n]) >> 30);
-    set->premultiplied[k] = make_plane(t, &set->depth.den, anchor, scaled);
+    set->premultiplied[k] = make_plane(t, basis, anchor, scaled);
 }
 
 /* Three values (each at most 2^30) scaled toward 2^30 as T values; returns the
@@ -250,10 +328,10 @@ static int64_t depth_numerator_step(const tarn_triangle_setup *t, int32_t a1, in
     return coefficient_sum(a1, depth_difference(t, 1), a2, depth_difference(t, 2)) * ((int64_t)1 << t->subpixel_bits);
 }
 
-static tarn_depth_plane make_exact_depth_plane(const tarn_triangle_setup *t)
+static tarn_depth_plane make_exact_depth_plane(const tarn_triangle_setup *t, const tarn_divisor *area2)
 {
     tarn_depth_plane p;
-    p.den = tarn_divisor_of((uint32_t)t->area2);
+    p.den = *area2;
     p.step_x = exact_step_of(depth_numerator_step(t, t->edges[1].a, t->edges[2].a), &p.den);
     p.step_y = exact_step_of(depth_numerator_step(t, t->edges[1].b, t->edges[2].b), &p.den);
     p.anchor = 0u;
@@ -262,12 +340,13 @@ static tarn_depth_plane make_exact_depth_plane(const tarn_triangle_setup *t)
 }
 
 /* Depth on a plane through the vertices' near/d, as the attributes' planes. */
-static tarn_depth_plane make_depth_plane(const tarn_triangle_setup *t, const plane_anchor *anchor)
+static tarn_depth_plane make_depth_plane(const tarn_triangle_setup *t, const plane_basis *basis,
+                                        const plane_anchor *anchor)
 {
     tarn_depth_plane p;
-    p.den = tarn_divisor_of((uint32_t)t->area2);
+    p.den = basis->area2;
     const uint32_t value[3] = {t->v[0]->inv_depth, t->v[1]->inv_depth, t->v[2]->inv_depth};
-    const tarn_plane steps = make_plane(t, &p.den, anchor, value);
+    const tarn_plane steps = make_plane(t, basis, anchor, value);
     const tarn_exact_step_value step_x = {steps.step_x, 0u, UINT32_MAX}, step_y = {steps.step_y, 0u, UINT32_MAX};
     p.step_x = step_x;
     p.step_y = step_y;
@@ -325,29 +404,31 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
         if (q[n] > set->q_max) set->q_max = q[n];
     }
     const plane_anchor anchor = anchor_of(t);
-    set->depth = TARN_LINK_EXACT_DEPTH && depth_interpolation == TARN_DEPTH_EXACT ? make_exact_depth_plane(t)
-                                                                                   : make_depth_plane(t, &anchor);
+    const plane_basis basis = basis_of(t, &anchor);
+    set->depth = TARN_LINK_EXACT_DEPTH && depth_interpolation == TARN_DEPTH_EXACT
+        ? make_exact_depth_plane(t, &basis.area2)
+        : make_depth_plane(t, &basis, &anchor);
     if (perspective != TARN_PERSPECTIVE_AFFINE) /* affine interpolation never reads q */
-        set->q = make_plane(t, &set->depth.den, &anchor, q);
+        set->q = make_plane(t, &basis, &anchor, q);
     uint32_t scaled[3];
     unsigned shift;
     for (int c = 0; c < 3; c++) {
         const uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
         shift = attribute_t(lit, scaled);
-        add_attribute(set, t, &anchor, scaled, shift, q);
+        add_attribute(set, t, &basis, &anchor, scaled, shift, q);
     }
     set->lit_full = (uint8_t)(set->first_varying == 3 && lit_is_full(set));
     if (request->uv) {
         const int whole_repeats = request->texture != NULL;
         shift = texture_coordinate_t(t, 0, whole_repeats, &set->u_base, scaled);
-        add_attribute(set, t, &anchor, scaled, shift, q);
+        add_attribute(set, t, &basis, &anchor, scaled, shift, q);
         shift = texture_coordinate_t(t, 1, whole_repeats, &set->v_base, scaled);
-        add_attribute(set, t, &anchor, scaled, shift, q);
+        add_attribute(set, t, &basis, &anchor, scaled, shift, q);
         if (request->texture != NULL) set_texel_lookup(set, request->texture);
     }
     if (request->fresnel) {
         const uint32_t fresnel[3] = {t->v[0]->fresnel, t->v[1]->fresnel, t->v[2]->fresnel};
         shift = attribute_t(fresnel, scaled);
-        add_attribute(set, t, &anchor, scaled, shift, q);
+        add_attribute(set, t, &basis, &anchor, scaled, shift, q);
     }
 }

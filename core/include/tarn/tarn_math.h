@@ -91,10 +91,6 @@ uint64_t tarn_divide_u64(uint64_t n, const tarn_divisor *d, uint32_t *remainder)
 /* floor(n / divisor) for a signed n, with the remainder in [0, divisor) into
  * *remainder when it is not NULL. */
 int64_t tarn_divide_floor_i64(int64_t n, const tarn_divisor *d, uint32_t *remainder);
-/* n / divisor rounded to nearest in one multiply, not exact: within
- * 1 + |n / divisor| * 2^-27 of it. For values that only approximate anyway, such as
- * the gradients of a triangle's colour and texture planes; |n| < 2^62. */
-int64_t tarn_divide_round_approx_i64(int64_t n, const tarn_divisor *d);
 /* n / divisor truncated toward zero, as C's / operator. */
 int64_t tarn_divide_trunc_i64(int64_t n, const tarn_divisor *d);
 /* The same for a divisor used once: prepares it, then divides. */
