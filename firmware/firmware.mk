@@ -231,7 +231,8 @@ $(FW_DIR)/firmware.conf: $(FW_BOARD_MK) firmware/firmware.mk FORCE
 	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
 		"bake_flags=$(FW_BAKE_FLAGS)" "times=$(FW_TIMES)" "cores=$(FW_CORES)" "core_split=$(FW_CORE_SPLIT)" "dither=1" "cross=$(FW_CROSS)" \
 		"stack_bytes=$(BOARD_STACK_BYTES)" "stack_entry=$(BOARD_STACK_ENTRY)" "emulated=$(if $(value BOARD_RUN),1,0)" \
-		"code_bytes_max=$(FW_CODE_BYTES_MAX)" "program=$(FW_MAIN)" "points=$(POINTS)" "ram_code=$(BOARD_RAM_CODE)" > $@.tmp
+		"code_bytes_max=$(FW_CODE_BYTES_MAX)" "program=$(FW_MAIN)" "points=$(POINTS)" "ram_code=$(BOARD_RAM_CODE)" \
+		"vertex_cache_slots=$(BOARD_VERTEX_CACHE_SLOTS)" > $@.tmp
 	@if cmp -s $@.tmp $@; then rm $@.tmp; else mv $@.tmp $@; fi
 
 .PHONY: FORCE fw-toolchain fw-qemu
@@ -285,9 +286,12 @@ ifeq ($(filter parts pipeline,$(FW_CORE_SPLIT)),)
 $(error BOARD_CORE_SPLIT of $(BOARD): "$(FW_CORE_SPLIT)"; expected parts or pipeline)
 endif
 FW_PIPELINE := $(if $(filter pipeline,$(FW_CORE_SPLIT)),1,0)
+# The core's one setting that is not a switch (tarn_config.h): a board with RAM
+# keeps more vertices in the walk's cache (BOARD_VERTEX_CACHE_SLOTS; 16 unless given).
 FW_CORE_OBJ := $(filter $(FW_DIR)/obj/core/%,$(FW_OBJ))
 $(FW_CORE_OBJ): $(FW_DIR)/scene_link.opts $(FW_DIR)/firmware.conf
-$(FW_CORE_OBJ): FW_DEFINES = @$(FW_DIR)/scene_link.opts -DTARN_LINK_PARTS=$(FW_LINK_PARTS)
+$(FW_CORE_OBJ): FW_DEFINES = @$(FW_DIR)/scene_link.opts -DTARN_LINK_PARTS=$(FW_LINK_PARTS) \
+	$(if $(BOARD_VERTEX_CACHE_SLOTS),-DTARN_VERTEX_CACHE_SLOTS=$(BOARD_VERTEX_CACHE_SLOTS)u)
 
 $(FW_OBJ): firmware/firmware.mk $(FW_BOARD_MK)
 FW_MAIN_OBJ := $(patsubst %,$(FW_DIR)/obj/firmware/%.o,main sweep_main display_main)

@@ -11,6 +11,10 @@ BOARD_QEMU_MACHINE := virt
 # no firmware before ours: the reset vector jumps straight to RAM's start, the image
 BOARD_QEMU_OPTIONS := -bios none
 BOARD_STACK_BYTES := 8192
+# the walk keeps 64 vertices transformed, projected and lit (tarn_config.h's
+# TARN_VERTEX_CACHE_SLOTS; 16 elsewhere): each strip of the moving pond finds its
+# vertices again, and 16 slots lost most of a grid row's; 1.5 KB more stack
+BOARD_VERTEX_CACHE_SLOTS := 64
 # the scenes make bench-target measures, a line each; the first is the board's own
 # build (build/firmware/qemu-rv32-400k), each other one builds in
 # build/firmware/qemu-rv32-400k@NAME

@@ -12,6 +12,10 @@
 BOARD_DIR := boards/rp2040-st7789
 BOARD_CPU := -mcpu=cortex-m0plus -mthumb -mfloat-abi=soft
 BOARD_STACK_BYTES := 8192
+# the walk keeps 64 vertices transformed, projected and lit (tarn_config.h's
+# TARN_VERTEX_CACHE_SLOTS; 16 elsewhere): each strip of the moving pond finds its
+# vertices again, and 16 slots lost most of a grid row's; 1.5 KB more stack
+BOARD_VERTEX_CACHE_SLOTS := 64
 # both cores draw each frame (firmware/display_main.c, cores.c), sharing its memory
 # (tarn_strip_pipeline_begin); each has its strip buffers and a stack of its own
 BOARD_CORES := 2

@@ -12,7 +12,9 @@
 
 #include "geometry/geometry_internal.h"
 
-#define TARN_VERTEX_CACHE_SLOTS 16u /* a power of two, 32 bytes each */
+/* TARN_VERTEX_CACHE_SLOTS (tarn_config.h) must be a power of two from 4 to 256 */
+typedef char tarn_vertex_cache_slots_check[(TARN_VERTEX_CACHE_SLOTS >= 4u && TARN_VERTEX_CACHE_SLOTS <= 256u &&
+                                            (TARN_VERTEX_CACHE_SLOTS & (TARN_VERTEX_CACHE_SLOTS - 1u)) == 0u) ? 1 : -1];
 
 #define TARN_CACHED_FILLED 1u    /* the slot holds vertex `index` */
 #define TARN_CACHED_PROJECTED 2u /* screen_x, screen_y and inv_depth are set */

@@ -12,7 +12,8 @@
  *  - `-DTARN_LINK_APRON=0` and the like on the compiler's command line;
  *  - CMake: the options of the same names (core/CMakeLists.txt).
  * A switch left unset here is 1. The switches only remove code, so a mistaken 0
- * shows as a refused frame, never as a wrong one. */
+ * shows as a refused frame, never as a wrong one. The one setting after them,
+ * TARN_VERTEX_CACHE_SLOTS, trades stack for speed and is set the same ways. */
 #ifndef TARN_CONFIG_H
 #define TARN_CONFIG_H
 
@@ -151,6 +152,18 @@
  * its time. Without it a scene with any motion is refused (TARN_ERR_SCENE). */
 #ifndef TARN_LINK_MOTION
 #define TARN_LINK_MOTION 1
+#endif
+
+/* ---- memory ------------------------------------------------------------------ */
+
+/* Not a switch: how many vertices the walk keeps transformed, projected and lit
+ * while it draws one object into one tile or strip, a power of two from 4 to 256,
+ * 32 bytes of stack each. A vertex the cache has lost is found again. 16, the
+ * default, suits a board of 16 KB; a board with RAM drawing a scene that moves
+ * without the vertex pass keeps 64 (boards/qemu-m0-264k/board.mk: the moving pond
+ * about 4% faster for 1.5 KB more stack). Every value draws the same frames. */
+#ifndef TARN_VERTEX_CACHE_SLOTS
+#define TARN_VERTEX_CACHE_SLOTS 16u
 #endif
 
 #endif
