@@ -141,9 +141,10 @@ static uint32_t magnitude_u32(int32_t v)
 }
 
 /* c / area2 = c * recip / 2^(62 - shift) for each edge coefficient or value c
- * (below 2^23 in magnitude: the guard box's 2^15 subpixels times a pixel's): the
- * high words of c * 2^up (below 2^31) times the reciprocal (at most 2^31), on the
- * scale 2^(30 - shift + up). */
+ * (below 2^24 in magnitude: the guard box's 2^15 subpixels times a pixel's, or two
+ * such products at the anchor pixel, within a pixel of its vertex): the high words
+ * of c * 2^up (below 2^31) times the reciprocal (at most 2^31), on the scale
+ * 2^(30 - shift + up). */
 static plane_basis basis_of(const tarn_triangle_setup *t, const plane_anchor *anchor)
 {
     const tarn_edge *e1 = &t->edges[anchor->next], *e2 = &t->edges[anchor->after];
