@@ -13,6 +13,10 @@
 BOARD_DIR := boards/stm32f411-st7789
 BOARD_CPU := -mcpu=cortex-m4 -mthumb -mfloat-abi=soft
 BOARD_STACK_BYTES := 8192
+# the walk keeps 64 vertices transformed, projected and lit (tarn_config.h's
+# TARN_VERTEX_CACHE_SLOTS; 16 on the 16 KB boards): each tile of the moving pond
+# finds its vertices again, and 16 slots lost most of a grid row's; 1.5 KB more stack
+BOARD_VERTEX_CACHE_SLOTS := 64
 BOARD_SCENES := scenes/pond-orbit.json
 BOARD_BAKE_FLAGS :=
 include boards/common/real_board.mk
