@@ -11,7 +11,7 @@
 BOARD_DIR := boards/qemu-m0
 BOARD_CPU := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft
 BOARD_QEMU_MACHINE := microbit
-# the deepest bound of the qualities docs/firmware.md builds for this board, 4532
+# the deepest bound of the qualities docs/firmware.md builds for this board, 4556
 # bytes (--quality fast --bins off: the static-screen walk, core/tile/walk.c, and
 # firmware/main.c's three frames, down to a sliver's exact plane division in
 # core/raster/triangle_setup.c), within a reserve a few words over it

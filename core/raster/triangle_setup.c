@@ -182,9 +182,8 @@ static uint32_t weighted(int32_t d1, int32_t d2, const int32_t w[2], unsigned sh
 /* n / area2 rounded to nearest (halves away from 0), exactly (|n| < 2^61), modulo 2^32. */
 static uint32_t over_area(int64_t n, const tarn_divisor *area2)
 {
-    const uint64_t magnitude = (n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n) + area2->divisor / 2u;
-    const uint32_t q = (uint32_t)tarn_divide_u64(magnitude, area2, NULL);
-    return n < 0 ? 0u - q : q;
+    const int64_t half = area2->divisor / 2u;
+    return (uint32_t)tarn_divide_trunc_i64(n < 0 ? n - half : n + half, area2);
 }
 
 /* A sliver's plane: each of its three sums divided by area2 exactly. */
