@@ -134,8 +134,9 @@ if cmake_consumer host -DCMAKE_BUILD_TYPE=Release; then
     missing=$(for s in $switches; do printf '%s\n' "$cache" | grep -qx "$s:BOOL=ON" || printf '%s ' "$s"; done)
     printf '%s\n' "$cache" | grep -q '^TARN_LINK_WATER_FEATURES:STRING=' || missing="${missing}TARN_LINK_WATER_FEATURES "
     printf '%s\n' "$cache" | grep -q '^TARN_LINK_HEADER:FILEPATH=' || missing="${missing}TARN_LINK_HEADER "
+    printf '%s\n' "$cache" | grep -qx 'TARN_VERTEX_CACHE_SLOTS:STRING=16' || missing="${missing}TARN_VERTEX_CACHE_SLOTS=16 "
     if [ -z "$missing" ]; then
-        ok "CMake has the $(printf '%s\n' "$switches" | wc -l) TARN_LINK_* switches of tarn_config.h as options, ON, and TARN_LINK_WATER_FEATURES, TARN_LINK_HEADER"
+        ok "CMake has the $(printf '%s\n' "$switches" | wc -l) TARN_LINK_* switches of tarn_config.h as options, ON, and TARN_LINK_WATER_FEATURES, TARN_LINK_HEADER, TARN_VERTEX_CACHE_SLOTS (16)"
     else
         fail "CMake's cache lacks: $missing"
     fi
@@ -151,6 +152,15 @@ if cmake_consumer underwater-off -DCMAKE_BUILD_TYPE=Release -DTARN_LINK_UNDERWAT
         fail "-DTARN_LINK_UNDERWATER=OFF still links $(underwater_tile underwater-off)"; fi
 else
     fail "CMake could not build the consumer with -DTARN_LINK_UNDERWATER=OFF"
+fi
+
+# the walk's vertex cache at a board with RAM's size: the same frame
+if cmake_consumer cache-64 -DCMAKE_BUILD_TYPE=Release -DTARN_VERTEX_CACHE_SLOTS=64; then
+    run_same cache-64 "CMake with TARN_VERTEX_CACHE_SLOTS=64"
+    if grep -rqs 'TARN_VERTEX_CACHE_SLOTS=64u' "$tmp/cache-64/tarn"; then ok "-DTARN_VERTEX_CACHE_SLOTS=64 reaches the core's compile"; else
+        fail "-DTARN_VERTEX_CACHE_SLOTS=64 is not on the core's compile lines"; fi
+else
+    fail "CMake could not build the consumer with -DTARN_VERTEX_CACHE_SLOTS=64"
 fi
 
 # a header as tarn bake writes one (NAME_link.h), of the switches this scene needs

@@ -160,8 +160,8 @@
  * while it draws one object into one tile or strip, a power of two from 4 to 256,
  * 32 bytes of stack each. A vertex the cache has lost is found again. 16, the
  * default, suits a board of 16 KB; a board with RAM drawing a scene that moves
- * without the vertex pass keeps 64 (boards/qemu-m0-264k/board.mk: the moving pond
- * about 4% faster for 1.5 KB more stack). Every value draws the same frames. */
+ * without the vertex pass keeps 64 (boards/qemu-m0-264k/board.mk; docs/firmware.md
+ * measures it). Every value draws the same frames. */
 #ifndef TARN_VERTEX_CACHE_SLOTS
 #define TARN_VERTEX_CACHE_SLOTS 16u
 #endif
