@@ -5,6 +5,7 @@
  * Newton step y' = y + y (1 - m y) roughly doubles the number of correct bits. */
 #include "tarn/tarn_math.h"
 #include "math/math_tables_internal.h"
+#include "math/seed_product_internal.h"
 
 #define ONE_Q30 (1u << 30)
 #define TOP_BIT 0x80000000u
@@ -30,25 +31,11 @@ static uint32_t recip_newton_step(uint32_t m, uint32_t y)
     return newton_corrected(y, m_y, tarn_mul_hi_u32(y, newton_error(m_y)));
 }
 
-/* mul_hi(x, seed << 15) = floor(x * seed / 2^17), exactly. Without a native high
- * word, from x's halves times the 16-bit seed (each below 2^32) joined by nested
- * floors: two 16x16 products where the general high product takes four. For x = m
- * the sum stays near 2^31 (the seed is 1/m to 2^-8); for the step's error term it
- * is far smaller. */
-static uint32_t times_seed(uint32_t x, uint32_t seed)
-{
-#if TARN_NATIVE_MUL_HI
-    return tarn_mul_hi_u32(x, seed << 15);
-#else
-    return ((x >> 16) * seed + (((x & 0xFFFFu) * seed) >> 16)) >> 1;
-#endif
-}
-
-/* recip_newton_step(m, seed << 15), the same number, by times_seed. */
+/* recip_newton_step(m, seed << 15), the same number, by the seed's products. */
 static uint32_t recip_first_step(uint32_t m, uint32_t seed)
 {
-    const uint32_t m_y = times_seed(m, seed);
-    return newton_corrected(seed << 15, m_y, times_seed(newton_error(m_y), seed));
+    const uint32_t m_y = tarn__times_seed(m, seed);
+    return newton_corrected(seed << 15, m_y, tarn__times_seed(newton_error(m_y), seed));
 }
 
 /* 1/m in Q2.30 for m in Q0.32 with its top bit set. */

@@ -1,6 +1,7 @@
 /* sqrt.c: integer square root and reciprocal square root, without a divider. */
 #include "tarn/tarn_math.h"
 #include "math/math_tables_internal.h"
+#include "math/seed_product_internal.h"
 
 uint32_t tarn_isqrt_u32(uint32_t x)
 {
@@ -44,16 +45,34 @@ uint64_t tarn_isqrt_u64(uint64_t x)
 /* The seed's relative error of 2^-8 shrinks to 2^-15, then to the arithmetic's 2^-28. */
 #define RSQRT_NEWTON_STEPS 2
 
-/* One Newton step for 1/sqrt(m): y' = y + y (1 - m y^2) / 2. m in Q0.32, y in Q2.30
- * (1/sqrt(m) is in (1, 2]). */
+/* A Newton step for 1/sqrt(m) is y' = y + y (1 - m y^2) / 2, from m y^2 (Q4.28,
+ * close to 1). In Q2.30, y (1 - m y^2) / 2 is y * |1 - m y^2| / 2^29 =
+ * mul_hi(y, |1 - m y^2| << 3); from the seed on |1 - m y^2| < 2^-6, so the shift
+ * cannot overflow. */
+static uint32_t rsqrt_error(uint32_t m_y_y)
+{
+    return (m_y_y <= ONE_Q28 ? ONE_Q28 - m_y_y : m_y_y - ONE_Q28) << 3;
+}
+
+/* y', given m y^2 and the product y * rsqrt_error(m y^2) / 2^32. */
+static uint32_t rsqrt_corrected(uint32_t y, uint32_t m_y_y, uint32_t change)
+{
+    return m_y_y <= ONE_Q28 ? y + change : y - change;
+}
+
+/* One Newton step for 1/sqrt(m). m in Q0.32, y in Q2.30 (1/sqrt(m) is in (1, 2]). */
 static uint32_t rsqrt_newton_step(uint32_t m, uint32_t y)
 {
-    uint32_t m_y = tarn_mul_hi_u32(m, y);       /* Q2.30, about sqrt(m) */
-    uint32_t m_y_y = tarn_mul_hi_u32(m_y, y);   /* Q4.28, close to 1 */
-    /* y (1 - m y^2) / 2 in Q2.30 is y * |1 - m y^2| / 2^29 = mul_hi(y, |...| << 3);
-     * from the seed on |1 - m y^2| < 2^-6, so the shift cannot overflow. */
-    if (m_y_y <= ONE_Q28) return y + tarn_mul_hi_u32(y, (ONE_Q28 - m_y_y) << 3);
-    return y - tarn_mul_hi_u32(y, (m_y_y - ONE_Q28) << 3);
+    const uint32_t m_y_y = tarn_mul_hi_u32(tarn_mul_hi_u32(m, y), y); /* m y: Q2.30, about sqrt(m) */
+    return rsqrt_corrected(y, m_y_y, tarn_mul_hi_u32(y, rsqrt_error(m_y_y)));
+}
+
+/* rsqrt_newton_step(m, seed << 15), the same number, by the seed's products: the
+ * water normal takes one reciprocal square root a pixel. */
+static uint32_t rsqrt_first_step(uint32_t m, uint32_t seed)
+{
+    const uint32_t m_y_y = tarn__times_seed(tarn__times_seed(m, seed), seed);
+    return rsqrt_corrected(seed << 15, m_y_y, tarn__times_seed(rsqrt_error(m_y_y), seed));
 }
 
 uint32_t tarn_rsqrt_q16(uint32_t x_q16)
@@ -63,8 +82,9 @@ uint32_t tarn_rsqrt_q16(uint32_t x_q16)
      * 1/sqrt(x / 2^16) in Q16.16 is (1/sqrt(m)) * 2^(8 + lz/2). */
     unsigned even_lz = tarn_clz32(x_q16) & ~1u; /* 0..30 */
     uint32_t m = x_q16 << even_lz;              /* Q0.32 in [1/4, 1) */
-    uint32_t y = (uint32_t)tarn__rsqrt_seed_q15[(m >> 24) - TARN_RSQRT_SEED_FIRST] << 15;
-    for (int step = 0; step < RSQRT_NEWTON_STEPS; step++) y = rsqrt_newton_step(m, y);
+    const uint32_t seed = tarn__rsqrt_seed_q15[(m >> 24) - TARN_RSQRT_SEED_FIRST];
+    uint32_t y = rsqrt_first_step(m, seed);
+    for (int step = 1; step < RSQRT_NEWTON_STEPS; step++) y = rsqrt_newton_step(m, y);
 
     unsigned shift = 22u - (even_lz >> 1); /* 7..22: from Q2.30 to the result */
     return (y + (1u << (shift - 1u))) >> shift;
