@@ -12,9 +12,10 @@
 
 #define VALUES_PER_LINE 8u
 
-static double exp2_entry_q16(unsigned i)
+/* 2^-(i/256) in Q0.16 less one half, which every entry is at least. */
+static double exp2_entry_over_half_q16(unsigned i)
 {
-    return 65536.0 * exp2(-(double)i / TARN_EXP2_TABLE_STEPS);
+    return 65536.0 * exp2(-(double)i / TARN_EXP2_TABLE_STEPS) - TARN_EXP2_TABLE_HALF_Q16;
 }
 
 /* Midpoint of 1/m in the relative sense over [lo, hi): 2 / (lo + hi). */
@@ -64,8 +65,8 @@ int main(void)
            " *   ./gen_math_tables > core/math/math_tables.c\n"
            " * What each table holds is described in math_tables_internal.h. */\n"
            "#include \"math/math_tables_internal.h\"\n");
-    print_table("const uint32_t tarn__exp2_table_q16[TARN_EXP2_TABLE_STEPS + 1u]",
-                TARN_EXP2_TABLE_STEPS + 1u, exp2_entry_q16);
+    print_table("const uint16_t tarn__exp2_over_half_q16[TARN_EXP2_TABLE_STEPS + 1u]",
+                TARN_EXP2_TABLE_STEPS + 1u, exp2_entry_over_half_q16);
     print_table("const uint16_t tarn__recip_seed_q15[1u << TARN_RECIP_SEED_BITS]",
                 1u << TARN_RECIP_SEED_BITS, recip_seed_q15);
     print_table("const uint16_t tarn__rsqrt_seed_q15[TARN_RSQRT_SEED_COUNT]",

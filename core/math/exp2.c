@@ -30,8 +30,8 @@ uint32_t tarn_exp2_neg_q16(tarn_q16 x, tarn_exp2_config config)
     unsigned weight_bits = Q16_FRACTION_BITS - index_bits; /* fraction bits below the index */
     unsigned stride_bits = EXP2_TABLE_BITS - index_bits;   /* a smaller table skips entries */
     uint32_t i = (frac >> weight_bits) << stride_bits;
-    uint32_t upper = tarn__exp2_table_q16[i];                       /* 2^-(i/256) */
-    uint32_t lower = tarn__exp2_table_q16[i + (1u << stride_bits)]; /* the next entry */
+    uint32_t upper = TARN_EXP2_TABLE_HALF_Q16 + tarn__exp2_over_half_q16[i]; /* 2^-(i/256) */
+    uint32_t lower = TARN_EXP2_TABLE_HALF_Q16 + tarn__exp2_over_half_q16[i + (1u << stride_bits)]; /* the next */
     /* Nearest-below uses the entry as is: weight 0. */
     uint32_t weight = config.interpolate ? frac & ((1u << weight_bits) - 1u) : 0u;
 

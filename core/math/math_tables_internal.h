@@ -8,11 +8,14 @@
 #include <stdint.h>
 #include "tarn/tarn_fixed.h" /* tarn_clz8, generated with the others */
 
-/* 2^-(i/256) in Q0.16 for i = 0..256: 65536 down to 32768. The endpoint is stored so
- * that interpolating past the last step needs no special case. Held in 32 bits
- * because the first entry, 1.0, needs 17. */
+/* 2^-(i/256) in Q0.16 for i = 0..256, 65536 down to 32768, each less one half
+ * (TARN_EXP2_TABLE_HALF_Q16): 32768 down to 0, held in 16 bits where 1.0 itself
+ * needs 17 (half the flash, and half the SRAM of a board that copies its tables
+ * there, for one add a read). The endpoint is stored so that interpolating past
+ * the last step needs no special case. */
 #define TARN_EXP2_TABLE_STEPS 256u
-extern const uint32_t tarn__exp2_table_q16[TARN_EXP2_TABLE_STEPS + 1u];
+#define TARN_EXP2_TABLE_HALF_Q16 32768u
+extern const uint16_t tarn__exp2_over_half_q16[TARN_EXP2_TABLE_STEPS + 1u];
 
 /* Newton seeds for 1/m, m in [1/2, 1) split into 256 equal intervals; entry i is
  * 2 / (lo + hi) of interval i in Q1.15 (between 1 and 2), the value whose relative
