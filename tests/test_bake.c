@@ -367,7 +367,7 @@ static void test_backdrop_bakes_without_loss(void **state)
     assert_non_null(strstr(source, "static const tarn_object pond_backdrop_objects[1] = {"));
     assert_non_null(strstr(source, "static const uint32_t pond_backdrop_backdrop_palette[5719] = {"));
     assert_non_null(strstr(source, "the 5719 colours the opaque objects draw, ascending, each named by a 13-bit index"));
-    assert_non_null(strstr(source, "    .backdrop = &pond_backdrop_backdrop\n"));
+    assert_non_null(strstr(source, "    .backdrop = &pond_backdrop_backdrop,\n    .positions = pond_backdrop_static_positions\n"));
     assert_non_null(strstr(source, " *   backdrop "));
     free(source);
     snprintf(path, sizeof path, "%s/pond_backdrop_link.h", work_dir);

@@ -71,6 +71,8 @@ static void test_good_lines_parse(void **state)
     assert_int_equal(parse("render s.json -o x.png --frame strips --vertices frame", &o, &err), 0);
     assert_int_equal(o.quality.frame_shape, TARN_FRAME_STRIPS);
     assert_int_equal(o.quality.vertex_pass, TARN_VERTICES_PER_FRAME);
+    assert_int_equal(parse("render s.json -o x.png --vertices frame-view", &o, &err), 0);
+    assert_int_equal(o.quality.vertex_pass, TARN_VERTICES_PER_FRAME_VIEW);
     assert_int_equal(parse("render s.json -o x.png", &o, &err), 0);
     assert_int_equal(o.quality.frame_shape, TARN_FRAME_TILES);
     assert_int_equal(o.quality.vertex_pass, TARN_VERTICES_PER_TILE);

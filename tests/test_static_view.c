@@ -15,6 +15,10 @@
 #include "frame_render.h"
 #include "scene_load.h"
 #include "static_view.h"
+#include "tarn_internal.h"
+
+/* a scene whose floor crosses the near plane: its triangles are clipped */
+#define CLIPPED_SCENE "scenes/extremes/huge-near.json"
 
 /* The loaded scene with its static view made for `made_for`. */
 typedef struct {
@@ -156,6 +160,37 @@ static void test_moved_camera_drops_static_vertices(void **state)
     static_scene_free(&bare);
 }
 
+/* A triangle the frame clips reads its vertices' view positions from the static
+ * view: moved, they move what it draws. Without them it finds them from the meshes
+ * (the same frame), and a scene whose meshes have no positions either is refused. */
+static void test_clipped_triangles_read_view_positions(void **state)
+{
+    (void)state;
+    const char *path = CLIPPED_SCENE;
+    const tarn_frame_config config = scene_config(path, TARN_PRESET_BALANCED, 0);
+    static_scene kept, bare;
+    static_scene_make(&kept, path, &config, 0);
+    static_scene_make(&bare, path, &config, 1);
+    uint8_t *plain = test_render_rgb(&kept.loaded.scene, &config, path);
+    tarn_static_view unplaced = kept.vertices->view;
+    unplaced.positions = NULL;
+    kept.scene.static_view = &unplaced;
+    uint8_t *from_meshes = test_render_rgb(&kept.scene, &config, "positions from the meshes");
+    assert_memory_equal(plain, from_meshes, 3u * config.width * config.height);
+    kept.scene.static_view = &kept.vertices->view;
+    const size_t vertices = tarn__scene_vertex_count(&kept.scene);
+    for (size_t i = 0; i < vertices; i++) kept.vertices->positions[i].z += 65536; /* a unit farther */
+    uint8_t *moved = test_render_rgb(&kept.scene, &config, "moved positions");
+    assert_memory_not_equal(plain, moved, 3u * config.width * config.height);
+    bare.vertices->view.positions = NULL;
+    assert_int_equal(test_render_status(&bare.scene, &config), TARN_ERR_SCENE);
+    free(plain);
+    free(from_meshes);
+    free(moved);
+    static_scene_free(&kept);
+    static_scene_free(&bare);
+}
+
 /* Each out-of-range field of a static vertex, or of the static view, is refused. */
 static void test_out_of_range_static_vertices_are_refused(void **state)
 {
@@ -198,6 +233,7 @@ int main(void)
         cmocka_unit_test(test_another_frame_projects_again),
         cmocka_unit_test(test_static_bins_stand_in_for_found_ones),
         cmocka_unit_test(test_moved_camera_drops_static_vertices),
+        cmocka_unit_test(test_clipped_triangles_read_view_positions),
         cmocka_unit_test(test_out_of_range_static_vertices_are_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,8 +1,9 @@
 /* test_vertex_pass.c: a frame that finds its vertices once, into its memory (the
- * quality's vertex_pass TARN_VERTICES_PER_FRAME), is the frame whose walks find
- * them, byte for byte: on every scene two ways of drawing are tested on and the
- * moving ones, at each preset and two times, in tiles and in strips. It takes the
- * bytes tarn_render.h states (28 a vertex, with the scene, its objects and the view
+ * quality's vertex_pass TARN_VERTICES_PER_FRAME, or TARN_VERTICES_PER_FRAME_VIEW
+ * with their view positions), is the frame whose walks find them, byte for byte: on
+ * every scene two ways of drawing are tested on and the moving ones, at each preset
+ * and two times, in tiles and in strips. It takes the bytes tarn_render.h states
+ * (16 a vertex, 28 with the view position, and the scene, its objects and the view
  * that names them), and none where a baked static view holds the vertices already. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -46,16 +47,18 @@ static void assert_pass_draws_the_same_frame(const char *path)
         for (size_t t = 0; t < sizeof times / sizeof times[0]; t++) {
             tarn_frame_config config = config_of(p, times[t]);
             uint8_t *walked = test_render_rgb(&loaded.scene, &config, path);
-            config.quality.vertex_pass = TARN_VERTICES_PER_FRAME;
-            for (int strips = 0; strips <= 1; strips++) {
-                config.quality.frame_shape = strips ? TARN_FRAME_STRIPS : TARN_FRAME_TILES;
-                config.quality.tile_size = strips ? 16 : config.quality.tile_size;
-                uint8_t *passed = test_render_rgb(&loaded.scene, &config, path);
-                if (memcmp(walked, passed, 3u * WIDTH * HEIGHT) != 0)
-                    fail_msg("%s (%s, %u ms, %s): the vertex pass changes the frame", path, preset_names[p],
-                             (unsigned)times[t], strips ? "strips" : "tiles");
-                free(passed);
-            }
+            for (int strips = 0; strips <= 1; strips++)
+                for (int view = 0; view <= 1; view++) {
+                    config.quality.vertex_pass = view ? TARN_VERTICES_PER_FRAME_VIEW : TARN_VERTICES_PER_FRAME;
+                    config.quality.frame_shape = strips ? TARN_FRAME_STRIPS : TARN_FRAME_TILES;
+                    config.quality.tile_size = strips ? 16 : config.quality.tile_size;
+                    uint8_t *passed = test_render_rgb(&loaded.scene, &config, path);
+                    if (memcmp(walked, passed, 3u * WIDTH * HEIGHT) != 0)
+                        fail_msg("%s (%s, %u ms, %s, %s): the vertex pass changes the frame", path, preset_names[p],
+                                 (unsigned)times[t], strips ? "strips" : "tiles",
+                                 view ? "view positions kept" : "clipped triangles transform again");
+                    free(passed);
+                }
             free(walked);
         }
     tarn_scene_free(&loaded);
@@ -70,13 +73,15 @@ static void test_vertex_pass_draws_the_same_frame(void **state)
 }
 
 /* The bytes the pass adds to a still scene: its copy, its objects', the view it
- * makes and every vertex, rounded to 4 bytes with room to align the copy. */
-static size_t pass_bytes(const tarn_scene *scene)
+ * makes and every vertex (with its view position, if kept), rounded to 4 bytes
+ * with room to align the copy. */
+static size_t pass_bytes(const tarn_scene *scene, int view_positions)
 {
     size_t vertices = 0;
     for (uint32_t i = 0; i < scene->object_count; i++) vertices += scene->objects[i].mesh->vertex_count;
+    const size_t vertex = sizeof(tarn_static_vertex) + (view_positions ? sizeof(tarn_vec3) : 0u);
     const size_t bytes = sizeof(void *) - 4u + sizeof(tarn_scene) + scene->object_count * sizeof(tarn_object) +
-                         sizeof(tarn_static_view) + vertices * sizeof(tarn_static_vertex);
+                         sizeof(tarn_static_view) + vertices * vertex;
     return (bytes + 3u) & ~(size_t)3u;
 }
 
@@ -87,11 +92,14 @@ static void test_vertex_pass_takes_its_vertices_bytes(void **state)
     load("scenes/pond.json", &loaded);
     tarn_frame_config config = config_of(TARN_PRESET_BALANCED, 0);
     const size_t walked = tarn_frame_memory_bytes(&config, &loaded.scene);
-    config.quality.vertex_pass = TARN_VERTICES_PER_FRAME;
-    const size_t passed = tarn_frame_memory_bytes(&config, &loaded.scene);
-    if (passed - walked != pass_bytes(&loaded.scene))
-        fail_msg("the vertex pass adds %zu bytes, expected %zu", passed - walked, pass_bytes(&loaded.scene));
-    assert_int_equal(test_render_status(&loaded.scene, &config), TARN_OK);
+    for (int view = 1; view >= 0; view--) {
+        config.quality.vertex_pass = view ? TARN_VERTICES_PER_FRAME_VIEW : TARN_VERTICES_PER_FRAME;
+        const size_t passed = tarn_frame_memory_bytes(&config, &loaded.scene);
+        if (passed - walked != pass_bytes(&loaded.scene, view))
+            fail_msg("the vertex pass%s adds %zu bytes, not %zu", view ? " with view positions" : "",
+                     passed - walked, pass_bytes(&loaded.scene, view));
+        assert_int_equal(test_render_status(&loaded.scene, &config), TARN_OK);
+    }
 
     /* baked for this frame, the scene's own static view holds the vertices */
     tarn_static_scene baked;
@@ -106,14 +114,13 @@ static void test_vertex_pass_takes_its_vertices_bytes(void **state)
 
 /* The scene a frame with the pass draws: a copy in the frame's memory whose static
  * view is made for this frame, every object's vertices in that memory as the
- * frame's camera sees them. */
-static void test_vertex_pass_scene_holds_every_vertex(void **state)
+ * frame's camera sees them, and their view positions where the quality keeps them. */
+static void assert_pass_holds_every_vertex(tarn_vertex_pass mode)
 {
-    (void)state;
     tarn_loaded_scene loaded;
     load("scenes/pond-orbit.json", &loaded);
     tarn_frame_config config = config_of(TARN_PRESET_EXACT, 1234);
-    config.quality.vertex_pass = TARN_VERTICES_PER_FRAME;
+    config.quality.vertex_pass = (uint8_t)mode;
     const size_t bytes = tarn_frame_memory_bytes(&config, &loaded.scene);
     uint8_t *memory = malloc(bytes);
     assert_non_null(memory);
@@ -125,6 +132,9 @@ static void test_vertex_pass_scene_holds_every_vertex(void **state)
     tarn_scene plain = *own;
     plain.static_view = NULL;
     tarn__view_setup(&plain, &config, &view);
+    const tarn_vec3 *positions = own->static_view->positions;
+    if ((positions != NULL) != (mode == TARN_VERTICES_PER_FRAME_VIEW))
+        fail_msg("the pass %s view positions", positions != NULL ? "kept" : "did not keep");
     for (uint32_t i = 0; i < own->object_count; i++) {
         const tarn_object *object = &own->objects[i];
         assert_true((const uint8_t *)object->static_vertices >= memory &&
@@ -132,14 +142,26 @@ static void test_vertex_pass_scene_holds_every_vertex(void **state)
         tarn_object_xform xform;
         tarn__object_xform_setup(&view, object, &xform);
         for (uint32_t k = 0; k < object->mesh->vertex_count; k += 97u) {
-            const tarn_static_vertex expected = tarn__static_vertex_of(&view, &xform, object->mesh, (uint16_t)k);
+            tarn_vec3 position;
+            const tarn_static_vertex expected =
+                tarn__static_vertex_of(&view, &xform, object->mesh, (uint16_t)k, &position);
             if (memcmp(&expected, &object->static_vertices[k], sizeof expected) != 0)
                 fail_msg("object %u, vertex %u: the pass kept another vertex than the frame's camera sees",
                          (unsigned)i, (unsigned)k);
+            if (positions != NULL && memcmp(&position, &positions[k], sizeof position) != 0)
+                fail_msg("object %u, vertex %u: the pass kept another view position", (unsigned)i, (unsigned)k);
         }
+        if (positions != NULL) positions += object->mesh->vertex_count;
     }
     free(memory);
     tarn_scene_free(&loaded);
+}
+
+static void test_vertex_pass_scene_holds_every_vertex(void **state)
+{
+    (void)state;
+    assert_pass_holds_every_vertex(TARN_VERTICES_PER_FRAME);
+    assert_pass_holds_every_vertex(TARN_VERTICES_PER_FRAME_VIEW);
 }
 
 int main(void)

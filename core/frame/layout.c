@@ -93,7 +93,15 @@ static size_t layout_bytes(const tarn_frame_layout *l)
 static int vertex_pass_applies(const tarn_frame_config *config, const tarn_scene *scene)
 {
     return TARN_LINK_VERTEX_PASS && TARN_LINK_STATIC_VERTICES && scene != NULL &&
-           config->quality.vertex_pass == TARN_VERTICES_PER_FRAME && !tarn__static_view_applies(scene);
+           config->quality.vertex_pass != TARN_VERTICES_PER_TILE && !tarn__static_view_applies(scene);
+}
+
+/* The bytes of every vertex the pass finds: its record and, where the quality
+ * keeps them, its view position. */
+static size_t vertex_bytes(const tarn_frame_config *config)
+{
+    const int view = config->quality.vertex_pass == TARN_VERTICES_PER_FRAME_VIEW;
+    return sizeof(tarn_static_vertex) + (view ? sizeof(tarn_vec3) : 0u);
 }
 
 static size_t scene_bytes(const tarn_frame_config *config, const tarn_scene *scene)
@@ -103,7 +111,7 @@ static size_t scene_bytes(const tarn_frame_config *config, const tarn_scene *sce
     if (!moves && !pass) return 0u;
     const int objects = pass || tarn__objects_move(scene);
     size_t bytes = SCENE_ALIGN - 4u + sizeof(tarn_scene) + (objects ? scene->object_count * sizeof(tarn_object) : 0u);
-    if (pass) bytes += sizeof(tarn_static_view) + tarn__scene_vertex_count(scene) * sizeof(tarn_static_vertex);
+    if (pass) bytes += sizeof(tarn_static_view) + tarn__scene_vertex_count(scene) * vertex_bytes(config);
     return (bytes + 3u) & ~(size_t)3u;
 }
 
@@ -137,7 +145,11 @@ const tarn_scene *tarn__frame_scene(const tarn_scene *scene, const tarn_frame_co
     if (pass) {
         own->objects = objects;
         tarn_static_view *made = (tarn_static_view *)(void *)(objects + scene->object_count);
-        tarn__vertex_pass(own, objects, config, made, (tarn_static_vertex *)(void *)(made + 1));
+        tarn_static_vertex *vertices = (tarn_static_vertex *)(void *)(made + 1);
+        tarn_vec3 *positions = config->quality.vertex_pass == TARN_VERTICES_PER_FRAME_VIEW
+                                   ? (tarn_vec3 *)(void *)(vertices + tarn__scene_vertex_count(scene))
+                                   : NULL;
+        tarn__vertex_pass(own, objects, config, made, vertices, positions);
     }
     *memory = start + bytes;
     return own;

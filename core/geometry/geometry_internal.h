@@ -173,18 +173,20 @@ tarn_pixel_box tarn__bounds_pixels(const tarn_subpixel_bounds *b, unsigned subpi
 
 /* ---- the vertex pass (vertex_pass.c) ------------------------------------------ */
 
-/* Vertex `index` of the mesh as a frame computes it: its view position and outcode,
- * its projection (inside every clip plane only) and its shading. */
+/* Vertex `index` of the mesh as a frame computes it: its projection (inside every
+ * clip plane only) and its shading, and its view position into *position (x, y
+ * and depth in z) unless that is NULL. */
 tarn_static_vertex tarn__static_vertex_of(const tarn_view *view, const tarn_object_xform *xform,
-                                          const tarn_mesh *mesh, uint16_t index);
+                                          const tarn_mesh *mesh, uint16_t index, tarn_vec3 *position);
 /* The vertices of every object's mesh, summed. */
 uint32_t tarn__scene_vertex_count(const tarn_scene *scene);
 /* Every vertex of the scene, whose objects are `objects` (its own, writable), as
- * the frame's camera sees it, into `vertices` (tarn__scene_vertex_count of them);
- * each object's static_vertices then name its own, and the scene's static view is
- * `made`, for this frame's size and precision, with no bins. Every mesh must have
- * its positions. */
+ * the frame's camera sees it, into `vertices` (tarn__scene_vertex_count of them),
+ * and their view positions into `positions` unless that is NULL; each object's
+ * static_vertices then name its own, and the scene's static view is `made`, for
+ * this frame's size and precision, with no bins and those positions. Every mesh
+ * must have its positions. */
 void tarn__vertex_pass(tarn_scene *scene, tarn_object *objects, const tarn_frame_config *config,
-                       tarn_static_view *made, tarn_static_vertex *vertices);
+                       tarn_static_view *made, tarn_static_vertex *vertices, tarn_vec3 *positions);
 
 #endif

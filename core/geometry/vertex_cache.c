@@ -43,12 +43,13 @@ static unsigned beyond_tile_edges(const tarn_tile_edges *tile, const tarn_view *
 
 void tarn__vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
                             const tarn_object_xform *xform, const tarn_object *object,
-                            const tarn_tile_edges *tile)
+                            const tarn_vec3 *static_positions, const tarn_tile_edges *tile)
 {
     cache->view = view;
     cache->xform = xform;
     cache->mesh = object->mesh;
     cache->static_vertices = TARN_LINK_STATIC_VERTICES && view->static_vertices ? object->static_vertices : NULL;
+    cache->static_positions = cache->static_vertices != NULL ? static_positions : NULL;
     cache->tile = tile;
     for (uint32_t i = 0; i < TARN_VERTEX_CACHE_SLOTS; i++) cache->slot[i].state = 0;
 }
@@ -97,12 +98,13 @@ static void cached_position(tarn_vertex_cache *cache, uint16_t index, tarn_cache
     const tarn_static_vertex *baked =
         TARN_LINK_STATIC_VERTICES && cache->static_vertices != NULL ? &cache->static_vertices[index] : NULL;
     tarn_view_vertex v;
-    if (TARN_LINK_COMPUTED_VERTICES && baked == NULL) {
+    if (TARN_LINK_COMPUTED_VERTICES && (baked == NULL || cache->static_positions == NULL)) {
         tarn__vertex_position(cache->xform, &cache->mesh->positions[index], &v);
     } else { /* the scene check saw to it that every object has them */
-        v.x = baked->x;
-        v.y = baked->y;
-        v.d = baked->d;
+        const tarn_vec3 *p = &cache->static_positions[index];
+        v.x = p->x;
+        v.y = p->y;
+        v.d = p->z;
     }
     slot->index = index;
     slot->state = (uint8_t)(TARN_CACHED_FILLED | beyond_tile_edges(cache->tile, cache->view, &v)

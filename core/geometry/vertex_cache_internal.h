@@ -54,6 +54,7 @@ typedef struct {
     const tarn_object_xform *xform;
     const tarn_mesh *mesh;
     const tarn_static_vertex *static_vertices; /* the object's, when they apply; else NULL */
+    const tarn_vec3 *static_positions;         /* with them, their view positions, or NULL */
     const tarn_tile_edges *tile; /* NULL: no tile edges in the outcodes */
     tarn_cached_vertex slot[TARN_VERTEX_CACHE_SLOTS];
 } tarn_vertex_cache;
@@ -71,7 +72,18 @@ int32_t tarn__tile_edge_slope(const tarn_view *view, int32_t offset_half);
  * in their own frame, projected. */
 void tarn__vertex_cache_init(tarn_vertex_cache *cache, const tarn_view *view,
                             const tarn_object_xform *xform, const tarn_object *object,
-                            const tarn_tile_edges *tile);
+                            const tarn_vec3 *static_positions, const tarn_tile_edges *tile);
+
+/* The static view's view positions of the scene's first object, where its static
+ * vertices apply and it has them (tarn_static_view's positions); else NULL. A walk
+ * over the objects passes each its own (tarn__vertex_cache_init) and steps on past
+ * its mesh's vertices. */
+static inline const tarn_vec3 *tarn__static_positions(const tarn_scene *scene, const tarn_view *view)
+{
+    return TARN_LINK_STATIC_VERTICES && view->static_vertices && scene->static_view != NULL
+               ? scene->static_view->positions
+               : NULL;
+}
 
 /* The three vertices of a triangle (`index` its three indices) into c[]; returns the
  * outcode bits all three have, and in *outside_any those any of them has. */

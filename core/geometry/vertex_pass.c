@@ -5,15 +5,20 @@
  * projecting and lighting each vertex again. */
 #include "geometry/geometry_internal.h"
 
+/* docs/ and tarn_render.h say 16 bytes a vertex: the build holds them to it */
+typedef char tarn_static_vertex_is_16_bytes[sizeof(tarn_static_vertex) == 16u ? 1 : -1];
+
 tarn_static_vertex tarn__static_vertex_of(const tarn_view *view, const tarn_object_xform *xform,
-                                          const tarn_mesh *mesh, uint16_t index)
+                                          const tarn_mesh *mesh, uint16_t index, tarn_vec3 *position)
 {
-    tarn_static_vertex out = {0, 0, 0, 0, 0, 0, {0, 0, 0}, 0};
+    tarn_static_vertex out = {0, 0, 0, {0, 0, 0}, 0};
     tarn_view_vertex v;
     tarn__vertex_position(xform, &mesh->positions[index], &v);
-    out.x = v.x;
-    out.y = v.y;
-    out.d = v.d;
+    if (position != NULL) {
+        position->x = v.x;
+        position->y = v.y;
+        position->z = v.d;
+    }
     if (tarn__clip_outcode(view, &v) == 0u) {
         tarn_screen_vertex screen;
         tarn__project_position(view, &v, &screen);
@@ -35,18 +40,22 @@ uint32_t tarn__scene_vertex_count(const tarn_scene *scene)
 }
 
 void tarn__vertex_pass(tarn_scene *scene, tarn_object *objects, const tarn_frame_config *config,
-                       tarn_static_view *made, tarn_static_vertex *vertices)
+                       tarn_static_view *made, tarn_static_vertex *vertices, tarn_vec3 *positions)
 {
     scene->static_view = NULL; /* the view of the camera itself */
     tarn_view view;
     tarn__view_setup(scene, config, &view);
+    made->positions = positions;
     for (uint32_t i = 0; i < scene->object_count; i++) {
         const tarn_mesh *mesh = objects[i].mesh;
+        /* every object's positions in scene order, as the walk steps through them */
+        tarn_vec3 *position = positions;
+        if (positions != NULL) positions += mesh->vertex_count;
         if (mesh->positions == NULL) continue; /* no triangles (tarn__scene_check): nothing read */
         tarn_object_xform xform;
         tarn__object_xform_setup(&view, &objects[i], &xform);
         for (uint32_t k = 0; k < mesh->vertex_count; k++)
-            vertices[k] = tarn__static_vertex_of(&view, &xform, mesh, (uint16_t)k);
+            vertices[k] = tarn__static_vertex_of(&view, &xform, mesh, (uint16_t)k, position ? &position[k] : NULL);
         objects[i].static_vertices = vertices;
         vertices += mesh->vertex_count;
     }

@@ -34,7 +34,7 @@ static int quality_in_range(const tarn_quality *q)
             (TARN_LINK_REFRACTION_EXACT && q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT)) &&
            (q->frame_shape == TARN_FRAME_TILES || (TARN_LINK_STRIPS && q->frame_shape == TARN_FRAME_STRIPS)) &&
            (q->vertex_pass == TARN_VERTICES_PER_TILE ||
-            (TARN_LINK_VERTEX_PASS && TARN_LINK_STATIC_VERTICES && q->vertex_pass == TARN_VERTICES_PER_FRAME));
+            (TARN_LINK_VERTEX_PASS && TARN_LINK_STATIC_VERTICES && q->vertex_pass <= TARN_VERTICES_PER_FRAME_VIEW));
 }
 
 tarn_status tarn__config_check(const tarn_frame_config *config)

@@ -108,13 +108,17 @@ static int static_vertices_valid(const tarn_static_view *view, const tarn_static
 }
 
 /* An object's static vertices, where they apply, must be valid; where they do not,
- * its mesh must have the positions and normals a frame computes them from. */
+ * its mesh must have the positions and normals a frame computes them from, and
+ * where they have no view positions beside them, the positions a clipped triangle
+ * finds them from. */
 static int object_vertices_valid(const tarn_scene *scene, const tarn_object *o, int static_view_applies)
 {
     const int uses_static = TARN_LINK_STATIC_VERTICES && o->static_vertices != NULL && static_view_applies;
     if (!uses_static && !TARN_LINK_COMPUTED_VERTICES) return 0;
     if (uses_static && !static_vertices_valid(scene->static_view, o->static_vertices, o->mesh->vertex_count))
         return 0;
+    const int clips_from_mesh = uses_static && scene->static_view->positions == NULL && o->mesh->triangle_count > 0;
+    if (clips_from_mesh && (!TARN_LINK_COMPUTED_VERTICES || o->mesh->positions == NULL)) return 0;
     return mesh_valid(o->mesh, !uses_static);
 }
 

@@ -77,23 +77,33 @@ static tarn_cluster_bin bin_run(tarn_vertex_cache *cache, const tarn_object *obj
     return to_cells(&bounds, margin, cache->view);
 }
 
+/* One object's bins into `bins`, from its vertices (`static_positions` those of its
+ * static vertices, or NULL); returns the bins after them. */
+static tarn_cluster_bin *bin_object(const tarn_view *view, const tarn_object *object,
+                                    const tarn_vec3 *static_positions, tarn_cluster_bin *bins)
+{
+    const tarn_mesh *mesh = object->mesh;
+    tarn_object_xform xform;
+    tarn__object_xform_setup(view, object, &xform);
+    tarn_vertex_cache cache;
+    tarn__vertex_cache_init(&cache, view, &xform, object, static_positions, NULL);
+    if (mesh->clusters == NULL) {
+        *bins++ = bin_run(&cache, object, 0, mesh->triangle_count);
+        return bins;
+    }
+    for (uint32_t c = 0; c < mesh->cluster_count; c++) {
+        const tarn_cluster *cluster = &mesh->clusters[c];
+        *bins++ = bin_run(&cache, object, cluster->first_triangle,
+                          (uint32_t)cluster->first_triangle + cluster->triangle_count);
+    }
+    return bins;
+}
+
 void tarn__bin_clusters(const tarn_scene *scene, const tarn_view *view, tarn_cluster_bin *bins)
 {
+    const tarn_vec3 *positions = tarn__static_positions(scene, view);
     for (uint32_t i = 0; i < scene->object_count; i++) {
-        const tarn_object *object = &scene->objects[i];
-        const tarn_mesh *mesh = object->mesh;
-        tarn_object_xform xform;
-        tarn__object_xform_setup(view, object, &xform);
-        tarn_vertex_cache cache;
-        tarn__vertex_cache_init(&cache, view, &xform, object, NULL);
-        if (mesh->clusters == NULL) {
-            *bins++ = bin_run(&cache, object, 0, mesh->triangle_count);
-            continue;
-        }
-        for (uint32_t c = 0; c < mesh->cluster_count; c++) {
-            const tarn_cluster *cluster = &mesh->clusters[c];
-            *bins++ = bin_run(&cache, object, cluster->first_triangle,
-                              (uint32_t)cluster->first_triangle + cluster->triangle_count);
-        }
+        bins = bin_object(view, &scene->objects[i], positions, bins);
+        if (positions != NULL) positions += scene->objects[i].mesh->vertex_count;
     }
 }

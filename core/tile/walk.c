@@ -184,9 +184,9 @@ static int any_bin_touches(const tarn_cluster_bin *bins, uint32_t count, const t
     return 0;
 }
 
-static void walk_object(const tarn_view *view, const tarn_object *object, const tile_frustum *frustum,
-                        const tarn_cluster_bin *bins, const tarn_pixel_rect *only_rect,
-                        tarn_triangle_sink sink, void *ctx)
+static void walk_object(const tarn_view *view, const tarn_object *object, const tarn_vec3 *static_positions,
+                        const tile_frustum *frustum, const tarn_cluster_bin *bins,
+                        const tarn_pixel_rect *only_rect, tarn_triangle_sink sink, void *ctx)
 {
     const tarn_mesh *mesh = object->mesh;
     if (bins != NULL && only_rect != NULL && !any_bin_touches(bins, tarn__cluster_bins_of(mesh), only_rect))
@@ -194,7 +194,7 @@ static void walk_object(const tarn_view *view, const tarn_object *object, const 
     tarn_object_xform xform;
     tarn__object_xform_setup(view, object, &xform);
     tarn_vertex_cache cache;
-    tarn__vertex_cache_init(&cache, view, &xform, object, frustum->active ? &frustum->edges : NULL);
+    tarn__vertex_cache_init(&cache, view, &xform, object, static_positions, frustum->active ? &frustum->edges : NULL);
     if (mesh->clusters == NULL) { /* its one bin, if any, was tested above */
         walk_run(object, 0, mesh->triangle_count, only_rect, &cache, sink, ctx);
         return;
@@ -213,10 +213,12 @@ void tarn__walk_triangles(const tarn_scene *scene, const tarn_view *view, tarn_w
                          tarn_triangle_sink sink, void *ctx)
 {
     const tile_frustum frustum = make_tile_frustum(view, only_rect);
+    const tarn_vec3 *positions = tarn__static_positions(scene, view);
     for (uint32_t i = 0; i < scene->object_count; i++) {
         const tarn_object *object = &scene->objects[i];
         if ((object->material->water != NULL) == (pass == TARN_WALK_WATER))
-            walk_object(view, object, &frustum, bins, only_rect, sink, ctx);
+            walk_object(view, object, positions, &frustum, bins, only_rect, sink, ctx);
         if (bins != NULL) bins += tarn__cluster_bins_of(object->mesh);
+        if (positions != NULL) positions += object->mesh->vertex_count;
     }
 }

@@ -133,8 +133,7 @@ STRUCT_TYPE(T_MATERIAL, tarn_material, BLOCK,
             FIELD(tarn_material, cull, T_U8),        FIELD(tarn_material, unlit, T_U8),
             FIELD(tarn_material, water, T_REF));
 STRUCT_TYPE(T_STATIC_VERTEX, tarn_static_vertex, ONE_LINE,
-            FIELD(tarn_static_vertex, x, T_Q16),        FIELD(tarn_static_vertex, y, T_Q16),
-            FIELD(tarn_static_vertex, d, T_Q16),        FIELD(tarn_static_vertex, inv_depth, T_U32),
+            FIELD(tarn_static_vertex, inv_depth, T_U32),
             FIELD(tarn_static_vertex, screen_x, T_I16), FIELD(tarn_static_vertex, screen_y, T_I16),
             FIELD(tarn_static_vertex, lit, T_U16_TRIPLE), FIELD(tarn_static_vertex, fresnel, T_U16));
 STRUCT_TYPE(T_KEY_CURVE, tarn_key_curve, BLOCK,
@@ -192,7 +191,7 @@ STRUCT_TYPE(T_STATIC_VIEW, tarn_static_view, BLOCK,
             FIELD(tarn_static_view, camera, T_CAMERA), FIELD(tarn_static_view, light, T_LIGHT),
             FIELD(tarn_static_view, width, T_U16),     FIELD(tarn_static_view, height, T_U16),
             FIELD(tarn_static_view, subpixel_bits, T_U8), FIELD(tarn_static_view, bins, T_REF),
-            FIELD(tarn_static_view, backdrop, T_REF));
+            FIELD(tarn_static_view, backdrop, T_REF),  FIELD(tarn_static_view, positions, T_REF));
 STRUCT_TYPE(T_SCENE, tarn_scene, BLOCK,
             FIELD(tarn_scene, objects, T_REF),        FIELD(tarn_scene, object_count, T_U16),
             FIELD(tarn_scene, camera, T_CAMERA),      FIELD(tarn_scene, light, T_LIGHT),
@@ -622,9 +621,18 @@ static void plan_static_vertices(bake_plan *p)
         }
         note(add_item(p, BYTES_STATIC, &T_STATIC_VERTEX, object->static_vertices, object->mesh->vertex_count,
                       "%s_object_%zu_static_vertices", p->name, i),
-             "objects[%zu] from the scene's camera: view position, near/d and screen position (subpixels), lit "
-             "colour (Q8.8), fresnel (Q1.15)", i);
+             "objects[%zu] from the scene's camera: near/d and screen position (subpixels), lit colour (Q8.8), "
+             "fresnel (Q1.15)", i);
     }
+    size_t vertex_count = 0;
+    for (size_t i = 0; i < scene->object_count; i++) vertex_count += scene->objects[i].mesh->vertex_count;
+    if (vertex_count == 0)
+        add_alias(p, scene->static_view->positions, NO_ITEM); /* C has no empty arrays */
+    else
+        note(add_item(p, BYTES_STATIC, &T_VEC3, scene->static_view->positions, vertex_count, "%s_static_positions",
+                      p->name),
+             "each vertex's view position from the scene's camera (Q16.16 right, up, depth), every object's in "
+             "scene order: read only for a triangle the frame clips");
     note(add_item(p, BYTES_STATIC, &T_BIN, scene->static_view->bins, p->static_bin_count, "%s_static_bins", p->name),
          "each cluster's screen box in 4-pixel cells, every object's in scene order");
     plan_backdrop(p, scene->static_view);
@@ -1131,7 +1139,7 @@ static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
            (finds_bins ? USES_FOUND_BINS : 0u) |
            (q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT ? USES_REFRACTION_EXACT : 0u) |
            (q->frame_shape == TARN_FRAME_STRIPS ? USES_STRIPS : 0u) |
-           (q->vertex_pass == TARN_VERTICES_PER_FRAME ? USES_VERTEX_PASS : 0u);
+           (q->vertex_pass != TARN_VERTICES_PER_TILE ? USES_VERTEX_PASS : 0u);
 }
 
 static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,

@@ -6,14 +6,17 @@
 
 #include "tarn_internal.h"
 
-static tarn_static_vertex *object_vertices(const tarn_view *view, const tarn_object *object)
+/* An object's static vertices, and their view positions into `positions`; NULL out
+ * of memory. */
+static tarn_static_vertex *object_vertices(const tarn_view *view, const tarn_object *object, tarn_vec3 *positions)
 {
     const tarn_mesh *mesh = object->mesh;
     tarn_static_vertex *vertices = malloc((mesh->vertex_count > 0 ? mesh->vertex_count : 1u) * sizeof *vertices);
     if (vertices == NULL) return NULL;
     tarn_object_xform xform;
     tarn__object_xform_setup(view, object, &xform);
-    for (uint32_t i = 0; i < mesh->vertex_count; i++) vertices[i] = tarn__static_vertex_of(view, &xform, mesh, (uint16_t)i);
+    for (uint32_t i = 0; i < mesh->vertex_count; i++)
+        vertices[i] = tarn__static_vertex_of(view, &xform, mesh, (uint16_t)i, &positions[i]);
     return vertices;
 }
 
@@ -21,6 +24,7 @@ static void static_vertices_free(tarn_static_vertices *s)
 {
     for (uint32_t i = 0; s->vertices != NULL && i < s->object_count; i++) free(s->vertices[i]);
     free(s->vertices);
+    free(s->positions);
     free(s->bins);
 }
 
@@ -40,10 +44,16 @@ static int static_vertices_build(const tarn_scene *scene, const tarn_frame_confi
     out->view.subpixel_bits = config->quality.subpixel_bits;
     out->view.bins = NULL;
     out->object_count = scene->object_count;
+    const uint32_t vertex_count = tarn__scene_vertex_count(scene);
     out->vertices = calloc(scene->object_count > 0 ? scene->object_count : 1u, sizeof *out->vertices);
-    if (out->vertices == NULL) return -1;
-    for (uint32_t i = 0; i < scene->object_count; i++)
-        if ((out->vertices[i] = object_vertices(&view, &scene->objects[i])) == NULL) return -1;
+    out->positions = malloc((vertex_count > 0 ? vertex_count : 1u) * sizeof *out->positions);
+    if (out->vertices == NULL || out->positions == NULL) return -1;
+    out->view.positions = out->positions;
+    tarn_vec3 *positions = out->positions;
+    for (uint32_t i = 0; i < scene->object_count; i++) {
+        if ((out->vertices[i] = object_vertices(&view, &scene->objects[i], positions)) == NULL) return -1;
+        positions += scene->objects[i].mesh->vertex_count;
+    }
     return 0;
 }
 

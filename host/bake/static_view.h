@@ -16,6 +16,7 @@
 typedef struct {
     tarn_static_view view;         /* its bins point to `bins` */
     tarn_static_vertex **vertices; /* per object of the scene: its mesh's vertex_count */
+    tarn_vec3 *positions;          /* their view positions, every object's in scene order */
     uint32_t object_count;
     tarn_cluster_bin *bins;        /* every cluster's, in scene order */
     uint32_t bin_count;

@@ -19,7 +19,9 @@ static const tarn_option_choice frame_shape_values[] = {
     {"strips", TARN_FRAME_STRIPS, "rows of the whole width, the opaque pass kept for the next strips: each pixel drawn once"}};
 static const tarn_option_choice vertex_pass_values[] = {
     {"tile", TARN_VERTICES_PER_TILE, "each tile's walk finds the vertices it meets: no memory"},
-    {"frame", TARN_VERTICES_PER_FRAME, "once a frame, into memory: 28 bytes a vertex"}};
+    {"frame", TARN_VERTICES_PER_FRAME, "once a frame, into memory: 16 bytes a vertex"},
+    {"frame-view", TARN_VERTICES_PER_FRAME_VIEW,
+     "once a frame with each view position, which clipped triangles read: 28 bytes a vertex"}};
 static const tarn_option_choice depth_interpolation_values[] = {
     {"exact", TARN_DEPTH_EXACT, "near/d rounded exactly at each pixel"},
     {"plane", TARN_DEPTH_PLANE, "stepped on a plane, a division less a triangle"}};

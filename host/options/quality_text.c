@@ -41,8 +41,9 @@ void tarn_quality_text(const tarn_quality *q, char *out, size_t size)
         const size_t used = strlen(out);
         snprintf(out + used, size - used, " --frame strips");
     }
-    if (q->vertex_pass == TARN_VERTICES_PER_FRAME) {
+    if (q->vertex_pass != TARN_VERTICES_PER_TILE) {
         const size_t used = strlen(out);
-        snprintf(out + used, size - used, " --vertices frame");
+        snprintf(out + used, size - used, " --vertices %s",
+                 q->vertex_pass == TARN_VERTICES_PER_FRAME_VIEW ? "frame-view" : "frame");
     }
 }

@@ -36,6 +36,7 @@ typedef struct {
     tarn_object objects[OBJECTS_MAX];
     tarn_underwater underwater;
     tarn_static_view static_view;
+    tarn_vec3 static_positions[OBJECTS_MAX * VERTICES_MAX];
     tarn_cluster_bin bins[2 * OBJECTS_MAX];
     tarn_backdrop backdrop;
     uint32_t palette[16];
@@ -228,7 +229,8 @@ static tarn_frame_config make_config(fuzz_reader *r)
     static const uint8_t entries_log2[] = {3, 4, 5, 6, 7, 8}, steps[] = {0, 1, 2}, bits[] = {1, 2, 4, 6, 8},
                          modes[] = {0, 1, 2}, spans[] = {2, 4, 8, 16, 32, 64}, depths[] = {16, 32},
                          tiles[] = {8, 13, 16, 24, 32, 64}, aprons[] = {0, 1, 4, 32, 255}, flags[] = {0, 1},
-                         fog_bits[] = {4, 11, 16}, blocks[] = {1, 2, 2, 3}, depth_modes[] = {0, 1, 2};
+                         fog_bits[] = {4, 11, 16}, blocks[] = {1, 2, 2, 3}, depth_modes[] = {0, 1, 2},
+                         vertex_modes[] = {0, 1, 2, 3};
     c.quality.exp2.entries = (uint16_t)(1u << (pick(r, entries_log2, 6) & 15u));
     c.quality.exp2.interpolate = pick(r, flags, 2);
     c.quality.recip_newton_steps = pick(r, steps, 3);
@@ -244,7 +246,7 @@ static tarn_frame_config make_config(fuzz_reader *r)
     c.quality.depth_interpolation = pick(r, depth_modes, 3); /* 2 is refused */
     c.quality.refraction_normal = pick(r, depth_modes, 3);   /* 2 is refused */
     c.quality.frame_shape = pick(r, depth_modes, 3);         /* 2 is refused */
-    c.quality.vertex_pass = pick(r, depth_modes, 3);         /* 2 is refused */
+    c.quality.vertex_pass = pick(r, vertex_modes, 4);        /* 3 is refused */
     return c;
 }
 
@@ -253,9 +255,6 @@ static tarn_static_vertex static_vertex(fuzz_reader *r)
 {
     tarn_static_vertex v;
     const uint8_t kind = fuzz_u8(r);
-    v.x = number(r);
-    v.y = number(r);
-    v.d = number(r);
     v.inv_depth = kind & 1u ? 0u : (kind & 0xF0u) == 0xF0u ? fuzz_u32(r) : 1u + fuzz_u32(r) % (1u << 30);
     v.screen_x = (int16_t)((kind & 0xF0u) == 0xF0u ? fuzz_u16(r) : fuzz_u16(r) % 2048u);
     v.screen_y = (int16_t)((kind & 0xF0u) == 0xE0u ? fuzz_u16(r) : fuzz_u16(r) % 2048u);
@@ -326,8 +325,8 @@ static void make_backdrop(fuzz_scene *s, const tarn_frame_config *config, fuzz_r
 }
 
 /* Sometimes a static view: mostly the scene's camera and light and the frame's
- * size, with static vertices on some objects (whose positions may then be gone) and
- * any bins at all. Never for an input that ran out of bytes (they read as 0), so the
+ * size, with static vertices on some objects (whose positions may then be gone),
+ * any view positions or none, and any bins at all. Never for an input that ran out of bytes (they read as 0), so the
  * seeds made before static views still draw what they drew. */
 static void make_static_view(fuzz_scene *s, const tarn_frame_config *config, fuzz_reader *r)
 {
@@ -356,6 +355,8 @@ static void make_static_view(fuzz_scene *s, const tarn_frame_config *config, fuz
         s->objects[k].static_vertices = o->static_vertices;
         if (use >= 192) o->mesh.positions = o->mesh.normals = NULL;
     }
+    for (size_t i = 0; i < OBJECTS_MAX * VERTICES_MAX; i++) s->static_positions[i] = vector(r);
+    v->positions = fuzz_u8(r) < 128 ? s->static_positions : NULL;
 }
 
 typedef struct {

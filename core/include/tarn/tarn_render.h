@@ -139,10 +139,14 @@ typedef enum {
     TARN_VERTICES_PER_TILE = 0,  /* each tile's or strip's walk, through a 16-vertex
                                     cache: no memory, but a vertex shared by several
                                     pieces, or evicted, is found again */
-    TARN_VERTICES_PER_FRAME = 1  /* once a frame, into the frame's memory (a
-                                    tarn_static_vertex, 28 bytes, per mesh vertex,
+    TARN_VERTICES_PER_FRAME = 1, /* once a frame, into the frame's memory (a
+                                    tarn_static_vertex, 16 bytes, per mesh vertex,
                                     and the scene and its objects copied to name
-                                    them), which every walk and the cluster bins read */
+                                    them), which every walk and the cluster bins read;
+                                    a triangle the frame clips transforms its
+                                    vertices again */
+    TARN_VERTICES_PER_FRAME_VIEW = 2 /* the same, and each vertex's view position (12
+                                        bytes more), which a clipped triangle reads */
 } tarn_vertex_pass;
 
 /* How a frame is cut into the pieces it draws and hands to the sink, one at a time. */

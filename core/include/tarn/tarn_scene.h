@@ -88,9 +88,11 @@ typedef struct {
 /* A vertex as the scene's fixed camera sees it: exactly what a frame would compute
  * from the object's mesh, transform and material, the camera and the light (tarn
  * bake writes them, docs/bake.md "Static view"). A frame then neither transforms,
- * lights nor (for the frame they were made for) projects the object's vertices. */
+ * lights nor (for the frame they were made for) projects the object's vertices.
+ * 16 bytes: a triangle with a vertex outside a clip plane, the only one that needs
+ * the vertex's view position, finds it in the static view's positions or, without
+ * them, from its mesh. */
 typedef struct {
-    tarn_q16 x, y, d;           /* view space, Q16.16: right, up, depth */
     uint32_t inv_depth;         /* near/d, Q1.30 (1..2^30), for a vertex inside every clip
                                    plane of the static view's frame; 0: not projected */
     int16_t screen_x, screen_y; /* subpixels of that frame, inside its guard band */
@@ -239,6 +241,12 @@ typedef struct {
                                      clusters): a frame with cluster bins reads these
                                      instead of finding them, and needs no memory for them */
     const tarn_backdrop *backdrop; /* NULL, or the scene's opaque objects already drawn */
+    const tarn_vec3 *positions; /* NULL, or every object's vertices' view positions
+                                   (Q16.16 right, up and depth in x, y, z), the objects'
+                                   in scene order, one per mesh vertex: read where a
+                                   triangle is clipped; NULL: found from the meshes
+                                   there, which a build that computes no vertices
+                                   (TARN_LINK_COMPUTED_VERTICES 0) cannot */
 } tarn_static_view;
 
 typedef struct {
