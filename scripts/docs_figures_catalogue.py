@@ -413,6 +413,11 @@ KEYS["memory.pond.baked_bytes"] = memory_key("pond", "", "baked_bytes")
 KEYS["memory.pond.fast.bytes"] = memory_key("pond", "--quality fast", "bytes")
 KEYS["memory.pond.fast.baked_bytes"] = memory_key("pond", "--quality fast", "baked_bytes")
 KEYS["memory.pond-orbit.strips16.bytes"] = memory_key("pond-orbit", "--quality exact --frame strips --tile 16", "bytes")
+KEYS["memory.pond-orbit.strips16-pass.bytes"] = memory_key(
+    "pond-orbit", "--quality balanced --depth-interpolation plane --frame strips --tile 16 --vertices frame", "bytes")
+KEYS["memory.pond-orbit.strips12-apron24-pass.bytes"] = memory_key(
+    "pond-orbit", "--quality balanced --depth-interpolation plane --frame strips --tile 12 --apron 24 --vertices frame",
+    "bytes")
 KEYS["memory.pond-orbit.strips16.pipeline_bytes"] = memory_key("pond-orbit", "--quality exact --frame strips --tile 16",
                                                                "pipeline_bytes")
 KEYS["memory.opaque.tile32"] = memory_key("effects/none", "--tile 32 --depth 32", "baked_bytes")
@@ -883,16 +888,20 @@ def fw_boards(m):
 
 
 # the RAM boards' scenes as they were baked before strips and the vertex pass (at
-# the boards' quality), the moving pond at the exact preset the boards baked
-# before, and at a leaner quality than the boards'
+# the boards' quality), the moving pond in 16-row strips with the whole apron and
+# no vertex pass (as they baked it before), at the exact preset the boards baked
+# before that, and at a leaner quality than the boards'
 RAM_BOARD_QUALITY = "--quality balanced --depth-interpolation plane"
 FW_VARIANTS.update({
     "m0-264k-orbit-tiles": ("qemu-m0-264k", "pond-orbit", RAM_BOARD_QUALITY + " --tile 64"),
+    "m0-264k-orbit-strips16": ("qemu-m0-264k", "pond-orbit", RAM_BOARD_QUALITY + " --frame strips --tile 16"),
     "m0-264k-orbit-exact": ("qemu-m0-264k", "pond-orbit", "--quality exact --frame strips --tile 16"),
     "m0-264k-orbit-lean": ("qemu-m0-264k", "pond-orbit", RAM_BOARD_QUALITY + " --frame strips --tile 16 "
                            "--refraction-normal shared"),
     "m0-264k-opaque-tiles": ("qemu-m0-264k", "pond-opaque", RAM_BOARD_QUALITY + " --tile 64"),
     "m0-264k-opaque-strips": ("qemu-m0-264k", "pond-opaque", RAM_BOARD_QUALITY + " --frame strips --tile 64"),
+    "m0-264k-opaque-pass16": ("qemu-m0-264k", "pond-opaque", RAM_BOARD_QUALITY + " --frame strips --tile 64 "
+                              "--vertices frame"),
     "m0-264k-opaque-exact": ("qemu-m0-264k", "pond-opaque", "--quality exact --frame strips --tile 64 --vertices frame"),
     "rv32-400k-orbit-tiles": ("qemu-rv32-400k", "pond-orbit", RAM_BOARD_QUALITY + " --tile 64"),
     "rv32-400k-opaque-tiles": ("qemu-rv32-400k", "pond-opaque", RAM_BOARD_QUALITY + " --tile 64"),

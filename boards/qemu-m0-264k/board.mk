@@ -11,9 +11,12 @@
 # of the whole width (--frame strips): each strip's opaque pass is drawn once into
 # a ring deep enough for the water's refracted samples, where 64-pixel tiles drew
 # about four times the frame's opaque pixels for their aprons; the same image.
-# 16-row strips keep the ring (five strips, 32 pixels of apron above and below)
-# and the water's strip within 200 KB. The 8 KB stack holds the 4.6 KB bound with
-# room to spare. Variables read by firmware/firmware.mk; the rest, as for every
+# Every vertex is found once a frame (--vertices frame, 16 bytes each), where each
+# strip's walk found its own again; to keep that, the ring (12-row strips and a
+# 24-pixel apron above and below, five strips) and the water's strip within 200
+# KB, refraction reaches 24 pixels instead of 32 (1.6 dB of panel PSNR, for about
+# a twentieth of the frame: docs/firmware.md). The 8 KB stack holds the 4.6 KB
+# bound with room to spare. Variables read by firmware/firmware.mk; the rest, as for every
 # emulated Cortex-M board, from boards/common/qemu_cortex_m.mk.
 BOARD_DIR := boards/qemu-m0-264k
 BOARD_CPU := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft
@@ -30,9 +33,10 @@ BOARD_CORES := 2
 # build (build/firmware/qemu-m0-264k), each other one builds in
 # build/firmware/qemu-m0-264k@NAME
 BOARD_SCENES := scenes/pond-orbit.json scenes/pond-opaque.json
-BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 16
+BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 12 --apron 24 --vertices frame
 # without water nothing refracts: one strip is the ring, and taller strips cut
-# fewer triangles in two; the room left holds every vertex found once a frame
-# (--vertices frame: 74 KB, which the moving pond's ring leaves no room for)
-BOARD_BAKE_FLAGS.pond-opaque := --quality balanced --depth-interpolation plane --frame strips --tile 64 --vertices frame
+# fewer triangles in two; the room left keeps each vertex's view position too
+# (--vertices frame-view), which the triangles clipped at the guard band read
+# instead of transforming their vertices again
+BOARD_BAKE_FLAGS.pond-opaque := --quality balanced --depth-interpolation plane --frame strips --tile 64 --vertices frame-view
 include boards/common/qemu_cortex_m.mk

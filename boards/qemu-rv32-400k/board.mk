@@ -1,8 +1,9 @@
 # qemu-rv32-400k: rv32imc code on QEMU's riscv32 virt, held by its link.ld to the
 # ESP32-C3's 4 MB of flash and 400 KB of RAM. It renders as qemu-m0-264k does: the
 # moving pond and the same scene without its water, at the balanced preset with
-# depth on a plane, in strips of the whole width (16 rows with water, 64 without),
-# each opaque pixel drawn once. Variables read by
+# depth on a plane, in strips of the whole width (12 rows and a 24-pixel apron
+# with water, 64 rows without), each opaque pixel drawn once and every vertex
+# found once a frame, within 200 KB. Variables read by
 # firmware/firmware.mk; the rest, as for every emulated RISC-V board, from
 # boards/common/qemu_rv32.mk.
 BOARD_DIR := boards/qemu-rv32-400k
@@ -19,9 +20,10 @@ BOARD_VERTEX_CACHE_SLOTS := 64
 # build (build/firmware/qemu-rv32-400k), each other one builds in
 # build/firmware/qemu-rv32-400k@NAME
 BOARD_SCENES := scenes/pond-orbit.json scenes/pond-opaque.json
-BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 16
+BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 12 --apron 24 --vertices frame
 # without water nothing refracts: one strip is the ring, and taller strips cut
-# fewer triangles in two; the room left holds every vertex found once a frame
-# (--vertices frame: 74 KB, which the moving pond's ring leaves no room for)
-BOARD_BAKE_FLAGS.pond-opaque := --quality balanced --depth-interpolation plane --frame strips --tile 64 --vertices frame
+# fewer triangles in two; the room left keeps each vertex's view position too
+# (--vertices frame-view), which the triangles clipped at the guard band read
+# instead of transforming their vertices again
+BOARD_BAKE_FLAGS.pond-opaque := --quality balanced --depth-interpolation plane --frame strips --tile 64 --vertices frame-view
 include boards/common/qemu_rv32.mk
