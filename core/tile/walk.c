@@ -122,14 +122,16 @@ static void walk_cached_triangle(const tarn_object *object, const uint16_t index
     tarn_cached_vertex c[3];
     unsigned outside_any;
     const unsigned outside_all = tarn__cached_triangle(cache, index, c, &outside_any);
-    if (outside_all & TARN_CACHED_CLIP_PLANES) return; /* wholly outside one plane */
+    /* wholly outside one clip plane, or beyond one edge of the tile: a vertex lies
+     * beyond a tile edge only in front of the near plane, where the edge's plane
+     * through the eye bounds what clipping keeps of the triangle too */
+    if (outside_all) return;
     if (outside_any & TARN_CACHED_CLIP_PLANES) {
         tarn_view_vertex v[3];
         for (int k = 0; k < 3; k++) tarn__cached_shading(cache, &c[k], &v[k]);
         tarn__clip_and_emit(view, outside_any & TARN_CACHED_CLIP_PLANES, v, object, sink, ctx);
         return;
     }
-    if (outside_all) return; /* wholly beyond an edge of the tile: unprojected */
     for (int k = 0; k < 3; k++) tarn__cached_projection(cache, &c[k], &screen[k]);
     if (centres && bounds_miss(screen, centres)) return;
     for (int k = 0; k < 3; k++) tarn__cached_attributes(cache, &c[k], &screen[k]);
