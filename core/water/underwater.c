@@ -31,7 +31,7 @@ static int32_t displaced_offset(const tarn_underwater_context *u, int32_t i, int
 
 static uint32_t tinted(const tarn_underwater_context *u, int32_t offset)
 {
-    const uint32_t d = tarn__water_linear_depth(depth_q30(u, offset), u->near, u->far, u->recip_steps);
+    const uint32_t d = tarn__water_linear_depth(depth_q30(u, offset), &u->linear);
     const uint32_t argument = tarn__fog_argument_q16((uint32_t)u->under->tint_density, d, u->fog_argument_bits);
     const uint32_t keep = tarn_exp2_neg_q16(-(tarn_q16)argument, u->exp2) >> 1; /* Q1.15 */
     const uint32_t rgb = u->colour[offset];

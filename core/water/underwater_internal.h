@@ -9,10 +9,9 @@
 
 typedef struct {
     const tarn_underwater *under;
-    tarn_q16 near, far;
+    tarn_linear_depth linear;
     tarn_exp2_config exp2;
     unsigned fog_argument_bits;
-    unsigned recip_steps;
     uint32_t pan[2];             /* Q0.32 offsets of the normal map */
     uint32_t screen_u_per_half;  /* 2^32 / (2 * width): screen u of half a pixel, Q0.32 */
     uint32_t distortion_px;      /* distortion * width: pixels per unit normal, Q16.16 */

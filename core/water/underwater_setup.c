@@ -8,11 +8,9 @@ void tarn__underwater_setup(tarn_underwater_context *u, const tarn_view *view,
                            const tarn_frame_config *config, const tarn_underwater *under)
 {
     u->under = under;
-    u->near = view->near;
-    u->far = view->far;
+    tarn__linear_depth_setup(&u->linear, view->near, view->far, config->quality.recip_newton_steps);
     u->exp2 = config->quality.exp2;
     u->fog_argument_bits = config->quality.fog_argument_bits;
-    u->recip_steps = config->quality.recip_newton_steps;
     u->pan[0] = tarn__water_pan_offset_q32(under->pan.speed_u, config->time_ms);
     u->pan[1] = tarn__water_pan_offset_q32(under->pan.speed_v, config->time_ms);
     /* rounded up: a pixel centre exactly on a texel edge must land on the texel

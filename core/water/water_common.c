@@ -51,14 +51,22 @@ const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, 
     return &t->rgb[texel_bytes * (y * t->width + x)];
 }
 
-uint32_t tarn__water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps)
+void tarn__linear_depth_setup(tarn_linear_depth *d, tarn_q16 near, tarn_q16 far, unsigned recip_steps)
 {
-    if (iz_q30 == 0u) return (uint32_t)far;
+    d->near_shift = tarn_clz32((uint32_t)near); /* near > 0 (tarn__scene_check) */
+    d->near_mantissa = (uint32_t)near << d->near_shift;
+    d->far = far;
+    d->recip_steps = recip_steps;
+}
+
+uint32_t tarn__water_linear_depth(uint32_t iz_q30, const tarn_linear_depth *d)
+{
+    if (iz_q30 == 0u) return (uint32_t)d->far;
     const unsigned lz = tarn_clz32(iz_q30);
-    const uint32_t recip = tarn_recip_q30(iz_q30 << lz, recip_steps); /* 2^62 / (iz << lz) */
-    const unsigned near_shift = tarn_clz32((uint32_t)near);
+    const uint32_t recip = tarn_recip_q30(iz_q30 << lz, d->recip_steps); /* 2^62 / (iz << lz) */
+    const unsigned near_shift = d->near_shift;
     /* d = near * recip * 2^(lz - 32), with near pre-shifted for precision */
-    const uint32_t scaled = tarn_mul_hi_u32((uint32_t)near << near_shift, recip);
+    const uint32_t scaled = tarn_mul_hi_u32(d->near_mantissa, recip);
     if (lz >= near_shift) {
         unsigned up = lz - near_shift;
         return up >= 31u || scaled > ((uint32_t)INT32_MAX >> up) ? (uint32_t)INT32_MAX : scaled << up;

@@ -29,15 +29,27 @@
 
 #include "raster/raster_internal.h"
 
+/* What turns a near/d into a linear depth, fixed for a frame: near left-justified
+ * (its mantissa, top bit set, and the shift that made it: a count of leading zeros
+ * the Cortex-M0 would otherwise take at every depth, three a water pixel), far,
+ * and the reciprocal's Newton steps. */
+typedef struct {
+    uint32_t near_mantissa;
+    unsigned near_shift;
+    tarn_q16 far;
+    unsigned recip_steps;
+} tarn_linear_depth;
+
+void tarn__linear_depth_setup(tarn_linear_depth *d, tarn_q16 near, tarn_q16 far, unsigned recip_steps);
+
 typedef struct tarn_water_context {
     const tarn_water *water;
     const tarn_object *object;  /* the object the context was made for */
     uint32_t features;          /* the material's TARN_WATER_* the build links */
     uint16_t width, height;     /* the frame */
-    tarn_q16 near, far;
+    tarn_linear_depth linear;
     tarn_exp2_config exp2;
     unsigned fog_argument_bits;
-    unsigned recip_steps;
 
     uint32_t pan_a[2], pan_b[2], foam_pan[2]; /* Q0.32 offsets of the panning textures */
     uint16_t foam_phase;        /* time * foam_line_speed, Q0.16 turns of the band */
@@ -141,8 +153,8 @@ static inline int32_t tarn__water_normal_component(uint8_t c)
 /* The texel at a repeat fraction (Q0.16 each axis), nearest, power-of-two sides. */
 const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, uint32_t v_fraction,
                                     unsigned texel_bytes);
-/* near / (iz / 2^30) in Q16.16 world units, saturated; `far` for iz 0. */
-uint32_t tarn__water_linear_depth(uint32_t iz_q30, tarn_q16 near, tarn_q16 far, unsigned recip_steps);
+/* near / (iz / 2^30) in Q16.16 world units, saturated; far for iz 0. */
+uint32_t tarn__water_linear_depth(uint32_t iz_q30, const tarn_linear_depth *d);
 /* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.16. */
 uint16_t tarn__water_pan_offset(tarn_q16 speed, uint32_t time_ms);
 /* The same in Q0.32, for the maps' Q0.32 fractions: floor(speed * time_ms * 2^16 /
@@ -238,7 +250,7 @@ static inline int tarn__water_sparkles_possible(const tarn_water_context *w)
 /* The linear depth (Q16.16 world units) of a near/d (Q1.30) in the context's frame. */
 static inline uint32_t tarn__water_depth_of(const tarn_water_context *w, uint32_t iz_q30)
 {
-    return tarn__water_linear_depth(iz_q30, w->near, w->far, w->recip_steps);
+    return tarn__water_linear_depth(iz_q30, &w->linear);
 }
 
 /* The index of frame pixel (i, j) in the background buffers. */

@@ -60,11 +60,9 @@ void tarn__water_context_setup(tarn_water_context *w, const tarn_view *view,
     w->features = TARN_LINK_WATER_FEATURES & water->features;
     w->width = config->width;
     w->height = config->height;
-    w->near = view->near;
-    w->far = view->far;
+    tarn__linear_depth_setup(&w->linear, view->near, view->far, config->quality.recip_newton_steps);
     w->exp2 = config->quality.exp2;
     w->fog_argument_bits = config->quality.fog_argument_bits;
-    w->recip_steps = config->quality.recip_newton_steps;
     w->block_shift = (uint8_t)(config->quality.water_block == 4 ? 2u : config->quality.water_block == 2 ? 1u : 0u);
     /* after features; the frame set offset_limit before the first context */
     w->exact_normal = (uint8_t)(TARN_LINK_REFRACTION_EXACT &&

@@ -219,7 +219,7 @@ static void pixel_highlight(const tarn_water_context *w, const still_walk *walk,
 static uint32_t refracting_pixel(const tarn_water_context *w, const still_walk *walk, tarn_still_block *block,
                                  int shared, uint32_t still, int32_t i, int32_t j)
 {
-    const tarn_water_input in = plane_input(walk->plane, w->recip_steps, i, j);
+    const tarn_water_input in = plane_input(walk->plane, w->linear.recip_steps, i, j);
     tarn_water_normal n;
     tarn__water_pixel_normal(w, &in, &n);
     uint32_t highlight[3];
@@ -240,7 +240,7 @@ static uint32_t water_pixel(tarn_water_context *w, const still_walk *walk, uint3
     const int sharp = (still & walk->sharp_bits) != 0u;
     if (shared && !sharp) return block->lit ? over_still(w, still, block->highlight, 0u) : still & 0xFFFFFFu;
     if (!walk->specular && !sharp) return still & 0xFFFFFFu; /* nothing moves here */
-    const tarn_water_input in = plane_input(walk->plane, w->recip_steps, i, j);
+    const tarn_water_input in = plane_input(walk->plane, w->linear.recip_steps, i, j);
     if (shared || !walk->specular) {
         static const uint32_t dark[3] = {0u, 0u, 0u};
         return over_still(w, still, shared ? block->highlight : dark, sharp_at(w, walk, &in, NULL, still, i, j));

@@ -177,8 +177,8 @@ static int find_kept_values(const tarn_scene *scene, const tarn_frame_config *co
         const tarn_object *object = water_object(scene, (still->rgb[k] & TARN_BACKDROP_STILL_OBJECT) >> TARN_BACKDROP_STILL_SHIFT);
         if (context.object != object) tarn__water_context_setup(&context, &view, config, object);
         const int refracts = apron && tarn__water_uses(&context, TARN_WATER_REFRACTION);
-        const uint32_t below = tarn__water_linear_depth(depth_q30(opaque, k), context.near, context.far, context.recip_steps);
-        const uint32_t at = tarn__water_linear_depth(depth_q30(&surface, k), context.near, context.far, context.recip_steps);
+        const uint32_t below = tarn__water_linear_depth(depth_q30(opaque, k), &context.linear);
+        const uint32_t at = tarn__water_linear_depth(depth_q30(&surface, k), &context.linear);
         const uint32_t diff = below > at ? below - at : 0u;
         const uint32_t value = kept_value(&context, refracts, diff);
         if (value >= 65536u) continue;
