@@ -65,7 +65,7 @@ static void exact_direction(const tarn_water_context *w, const uint8_t *a, const
 }
 
 /* 1 / |v| for an exact direction v, as a Q16.16 reciprocal square root
- * `inverse` (in (1/2, 1]) and the power of two it leaves out: 1 / |v| =
+ * `inverse` (in (1/sqrt 2, sqrt 2]) and the power of two it leaves out: 1 / |v| =
  * inverse * 2^-(16 + scale). |v| is found from v cut to 15 bits, so to 2^-15 of
  * itself; the direction's own bits are kept whole for the product. */
 static uint32_t exact_inverse_length(const int32_t v[3], int *scale)
@@ -79,12 +79,23 @@ static uint32_t exact_inverse_length(const int32_t v[3], int *scale)
         const int32_t c = tarn_floor_shift(v[k], cut);
         length2 += (uint32_t)(c * c);
     }
-    /* to [2^16, 2^18), Q16.16 in [1, 4), by an even shift */
+    /* to [2^15, 2^17), Q16.16 in [1/2, 2), by an even shift */
     int even = 31 - (int)tarn_clz32(length2) - 16;
     even += even & 1;
     const uint32_t x = even >= 0 ? length2 >> even : length2 << -even;
     *scale = (int)cut + even / 2 + 8; /* |v| = sqrt(x / 2^16) * 2^(8 + even/2) * 2^cut */
     return tarn_rsqrt_q16(x);
+}
+
+/* floor(v * inverse / 2^15) for |v| < 2^28 and inverse < 2^17: v's bits above and
+ * below its 15th times inverse, each product within 32 bits, where the signed
+ * 32x32-bit high product takes the Cortex-M0 four and a sign's correction. The
+ * high part's share is a whole number of units, so the floor is the low part's. */
+static int32_t times_inverse(int32_t v, uint32_t inverse)
+{
+    const int32_t high = tarn_floor_shift(v, 15); /* -2^13 .. 2^13: |high * inverse| < 2^30 */
+    const uint32_t low = (uint32_t)v & 0x7FFFu;   /* low * inverse < 2^32 */
+    return high * (int32_t)inverse + (int32_t)((low * inverse) >> 15);
 }
 
 /* N found once from the exact direction, for the quality's EXACT refraction normal:
@@ -100,8 +111,8 @@ static void exact_normal(const tarn_water_context *w, const uint8_t *a, const ui
     const uint32_t inverse = exact_inverse_length(v, &scale);
     const int up = 29 - scale; /* v * inverse = product * 2^15 */
     for (int k = 0; k < 3; k++) {
-        /* v * inverse / 2^15 (|v| < 2^28, inverse <= 2^16), then to Q1.30 */
-        const int32_t product = tarn_mul_hi_s32_u32(v[k] * 4, inverse << 15);
+        /* v * inverse / 2^15 (|v| < 2^28, inverse < 2^17), then to Q1.30 */
+        const int32_t product = times_inverse(v[k], inverse);
         unit[k] = up >= 0 ? product * (1 << up) : tarn_floor_shift(product, (unsigned)-up);
     }
     n->xy_q30[0] = unit[0];
