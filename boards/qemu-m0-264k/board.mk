@@ -3,11 +3,10 @@
 # flash and 264 KB of RAM. It renders the moving pond (scenes/pond-orbit.json: the
 # camera circling, the balls bobbing; each frame poses the scene, nothing frozen)
 # and the same scene without its water, at the balanced preset (core/scene/presets.c:
-# refraction with the full apron, 32-bit depth, per-pixel perspective) with its
-# depth stepped on a plane (--depth-interpolation plane: three divisions less a
-# triangle, and the panel as close to the reference as the exact depth's, within
-# 1 dB of the host's balanced frame; the exact preset costs about a tenth more for
-# 8 dB over the 40 the board needs: docs/firmware.md gives the figures), in strips
+# refraction, 32-bit depth, per-pixel perspective) with its depth stepped on a
+# plane (--depth-interpolation plane: three divisions less a triangle, and the
+# panel as close to the reference as the exact depth's; the exact preset costs more
+# for dBs the board does not need over its 40: docs/firmware.md gives the figures), in strips
 # of the whole width (--frame strips): each strip's opaque pass is drawn once into
 # a ring deep enough for the water's refracted samples, where 64-pixel tiles drew
 # about four times the frame's opaque pixels for their aprons; the same image.
