@@ -96,12 +96,17 @@ static int vertex_pass_applies(const tarn_frame_config *config, const tarn_scene
            config->quality.vertex_pass != TARN_VERTICES_PER_TILE && !tarn__static_view_applies(scene);
 }
 
+/* Whether the pass keeps each vertex's view position too. */
+static int pass_keeps_positions(const tarn_frame_config *config)
+{
+    return config->quality.vertex_pass == TARN_VERTICES_PER_FRAME_VIEW;
+}
+
 /* The bytes of every vertex the pass finds: its record and, where the quality
  * keeps them, its view position. */
 static size_t vertex_bytes(const tarn_frame_config *config)
 {
-    const int view = config->quality.vertex_pass == TARN_VERTICES_PER_FRAME_VIEW;
-    return sizeof(tarn_static_vertex) + (view ? sizeof(tarn_vec3) : 0u);
+    return sizeof(tarn_static_vertex) + (pass_keeps_positions(config) ? sizeof(tarn_vec3) : 0u);
 }
 
 static size_t scene_bytes(const tarn_frame_config *config, const tarn_scene *scene)
@@ -146,7 +151,7 @@ const tarn_scene *tarn__frame_scene(const tarn_scene *scene, const tarn_frame_co
         own->objects = objects;
         tarn_static_view *made = (tarn_static_view *)(void *)(objects + scene->object_count);
         tarn_static_vertex *vertices = (tarn_static_vertex *)(void *)(made + 1);
-        tarn_vec3 *positions = config->quality.vertex_pass == TARN_VERTICES_PER_FRAME_VIEW
+        tarn_vec3 *positions = pass_keeps_positions(config)
                                    ? (tarn_vec3 *)(void *)(vertices + tarn__scene_vertex_count(scene))
                                    : NULL;
         tarn__vertex_pass(own, objects, config, made, vertices, positions);

@@ -98,7 +98,7 @@ static void cached_position(tarn_vertex_cache *cache, uint16_t index, tarn_cache
     const tarn_static_vertex *baked =
         TARN_LINK_STATIC_VERTICES && cache->static_vertices != NULL ? &cache->static_vertices[index] : NULL;
     tarn_view_vertex v;
-    if (TARN_LINK_COMPUTED_VERTICES && (baked == NULL || cache->static_positions == NULL)) {
+    if (TARN_LINK_COMPUTED_VERTICES && cache->static_positions == NULL) { /* NULL too without static vertices */
         tarn__vertex_position(cache->xform, &cache->mesh->positions[index], &v);
     } else { /* the scene check saw to it that every object has them */
         const tarn_vec3 *p = &cache->static_positions[index];
