@@ -62,6 +62,48 @@ static void test_help_on_the_tool_and_every_command(void **state)
         fail_msg("tarn render --help lacks its options: %s", r.out);
 }
 
+/* The choices a knob's error lists ("expected a (why), b (why) or c (why), got"),
+ * as the help writes them: "a|b|c". */
+static void choices_of(const char *error, char *out, size_t size)
+{
+    const char *at = strstr(error, "expected ");
+    size_t length = 0;
+    out[0] = '\0';
+    if (at == NULL) return;
+    at += strlen("expected ");
+    while (*at != '\0' && strncmp(at, "got", 3) != 0 && length + 2 < size) {
+        size_t word = strcspn(at, " (,");
+        if (length > 0) out[length++] = '|';
+        memcpy(out + length, at, word < size - length - 1 ? word : size - length - 1);
+        length += word;
+        out[length] = '\0';
+        at += word;
+        if (*at == ' ' && at[1] == '(') at = strchr(at, ')') != NULL ? strchr(at, ')') + 1 : at + strlen(at);
+        at += strspn(at, ", ");
+        if (strncmp(at, "or ", 3) == 0) at += 3;
+    }
+}
+
+/* The help names every choice of every knob chosen by a word, as the option's own
+ * table (which its error message prints) has them: the help is typed apart. */
+static void test_help_names_every_choice(void **state)
+{
+    (void)state;
+    static const char *const knobs[] = {"--vertices", "--frame", "--refraction-normal", "--depth-interpolation",
+                                        "--bins"};
+    static cli_result help, bad;
+    run_line("render --help", &help);
+    for (size_t k = 0; k < sizeof knobs / sizeof knobs[0]; k++) {
+        char line[128], want[160], choices[128];
+        snprintf(line, sizeof line, "render scenes/pond.json %s bogus -o x.png", knobs[k]);
+        run_line(line, &bad);
+        choices_of(bad.err, choices, sizeof choices);
+        snprintf(want, sizeof want, "%s %s ", knobs[k], choices);
+        if (bad.status != 2 || choices[0] == '\0' || strstr(help.out, want) == NULL)
+            fail_msg("tarn render --help does not give '%s' (its error: %s)", want, bad.err);
+    }
+}
+
 static void test_version(void **state)
 {
     (void)state;
@@ -160,6 +202,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_help_on_the_tool_and_every_command),
+        cmocka_unit_test(test_help_names_every_choice),
         cmocka_unit_test(test_version),
         cmocka_unit_test(test_usage_errors_are_one_line),
         cmocka_unit_test(test_long_names_keep_their_reason),

@@ -42,8 +42,8 @@ static const char quality_usage[] =
     "         14 bits, or found again from the maps' texels to 2^-15)\n"
     "         --frame tiles|strips (square tiles, or strips of --tile rows of the whole width\n"
     "         whose opaque pass is kept for the strips below: each pixel drawn once, more memory)\n"
-    "         --vertices tile|frame (vertices found by each tile's walk, or once a frame into\n"
-    "         memory, 28 bytes a vertex)\n";
+    "         --vertices tile|frame|frame-view (vertices found by each tile's walk, or once a frame\n"
+    "         into memory: 16 bytes a vertex, 28 with the view positions clipped triangles read)\n";
 
 static const char backdrop_usage[] =
     "  --backdrop on|off|still  on: the opaque objects drawn once, for the frame and quality,\n"
