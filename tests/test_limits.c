@@ -132,6 +132,33 @@ static void high_word_by_halves(void **state)
     }
 }
 
+/* The low word of a rounding shift, at every shift, is the whole shift's: at the
+ * edges of int64_t and its words, and at a million random values. */
+static void low_word_of_rounding_shifts(void **state)
+{
+    (void)state;
+    static const int64_t edges[] = {INT64_MIN, INT64_MIN + 1, -((int64_t)1 << 32) - 1, -((int64_t)1 << 32),
+                                    -((int64_t)1 << 31), -2, -1, 0, 1, ((int64_t)1 << 31) - 1,
+                                    ((int64_t)1 << 32) + 1, INT64_MAX - 1, INT64_MAX};
+    const size_t n = sizeof edges / sizeof edges[0];
+    uint32_t seed = 777u;
+    for (size_t k = 0; k < n + 1000000u; k++) {
+        int64_t v = k < n ? edges[k] : 0;
+        if (k >= n) {
+            const uint32_t high = seed = seed * 1664525u + 1013904223u;
+            const uint32_t low = seed = seed * 1664525u + 1013904223u;
+            v = (int64_t)(((uint64_t)high << 32) | low);
+        }
+        for (unsigned shift = 0; shift < 64u; shift++) {
+            const uint32_t want = (uint32_t)tarn_round_shift_i64(v, shift);
+            const uint32_t got = tarn_round_shift_low32((uint64_t)v, shift);
+            if (got != want)
+                fail_msg("the low word of %lld rounded down %u bits is 0x%08x, not 0x%08x", (long long)v, shift, got,
+                         want);
+        }
+    }
+}
+
 /* Every position of `mesh` and the coordinates' edges in each combination: the same
  * view position whole (a core with 64-bit products) and by halves (the Cortex-M0's). */
 static void positions_agree(const tarn_object_xform *xform, const tarn_mesh *mesh, const char *what)
@@ -318,6 +345,7 @@ int main(void)
         cmocka_unit_test(bits),
         cmocka_unit_test(leading_zeros_by_table),
         cmocka_unit_test(high_word_by_halves),
+        cmocka_unit_test(low_word_of_rounding_shifts),
         cmocka_unit_test(vertex_position_by_halves),
         cmocka_unit_test(products),
         cmocka_unit_test(divisions_used_once),

@@ -176,7 +176,7 @@ static plane_basis basis_of(const tarn_triangle_setup *t, const plane_anchor *an
  * sum stays below 2^61. */
 static uint32_t weighted(int32_t d1, int32_t d2, const int32_t w[2], unsigned shift)
 {
-    return (uint32_t)tarn_round_shift_i64(tarn_mul_i32_wide(d1, w[0]) + tarn_mul_i32_wide(d2, w[1]), shift);
+    return tarn_round_shift_low32((uint64_t)(tarn_mul_i32_wide(d1, w[0]) + tarn_mul_i32_wide(d2, w[1])), shift);
 }
 
 /* n / area2 rounded to nearest (halves away from 0), exactly (|n| < 2^61), modulo 2^32. */
