@@ -10,9 +10,10 @@
 #                                 pixel, stack peak), a line a scene
 #   make bench-target             runs every emulated board and prints one line for
 #                                 each of its scenes
-#   make profile-target BOARD=qemu-m0 [TOP=N]   where an emulated board's
-#                                 instructions go, counted exactly: by function,
-#                                 source file and source line
+#   make profile-target BOARD=qemu-m0 [TOP=N] [ANNOTATE="fn ..."]   where an
+#                                 emulated board's instructions go, counted exactly:
+#                                 by function, source file and source line, and
+#                                 instruction by instruction in each ANNOTATE function
 #   make firmware SCENE=my.json BAKE_FLAGS="--tile 16 --depth 16"   another scene
 #   make firmware-run BOARD=qemu-m0-264k FW_BOARD_SCENE=scenes/pond-opaque.json
 #                                 one of the board's own scenes (BOARD_SCENES)
@@ -218,7 +219,7 @@ firmware-sweep: $(FW_DIR)/report.txt
 	@cat $<
 
 profile-target: $(FW_ELF) | fw-qemu
-	@scripts/profile-target.py --top $(or $(TOP),30) --tools $(FW_CROSS) $(FW_ELF) -- \
+	@scripts/profile-target.py --top $(or $(TOP),30) $(foreach f,$(ANNOTATE),--annotate $(f)) --tools $(FW_CROSS) $(FW_ELF) -- \
 		$(call BOARD_RUN,$(FW_ELF),$(FW_DIR)/profile.stream,$(FW_DIR)/profile.report)
 else
 profile-target firmware-sweep: $(FW_OUTPUTS)

@@ -15,7 +15,10 @@ jal, jalr) and popped when execution reaches a pushed return address gives every
 instruction to the innermost stage function it runs under (STAGES below), helpers
 such as the reciprocal counting in the stage that called them.
 
-Usage: scripts/profile-target.py [--top N] [--tools PREFIX] ELF -- QEMU_COMMAND...
+With --annotate NAME (repeatable), each such function's disassembly follows, each instruction with
+the times it ran: where inside one function the instructions go.
+
+Usage: scripts/profile-target.py [--top N] [--tools PREFIX] [--annotate NAME] ELF -- QEMU_COMMAND...
   e.g. scripts/profile-target.py build/firmware/qemu-m0/firmware.elf -- \\
          qemu-system-arm -M microbit -nographic -monitor none -serial none -icount shift=0 \\
          -semihosting-config enable=on,target=native,arg=firmware,arg=/tmp/s,arg=/tmp/r \\
@@ -164,6 +167,22 @@ def print_table(title, counter, total, top, calls=None):
         print('%12d %6.2f%% %s%s' % (n, 100.0 * n / total, name, extra))
 
 
+def annotate(tools, elf, table, name, per_address):
+    """The disassembly of function `name`, each instruction led by its executions."""
+    found = [(start, size) for start, size, symbol in table if symbol == name]
+    if not found:
+        sys.exit('profile-target: no function %s in %s' % (name, elf))
+    start, size = found[0]
+    out = subprocess.run([tools + 'objdump', '-d', '--no-show-raw-insn', '--start-address=%#x' % start,
+                          '--stop-address=%#x' % (start + size), elf],
+                         capture_output=True, text=True, check=True).stdout
+    print('annotate %s:' % name)
+    for line in out.splitlines():
+        match = re.match(r'\s*([0-9a-f]+):\s', line)
+        if match:
+            print('%12d %s' % (per_address.get(int(match.group(1), 16), 0), line.strip()))
+
+
 def run_logged(qemu, counter):
     """Runs QEMU with its log into a pipe and counts it as it comes."""
     with tempfile.TemporaryDirectory() as scratch:
@@ -182,6 +201,7 @@ def main():
     parser = argparse.ArgumentParser(usage=__doc__)
     parser.add_argument('--top', type=int, default=30)
     parser.add_argument('--tools', default='arm-none-eabi-')
+    parser.add_argument('--annotate', metavar='NAME', action='append', default=[])
     parser.add_argument('elf')
     parser.add_argument('qemu', nargs=argparse.REMAINDER)
     args = parser.parse_args()
@@ -212,6 +232,8 @@ def main():
     print_table('functions', functions, total, args.top, calls)
     print_table('files', files, total, args.top)
     print_table('lines', lines, total, args.top)
+    for name in args.annotate:
+        annotate(args.tools, args.elf, table, name, per_address)
 
 
 if __name__ == '__main__':
