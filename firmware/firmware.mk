@@ -230,7 +230,7 @@ endif
 $(FW_DIR)/firmware.conf: $(FW_BOARD_MK) firmware/firmware.mk FORCE
 	@mkdir -p $(FW_DIR)
 	@printf '%s\n' "board=$(BOARD)" "scene=$(FW_SCENE)" "label=$(FW_SCENE_LABEL)" \
-		"bake_flags=$(FW_BAKE_FLAGS)" "times=$(FW_TIMES)" "cores=$(FW_CORES)" "core_split=$(FW_CORE_SPLIT)" "dither=1" "cross=$(FW_CROSS)" \
+		"bake_flags=$(FW_BAKE_FLAGS)" "times=$(FW_TIMES)" "stream_only=$(FW_STREAM_ONLY)" "cores=$(FW_CORES)" "core_split=$(FW_CORE_SPLIT)" "dither=1" "cross=$(FW_CROSS)" \
 		"stack_bytes=$(BOARD_STACK_BYTES)" "stack_entry=$(BOARD_STACK_ENTRY)" "emulated=$(if $(value BOARD_RUN),1,0)" \
 		"code_bytes_max=$(FW_CODE_BYTES_MAX)" "program=$(FW_MAIN)" "points=$(POINTS)" "ram_code=$(BOARD_RAM_CODE)" \
 		"vertex_cache_slots=$(BOARD_VERTEX_CACHE_SLOTS)" > $@.tmp
@@ -276,7 +276,11 @@ $(FW_DIR)/scene_link.opts: $(FW_DIR)/scene_link.h
 # The board's cores (BOARD_CORES in board.mk, 1 unless given): with more than one,
 # the core is built with the code that shares a frame out (TARN_LINK_PARTS) and the
 # measured run also renders the frame in that many parts (firmware/main.c).
-FW_CORES := $(or $(BOARD_CORES),1)
+# make profile-target counts one run of the streamed frames on one core
+# (FW_STREAM_ONLY): no frame drawn again, alone or in parts, that the profile would
+# count as the frame's own work.
+FW_STREAM_ONLY := $(if $(filter profile-target,$(MAKECMDGOALS)),1,0)
+FW_CORES := $(if $(filter 1,$(FW_STREAM_ONLY)),1,$(or $(BOARD_CORES),1))
 FW_LINK_PARTS := $(if $(filter-out 1,$(FW_CORES)),1,0)
 # How a board of two cores shares a frame out (BOARD_CORE_SPLIT, or
 # BOARD_CORE_SPLIT.NAME for one of its scenes): "parts", memory of its own for each
@@ -286,7 +290,7 @@ FW_CORE_SPLIT := $(or $(call fw_scene_value,BOARD_CORE_SPLIT),parts)
 ifeq ($(filter parts pipeline,$(FW_CORE_SPLIT)),)
 $(error BOARD_CORE_SPLIT of $(BOARD): "$(FW_CORE_SPLIT)"; expected parts or pipeline)
 endif
-FW_PIPELINE := $(if $(filter pipeline,$(FW_CORE_SPLIT)),1,0)
+FW_PIPELINE := $(if $(filter 1,$(FW_CORES)),0,$(if $(filter pipeline,$(FW_CORE_SPLIT)),1,0))
 # The core's one setting that is not a switch (tarn_config.h): a board with RAM
 # keeps more vertices in the walk's cache (BOARD_VERTEX_CACHE_SLOTS; 16 unless given).
 FW_CORE_OBJ := $(filter $(FW_DIR)/obj/core/%,$(FW_OBJ))
@@ -298,7 +302,7 @@ $(FW_OBJ): firmware/firmware.mk $(FW_BOARD_MK)
 FW_MAIN_OBJ := $(patsubst %,$(FW_DIR)/obj/firmware/%.o,main sweep_main display_main)
 $(FW_MAIN_OBJ): $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
 $(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"' -DFW_TIMES=$(FW_TIMES) \
-	-DFW_PARTS=$(FW_CORES) -DFW_PIPELINE=$(FW_PIPELINE) -DFW_STACK_BYTES=$(BOARD_STACK_BYTES)
+	-DFW_PARTS=$(FW_CORES) -DFW_PIPELINE=$(FW_PIPELINE) -DFW_STREAM_ONLY=$(FW_STREAM_ONLY) -DFW_STACK_BYTES=$(BOARD_STACK_BYTES)
 $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-distribute-patterns -fno-strict-aliasing
 # Code that runs once a frame, or once a water object a tile (the scene check and the
 # backdrop's, the motion, the view and water setup, the camera's unit vectors, the presets, the report), is compiled for

@@ -49,6 +49,14 @@
 #ifndef FW_PARTS
 #define FW_PARTS 1
 #endif
+/* FW_STREAM_ONLY (make profile-target): the streamed frames alone, so that a
+ * profile counts each instruction of the frames it divides by */
+#ifndef FW_STREAM_ONLY
+#define FW_STREAM_ONLY 0
+#endif
+#if FW_STREAM_ONLY && FW_PARTS > 1
+#error "FW_STREAM_ONLY: a run on one core (firmware.mk gives it one)"
+#endif
 
 /* The renderer's working memory: the only large buffer. */
 static uint32_t memory[(FW_MEMORY_BYTES + 3u) / 4u];
@@ -58,19 +66,23 @@ static uint32_t memory[(FW_MEMORY_BYTES + 3u) / 4u];
 #define LINE_PIXELS (SCENE_PIECE_WIDTH > TARN_TILE_SIZE_MAX ? SCENE_PIECE_WIDTH : TARN_TILE_SIZE_MAX)
 static uint8_t line[2u * LINE_PIXELS];
 
+#if !FW_STREAM_ONLY
 static int drop_tile(void *user, const tarn_tile *tile)
 {
     (void)user;
     (void)tile;
     return 0;
 }
+#endif
 
 /* The streamed frames' times, in ms. */
 static const uint32_t times[] = {FW_TIMES};
 #define STREAMED_FRAMES (sizeof times / sizeof times[0])
+/* the time of the frames after the streamed ones: the second, or the only one */
+#define SECOND_TIME (times[STREAMED_FRAMES > 1u ? 1u : 0u])
 #define CORE_FRAME STREAMED_FRAMES        /* the core alone, in one part */
 #define PARTS_FRAME (STREAMED_FRAMES + 1u) /* and in FW_PARTS, their sum */
-#define FRAMES (FW_PARTS > 1 ? STREAMED_FRAMES + 2u : STREAMED_FRAMES + 1u)
+#define FRAMES (FW_STREAM_ONLY ? STREAMED_FRAMES : FW_PARTS > 1 ? STREAMED_FRAMES + 2u : STREAMED_FRAMES + 1u)
 #if FW_PARTS < 1
 #error "FW_PARTS: the board's cores (BOARD_CORES), at least 1"
 #endif
@@ -78,7 +90,9 @@ static const uint32_t times[] = {FW_TIMES};
 /* What the run measured: every frame's instructions, and the slowest part's. Static:
  * off the stack the frames render on. */
 static uint64_t frame_instructions[FRAMES];
+#if !FW_STREAM_ONLY
 static uint64_t slowest_part;
+#endif
 
 /* The report line, from every frame's instructions (`frames`); kept out of main() so
  * that its buffer is not on the stack while the frames render. Returns main's exit
@@ -102,6 +116,7 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
     for (unsigned i = 0; i < STREAMED_FRAMES; i++) streamed += frames[i];
     report_text(&r, " insn_per_pixel=");
     report_number(&r, report_per_pixel(streamed, STREAMED_FRAMES * pixels));
+#if !FW_STREAM_ONLY
     report_text(&r, " render_insn_per_pixel=");
     report_number(&r, report_per_pixel(frames[CORE_FRAME], pixels));
     if (FW_PARTS > 1) {
@@ -111,6 +126,7 @@ static int __attribute__((noinline)) report_run(tarn_status status, const uint64
         report_text(&r, " parts_insn_per_pixel=");
         report_number(&r, report_per_pixel(slowest_part, pixels));
     }
+#endif
     report_text(&r, " stack_peak_bytes=");
     report_number(&r, board_stack_peak());
     report_text(&r, " frame_insn=");
@@ -273,11 +289,12 @@ int main(void)
         status = panel_sink_frame_status(&sink, status);
     }
     if (stream_transport_end((uint8_t)status) != 0) return 2;
+#if !FW_STREAM_ONLY
     /* The core alone: the same frame, tiles dropped (rendered here, not in a helper: a
      * frame more on the chain would overrun the 16 KB boards' stack reserve). */
     if (status == TARN_OK) {
         tarn_frame_config config = scene_config;
-        config.time_ms = times[1];
+        config.time_ms = SECOND_TIME;
         uint64_t start = board_instructions();
         status = tarn_render_frame_part(&scene_scene, &config, memory, sizeof memory, whole_frame, drop_tile, 0);
         frame_instructions[CORE_FRAME] = board_instructions() - start;
@@ -285,15 +302,15 @@ int main(void)
 #if FW_PIPELINE
     /* and on a board whose two cores share one ring the frame by a strip pipeline */
     if (status == TARN_OK)
-        status = pipeline_frame(times[1], drop_tile, 0, &frame_instructions[PARTS_FRAME], &slowest_part);
-    if (status == TARN_OK && !pipeline_draws_the_frame(times[1])) return report_pipeline_differs();
+        status = pipeline_frame(SECOND_TIME, drop_tile, 0, &frame_instructions[PARTS_FRAME], &slowest_part);
+    if (status == TARN_OK && !pipeline_draws_the_frame(SECOND_TIME)) return report_pipeline_differs();
 #elif FW_PARTS > 1
     /* and on a board of several cores the frame in FW_PARTS parts, one after the other
      * (a loop of their own: one loop over the whole frame and the parts takes the
      * 16 KB boards' images past their code budget by 28 bytes) */
     for (uint16_t part = 0; part < FW_PARTS && status == TARN_OK; part++) {
         tarn_frame_config config = scene_config;
-        config.time_ms = times[1];
+        config.time_ms = SECOND_TIME;
         const uint64_t start = board_instructions();
         const tarn_frame_part one_of = {part, FW_PARTS};
         status = tarn_render_frame_part(&scene_scene, &config, memory, sizeof memory, one_of, drop_tile, 0);
@@ -302,5 +319,6 @@ int main(void)
         if (counted > slowest_part) slowest_part = counted;
     }
 #endif
+#endif /* !FW_STREAM_ONLY */
     return report_run(status, frame_instructions, report_counter_check());
 }

@@ -58,9 +58,9 @@ BLOCK_RE = re.compile(r"^([ \t]*)<!-- figures:([\w.-]+) -->\n(.*?)^[ \t]*<!-- /f
 KEY_RE = re.compile(r"(\d{1,3}(?: \d{3})+|[\w.,%+-]*)<!-- fig:([\w.-]+)(?::(\w+))? -->")
 
 
-# The frame times (FW_TIMES, ms) of a profiled run: one streamed frame, which the
-# run then draws once more alone, is enough for the shares, and QEMU's execution
-# log, which the profile reads line by line, costs minutes a frame.
+# The frame times (FW_TIMES, ms) of a profiled run: one streamed frame (make
+# profile-target draws nothing else) is enough for the shares, and QEMU's execution
+# log, which the profile reads line by line, costs a minute a frame.
 PROFILE_TIMES = "1000"
 
 
@@ -499,11 +499,10 @@ class Measurer:
         return values
 
     def _m_profile(self, board):
-        # a board of several cores profiles the run without its frame in parts, whose
-        # second finding of the frame's own work would count as the frame's
+        # make profile-target runs the streamed frame alone, on one core
         fw_dir = os.path.join(OUT, "profile", board)
         out = run(["make", "--no-print-directory", "-s", "profile-target", "BOARD=" + board, "TOP=20",
-                   "BOARD_CORES=1", "FW_TIMES=" + PROFILE_TIMES, "FW_BUILD_DIR=" + fw_dir])
+                   "FW_TIMES=" + PROFILE_TIMES, "FW_BUILD_DIR=" + fw_dir])
         with open(os.path.join(ROOT, fw_dir, "profile.report")) as f:
             report = fields(f.read().strip())
         frames = len(report["frame_insn"].split(","))

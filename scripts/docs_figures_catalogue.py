@@ -790,19 +790,17 @@ def profile_functions(m):
     return out
 
 
-# a profiled run: its streamed frames (PROFILE_TIMES), then the core alone once more
-STREAMED_FRAMES = len(PROFILE_TIMES.split(","))
-RUN_FRAMES = STREAMED_FRAMES + 1
+# a profiled run: its streamed frames (PROFILE_TIMES) and nothing else
+PROFILED_FRAMES = len(PROFILE_TIMES.split(","))
 
 
-def profile_per_pixel(functions, frames=STREAMED_FRAMES):
-    """Instructions a pixel of the pond's frame (240x240) in the named functions, over
-    `frames` frames (the conversion runs in the streamed frames)."""
+def profile_per_pixel(functions):
+    """Instructions a pixel of the pond's frame (240x240) in the named functions."""
     def fn(m):
         f = profile_functions(m)
         if not f:
             return Fig("1", 1.0)
-        return insn(sum(f.get(name, 0) for name in functions) / (frames * 57600.0))
+        return insn(sum(f.get(name, 0) for name in functions) / (PROFILED_FRAMES * 57600.0))
     return fn
 
 
@@ -1244,22 +1242,22 @@ def fw_scenes(m):
 
 
 # where the still board's instructions go: make profile-target's functions, by the work they do
-PROFILE_WORK = [  # the work, its functions, the frames it runs in (the panel: the streamed ones), what it is
+PROFILE_WORK = [  # the work, its functions, what it is
     ("the walk", ["tarn__water_still_tile", "over_still", "tarn__water_finish", "sharp_at", "tarn__water_sharp_at"],
-     RUN_FRAMES, "the scan of every tile pixel for each water object's marks, then each water pixel: its block, whether "
-        "a sharp feature can show, its colour"),
+     "the scan of every tile pixel for each water object's marks, then each water pixel: its block, whether "
+     "a sharp feature can show, its colour"),
     ("the panel", ["convert_rows", "stream_data", "stream_command", "board_write", "semihosting_write",
-                   "tarn_panel_send_tile", "panel_sink_send_tile", "set_window", "set_address_range"], STREAMED_FRAMES,
-     "RGB565 with the ordered dither (`convert_rows`), the ST7789 stream; a streamed frame's"),
-    ("reading the picture", ["tarn__backdrop_fill"], RUN_FRAMES, "a palette index a pixel, read a word at a time"),
+                   "tarn_panel_send_tile", "panel_sink_send_tile", "set_window", "set_address_range"],
+     "RGB565 with the ordered dither (`convert_rows`), the ST7789 stream"),
+    ("reading the picture", ["tarn__backdrop_fill"], "a palette index a pixel, read a word at a time"),
     ("the highlight", ["tarn__water_surface_normal", "map_texels", "tarn__water_specular", "tarn__water_texel_at",
-                       "tarn_rsqrt_q16", "tarn__water_normalise"], RUN_FRAMES,
+                       "tarn_rsqrt_q16", "tarn__water_normalise"],
      "once a block: both normal maps' texels, the normal's direction, the specular's test"),
-    ("foam", ["tarn__water_foam", "tarn__water_foam_over", "tarn__backdrop_foam_band", "tarn_sin_q15"], RUN_FRAMES,
+    ("foam", ["tarn__water_foam", "tarn__water_foam_over", "tarn__backdrop_foam_band", "tarn_sin_q15"],
      "the band's pixels at every frame: the line's phase, the foam texel, the blend"),
-    ("texture coordinates", ["texture_coordinate", "recip_normalised_q30", "tarn_recip_q30"], RUN_FRAMES,
+    ("texture coordinates", ["texture_coordinate", "recip_normalised_q30", "tarn_recip_q30"],
      "a reciprocal of near/d and two products a block's top-left pixel and a foam pixel"),
-    ("the scene check", ["tarn__backdrop_valid", "tarn__scene_check"], RUN_FRAMES, "the backdrop's palette and spans, every frame"),
+    ("the scene check", ["tarn__backdrop_valid", "tarn__scene_check"], "the backdrop's palette and spans, every frame"),
 ]
 
 
@@ -1267,10 +1265,10 @@ PROFILE_WORK = [  # the work, its functions, the frames it runs in (the panel: t
 def fw_profile_still(m):
     """make profile-target BOARD=qemu-m0-still, its functions grouped by the work they do."""
     f = profile_functions(m)
-    rows = [[work, profile_per_pixel(names, frames)(m), what] for work, names, frames, what in PROFILE_WORK]
-    named = {n for _, names, _, _ in PROFILE_WORK for n in names} | {"spin"}
+    rows = [[work, profile_per_pixel(names)(m), what] for work, names, what in PROFILE_WORK]
+    named = {n for _, names, _ in PROFILE_WORK for n in names} | {"spin"}
     rest = sum(v for k, v in f.items() if k not in named)
-    rows.append(["the rest", insn(rest / (RUN_FRAMES * 57600.0)) if f else Fig("1", 1.0),
+    rows.append(["the rest", insn(rest / (PROFILED_FRAMES * 57600.0)) if f else Fig("1", 1.0),
                  "every other function (the counter check's loop, `spin`, left out)"])
     return table(["work", "insn/pixel", "what it is"], rows, ["---", "---:", "---"])
 
