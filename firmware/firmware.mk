@@ -151,7 +151,7 @@ FW_CCACHE := $(shell command -v ccache 2>/dev/null)
 FW_CC := $(FW_CCACHE) $(FW_CROSS)gcc
 FW_CFLAGS := -std=c99 -Wall -Wextra -Werror -O2 -g -ffreestanding -fno-common \
 	-ffunction-sections -fdata-sections -fstack-usage $(BOARD_CPU) \
-	-Icore -Icore/include -Ifirmware -I$(FW_DIR) $(BOARD_INCLUDE) $(FW_LIBC_INCLUDE)
+	-Icore -Icore/include -Ifirmware $(BOARD_INCLUDE) $(FW_LIBC_INCLUDE)
 # The program: an emulated board runs the measured run and sends the panel stream
 # through its writes; a real board shows the scene forever through SPI and DMA.
 ifneq ($(value BOARD_RUN),)
@@ -295,13 +295,13 @@ FW_PIPELINE := $(if $(filter 1,$(FW_CORES)),0,$(if $(filter pipeline,$(FW_CORE_S
 # keeps more vertices in the walk's cache (BOARD_VERTEX_CACHE_SLOTS; 16 unless given).
 FW_CORE_OBJ := $(filter $(FW_DIR)/obj/core/%,$(FW_OBJ))
 $(FW_CORE_OBJ): $(FW_DIR)/scene_link.opts $(FW_DIR)/firmware.conf
-$(FW_CORE_OBJ): FW_DEFINES = @$(FW_DIR)/scene_link.opts -DTARN_LINK_PARTS=$(FW_LINK_PARTS) \
+$(FW_CORE_OBJ): FW_DEFINES = $(strip $(file < $(FW_DIR)/scene_link.opts)) -DTARN_LINK_PARTS=$(FW_LINK_PARTS) \
 	$(if $(BOARD_VERTEX_CACHE_SLOTS),-DTARN_VERTEX_CACHE_SLOTS=$(BOARD_VERTEX_CACHE_SLOTS)u)
 
 $(FW_OBJ): firmware/firmware.mk $(FW_BOARD_MK)
 FW_MAIN_OBJ := $(patsubst %,$(FW_DIR)/obj/firmware/%.o,main sweep_main display_main)
 $(FW_MAIN_OBJ): $(FW_DIR)/scene.h $(FW_DIR)/firmware.conf
-$(FW_MAIN_OBJ): FW_DEFINES = -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"' -DFW_TIMES=$(FW_TIMES) \
+$(FW_MAIN_OBJ): FW_DEFINES = -I$(FW_DIR) -DFW_SCENE_LABEL='"$(FW_SCENE_LABEL)"' -DFW_BOARD_NAME='"$(BOARD)"' -DFW_TIMES=$(FW_TIMES) \
 	-DFW_PARTS=$(FW_CORES) -DFW_PIPELINE=$(FW_PIPELINE) -DFW_STREAM_ONLY=$(FW_STREAM_ONLY) -DFW_STACK_BYTES=$(BOARD_STACK_BYTES)
 $(FW_DIR)/obj/firmware/libc/string.o: FW_DEFINES = -fno-builtin -fno-tree-loop-distribute-patterns -fno-strict-aliasing
 # Code that runs once a frame, or once a water object a tile (the scene check and the
