@@ -105,7 +105,8 @@ static plane_anchor anchor_of(const tarn_triangle_setup *t)
     return anchor;
 }
 
-/* e1 * d1 + e2 * d2 for two edge values and two value differences. */
+/* e1 * d1 + e2 * d2 for two 32-bit factors a term (edge values, weights, value
+ * differences) whose sum fits 64 bits. */
 static int64_t weighted_sum(int32_t e1, int32_t d1, int32_t e2, int32_t d2)
 {
     return tarn_mul_i32_wide(e1, d1) + tarn_mul_i32_wide(e2, d2);
@@ -176,7 +177,7 @@ static plane_basis basis_of(const tarn_triangle_setup *t, const plane_anchor *an
  * sum stays below 2^61. */
 static uint32_t weighted(int32_t d1, int32_t d2, const int32_t w[2], unsigned shift)
 {
-    return tarn_round_shift_low32((uint64_t)(tarn_mul_i32_wide(d1, w[0]) + tarn_mul_i32_wide(d2, w[1])), shift);
+    return tarn_round_shift_low32((uint64_t)weighted_sum(d1, w[0], d2, w[1]), shift);
 }
 
 /* n / area2 rounded to nearest (halves away from 0), exactly (|n| < 2^61), modulo 2^32. */
