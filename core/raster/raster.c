@@ -34,38 +34,48 @@ static TARN_ALWAYS_INLINE uint32_t reciprocal_of_q(uint32_t q, unsigned steps, u
     return tarn_recip_q30(q << *lz, steps);
 }
 
-/* An affine triangle's attributes along row j: value(i) = origin[k] + step_x * i,
- * modulo 2^32 as plane_at, so each pixel takes one product instead of two. */
-static void affine_row_origin(const tarn_attribute_set *set, const tarn_triangle_setup *t, int32_t j,
-                              uint32_t origin[TARN_ATTRIBUTES_MAX])
+/* A plane's value at pixel (0, j), so that pixel (i, j) takes origin + step_x * i. */
+static uint32_t row_origin_of(const tarn_plane *p, const tarn_triangle_setup *t, int32_t j)
 {
-    for (int k = set->first_varying; k < set->count; k++) {
-        const tarn_plane *p = &set->premultiplied[k];
-        origin[k] = p->anchor + p->step_y * (uint32_t)(j - t->box.y0) - p->step_x * (uint32_t)t->box.x0;
-    }
+    return p->anchor + p->step_y * (uint32_t)(j - t->box.y0) - p->step_x * (uint32_t)t->box.x0;
 }
 
-static TARN_ALWAYS_INLINE void affine_t(const tarn_attribute_set *set, const uint32_t origin[TARN_ATTRIBUTES_MAX], int32_t i,
+/* Row j's origins of the planes a pixel reads: the attributes', and q's in pixel
+ * perspective. */
+static void row_origins(const tarn_attribute_set *set, const tarn_triangle_setup *t, int32_t j,
+                        tarn_row_origin *origin)
+{
+    if (set->perspective == TARN_PERSPECTIVE_PIXEL) origin->q = row_origin_of(&set->q, t, j);
+    for (int k = set->first_varying; k < set->count; k++)
+        origin->attributes[k] = row_origin_of(&set->premultiplied[k], t, j);
+}
+
+static TARN_ALWAYS_INLINE uint32_t plane_along_row(uint32_t origin, const tarn_plane *p, int32_t i)
+{
+    return origin + p->step_x * (uint32_t)i;
+}
+
+static TARN_ALWAYS_INLINE void affine_t(const tarn_attribute_set *set, const tarn_row_origin *origin, int32_t i,
                      uint32_t out[TARN_ATTRIBUTES_MAX])
 {
     for (int k = set->first_varying; k < set->count; k++) {
-        uint32_t v = origin[k] + set->premultiplied[k].step_x * (uint32_t)i;
+        uint32_t v = plane_along_row(origin->attributes[k], &set->premultiplied[k], i);
         if ((int32_t)v < (int32_t)set->t_min[k]) v = set->t_min[k];
         out[k] = v > set->t_max[k] ? set->t_max[k] : v;
     }
 }
 
-/* Exact T values of every attribute at pixel (i, j), perspective-correct. */
-static TARN_ALWAYS_INLINE void exact_t(const tarn_attribute_set *set, const tarn_triangle_setup *t, int32_t i, int32_t j,
+/* Exact T values of every attribute at pixel i of the row, perspective-correct. */
+static TARN_ALWAYS_INLINE void exact_t(const tarn_attribute_set *set, const tarn_row_origin *origin, int32_t i,
                     unsigned steps, uint32_t out[TARN_ATTRIBUTES_MAX])
 {
-    uint32_t q = tarn__plane_at(&set->q, t, i, j);
+    uint32_t q = plane_along_row(origin->q, &set->q, i);
     if ((int32_t)q < (int32_t)set->q_min) q = set->q_min;
     if (q > set->q_max) q = set->q_max;
     unsigned lz;
     uint32_t recip = reciprocal_of_q(q, steps, &lz);
     for (int k = set->first_varying; k < set->count; k++)
-        out[k] = divide_by_q(tarn__plane_at(&set->premultiplied[k], t, i, j), recip, lz,
+        out[k] = divide_by_q(plane_along_row(origin->attributes[k], &set->premultiplied[k], i), recip, lz,
                              set->t_min[k], set->t_max[k]);
 }
 
@@ -159,17 +169,17 @@ static uint32_t shade_pixel(const tarn_attribute_set *set, const tarn_texture *t
     return rgb;
 }
 
-/* A row's interpolation state before its first covered pixel: the affine origin,
- * or a span cache that holds no span yet. */
+/* A row's interpolation state before its first covered pixel: the planes'
+ * origins, or a span cache that holds no span yet. */
 static void row_attributes_start(tarn_row_attributes *row, const tarn_tile_target *tile, const tarn_attribute_set *set,
                                  const tarn_triangle_setup *t, int32_t j)
 {
-    if (TARN_LINK_PERSPECTIVE_AFFINE && set->perspective == TARN_PERSPECTIVE_AFFINE) {
-        affine_row_origin(set, t, j, row->affine_origin);
-    } else if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN) {
+    if (TARN_LINK_PERSPECTIVE_SPAN && set->perspective == TARN_PERSPECTIVE_SPAN) {
         row->span.limit = INT32_MIN;
         row->span.length = -1;
         row->span.log2_span = tile->log2_span;
+    } else {
+        row_origins(set, t, j, &row->origin);
     }
 }
 
@@ -181,11 +191,11 @@ static TARN_ALWAYS_INLINE void attributes_at(tarn_span *s, int32_t i, int mode)
     const tarn_attribute_set *set = s->set;
     const unsigned steps = s->target->quality->recip_newton_steps;
     if (mode == TARN_PERSPECTIVE_AFFINE)
-        affine_t(set, s->row.affine_origin, i, s->values);
+        affine_t(set, &s->row.origin, i, s->values);
     else if (mode == TARN_PERSPECTIVE_SPAN)
         span_t(set, s->triangle, steps, i, s->j, &s->row.span, s->values);
     else
-        exact_t(set, s->triangle, i, s->j, steps, s->values);
+        exact_t(set, &s->row.origin, i, steps, s->values);
 }
 
 void tarn__span_attributes(tarn_span *s, int32_t i)

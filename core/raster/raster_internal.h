@@ -201,10 +201,17 @@ typedef struct {
     uint32_t inverse_length;       /* 2^32 / length, tarn_recip_u32's */
 } tarn_span_cache;
 
+/* Where the row's planes start: along row j each plane is origin + step_x * i,
+ * modulo 2^32 as tarn__plane_at, so a pixel takes one product a plane, not two. */
+typedef struct {
+    uint32_t q;                                /* the q plane's (pixel perspective) */
+    uint32_t attributes[TARN_ATTRIBUTES_MAX]; /* each premultiplied plane's */
+} tarn_row_origin;
+
 /* What one row keeps for its pixels' attributes, by the triangle's perspective
- * mode: the affine origin, or the span cache. */
+ * mode: the planes' origins (affine and pixel), or the span cache. */
 typedef union {
-    uint32_t affine_origin[TARN_ATTRIBUTES_MAX];
+    tarn_row_origin origin;
     tarn_span_cache span;
 } tarn_row_attributes;
 
