@@ -904,6 +904,11 @@ FW_VARIANTS.update({
                               "--vertices frame"),
     "m0-264k-opaque-exact": ("qemu-m0-264k", "pond-opaque", "--quality exact --frame strips --tile 64 --vertices frame"),
     "rv32-400k-orbit-tiles": ("qemu-rv32-400k", "pond-orbit", RAM_BOARD_QUALITY + " --tile 64"),
+    # the boards' own flags with a plane for each channel of the lit colour
+    "m0-264k-orbit-lit-planes": ("qemu-m0-264k", "pond-orbit",
+                                 board_mk_value("qemu-m0-264k", "BOARD_BAKE_FLAGS") + " --lit planes"),
+    "m0-264k-opaque-lit-planes": ("qemu-m0-264k", "pond-opaque",
+                                  board_mk_value("qemu-m0-264k", "BOARD_BAKE_FLAGS.pond-opaque") + " --lit planes"),
     "rv32-400k-opaque-tiles": ("qemu-rv32-400k", "pond-opaque", RAM_BOARD_QUALITY + " --tile 64"),
 })
 

@@ -68,6 +68,11 @@ static void test_good_lines_parse(void **state)
     assert_int_equal(o.quality.refraction_normal, TARN_REFRACTION_NORMAL_EXACT);
     assert_int_equal(parse("render s.json -o x.png --refraction-normal shared", &o, &err), 0);
     assert_int_equal(o.quality.refraction_normal, TARN_REFRACTION_NORMAL_SHARED);
+    assert_int_equal(parse("render s.json -o x.png --lit planes", &o, &err), 0);
+    assert_int_equal(o.quality.lit_colour, TARN_LIT_PLANES);
+    assert_int_equal(parse("render s.json -o x.png --quality exact --lit line", &o, &err), 0);
+    assert_int_equal(o.quality.lit_colour, TARN_LIT_LINE);
+    assert_int_not_equal(parse("render s.json -o x.png --lit rgb", &o, &err), 0);
     assert_int_equal(parse("render s.json -o x.png --frame strips --vertices frame", &o, &err), 0);
     assert_int_equal(o.quality.frame_shape, TARN_FRAME_STRIPS);
     assert_int_equal(o.quality.vertex_pass, TARN_VERTICES_PER_FRAME);
@@ -104,7 +109,7 @@ static int same_quality(const tarn_quality *a, const tarn_quality *b)
            a->refraction_apron == b->refraction_apron && a->cluster_bins == b->cluster_bins &&
            a->fog_argument_bits == b->fog_argument_bits && a->water_block == b->water_block &&
            a->depth_interpolation == b->depth_interpolation && a->frame_shape == b->frame_shape &&
-           a->vertex_pass == b->vertex_pass;
+           a->vertex_pass == b->vertex_pass && a->lit_colour == b->lit_colour;
 }
 
 /* A preset is the base; a knob changes it wherever it stands on the line. */

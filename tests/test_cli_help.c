@@ -90,7 +90,7 @@ static void test_help_names_every_choice(void **state)
 {
     (void)state;
     static const char *const knobs[] = {"--vertices", "--frame", "--refraction-normal", "--depth-interpolation",
-                                        "--bins"};
+                                        "--bins", "--lit"};
     static cli_result help, bad;
     run_line("render --help", &help);
     for (size_t k = 0; k < sizeof knobs / sizeof knobs[0]; k++) {

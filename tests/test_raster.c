@@ -599,22 +599,35 @@ static void test_depth_ties_resolve_like_the_reference(void **state)
 /* Plane depth (TARN_DEPTH_PLANE) lands within a few units of 2^-30 of exact depth
  * at every pixel of random triangles: it covers the same pixels, and what it gives
  * up is only the exact tie where two surfaces meet. */
+/* A counter on the heap (it holds two tiles) at 4 subpixel bits. */
+static coverage_counter *counter_new(void)
+{
+    coverage_counter *c = malloc(sizeof *c);
+    assert_non_null(c);
+    counter_init(c, 4);
+    return c;
+}
+
+/* A vertex anywhere in and around the 64-pixel tile, at any depth. */
+static tarn_screen_vertex random_screen_vertex(uint32_t *seed)
+{
+    tarn_screen_vertex v = screen_vertex((int32_t)(lcg(seed) % (96u * 16u)) - 16 * 16,
+                                         (int32_t)(lcg(seed) % (96u * 16u)) - 16 * 16);
+    v.inv_depth = 1u + lcg(seed) % (1u << 24) * 64u; /* up to 2^30 */
+    return v;
+}
+
 static void test_plane_depth_follows_exact_depth(void **state)
 {
     (void)state;
-    coverage_counter *exact = malloc(sizeof *exact), *plane = malloc(sizeof *plane);
-    assert_non_null(exact);
-    assert_non_null(plane);
-    counter_init(exact, 4);
-    counter_init(plane, 4);
+    coverage_counter *exact = counter_new(), *plane = counter_new();
     plane->quality.depth_interpolation = TARN_DEPTH_PLANE;
     uint32_t seed = 2024, worst = 0;
     long drawn = 0;
     for (int n = 0; n < 2000; n++) {
         tarn_screen_vertex v[3];
         for (int k = 0; k < 3; k++) {
-            v[k] = screen_vertex((int32_t)(lcg(&seed) % (96u * 16u)) - 16 * 16, (int32_t)(lcg(&seed) % (96u * 16u)) - 16 * 16);
-            v[k].inv_depth = 1u + lcg(&seed) % (1u << 24) * 64u; /* up to 2^30 */
+            v[k] = random_screen_vertex(&seed);
         }
         counter_draw(exact, v);
         counter_draw(plane, v);
@@ -634,6 +647,88 @@ static void test_plane_depth_follows_exact_depth(void **state)
     assert_true(worst <= 128u);
     free(exact);
     free(plane);
+}
+
+/* A vertex lit as one light over an uncoloured mesh lights it: ambient plus light
+ * times `diffuse` (0..1 as 0..65536) a channel, rounded to Q8.8 as the vertex
+ * stage rounds it. */
+static void light_vertex(tarn_screen_vertex *v, uint32_t diffuse)
+{
+    static const uint32_t ambient[3] = {16448, 18504, 20560}, light[3] = {40000, 38000, 30000}; /* Q8.8 */
+    for (int c = 0; c < 3; c++) v->lit[c] = (uint16_t)(ambient[c] + ((light[c] * diffuse + 32768u) >> 16));
+}
+
+/* What the setup makes of three lit vertices, at a perspective and a lit knob. */
+static tarn_attribute_set setup_lit(const tarn_screen_vertex v[3], uint8_t perspective, int lit_line)
+{
+    tarn_triangle_setup t;
+    assert_true(tarn__orient_triangle(v, TARN_CULL_NONE, 4, &t));
+    t.box = tarn__triangle_pixels(&t);
+    const tarn_attribute_request request = {NULL, 0, 0, lit_line};
+    tarn_attribute_set set;
+    tarn__setup_attributes(&t, &request, perspective, TARN_DEPTH_PLANE, &set);
+    return set;
+}
+
+/* A lit colour on a line takes one plane, of the channel that changes most, and
+ * only in per-pixel perspective with the knob at line; colours off the line, or
+ * a saturated vertex, keep a plane each. */
+static void test_lit_line_where_colours_lie_on_one(void **state)
+{
+    (void)state;
+    tarn_screen_vertex v[3] = {screen_vertex(0, 0), screen_vertex(40 * 16, 0), screen_vertex(0, 40 * 16)};
+    light_vertex(&v[0], 0);
+    light_vertex(&v[1], 30000);
+    light_vertex(&v[2], 65536);
+    tarn_attribute_set set = setup_lit(v, TARN_PERSPECTIVE_PIXEL, 1);
+    assert_int_equal(set.first_varying, 2);
+    assert_int_equal(set.t_min[2] >> set.t_shift[2], v[0].lit[0]); /* red changes most */
+    assert_int_equal(set.t_max[2] >> set.t_shift[2], v[2].lit[0]);
+    assert_int_equal(setup_lit(v, TARN_PERSPECTIVE_PIXEL, 0).first_varying, 0);
+    assert_int_equal(setup_lit(v, TARN_PERSPECTIVE_SPAN, 1).first_varying, 0);
+    v[1].lit[2] += TARN_LIT_LINE_TOLERANCE + 2; /* off the line */
+    assert_int_equal(setup_lit(v, TARN_PERSPECTIVE_PIXEL, 1).first_varying, 0);
+    light_vertex(&v[1], 30000);
+    for (int c = 0; c < 3; c++) v[2].lit[c] = 65280; /* saturated: white, not on the line */
+    assert_int_equal(setup_lit(v, TARN_PERSPECTIVE_PIXEL, 1).first_varying, 0);
+}
+
+/* Random lit triangles drawn with the lit colour on its line and with a plane a
+ * channel: the same pixels, each channel within a level. */
+static void test_lit_line_draws_as_planes(void **state)
+{
+    (void)state;
+    coverage_counter *planes = counter_new(), *line = counter_new();
+    planes->quality.lit_colour = TARN_LIT_PLANES;
+    line->quality.lit_colour = TARN_LIT_LINE;
+    uint32_t seed = 77, worst = 0;
+    long drawn = 0, differ = 0;
+    for (int n = 0; n < 2000; n++) {
+        tarn_screen_vertex v[3];
+        for (int k = 0; k < 3; k++) {
+            v[k] = random_screen_vertex(&seed);
+            light_vertex(&v[k], lcg(&seed) % 65537u);
+        }
+        counter_draw(planes, v);
+        counter_draw(line, v);
+        for (int p = 0; p < FRAME * FRAME; p++) {
+            assert_int_equal(planes->colour[p] != 0, line->colour[p] != 0);
+            if (planes->colour[p] == 0) continue;
+            drawn++;
+            differ += planes->colour[p] != line->colour[p];
+            for (int c = 0; c < 3; c++) {
+                const uint32_t a = (planes->colour[p] >> (8 * c)) & 0xFFu, b = (line->colour[p] >> (8 * c)) & 0xFFu;
+                const uint32_t apart = a > b ? a - b : b - a;
+                if (apart > worst) worst = apart;
+            }
+        }
+    }
+    print_message("lit line: %ld pixels, %ld of them another colour than the planes', at most %u level apart\n",
+                  drawn, differ, (unsigned)worst);
+    assert_true(drawn > 100000);
+    assert_true(worst <= 1u);
+    free(planes);
+    free(line);
 }
 
 /* The 16-bit depth code of near/d q, as a pixel's depth test takes it. */
@@ -766,6 +861,8 @@ int main(void)
         cmocka_unit_test(test_extreme_cameras),
         cmocka_unit_test(test_depth_ties_resolve_like_the_reference),
         cmocka_unit_test(test_plane_depth_follows_exact_depth),
+        cmocka_unit_test(test_lit_line_where_colours_lie_on_one),
+        cmocka_unit_test(test_lit_line_draws_as_planes),
         cmocka_unit_test(test_depth_ranges_code_as_the_encoder),
         cmocka_unit_test(test_cull_modes),
         cmocka_unit_test(test_configs_out_of_range_are_rejected),

@@ -149,22 +149,58 @@ static TARN_ALWAYS_INLINE void span_t(const tarn_attribute_set *set, const tarn_
     }
 }
 
+/* The texel a textured pixel samples, from its u and v. */
+static TARN_ALWAYS_INLINE const uint8_t *texel_at(const tarn_attribute_set *set, const tarn_texture *texture,
+                                                  const uint32_t t[TARN_ATTRIBUTES_MAX])
+{
+    const uint32_t tx = (t[TARN_ATTRIBUTE_U] >> set->texel_shift[0]) & set->texel_mask[0];
+    const uint32_t ty = (t[TARN_ATTRIBUTE_V] >> set->texel_shift[1]) & set->texel_mask[1];
+    return &texture->rgb[3u * ((ty << set->log2_width) + tx)];
+}
+
+/* A lit channel (Q8.8) as a byte, to nearest. */
+static TARN_ALWAYS_INLINE uint32_t lit_byte(uint32_t lit)
+{
+    return (lit + 128u) >> 8;
+}
+
+/* A texel's channel times a lit channel (Q8.8): / (255 * 256), to nearest. */
+static TARN_ALWAYS_INLINE uint32_t lit_texel_byte(uint32_t texel, uint32_t lit)
+{
+    const uint32_t product = texel * lit;
+    return (product + (product >> 8) + 32768u) >> 16;
+}
+
 static uint32_t shade_pixel(const tarn_attribute_set *set, const tarn_texture *texture,
                             const uint32_t t[TARN_ATTRIBUTES_MAX])
 {
     uint32_t rgb = 0;
     if (texture == NULL) {
-        for (int c = 0; c < 3; c++) rgb = (rgb << 8) | (((t[c] >> set->t_shift[c]) + 128u) >> 8);
+        for (int c = 0; c < 3; c++) rgb = (rgb << 8) | lit_byte(t[c] >> set->t_shift[c]);
         return rgb;
     }
-    const uint32_t tx = (t[TARN_ATTRIBUTE_U] >> set->texel_shift[0]) & set->texel_mask[0];
-    const uint32_t ty = (t[TARN_ATTRIBUTE_V] >> set->texel_shift[1]) & set->texel_mask[1];
-    const uint8_t *texel = &texture->rgb[3u * ((ty << set->log2_width) + tx)];
+    const uint8_t *texel = texel_at(set, texture, t);
     if (set->lit_full) /* the product below is then the texel itself */
         return ((uint32_t)texel[0] << 16) | ((uint32_t)texel[1] << 8) | texel[2];
+    for (int c = 0; c < 3; c++) rgb = (rgb << 8) | lit_texel_byte(texel[c], t[c] >> set->t_shift[c]);
+    return rgb;
+}
+
+/* shade_pixel for a lit colour on a line (first_varying 2): each channel found
+ * from the key's value, attribute 2. */
+static TARN_ALWAYS_INLINE uint32_t shade_line_pixel(const tarn_attribute_set *set, const tarn_texture *texture,
+                                                    const uint32_t t[TARN_ATTRIBUTES_MAX])
+{
+    const tarn_lit_line *line = &set->lit_line;
+    /* the key is clamped to its vertices' range, so `along` is 0..65280 and each
+       product, with a slope of at most 2^15, stays below 2^31 */
+    const int32_t along = (int32_t)(t[2] >> set->t_shift[2]) - line->key_base;
+    const uint8_t *texel = texture != NULL ? texel_at(set, texture, t) : NULL;
+    uint32_t rgb = 0;
     for (int c = 0; c < 3; c++) {
-        const uint32_t product = texel[c] * (t[c] >> set->t_shift[c]); /* lit Q8.8; / (255 * 256), to nearest */
-        rgb = (rgb << 8) | ((product + (product >> 8) + 32768u) >> 16);
+        const uint32_t lit = (uint32_t)tarn_clamp_i32(
+            line->base[c] + tarn_floor_shift(along * line->slope[c] + (1 << 14), 15), 0, 65280);
+        rgb = (rgb << 8) | (texel != NULL ? lit_texel_byte(texel[c], lit) : lit_byte(lit));
     }
     return rgb;
 }
@@ -218,33 +254,41 @@ static TARN_ALWAYS_INLINE uint32_t constant_pixel(void *rgb, tarn_span *s, int32
     return *(const uint32_t *)rgb;
 }
 
-/* Any other opaque pixel, in perspective mode `mode`: its colour interpolated and,
- * with a texture, times the texel. */
-static TARN_ALWAYS_INLINE uint32_t interpolated_pixel(const tarn_texture *texture, tarn_span *s, int32_t i, int mode)
+/* Any other opaque pixel, in perspective mode `mode`: its colour interpolated (on
+ * its line, `on_line`) and, with a texture, times the texel. */
+static TARN_ALWAYS_INLINE uint32_t interpolated_pixel(const tarn_texture *texture, tarn_span *s, int32_t i, int mode,
+                                                      int on_line)
 {
     attributes_at(s, i, mode);
-    return shade_pixel(s->set, texture, s->values);
+    return on_line ? shade_line_pixel(s->set, texture, s->values) : shade_pixel(s->set, texture, s->values);
 }
 
 static TARN_ALWAYS_INLINE uint32_t affine_pixel(void *texture, tarn_span *s, int32_t i, int32_t index,
                                                uint32_t inv_depth)
 {
     (void)index, (void)inv_depth;
-    return interpolated_pixel(texture, s, i, TARN_PERSPECTIVE_AFFINE);
+    return interpolated_pixel(texture, s, i, TARN_PERSPECTIVE_AFFINE, 0);
 }
 
 static TARN_ALWAYS_INLINE uint32_t spanned_pixel(void *texture, tarn_span *s, int32_t i, int32_t index,
                                                 uint32_t inv_depth)
 {
     (void)index, (void)inv_depth;
-    return interpolated_pixel(texture, s, i, TARN_PERSPECTIVE_SPAN);
+    return interpolated_pixel(texture, s, i, TARN_PERSPECTIVE_SPAN, 0);
 }
 
 static TARN_ALWAYS_INLINE uint32_t perspective_pixel(void *texture, tarn_span *s, int32_t i, int32_t index,
                                                     uint32_t inv_depth)
 {
     (void)index, (void)inv_depth;
-    return interpolated_pixel(texture, s, i, TARN_PERSPECTIVE_PIXEL);
+    return interpolated_pixel(texture, s, i, TARN_PERSPECTIVE_PIXEL, 0);
+}
+
+static TARN_ALWAYS_INLINE uint32_t perspective_line_pixel(void *texture, tarn_span *s, int32_t i, int32_t index,
+                                                         uint32_t inv_depth)
+{
+    (void)index, (void)inv_depth;
+    return interpolated_pixel(texture, s, i, TARN_PERSPECTIVE_PIXEL, 1);
 }
 
 /* The spans of an opaque triangle, a loop each, chosen once a triangle. */
@@ -266,6 +310,11 @@ static void draw_spanned_span(tarn_span *s, const tarn_texture *texture)
 static void draw_perspective_span(tarn_span *s, const tarn_texture *texture)
 {
     tarn__span_draw(s, perspective_pixel, (void *)texture);
+}
+
+static void draw_perspective_line_span(tarn_span *s, const tarn_texture *texture)
+{
+    tarn__span_draw(s, perspective_line_pixel, (void *)texture);
 }
 
 static void row_edges_at(const tarn_triangle_setup *t, int32_t i, int32_t j, tarn_row_edges *r)
@@ -397,7 +446,8 @@ void tarn__raster_triangle(void *target, const tarn_screen_vertex vertex[3], con
     const tarn_material *material = object->material;
     tarn_triangle_rows rows;
     if (!tarn__triangle_enters_tile(&rows, target, vertex, material->cull)) return;
-    tarn_attribute_request request = {NULL, 0, 0};
+    const tarn_quality *quality = rows.target->quality;
+    tarn_attribute_request request = {NULL, 0, 0, TARN_LINK_PERSPECTIVE_PIXEL && quality->lit_colour == TARN_LIT_LINE};
     if (material->texture != NULL && object->mesh->uvs != NULL) {
         request.texture = material->texture;
         request.uv = 1;
@@ -407,7 +457,7 @@ void tarn__raster_triangle(void *target, const tarn_screen_vertex vertex[3], con
      * once a triangle */
     const int constant = request.texture == NULL && rows.set.first_varying == rows.set.count;
     const uint32_t rgb = constant ? shade_pixel(&rows.set, NULL, rows.values) : 0u;
-    const int mode = rows.set.perspective;
+    const int mode = rows.set.perspective, on_line = rows.set.first_varying == 2;
     for (tarn_span *s; (s = tarn__triangle_next_span(&rows)) != NULL;) {
         if (constant)
             draw_constant_span(s, rgb);
@@ -415,6 +465,8 @@ void tarn__raster_triangle(void *target, const tarn_screen_vertex vertex[3], con
             draw_affine_span(s, request.texture);
         else if (TARN_LINK_PERSPECTIVE_SPAN && mode == TARN_PERSPECTIVE_SPAN)
             draw_spanned_span(s, request.texture);
+        else if (TARN_LINK_PERSPECTIVE_PIXEL && on_line)
+            draw_perspective_line_span(s, request.texture);
         else if (TARN_LINK_PERSPECTIVE_PIXEL)
             draw_perspective_span(s, request.texture);
     }

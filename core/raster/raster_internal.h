@@ -82,11 +82,28 @@ typedef struct {
     uint8_t exact;    /* 1: TARN_DEPTH_EXACT; 0: a plane, whose steps have no remainder */
 } tarn_depth_plane;
 
+/* A lit colour whose three vertices lie on one line in RGB, within
+ * TARN_LIT_LINE_TOLERANCE a channel (one light over a mesh without vertex colours:
+ * each channel is ambient plus light times N.L, a line in one number). Attribute 2
+ * then interpolates the key channel alone, and a pixel finds each channel c from
+ * its value `key` (Q8.8) as base[c] + (key - key_base) * slope[c] / 2^15: one plane
+ * and one division a pixel instead of three. */
+typedef struct {
+    uint16_t key_base;  /* the key channel at the vertex where it is least, Q8.8 */
+    uint16_t base[3];   /* each channel there, Q8.8 */
+    int32_t slope[3];   /* each channel's change per unit of the key, Q1.15 (the key's 2^15) */
+} tarn_lit_line;
+
+/* How far from the line a vertex's channel may lie, in units of Q8.8 (1/256 of a
+ * level): the vertices' own rounding to Q8.8 moves them up to half a unit each. */
+#define TARN_LIT_LINE_TOLERANCE 2
+
 typedef struct {
     int count;
-    int first_varying; /* attributes below it are constant over the triangle (0, or 3 when
-                          its lit colour is): t_min = t_max is their value and they
-                          have no plane, so the pixels neither step nor divide them */
+    int first_varying; /* attributes below it have no plane, so the pixels neither step
+                          nor divide them: 0; 3 when the lit colour is constant over
+                          the triangle (t_min = t_max is each channel's value); 2 when
+                          it is on a line (lit_line) */
     uint8_t lit_full;  /* the lit colour is constant and 255.0 in every channel (a white
                           material in full light): a textured pixel is its texel */
     int perspective; /* tarn_perspective */
@@ -104,6 +121,8 @@ typedef struct {
     uint8_t texel_shift[2];
     uint32_t texel_mask[2];
     unsigned log2_width;
+    tarn_lit_line lit_line; /* with first_varying 2: the lit colour from attribute 2 (last:
+                               the fields before it keep the short offsets Thumb loads reach) */
 } tarn_attribute_set;
 
 /* ---- per-pixel helpers shared with setup (32-bit arithmetic only) ------------ */
@@ -142,6 +161,8 @@ typedef struct {
     const tarn_texture *texture; /* textured opaque: its sizes for sampling */
     int uv;                      /* texture coordinates (textured, or water) */
     int fresnel;                 /* the fresnel term (water; needs uv) */
+    int lit_line;                /* the lit colour may be found from one channel
+                                    (tarn_lit_line), which the caller's pixels read */
 } tarn_attribute_request;
 
 void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_request *request,
@@ -315,12 +336,12 @@ typedef struct {
     tarn_tile_target *target;
     tarn_triangle_setup setup;
     tarn_pixel_box draw;           /* the pixels of the tile its box covers */
-    tarn_attribute_set set;
     uint32_t values[TARN_ATTRIBUTES_MAX];
     tarn_row_edges edges;          /* at (draw.x0, next row) */
     tarn_exact_value row_depth;    /* likewise */
     int32_t next_row;
     tarn_span span;
+    tarn_attribute_set set;        /* last: the row walk's fields keep shorter offsets */
 } tarn_triangle_rows;
 
 /* Sets up the triangle for the tile; 0 when it draws no pixel there (culled, or

@@ -272,6 +272,68 @@ static int lit_alike(const tarn_triangle_setup *t)
     return 1;
 }
 
+/* The vertex whose channel c is least (ties to the first) and the one where it is
+ * largest (ties to the last), so they differ when the channel varies. */
+static void channel_extremes(const tarn_triangle_setup *t, int c, int *least, int *largest)
+{
+    *least = 0;
+    *largest = 2;
+    for (int n = 1; n < 3; n++)
+        if (t->v[n]->lit[c] < t->v[*least]->lit[c]) *least = n;
+    for (int n = 1; n >= 0; n--)
+        if (t->v[n]->lit[c] > t->v[*largest]->lit[c]) *largest = n;
+}
+
+/* The channel whose values spread the widest over the three vertices. */
+static int widest_channel(const tarn_triangle_setup *t)
+{
+    int widest = 0;
+    uint32_t widest_range = 0u;
+    for (int c = 0; c < 3; c++) {
+        int least, largest;
+        channel_extremes(t, c, &least, &largest);
+        const uint32_t range = (uint32_t)t->v[largest]->lit[c] - t->v[least]->lit[c];
+        if (range > widest_range) {
+            widest = c;
+            widest_range = range;
+        }
+    }
+    return widest;
+}
+
+/* Channel c at vertex n as the line keyed by channel `key` predicts it. */
+static int32_t on_line(const tarn_triangle_setup *t, const tarn_lit_line *line, int key, int c, int n)
+{
+    const int32_t along = (int32_t)t->v[n]->lit[key] - line->key_base; /* 0..65280 */
+    return line->base[c] + tarn_floor_shift(along * line->slope[c] + (1 << 14), 15);
+}
+
+/* The line the lit colour lies on, into `line`, keyed by its widest channel,
+ * which it returns; -1 when a vertex's channel lies further from it than
+ * TARN_LIT_LINE_TOLERANCE. Found from the key's least and largest vertices; the
+ * key's slope is exactly one. Kept out of line: the boards' deepest stack runs
+ * through the setup's planes, after it. */
+static TARN_NOINLINE int lit_line_key(const tarn_triangle_setup *t, tarn_lit_line *line)
+{
+    int least, largest;
+    const int key = widest_channel(t);
+    channel_extremes(t, key, &least, &largest);
+    const int32_t spread = (int32_t)t->v[largest]->lit[key] - t->v[least]->lit[key]; /* 1..65280 */
+    line->key_base = t->v[least]->lit[key];
+    for (int c = 0; c < 3; c++) {
+        const int32_t change = (int32_t)t->v[largest]->lit[c] - t->v[least]->lit[c]; /* |change| <= spread */
+        const int32_t half = change < 0 ? -spread / 2 : spread / 2;
+        line->base[c] = t->v[least]->lit[c];
+        line->slope[c] = (change * 32768 + half) / spread; /* below 2^31 */
+    }
+    for (int n = 0; n < 3; n++)
+        for (int c = 0; c < 3; c++) {
+            const int32_t off = on_line(t, line, key, c, n) - t->v[n]->lit[c];
+            if (off > TARN_LIT_LINE_TOLERANCE || off < -TARN_LIT_LINE_TOLERANCE) return -1;
+        }
+    return key;
+}
+
 /* Texture coordinates less a base the pixels add back: for a texture, their whole
  * repeats, which do not move a texel, so a pixel finds its texel in T alone; for
  * water, whose maps add the base to each pixel's coordinate, their least value.
@@ -395,7 +457,16 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
 {
     uint32_t q[3], largest = 0;
     set->count = 0;
+    int channel_2 = 2; /* the channel attribute 2 holds: blue, or on a line the key */
     set->first_varying = lit_alike(t) ? 3 : 0;
+    if (TARN_LINK_PERSPECTIVE_PIXEL && set->first_varying == 0 && request->lit_line &&
+        perspective == TARN_PERSPECTIVE_PIXEL) {
+        const int key = lit_line_key(t, &set->lit_line);
+        if (key >= 0) {
+            set->first_varying = 2;
+            channel_2 = key;
+        }
+    }
     set->perspective = perspective;
     for (int n = 0; n < 3; n++)
         if (t->v[n]->inv_depth > largest) largest = t->v[n]->inv_depth;
@@ -416,7 +487,8 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
         set->q = make_plane(t, &basis, &anchor, q);
     uint32_t scaled[3];
     unsigned shift;
-    for (int c = 0; c < 3; c++) {
+    for (int k = 0; k < 3; k++) {
+        const int c = k == 2 ? channel_2 : k;
         const uint32_t lit[3] = {t->v[0]->lit[c], t->v[1]->lit[c], t->v[2]->lit[c]};
         shift = attribute_t(lit, scaled);
         add_attribute(set, t, &basis, &anchor, scaled, shift, q);

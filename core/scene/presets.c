@@ -11,7 +11,8 @@
  *    (8 bits banded the shallow strip of dense fog, scenes/extremes/dense.json),
  *    and refraction moves by the exact normal (TARN_REFRACTION_NORMAL_EXACT): the
  *    shared one moves a refracted sample to a neighbour on about 0.15% of the
- *    pond's pixels;
+ *    pond's pixels; a lit colour on a line is found from one channel
+ *    (TARN_LIT_LINE), within the rounding of the vertices' colours;
  *  - exact: every knob at its most accurate;
  *  - fast: the Cortex-M0's choice, from its meshes. Its 16 KB hold no full
  *    refraction apron, and an apron that fits needs small tiles, each drawing the
@@ -49,6 +50,7 @@ static tarn_quality preset_exact(void)
     q.refraction_normal = TARN_REFRACTION_NORMAL_EXACT;
     q.frame_shape = TARN_FRAME_TILES;
     q.vertex_pass = TARN_VERTICES_PER_TILE;
+    q.lit_colour = TARN_LIT_PLANES;
     return q;
 }
 
@@ -60,6 +62,7 @@ tarn_quality tarn_quality_preset(tarn_preset preset)
         q.exp2.entries = 64;
         q.recip_newton_steps = 1;
         q.fog_argument_bits = 12;
+        q.lit_colour = TARN_LIT_LINE;
     }
     if (preset == TARN_PRESET_FAST) {
         q.exp2.entries = 16;

@@ -138,7 +138,7 @@ void tarn__water_draw_triangle(void *pass_ctx, const tarn_screen_vertex vertex[3
     if (!tarn__triangle_enters_tile(&rows, &pass->target, vertex, object->material->cull)) return;
     if (pass->water->object != object) tarn__water_context_setup(pass->water, pass->view, pass->config, object);
     pass->water->triangle_serial++;
-    const tarn_attribute_request request = {NULL, 1, (object->material->water->features & TARN_WATER_FRESNEL) != 0};
+    const tarn_attribute_request request = {NULL, 1, (object->material->water->features & TARN_WATER_FRESNEL) != 0, 0};
     tarn__triangle_rows_begin(&rows, &request);
     for (tarn_span *s; (s = tarn__triangle_next_span(&rows)) != NULL;) tarn__span_draw(s, water_pixel, pass);
 }

@@ -209,7 +209,7 @@ STRUCT_TYPE(T_QUALITY, tarn_quality, BLOCK,
             FIELD(tarn_quality, refraction_apron, T_U8),   FIELD(tarn_quality, cluster_bins, T_U8),
             FIELD(tarn_quality, fog_argument_bits, T_U8),  FIELD(tarn_quality, water_block, T_U8),
             FIELD(tarn_quality, refraction_normal, T_U8), FIELD(tarn_quality, frame_shape, T_U8),
-            FIELD(tarn_quality, vertex_pass, T_U8));
+            FIELD(tarn_quality, vertex_pass, T_U8), FIELD(tarn_quality, lit_colour, T_U8));
 STRUCT_TYPE(T_CONFIG, tarn_frame_config, BLOCK,
             FIELD(tarn_frame_config, width, T_U16), FIELD(tarn_frame_config, height, T_U16),
             FIELD(tarn_frame_config, quality, T_QUALITY), FIELD(tarn_frame_config, time_ms, T_U32));

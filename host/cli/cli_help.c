@@ -40,6 +40,8 @@ static const char quality_usage[] =
     "         tiles a multiple of the block only)\n"
     "         --refraction-normal shared|exact (the normal refraction moves by: the highlight's\n"
     "         14 bits, or found again from the maps' texels to 2^-15)\n"
+    "         --lit planes|line (per-pixel perspective: a plane for each channel of the lit colour,\n"
+    "         or one where the vertices' colours lie on a line, two planes and divisions less)\n"
     "         --frame tiles|strips (square tiles, or strips of --tile rows of the whole width\n"
     "         whose opaque pass is kept for the strips below: each pixel drawn once, more memory)\n"
     "         --vertices tile|frame|frame-view (vertices found by each tile's walk, or once a frame\n"

@@ -22,6 +22,9 @@ static const tarn_option_choice vertex_pass_values[] = {
     {"frame", TARN_VERTICES_PER_FRAME, "once a frame, into memory: 16 bytes a vertex"},
     {"frame-view", TARN_VERTICES_PER_FRAME_VIEW,
      "once a frame with each view position, which clipped triangles read: 28 bytes a vertex"}};
+static const tarn_option_choice lit_colour_values[] = {
+    {"planes", TARN_LIT_PLANES, "a plane each channel"},
+    {"line", TARN_LIT_LINE, "one channel's plane, the others along the line the vertices' colours lie on"}};
 static const tarn_option_choice depth_interpolation_values[] = {
     {"exact", TARN_DEPTH_EXACT, "near/d rounded exactly at each pixel"},
     {"plane", TARN_DEPTH_PLANE, "stepped on a plane, a division less a triangle"}};
@@ -51,7 +54,8 @@ static const byte_knob byte_knobs[] = {
     CHOICE_KNOB("--depth-interpolation", depth_interpolation, depth_interpolation_values),
     CHOICE_KNOB("--refraction-normal", refraction_normal, refraction_normal_values),
     CHOICE_KNOB("--frame", frame_shape, frame_shape_values),
-    CHOICE_KNOB("--vertices", vertex_pass, vertex_pass_values)};
+    CHOICE_KNOB("--vertices", vertex_pass, vertex_pass_values),
+    CHOICE_KNOB("--lit", lit_colour, lit_colour_values)};
 
 static int parse_byte_knob(const byte_knob *knob, const char *text, tarn_quality *q, tarn_error *err)
 {

@@ -11,7 +11,7 @@
 #define TARN_QUALITY_TEXT_MAX 512
 
 /* Every knob as tarn's options, e.g. "--perspective span:16 --recip-steps 1 ...
- * --refraction-normal shared", then " --frame strips" and " --vertices frame"
+ * --refraction-normal shared --lit line", then " --frame strips" and " --vertices frame"
  * when the quality asks for them. */
 void tarn_quality_text(const tarn_quality *q, char *out, size_t size);
 

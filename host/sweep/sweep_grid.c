@@ -34,6 +34,7 @@ static const sweep_knob knobs[] = {
     {"--water-block", {"1", "2"}, {NULL}, {NULL}, {NULL}},
     {"--depth-interpolation", {"exact", "plane"}, {NULL}, {NULL}, {NULL}},
     {"--refraction-normal", {"shared", "exact"}, {NULL}, {NULL}, {NULL}},
+    {"--lit", {"planes", "line"}, {NULL}, {NULL}, {NULL}},
 };
 
 #define KNOB_COUNT (sizeof knobs / sizeof knobs[0])

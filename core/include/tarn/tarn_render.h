@@ -131,6 +131,8 @@ typedef struct {
                                    frame's width. Does not change the image. */
     uint8_t vertex_pass;        /* tarn_vertex_pass: where vertices are transformed,
                                    projected and lit. Does not change the image. */
+    uint8_t lit_colour;         /* tarn_lit_colour: how a triangle interpolates its
+                                   vertices' lit colour in per-pixel perspective */
 } tarn_quality;
 
 /* Where a frame finds its vertices as the camera sees them. A scene whose static
@@ -176,6 +178,20 @@ typedef enum {
                                           pixel's N, where the shared one spares the
                                           pixels whose highlight cannot show. */
 } tarn_refraction_normal;
+
+/* A triangle whose vertices are lit differently interpolates their colour; in
+ * per-pixel perspective each interpolated channel is a plane set up and a division
+ * at every pixel. */
+typedef enum {
+    TARN_LIT_PLANES = 0, /* a plane each channel */
+    TARN_LIT_LINE = 1    /* where the three vertices' colours lie on one line in RGB
+                            (one light over a mesh without vertex colours, unless a
+                            vertex saturates), each within 2/256 of a level a channel:
+                            one plane, of the channel that changes most, and the
+                            others found from it along the line, two planes and two
+                            divisions fewer. The pixels then differ from the planes'
+                            by up to 3/256 of a level before rounding. */
+} tarn_lit_colour;
 
 #define TARN_FOG_ARGUMENT_BITS_MIN 4u
 #define TARN_FOG_ARGUMENT_BITS_MAX 16u
