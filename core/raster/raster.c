@@ -447,7 +447,7 @@ void tarn__raster_triangle(void *target, const tarn_screen_vertex vertex[3], con
     tarn_triangle_rows rows;
     if (!tarn__triangle_enters_tile(&rows, target, vertex, material->cull)) return;
     const tarn_quality *quality = rows.target->quality;
-    tarn_attribute_request request = {NULL, 0, 0, TARN_LINK_PERSPECTIVE_PIXEL && quality->lit_colour == TARN_LIT_LINE};
+    tarn_attribute_request request = {NULL, 0, 0, TARN_LINK_LIT_LINE && quality->lit_colour == TARN_LIT_LINE};
     if (material->texture != NULL && object->mesh->uvs != NULL) {
         request.texture = material->texture;
         request.uv = 1;
@@ -465,7 +465,7 @@ void tarn__raster_triangle(void *target, const tarn_screen_vertex vertex[3], con
             draw_affine_span(s, request.texture);
         else if (TARN_LINK_PERSPECTIVE_SPAN && mode == TARN_PERSPECTIVE_SPAN)
             draw_spanned_span(s, request.texture);
-        else if (TARN_LINK_PERSPECTIVE_PIXEL && on_line)
+        else if (TARN_LINK_PERSPECTIVE_PIXEL && TARN_LINK_LIT_LINE && on_line)
             draw_perspective_line_span(s, request.texture);
         else if (TARN_LINK_PERSPECTIVE_PIXEL)
             draw_perspective_span(s, request.texture);

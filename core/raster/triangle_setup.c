@@ -459,7 +459,7 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
     set->count = 0;
     int channel_2 = 2; /* the channel attribute 2 holds: blue, or on a line the key */
     set->first_varying = lit_alike(t) ? 3 : 0;
-    if (TARN_LINK_PERSPECTIVE_PIXEL && set->first_varying == 0 && request->lit_line &&
+    if (TARN_LINK_LIT_LINE && set->first_varying == 0 && request->lit_line &&
         perspective == TARN_PERSPECTIVE_PIXEL) {
         const int key = lit_line_key(t, &set->lit_line);
         if (key >= 0) {

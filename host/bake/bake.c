@@ -1111,7 +1111,8 @@ enum {
     USES_FOUND_BINS = 1u << 8, /* bins on, and the static view holds none for its grid */
     USES_REFRACTION_EXACT = 1u << 9,
     USES_STRIPS = 1u << 10,
-    USES_VERTEX_PASS = 1u << 11
+    USES_VERTEX_PASS = 1u << 11,
+    USES_LIT_LINE = 1u << 12
 };
 
 static const struct {
@@ -1123,7 +1124,8 @@ static const struct {
     {"WATER_BLOCKS", USES_WATER_BLOCKS},             {"DEPTH16", USES_DEPTH16},
     {"DEPTH32", USES_DEPTH32},                       {"EXACT_DEPTH", USES_EXACT_DEPTH},
     {"FOUND_BINS", USES_FOUND_BINS},                 {"REFRACTION_EXACT", USES_REFRACTION_EXACT},
-    {"STRIPS", USES_STRIPS},                         {"VERTEX_PASS", USES_VERTEX_PASS}};
+    {"STRIPS", USES_STRIPS},                         {"VERTEX_PASS", USES_VERTEX_PASS},
+    {"LIT_LINE", USES_LIT_LINE}};
 
 static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
 {
@@ -1139,7 +1141,10 @@ static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
            (finds_bins ? USES_FOUND_BINS : 0u) |
            (q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT ? USES_REFRACTION_EXACT : 0u) |
            (q->frame_shape == TARN_FRAME_STRIPS ? USES_STRIPS : 0u) |
-           (q->vertex_pass != TARN_VERTICES_PER_TILE ? USES_VERTEX_PASS : 0u);
+           (q->vertex_pass != TARN_VERTICES_PER_TILE ? USES_VERTEX_PASS : 0u) |
+           (q->perspective == TARN_PERSPECTIVE_PIXEL && q->lit_colour == TARN_LIT_LINE &&
+                    (view == NULL || view->backdrop == NULL)
+                ? USES_LIT_LINE : 0u);
 }
 
 static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,

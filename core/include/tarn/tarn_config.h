@@ -120,6 +120,14 @@
 #define TARN_LINK_REFRACTION_EXACT 1
 #endif
 
+/* A lit colour found along its line (tarn_lit_colour TARN_LIT_LINE) by the opaque
+ * triangles drawn in per-pixel perspective. tarn bake leaves it out where none
+ * are drawn (another perspective, or a frame over a backdrop); a build without it
+ * gives every channel a plane. */
+#ifndef TARN_LINK_LIT_LINE
+#define TARN_LINK_LIT_LINE 1
+#endif
+
 /* Water effects shared by 2x2 or 4x4 blocks: the quality's water_block 2 or 4. */
 #ifndef TARN_LINK_WATER_BLOCKS
 #define TARN_LINK_WATER_BLOCKS 1
