@@ -34,20 +34,14 @@ static TARN_ALWAYS_INLINE uint32_t reciprocal_of_q(uint32_t q, unsigned steps, u
     return tarn_recip_q30(q << *lz, steps);
 }
 
-/* A plane's value at pixel (0, j), so that pixel (i, j) takes origin + step_x * i. */
-static uint32_t row_origin_of(const tarn_plane *p, const tarn_triangle_setup *t, int32_t j)
-{
-    return p->anchor + p->step_y * (uint32_t)(j - t->box.y0) - p->step_x * (uint32_t)t->box.x0;
-}
-
-/* Row j's origins of the planes a pixel reads: the attributes', and q's in pixel
- * perspective. */
+/* Row j's origins of the planes a pixel reads, each plane's value at pixel (0, j):
+ * the attributes', and q's in pixel perspective. */
 static void row_origins(const tarn_attribute_set *set, const tarn_triangle_setup *t, int32_t j,
                         tarn_row_origin *origin)
 {
-    if (set->perspective == TARN_PERSPECTIVE_PIXEL) origin->q = row_origin_of(&set->q, t, j);
+    if (set->perspective == TARN_PERSPECTIVE_PIXEL) origin->q = tarn__plane_at(&set->q, t, 0, j);
     for (int k = set->first_varying; k < set->count; k++)
-        origin->attributes[k] = row_origin_of(&set->premultiplied[k], t, j);
+        origin->attributes[k] = tarn__plane_at(&set->premultiplied[k], t, 0, j);
 }
 
 static TARN_ALWAYS_INLINE uint32_t plane_along_row(uint32_t origin, const tarn_plane *p, int32_t i)
@@ -192,14 +186,12 @@ static TARN_ALWAYS_INLINE uint32_t shade_line_pixel(const tarn_attribute_set *se
                                                     const uint32_t t[TARN_ATTRIBUTES_MAX])
 {
     const tarn_lit_line *line = &set->lit_line;
-    /* the key is clamped to its vertices' range, so `along` is 0..65280 and each
-       product, with a slope of at most 2^15, stays below 2^31 */
+    /* the key is clamped to its vertices' range, so `along` is 0..65280 */
     const int32_t along = (int32_t)(t[2] >> set->t_shift[2]) - line->key_base;
     const uint8_t *texel = texture != NULL ? texel_at(set, texture, t) : NULL;
     uint32_t rgb = 0;
     for (int c = 0; c < 3; c++) {
-        const uint32_t lit = (uint32_t)tarn_clamp_i32(
-            line->base[c] + tarn_floor_shift(along * line->slope[c] + (1 << 14), 15), 0, 65280);
+        const uint32_t lit = (uint32_t)tarn_clamp_i32(tarn__lit_on_line(line, c, along), 0, 65280);
         rgb = (rgb << 8) | (texel != NULL ? lit_texel_byte(texel[c], lit) : lit_byte(lit));
     }
     return rgb;

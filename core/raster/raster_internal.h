@@ -94,6 +94,13 @@ typedef struct {
     int32_t slope[3];   /* each channel's change per unit of the key, Q1.15 (the key's 2^15) */
 } tarn_lit_line;
 
+/* Channel c (Q8.8, unclamped) a key `along` (0..65280) above the line's key_base:
+ * each product, with a slope of at most 2^15, stays below 2^31. */
+static inline int32_t tarn__lit_on_line(const tarn_lit_line *line, int c, int32_t along)
+{
+    return line->base[c] + tarn_floor_shift(along * line->slope[c] + (1 << 14), 15);
+}
+
 /* How far from the line a vertex's channel may lie, in units of Q8.8 (1/256 of a
  * level): the vertices' own rounding to Q8.8 moves them up to half a unit each. */
 #define TARN_LIT_LINE_TOLERANCE 2

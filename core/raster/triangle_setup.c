@@ -301,13 +301,6 @@ static int widest_channel(const tarn_triangle_setup *t)
     return widest;
 }
 
-/* Channel c at vertex n as the line keyed by channel `key` predicts it. */
-static int32_t on_line(const tarn_triangle_setup *t, const tarn_lit_line *line, int key, int c, int n)
-{
-    const int32_t along = (int32_t)t->v[n]->lit[key] - line->key_base; /* 0..65280 */
-    return line->base[c] + tarn_floor_shift(along * line->slope[c] + (1 << 14), 15);
-}
-
 /* The line the lit colour lies on, into `line`, keyed by its widest channel,
  * which it returns; -1 when a vertex's channel lies further from it than
  * TARN_LIT_LINE_TOLERANCE. Found from the key's least and largest vertices; the
@@ -328,7 +321,8 @@ static TARN_NOINLINE int lit_line_key(const tarn_triangle_setup *t, tarn_lit_lin
     }
     for (int n = 0; n < 3; n++)
         for (int c = 0; c < 3; c++) {
-            const int32_t off = on_line(t, line, key, c, n) - t->v[n]->lit[c];
+            const int32_t along = (int32_t)t->v[n]->lit[key] - line->key_base; /* as a pixel finds it */
+            const int32_t off = tarn__lit_on_line(line, c, along) - t->v[n]->lit[c];
             if (off > TARN_LIT_LINE_TOLERANCE || off < -TARN_LIT_LINE_TOLERANCE) return -1;
         }
     return key;
