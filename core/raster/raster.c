@@ -349,12 +349,14 @@ static int covered_run(tarn_triangle_rows *r, int32_t j)
     s->depth = depth;
     /* each edge is linear along the row, so the covered pixels are one run: after
      * it, nothing more is covered */
-    for (; i <= i1 && (e0 | e1 | e2) >= 0; i++) {
+    while (i < i1) {
         e0 += step0;
         e1 += step1;
         e2 += step2;
+        if ((e0 | e1 | e2) < 0) break;
+        i++;
     }
-    s->i1 = i - 1;
+    s->i1 = i;
     s->j = j;
     s->offset = (j - s->target->origin_y) * s->target->stride - s->target->origin_x;
     row_attributes_start(&s->row, s->target, &r->set, &r->setup, j);
