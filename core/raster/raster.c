@@ -13,12 +13,13 @@
 
 /* T = premultiplied * 2^30 / q, given 1/q as a Q2.30 mantissa and q's leading zeros:
  * 1/q = recip * 2^(lz - 62), so T = mul_hi(p << 1, recip) << (lz - 1). Clamped to the
- * triangle's own range, which rounding can overshoot by a few units. */
+ * triangle's own range, which rounding can overshoot by a few units. A plane's
+ * rounding can take p a few units below 0, where it would wrap, or above 2^30,
+ * where p << 1 still fits and the clamp to t_max catches the quotient. */
 static TARN_ALWAYS_INLINE uint32_t divide_by_q(uint32_t premultiplied, uint32_t recip, unsigned lz,
                             uint32_t t_min, uint32_t t_max)
 {
     if ((int32_t)premultiplied < 0) premultiplied = 0;
-    if (premultiplied > TARN_T_ONE) premultiplied = TARN_T_ONE;
     uint32_t t = tarn_mul_hi_u32(premultiplied << 1, recip);
     if (t > (t_max >> (lz - 1u))) return t_max;
     t <<= lz - 1u;
