@@ -308,7 +308,8 @@ static TARN_ALWAYS_INLINE void tarn__span_draw(tarn_span *s, tarn_span_pixel pix
     const int exact_depth = s->set->depth.exact;
     tarn_exact_value depth = s->depth;
     tarn_depth_range range = s->depth_range; /* a copy: a store through s would reload the span's fields */
-    for (int32_t i = s->i0, index = s->offset + s->i0; i <= s->i1; i++, index++) {
+    const int32_t i1 = s->i1;
+    for (int32_t i = s->i0, index = s->offset + s->i0; i <= i1; i++, index++) {
         const uint32_t closer = tarn__closer_depth(depth_buffer, depth_bits, &range, index, depth.quotient);
         if (closer != 0u) {
             colour[index] = pixel(ctx, s, i, index, depth.quotient);
