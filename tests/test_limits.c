@@ -7,6 +7,7 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <inttypes.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <cmocka.h>
@@ -107,6 +108,27 @@ static void leading_zeros_by_table(void **state)
                      tarn_clz32(v));
     }
     assert_int_equal(tarn_clz32_by_table(0), 32);
+}
+
+/* The floor shift is the floor of v / 2^s at every shift, in the compiler's form
+ * and in the portable one, at the edges of int32_t and at random: floor(v / 2^s)
+ * is the q with q * 2^s <= v < (q + 1) * 2^s. */
+static void floor_shift_forms(void **state)
+{
+    (void)state;
+    static const int32_t edges[] = {0, 1, -1, 2, -2, 65535, -65536, -65537, INT32_MAX, INT32_MIN, INT32_MIN + 1};
+    const size_t n = sizeof edges / sizeof edges[0];
+    uint32_t seed = 777u;
+    for (size_t k = 0; k < n + 100000u; k++) {
+        const int32_t v = k < n ? edges[k] : (int32_t)(seed = seed * 1664525u + 1013904223u);
+        for (unsigned s = 0; s < 32u; s++) {
+            const int64_t q = tarn_floor_shift(v, s), portable = tarn_floor_shift_portable(v, s);
+            const int64_t unit = (int64_t)1 << s;
+            if (q != portable || q * unit > v || (q + 1) * unit <= v)
+                fail_msg("floor(%" PRId32 " / 2^%u): %" PRId64 " by the shift, %" PRId64 " portably", v, s, q,
+                         portable);
+        }
+    }
 }
 
 /* The Cortex-M0's high word (four 16x16 products and their carries) is the native
@@ -344,6 +366,7 @@ int main(void)
         cmocka_unit_test(q16_arithmetic),
         cmocka_unit_test(bits),
         cmocka_unit_test(leading_zeros_by_table),
+        cmocka_unit_test(floor_shift_forms),
         cmocka_unit_test(high_word_by_halves),
         cmocka_unit_test(low_word_of_rounding_shifts),
         cmocka_unit_test(vertex_position_by_halves),
