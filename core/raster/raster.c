@@ -41,20 +41,22 @@ static void row_origins(const tarn_attribute_set *set, const tarn_triangle_setup
                         tarn_row_origin *origin)
 {
     if (set->perspective == TARN_PERSPECTIVE_PIXEL) origin->q = tarn__plane_at(&set->q, t, 0, j);
-    for (int k = set->first_varying; k < set->count; k++)
+    for (int k = set->first_varying; k < set->count; k++) {
         origin->attributes[k] = tarn__plane_at(&set->premultiplied[k], t, 0, j);
+        origin->step_x[k] = set->premultiplied[k].step_x;
+    }
 }
 
-static TARN_ALWAYS_INLINE uint32_t plane_along_row(uint32_t origin, const tarn_plane *p, int32_t i)
+static TARN_ALWAYS_INLINE uint32_t plane_along_row(uint32_t origin, uint32_t step_x, int32_t i)
 {
-    return origin + p->step_x * (uint32_t)i;
+    return origin + step_x * (uint32_t)i;
 }
 
 static TARN_ALWAYS_INLINE void affine_t(const tarn_attribute_set *set, const tarn_row_origin *origin, int32_t i,
                      uint32_t out[TARN_ATTRIBUTES_MAX])
 {
     for (int k = set->first_varying; k < set->count; k++) {
-        uint32_t v = plane_along_row(origin->attributes[k], &set->premultiplied[k], i);
+        uint32_t v = plane_along_row(origin->attributes[k], origin->step_x[k], i);
         if ((int32_t)v < (int32_t)set->t_min[k]) v = set->t_min[k];
         out[k] = v > set->t_max[k] ? set->t_max[k] : v;
     }
@@ -64,13 +66,13 @@ static TARN_ALWAYS_INLINE void affine_t(const tarn_attribute_set *set, const tar
 static TARN_ALWAYS_INLINE void exact_t(const tarn_attribute_set *set, const tarn_row_origin *origin, int32_t i,
                     unsigned steps, uint32_t out[TARN_ATTRIBUTES_MAX])
 {
-    uint32_t q = plane_along_row(origin->q, &set->q, i);
+    uint32_t q = plane_along_row(origin->q, set->q.step_x, i);
     if ((int32_t)q < (int32_t)set->q_min) q = set->q_min;
     if (q > set->q_max) q = set->q_max;
     unsigned lz;
     uint32_t recip = reciprocal_of_q(q, steps, &lz);
     for (int k = set->first_varying; k < set->count; k++)
-        out[k] = divide_by_q(plane_along_row(origin->attributes[k], &set->premultiplied[k], i), recip, lz,
+        out[k] = divide_by_q(plane_along_row(origin->attributes[k], origin->step_x[k], i), recip, lz,
                              set->t_min[k], set->t_max[k]);
 }
 

@@ -230,10 +230,13 @@ typedef struct {
 } tarn_span_cache;
 
 /* Where the row's planes start: along row j each plane is origin + step_x * i,
- * modulo 2^32 as tarn__plane_at, so a pixel takes one product a plane, not two. */
+ * modulo 2^32 as tarn__plane_at, so a pixel takes one product a plane, not two.
+ * The steps are copied beside the origins, a row, so a pixel's loop over the
+ * attributes walks two arrays of words instead of the planes' 12-byte records. */
 typedef struct {
     uint32_t q;                                /* the q plane's (pixel perspective) */
     uint32_t attributes[TARN_ATTRIBUTES_MAX]; /* each premultiplied plane's */
+    uint32_t step_x[TARN_ATTRIBUTES_MAX];     /* and its step along the row */
 } tarn_row_origin;
 
 /* What one row keeps for its pixels' attributes, by the triangle's perspective
