@@ -26,11 +26,11 @@ static TARN_ALWAYS_INLINE uint32_t divide_by_q(uint32_t premultiplied, uint32_t 
     return t < t_min ? t_min : t;
 }
 
-/* 1/q as a Q2.30 mantissa, and the leading zeros of q (1..31) that scale it. */
+/* 1/q as a Q2.30 mantissa, and the leading zeros of q (1..31) that scale it, for
+ * q in [1, 2^30]: each caller has clamped q to a range within it (a triangle's
+ * q_min and q_max are its vertices' near/d, normalised, each in that range). */
 static TARN_ALWAYS_INLINE uint32_t reciprocal_of_q(uint32_t q, unsigned steps, unsigned *lz)
 {
-    if ((int32_t)q < 1) q = 1;
-    if (q > TARN_T_ONE) q = TARN_T_ONE;
     *lz = tarn_clz32(q);
     return tarn_recip_q30(q << *lz, steps);
 }

@@ -469,6 +469,7 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
     set->q_max = 0;
     for (int n = 0; n < 3; n++) {
         q[n] = t->v[n]->inv_depth << normalise;
+        if (q[n] == 0u) q[n] = 1u; /* a pixel's reciprocal of q takes [1, 2^30] */
         if (q[n] < set->q_min) set->q_min = q[n];
         if (q[n] > set->q_max) set->q_max = q[n];
     }

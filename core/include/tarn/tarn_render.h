@@ -381,7 +381,7 @@ tarn_status tarn_strip_pipeline_water(void *memory, unsigned worker, int32_t str
 /* A vertex after transform, clipping and snapping: what the rasterizer sees. */
 typedef struct {
     int32_t x, y;        /* screen position in 1/2^subpixel_bits pixels */
-    uint32_t inv_depth;  /* near/d, Q1.30 */
+    uint32_t inv_depth;  /* near/d, Q1.30, in 1..2^30 (2^30 on the near plane) */
     tarn_uv uv;          /* Q16.16 texture coordinates */
     uint16_t uv_low[2];  /* the 16 bits below u and v: a clipped vertex's own, 0 elsewhere
                             (near the eye one bit of Q16.16 can span many pixels) */
