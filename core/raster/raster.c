@@ -36,15 +36,23 @@ static TARN_ALWAYS_INLINE uint32_t reciprocal_of_q(uint32_t q, unsigned steps, u
 }
 
 /* Row j's origins of the planes a pixel reads, each plane's value at pixel (0, j):
- * the attributes', and q's in pixel perspective. */
+ * the attributes', and q's in pixel perspective; stepped down from the row above
+ * where that row's are held, else found by products with the steps along the row. */
 static void row_origins(const tarn_attribute_set *set, const tarn_triangle_setup *t, int32_t j,
                         tarn_row_origin *origin)
 {
-    if (set->perspective == TARN_PERSPECTIVE_PIXEL) origin->q = tarn__plane_at(&set->q, t, 0, j);
-    for (int k = set->first_varying; k < set->count; k++) {
-        origin->attributes[k] = tarn__plane_at(&set->premultiplied[k], t, 0, j);
-        origin->step_x[k] = set->premultiplied[k].step_x;
+    const int pixel = set->perspective == TARN_PERSPECTIVE_PIXEL;
+    if (origin->row == j - 1) {
+        if (pixel) origin->q += set->q.step_y;
+        for (int k = set->first_varying; k < set->count; k++) origin->attributes[k] += set->premultiplied[k].step_y;
+    } else {
+        if (pixel) origin->q = tarn__plane_at(&set->q, t, 0, j);
+        for (int k = set->first_varying; k < set->count; k++) {
+            origin->attributes[k] = tarn__plane_at(&set->premultiplied[k], t, 0, j);
+            origin->step_x[k] = set->premultiplied[k].step_x;
+        }
     }
+    origin->row = j;
 }
 
 static TARN_ALWAYS_INLINE uint32_t plane_along_row(uint32_t origin, uint32_t step_x, int32_t i)
@@ -400,6 +408,7 @@ void tarn__triangle_rows_begin(tarn_triangle_rows *r, const tarn_attribute_reque
     r->span.set = &r->set;
     r->span.values = r->values;
     r->span.depth_range.width = 0u; /* found at the first pixel */
+    r->span.row.origin.row = INT32_MIN; /* found at the first covered row */
     r->row_depth = tarn__depth_at(t, &r->set.depth, r->draw.x0, r->draw.y0);
     row_edges_at(t, r->draw.x0, r->draw.y0, &r->edges);
     r->next_row = r->draw.y0;
