@@ -38,6 +38,7 @@ typedef struct {
     unsigned near_shift;
     tarn_q16 far;
     unsigned recip_steps;
+    uint64_t near_q46; /* near (Q16.16) * 2^30: linear depth d is near_q46 / (near/d, Q1.30) */
 } tarn_linear_depth;
 
 void tarn__linear_depth_setup(tarn_linear_depth *d, tarn_q16 near, tarn_q16 far, unsigned recip_steps);
@@ -404,10 +405,10 @@ void tarn__water_map_x(const tarn_water_context *w, const tarn_water_input *in, 
  * xy_q30; else it is normalised, for the steps after too, and moves by its N.xy. */
 void tarn__water_refracted_pixel(const tarn_water_context *w, int32_t i, int32_t j, tarn_water_normal *n,
                                  uint32_t reach, int32_t target[2]);
-/* The refracted sample, or `own` (the pixel's background) where the refracted one
- * would lie in front of the water. */
+/* The refracted sample of water pixel (i, j), or the pixel's own background where
+ * the refracted one would lie in front of the water. */
 tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j, tarn_water_normal *n,
-                                     tarn_water_sample own, uint32_t surface_depth);
+                                     uint32_t surface_depth);
 /* Steps 4 and 5 (water_fog.c), over `diff` (Q16.16 world units) of water: the share
  * of the background the fog keeps (Q1.15), and what absorption takes from each
  * channel (Q8.8). */

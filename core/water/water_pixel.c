@@ -64,10 +64,10 @@ void tarn__water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, c
     const uint32_t surface_depth = tarn__water_depth_of(w, in->inv_depth);
     tarn_water_normal n;
     tarn__water_pixel_normal(w, in, &n);
-    tarn_water_sample below = tarn__water_background(w, i, j);
     /* without an apron a refracted sample may not move (offset_limit 0): it is the
      * pixel's own, and the M0's fast preset would pay a third of the water pixel for it */
-    if (tarn__water_refracts(w)) below = tarn__water_refract(w, i, j, &n, below, surface_depth);
+    const tarn_water_sample below = tarn__water_refracts(w) ? tarn__water_refract(w, i, j, &n, surface_depth)
+                                                            : tarn__water_background(w, i, j);
     e->offset[0] = (int8_t)(below.x - i); /* within the apron, at most TARN_WATER_APRON_MAX */
     e->offset[1] = (int8_t)(below.y - j);
     const uint32_t diff = below.depth > surface_depth ? below.depth - surface_depth : 0u;

@@ -40,15 +40,42 @@ void tarn__water_refracted_pixel(const tarn_water_context *w, int32_t i, int32_t
     refracted_pixel(w, i, j, n, reach, target);
 }
 
-/* Step 2: the refracted sample, or the pixel's own when it would land in front. */
-tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j, tarn_water_normal *n,
-                                     tarn_water_sample own, uint32_t surface_depth)
+/* Whether the opaque surface at near/d iz_q30 lies so far behind water at linear
+ * depth `surface` (Q16.16) that tarn__water_depth_of(iz_q30) - surface is one unit
+ * or more however its reciprocal rounds: its exact depth near * 2^30 / iz is at
+ * least (surface + 1) * (1 + 2^-7) + 8, a margin over the reciprocal's error
+ * without Newton steps (under 2^-8, tarn_math.h) and the floor after it. One
+ * product where the depth takes a reciprocal; where it says no, the depth is found. */
+static int surely_a_unit_below(const tarn_water_context *w, uint32_t iz_q30, uint32_t surface)
 {
-    uint32_t reach = own.depth > surface_depth ? own.depth - surface_depth : 0u;
-    if (reach > Q16_ONE) reach = Q16_ONE; /* saturate(db - ds), Q0.16 */
+    const uint32_t unit_below = surface + Q16_ONE;
+    const uint32_t bound = unit_below + (unit_below >> 7) + 8u;
+    if (iz_q30 == 0u || bound > (uint32_t)INT32_MAX || surface > (uint32_t)INT32_MAX) return 0;
+    return tarn_mul_u32_wide(bound, iz_q30) <= w->linear.near_q46;
+}
+
+/* Step 2: the refracted sample, or the pixel's own when it would land in front.
+ * The own background's depth sets how far the sample may move, saturate(db - ds),
+ * which is 1 over water a unit deep or more: there it is found only if the sample
+ * does not move or is not taken. */
+tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, int32_t j, tarn_water_normal *n,
+                                     uint32_t surface_depth)
+{
+    const uint32_t own_q30 = tarn__water_background_q30(w, i, j);
+    tarn_water_sample own = {i, j, 0u};
+    uint32_t reach = Q16_ONE; /* saturate(db - ds), Q0.16 */
+    const int deep = surely_a_unit_below(w, own_q30, surface_depth);
+    if (!deep) {
+        own.depth = tarn__water_depth_of(w, own_q30);
+        reach = own.depth > surface_depth ? own.depth - surface_depth : 0u;
+        if (reach > Q16_ONE) reach = Q16_ONE;
+    }
     int32_t target[2];
     refracted_pixel(w, i, j, n, reach, target);
-    if (target[0] == i && target[1] == j) return own; /* read already */
-    tarn_water_sample shifted = tarn__water_moved_background(w, target[0], target[1]);
-    return shifted.depth < surface_depth ? own : shifted;
+    if (target[0] != i || target[1] != j) {
+        const tarn_water_sample shifted = tarn__water_moved_background(w, target[0], target[1]);
+        if (shifted.depth >= surface_depth) return shifted;
+    }
+    if (deep) own.depth = tarn__water_depth_of(w, own_q30);
+    return own;
 }
