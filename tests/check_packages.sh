@@ -129,14 +129,15 @@ underwater_tile() { nm "$tmp/$1/consumer" | awk '$3 ~ /^tarn__?underwater_tile$/
 
 if cmake_consumer host -DCMAKE_BUILD_TYPE=Release; then
     run_same host "CMake, add_subdirectory(core) and tarn::core"
-    switches=$(sed -n 's/^#ifndef \(TARN_LINK_[A-Z0-9_]*\)$/\1/p' core/include/tarn/tarn_config.h | grep -vx TARN_LINK_WATER_FEATURES)
+    switches=$(sed -n 's/^#ifndef \(TARN_LINK_[A-Z0-9_]*\)$/\1/p' core/include/tarn/tarn_config.h | grep -vx -e TARN_LINK_WATER_FEATURES -e TARN_LINK_WATER_FEATURES_ALL)
     cache=$(cmake -LA -N "$tmp/host")
     missing=$(for s in $switches; do printf '%s\n' "$cache" | grep -qx "$s:BOOL=ON" || printf '%s ' "$s"; done)
     printf '%s\n' "$cache" | grep -q '^TARN_LINK_WATER_FEATURES:STRING=' || missing="${missing}TARN_LINK_WATER_FEATURES "
+    printf '%s\n' "$cache" | grep -qx 'TARN_LINK_WATER_FEATURES_ALL:STRING=0u' || missing="${missing}TARN_LINK_WATER_FEATURES_ALL=0u "
     printf '%s\n' "$cache" | grep -q '^TARN_LINK_HEADER:FILEPATH=' || missing="${missing}TARN_LINK_HEADER "
     printf '%s\n' "$cache" | grep -qx 'TARN_VERTEX_CACHE_SLOTS:STRING=16' || missing="${missing}TARN_VERTEX_CACHE_SLOTS=16 "
     if [ -z "$missing" ]; then
-        ok "CMake has the $(printf '%s\n' "$switches" | wc -l) TARN_LINK_* switches of tarn_config.h as options, ON, and TARN_LINK_WATER_FEATURES, TARN_LINK_HEADER, TARN_VERTEX_CACHE_SLOTS (16)"
+        ok "CMake has the $(printf '%s\n' "$switches" | wc -l) TARN_LINK_* switches of tarn_config.h as options, ON, and TARN_LINK_WATER_FEATURES, TARN_LINK_WATER_FEATURES_ALL (0u), TARN_LINK_HEADER, TARN_VERTEX_CACHE_SLOTS (16)"
     else
         fail "CMake's cache lacks: $missing"
     fi

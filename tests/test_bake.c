@@ -89,13 +89,21 @@ static int file_exists(const char *path)
     return stat(path, &info) == 0;
 }
 
-/* The suite's directory holds the core compiled once, shared by every round trip. */
+/* The core compiled into the suite's directory, in DIR, with extra C flags (a link
+ * header's -include, a switch's -D); the shell's status. */
+static int compile_core(const char *dir, const char *flags)
+{
+    return shell("mkdir %s/%s && cd %s/%s && cc -std=c99 -O1 %s -I'%s/core' -I'%s/core/include' -c '%s'/core/*/*.c",
+                 work_dir, dir, work_dir, dir, flags, root, root, root);
+}
+
+/* The suite's directory holds the core compiled once, in core/, shared by every
+ * round trip; a test that needs other switches compiles its own beside it. */
 static int suite_setup(void **state)
 {
     (void)state;
     if (!getcwd(root, sizeof root) || !mkdtemp(work_dir)) return -1;
-    return shell("mkdir %s/core && cd %s/core && cc -std=c99 -O1 -I'%s/core' -I'%s/core/include' -c '%s'/core/*/*.c", work_dir,
-                 work_dir, root, root, root) == 0 ? 0 : -1;
+    return compile_core("core", "") == 0 ? 0 : -1;
 }
 
 static int suite_teardown(void **state)
@@ -232,12 +240,26 @@ static void render_loaded(const tarn_loaded_scene *scene, const tarn_frame_confi
     if (tarn_core_render(&scene->scene, config, rgb, NULL, &err) != 0) fail_msg("%s", err.message);
 }
 
+/* The baked scene's program from the bake `b` and the core in the suite's DIR. */
+static void build_program(const char *name, const baked *b, const char *core_dir, char program[PATH_SIZE])
+{
+    char main_path[PATH_SIZE];
+    snprintf(main_path, sizeof main_path, "%s/bake_main_%s.c", work_dir, name);
+    snprintf(program, PATH_SIZE, "%s/bake_main_%s", work_dir, name);
+    write_main(main_path, name);
+    if (shell("cc " STRICT_C99 " -O1 -Icore/include -I%s -o %s %s %s %s/%s/*.o", work_dir, program, main_path,
+              b->source, work_dir, core_dir) != 0)
+        fail_msg("%s does not build with the host compiler and the core in %s", b->source, core_dir);
+}
+
 /* Bakes `scene` (with `extra` options), builds the baked program and compares its
  * frames at 0 ms and at `later_ms` with the loaded scene's, or with `still`, its
  * water's over a still-water backdrop made on the host. `config` starts as the
- * scene's own frame at default quality; `adjust`, if given, applies `extra` to it. */
+ * scene's own frame at default quality; `adjust`, if given, applies `extra` to it.
+ * The program links the core compiled in the suite's `core_dir`. */
 static void round_trip_against(const char *scene_path, const char *name, const char *extra,
-                               void (*adjust)(tarn_frame_config *config), uint32_t later_ms, int still)
+                               void (*adjust)(tarn_frame_config *config), uint32_t later_ms, int still,
+                               const char *core_dir)
 {
     baked b;
     bake(scene_path, name, extra, &b);
@@ -255,13 +277,8 @@ static void round_trip_against(const char *scene_path, const char *name, const c
     assert_int_equal(b.memory_bytes, still ? tarn_frame_memory_bytes(&config, &reference.scene)
                                            : tarn_static_memory_bytes(&config, &scene.scene, &config));
 
-    char main_path[PATH_SIZE], program[PATH_SIZE];
-    snprintf(main_path, sizeof main_path, "%s/bake_main_%s.c", work_dir, name);
-    snprintf(program, sizeof program, "%s/bake_main_%s", work_dir, name);
-    write_main(main_path, name);
-    if (shell("cc " STRICT_C99 " -O1 -Icore/include -I%s -o %s %s %s %s/core/*.o", work_dir, program, main_path,
-              b.source, work_dir) != 0)
-        fail_msg("%s does not build with the host compiler", b.source);
+    char program[PATH_SIZE];
+    build_program(name, &b, core_dir, program);
 
     size_t bytes = 3u * config.width * config.height, got;
     uint8_t *loaded_rgb = malloc(bytes);
@@ -283,7 +300,7 @@ static void round_trip_against(const char *scene_path, const char *name, const c
 static void round_trip(const char *scene_path, const char *name, const char *extra,
                        void (*adjust)(tarn_frame_config *config), uint32_t later_ms)
 {
-    round_trip_against(scene_path, name, extra, adjust, later_ms, 0);
+    round_trip_against(scene_path, name, extra, adjust, later_ms, 0, "core");
 }
 
 static void test_pond_bakes_without_loss(void **state)
@@ -383,7 +400,7 @@ static void test_still_water_bakes_without_loss(void **state)
 {
     (void)state;
     round_trip_against("scenes/pond.json", "pond_still", "--name pond_still --quality fast --backdrop still",
-                       fast_quality, 2750, 1);
+                       fast_quality, 2750, 1, "core");
     char path[PATH_SIZE];
     snprintf(path, sizeof path, "%s/pond_still.c", work_dir);
     char *source = read_all(path, NULL);
@@ -417,6 +434,55 @@ static void test_only_what_is_used_is_baked(void **state)
     assert_non_null(strstr(source, "#include \"tarn/tarn_render.h\"\n"));
     assert_non_null(strstr(source, " *   tarn bake tests/bake_unused.json -o "));
     free(source);
+}
+
+/* Two water materials, fog and fresnel and fog alone: the link header links both
+ * effects and names fog the one every material has, which no water pixel then asks
+ * for; the core compiled with that header draws the loaded scene's frame, and one
+ * told that every material has fresnel refuses the scene. */
+static void test_effects_every_water_has_are_not_asked(void **state)
+{
+    (void)state;
+    baked b;
+    bake("tests/bake_two_waters.json", "two_waters", "--name two_waters", &b);
+    char path[PATH_SIZE], flags[2 * PATH_SIZE], program[PATH_SIZE];
+    snprintf(path, sizeof path, "%s/two_waters_link.h", work_dir);
+    char *header = read_all(path, NULL);
+    if (strstr(header, "#define TARN_LINK_WATER_FEATURES (TARN_WATER_FOG | TARN_WATER_FRESNEL)\n") == NULL ||
+        strstr(header, "#define TARN_LINK_WATER_FEATURES_ALL (TARN_WATER_FOG)\n") == NULL)
+        fail_msg("two_waters_link.h links other water effects than fog and fresnel, fog in both:\n%s", header);
+    free(header);
+
+    snprintf(flags, sizeof flags, "-include '%s'", path);
+    if (compile_core("core-two-waters", flags) != 0) fail_msg("the core does not compile with %s", flags);
+    build_program("two_waters", &b, "core-two-waters", program);
+    tarn_loaded_scene scene;
+    tarn_error err;
+    if (tarn_scene_load("tests/bake_two_waters.json", &scene, &err) != 0) fail_msg("%s", err.message);
+    tarn_frame_config config = {scene.width, scene.height, tarn_quality_default(), 0};
+    size_t bytes = 3u * config.width * config.height, got;
+    uint8_t *loaded_rgb = malloc(bytes);
+    assert_non_null(loaded_rgb);
+    render_loaded(&scene, &config, loaded_rgb);
+    uint8_t *baked_rgb = render_baked(program, "two_waters", 0, &got);
+    assert_int_equal(got, bytes);
+    assert_same_frame(baked_rgb, loaded_rgb, &config, "two_waters", 0);
+    free(baked_rgb);
+    free(loaded_rgb);
+    tarn_scene_free(&scene);
+
+    if (compile_core("core-all-fresnel", "-DTARN_LINK_WATER_FEATURES_ALL=TARN_WATER_FRESNEL") != 0)
+        fail_msg("the core does not compile with TARN_LINK_WATER_FEATURES_ALL=TARN_WATER_FRESNEL");
+    build_program("two_waters", &b, "core-all-fresnel", program);
+    char frame_path[PATH_SIZE];
+    snprintf(frame_path, sizeof frame_path, "%s/two_waters-refused.rgb", work_dir);
+    char stderr_path[PATH_SIZE];
+    snprintf(stderr_path, sizeof stderr_path, "%s/two_waters.stderr", work_dir);
+    const int status = shell("%s %s 0 2> %s", program, frame_path, stderr_path);
+    char *said = read_all(stderr_path, NULL);
+    if (status != 4 || strstr(said, "malformed scene data") == NULL)
+        fail_msg("a core told every water has fresnel drew the puddle without it: status %d, '%s'", status, said);
+    free(said);
 }
 
 /* The companion header: the memory macro and both declarations. */
@@ -684,6 +750,7 @@ int main(void)
         cmocka_unit_test(test_backdrop_bakes_without_loss),
         cmocka_unit_test(test_still_water_bakes_without_loss),
         cmocka_unit_test(test_only_what_is_used_is_baked),
+        cmocka_unit_test(test_effects_every_water_has_are_not_asked),
         cmocka_unit_test(test_header_declares_memory_and_objects),
         cmocka_unit_test(test_header_gives_a_strip_pipeline_memory),
         cmocka_unit_test(test_points_are_baked),

@@ -48,6 +48,7 @@ static int water_valid(const tarn_water *w)
         !within(w->foam_opacity, 0, TARN_Q16_ONE) || !within(w->specular, 0, 4 * TARN_Q16_ONE))
         return 0;
     if (!TARN_LINK_WATER || (w->features & ~(uint32_t)TARN_LINK_WATER_FEATURES) != 0) return 0;
+    if ((w->features & (uint32_t)TARN_LINK_WATER_FEATURES_ALL) != (uint32_t)TARN_LINK_WATER_FEATURES_ALL) return 0;
     if ((w->features & TARN_WATER_NORMALS) && w->normal_a == NULL) return 0;
     if ((w->features & TARN_WATER_FOAM) && (w->foam_texture == NULL || w->foam_distance <= 0)) return 0;
     if ((w->features & TARN_WATER_DEPTH_COLOUR) && w->depth_scale <= 0) return 0;

@@ -236,9 +236,11 @@ uint32_t tarn__water_shade(const tarn_water_context *w, int32_t i, int32_t j, co
 
 /* Whether the material has an effect and the build links it: with
  * TARN_LINK_WATER_FEATURES a constant, the calls of effects left out are removed at
- * compile time. */
+ * compile time, and with TARN_LINK_WATER_FEATURES_ALL the questions of effects
+ * every material has. */
 static inline int tarn__water_uses(const tarn_water_context *w, uint32_t feature)
 {
+    if (((uint32_t)TARN_LINK_WATER_FEATURES_ALL & feature) != 0u) return 1;
     return (TARN_LINK_WATER_FEATURES & feature) != 0 && (w->features & feature) != 0;
 }
 

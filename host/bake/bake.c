@@ -1076,13 +1076,17 @@ static void print_header(FILE *out, const bake_plan *p, const tarn_bake_options 
 }
 
 /* 1 if some object's material is water; `features`: the TARN_WATER_* bits they use. */
-static int used_water(const tarn_scene *scene, uint32_t *features)
+/* Whether the scene has water, the effects some water material has (`features`)
+ * and those every one has (`every`). */
+static int used_water(const tarn_scene *scene, uint32_t *features, uint32_t *every)
 {
     int water = 0;
     *features = 0;
+    *every = 0;
     for (uint32_t i = 0; i < scene->object_count; i++) {
         const tarn_material *m = scene->objects[i].material;
         if (m == NULL || m->water == NULL) continue;
+        *every = water ? *every & m->water->features : m->water->features;
         water = 1;
         *features |= m->water->features;
     }
@@ -1150,10 +1154,11 @@ static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
 static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,
                               const bake_totals *totals)
 {
-    uint32_t features;
-    const int water = used_water(&p->scene->scene, &features);
-    text_buffer names = {{0}, 0};
+    uint32_t features, every;
+    const int water = used_water(&p->scene->scene, &features, &every);
+    text_buffer names = {{0}, 0}, every_names = {{0}, 0};
     format_features(&names, features);
+    format_features(&every_names, every);
     fputs("/* ", out);
     comment_text(out, base_name(totals->link_path));
     fputs(": the parts of the renderer the scene ", out);
@@ -1164,6 +1169,7 @@ static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_opt
           out);
     fprintf(out, "#define TARN_LINK_WATER %d\n", water);
     fprintf(out, "#define TARN_LINK_WATER_FEATURES (%s)\n", names.text);
+    fprintf(out, "#define TARN_LINK_WATER_FEATURES_ALL (%s)\n", every_names.text);
     fprintf(out, "#define TARN_LINK_UNDERWATER %d\n", p->scene->scene.underwater != NULL);
     unsigned uses = quality_uses(&p->scene->scene, &p->config.quality);
     for (size_t i = 0; i < p->points->count; i++) uses |= quality_uses(&p->scene->scene, &p->points->qualities[i]);

@@ -155,10 +155,10 @@ static void print_link_switches(FILE *out)
         {"FOUND_BINS", TARN_LINK_FOUND_BINS},                 {"BACKDROP", TARN_LINK_BACKDROP},
         {"OPAQUE_OBJECTS", TARN_LINK_OPAQUE_OBJECTS},         {"STILL_WATER", TARN_LINK_STILL_WATER},
         {"WATER", TARN_LINK_WATER},                           {"WATER_FEATURES", TARN_LINK_WATER_FEATURES},
-        {"WATER_SHADING", TARN_LINK_WATER_SHADING},           {"APRON", TARN_LINK_APRON},
-        {"REFRACTION_EXACT", TARN_LINK_REFRACTION_EXACT},     {"WATER_BLOCKS", TARN_LINK_WATER_BLOCKS},
-        {"STRIPS", TARN_LINK_STRIPS},                         {"VERTEX_PASS", TARN_LINK_VERTEX_PASS},
-        {"PARTS", TARN_LINK_PARTS},
+        {"WATER_FEATURES_ALL", TARN_LINK_WATER_FEATURES_ALL}, {"WATER_SHADING", TARN_LINK_WATER_SHADING},
+        {"APRON", TARN_LINK_APRON},                           {"REFRACTION_EXACT", TARN_LINK_REFRACTION_EXACT},
+        {"WATER_BLOCKS", TARN_LINK_WATER_BLOCKS},             {"STRIPS", TARN_LINK_STRIPS},
+        {"VERTEX_PASS", TARN_LINK_VERTEX_PASS},               {"PARTS", TARN_LINK_PARTS},
     };
     fputs("link switches:", out);
     for (size_t k = 0; k < sizeof switches / sizeof switches[0]; k++)

@@ -102,6 +102,14 @@
 #define TARN_LINK_WATER_FEATURES 0xFFFFFFFFu
 #endif
 
+/* The water effects every water material of the build has, as TARN_WATER_* bits
+ * (within TARN_LINK_WATER_FEATURES): a water pixel does not ask whether its
+ * material has them, about ten questions a pixel fewer. The scene check refuses a
+ * water material without them. None by default; tarn bake writes its scene's. */
+#ifndef TARN_LINK_WATER_FEATURES_ALL
+#define TARN_LINK_WATER_FEATURES_ALL 0u
+#endif
+
 /* Shading water pixels in the frame, every step of tarn_water.h. Without it water
  * draws only over a still-water backdrop, which holds the still steps. */
 #ifndef TARN_LINK_WATER_SHADING
