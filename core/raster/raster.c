@@ -43,13 +43,17 @@ static void row_origins(const tarn_attribute_set *set, const tarn_triangle_setup
 {
     const int pixel = set->perspective == TARN_PERSPECTIVE_PIXEL;
     if (origin->row == j - 1) {
-        if (pixel) origin->q += set->q.step_y;
-        for (int k = set->first_varying; k < set->count; k++) origin->attributes[k] += set->premultiplied[k].step_y;
+        if (pixel) origin->q += origin->q_step_y;
+        for (int k = set->first_varying; k < set->count; k++) origin->attributes[k] += origin->step_y[k];
     } else {
-        if (pixel) origin->q = tarn__plane_at(&set->q, t, 0, j);
+        if (pixel) {
+            origin->q = tarn__plane_at(&set->q, t, 0, j);
+            origin->q_step_y = set->q.step_y;
+        }
         for (int k = set->first_varying; k < set->count; k++) {
             origin->attributes[k] = tarn__plane_at(&set->premultiplied[k], t, 0, j);
             origin->step_x[k] = set->premultiplied[k].step_x;
+            origin->step_y[k] = set->premultiplied[k].step_y;
         }
     }
     origin->row = j;

@@ -233,13 +233,14 @@ typedef struct {
  * modulo 2^32 as tarn__plane_at, so a pixel takes one product a plane, not two.
  * The origins of the row below are these plus each plane's step_y, exactly (modulo
  * 2^32), so a triangle finds them by products once and steps them a row at a time.
- * The steps are copied beside the origins, once a triangle, so a pixel's loop over
- * the attributes walks two arrays of words instead of the planes' 12-byte records. */
+ * The steps are copied beside the origins, once a triangle, so the loops over the
+ * attributes walk arrays of words instead of the planes' 12-byte records. */
 typedef struct {
     int32_t row;                               /* the row j they are of; INT32_MIN: none yet */
-    uint32_t q;                                /* the q plane's (pixel perspective) */
+    uint32_t q, q_step_y;                      /* the q plane's (pixel perspective) */
     uint32_t attributes[TARN_ATTRIBUTES_MAX]; /* each premultiplied plane's */
     uint32_t step_x[TARN_ATTRIBUTES_MAX];     /* and its step along the row */
+    uint32_t step_y[TARN_ATTRIBUTES_MAX];     /* and down a row */
 } tarn_row_origin;
 
 /* What one row keeps for its pixels' attributes, by the triangle's perspective
