@@ -198,6 +198,14 @@ static void sliver_plane(const tarn_triangle_setup *t, const plane_basis *basis,
     p->anchor = over_area(weighted_sum(anchor->e_next, d1, anchor->e_after, d2), &basis->area2);
 }
 
+/* A plane found at the anchor pixel through `from` there, carried to the box's
+ * corner, where tarn__plane_at counts from. */
+static tarn_plane at_box_corner(const tarn_triangle_setup *t, const plane_anchor *anchor, tarn_plane p, uint32_t from)
+{
+    p.anchor += from + p.step_x * (uint32_t)(t->box.x0 - anchor->i) + p.step_y * (uint32_t)(t->box.y0 - anchor->j);
+    return p;
+}
+
 /* A plane through the three vertex values (each within [0, 2^30], so their
  * differences fit 32 bits), from the triangle's basis. */
 static tarn_plane make_plane(const tarn_triangle_setup *t, const plane_basis *basis, const plane_anchor *anchor,
@@ -217,9 +225,36 @@ static tarn_plane make_plane(const tarn_triangle_setup *t, const plane_basis *ba
         p.step_y = weighted(d1, d2, basis->y, basis->shift);
         p.anchor = weighted(d1, d2, basis->at, basis->shift);
     }
-    /* found at the anchor pixel, carried to the box's corner, where tarn__plane_at counts from */
-    p.anchor += from + p.step_x * (uint32_t)(t->box.x0 - anchor->i) + p.step_y * (uint32_t)(t->box.y0 - anchor->j);
-    return p;
+    return at_box_corner(t, anchor, p, from);
+}
+
+/* sum / 2^shift and sum / 2^(shift - up), each rounded as `weighted` rounds, modulo
+ * 2^32; where up passes shift the second is sum times 2^(up - shift), exactly, whose
+ * low 32 bits are the low word's. */
+static void shifted_and_up(int64_t sum, unsigned shift, unsigned up, uint32_t *value, uint32_t *value_up)
+{
+    *value = tarn_round_shift_low32((uint64_t)sum, shift);
+    if (shift >= up)
+        *value_up = tarn_round_shift_low32((uint64_t)sum, shift - up);
+    else
+        *value_up = up - shift < 32u ? (uint32_t)sum << (up - shift) : 0u;
+}
+
+/* The planes through three values and through the same values times 2^up (each
+ * within [0, 2^30]), `p` and `p_up`, from the one basis of a triangle that is not a
+ * sliver: the second's sums are the first's times 2^up, exactly, so the same three
+ * sums shifted down by `up` less give it, as make_plane would, without its six
+ * products. */
+static void planes_and_up(const tarn_triangle_setup *t, const plane_basis *basis, const plane_anchor *anchor,
+                          const uint32_t value[3], unsigned up, tarn_plane *p, tarn_plane *p_up)
+{
+    const uint32_t from = value[anchor->far];
+    const int32_t d1 = (int32_t)(value[anchor->next] - from), d2 = (int32_t)(value[anchor->after] - from);
+    shifted_and_up(weighted_sum(d1, basis->x[0], d2, basis->x[1]), basis->shift, up, &p->step_x, &p_up->step_x);
+    shifted_and_up(weighted_sum(d1, basis->y[0], d2, basis->y[1]), basis->shift, up, &p->step_y, &p_up->step_y);
+    shifted_and_up(weighted_sum(d1, basis->at[0], d2, basis->at[1]), basis->shift, up, &p->anchor, &p_up->anchor);
+    *p = at_box_corner(t, anchor, *p, from);
+    *p_up = at_box_corner(t, anchor, *p_up, from << up);
 }
 
 /* An attribute's three T values (each at most 2^30), with the shift that makes
@@ -399,20 +434,26 @@ static tarn_depth_plane make_exact_depth_plane(const tarn_triangle_setup *t, con
     return p;
 }
 
-/* Depth on a plane through the vertices' near/d, as the attributes' planes. */
-static tarn_depth_plane make_depth_plane(const tarn_triangle_setup *t, const plane_basis *basis,
-                                        const plane_anchor *anchor)
+/* The depth plane `p` of a plane's steps, set in place: the Cortex-M0's and the
+ * RISC-V's deepest stack runs through the setup's depth. */
+static void depth_on_plane(tarn_depth_plane *p, const plane_basis *basis, const tarn_plane *steps)
 {
-    tarn_depth_plane p;
-    p.den = basis->area2;
+    p->den = basis->area2;
+    p->step_x.quotient = steps->step_x;
+    p->step_y.quotient = steps->step_y;
+    p->step_x.remainder = p->step_y.remainder = 0u;
+    p->step_x.carry_at = p->step_y.carry_at = UINT32_MAX;
+    p->anchor = steps->anchor;
+    p->exact = 0u;
+}
+
+/* Depth on a plane through the vertices' near/d, as the attributes' planes, into `p`. */
+static void make_depth_plane(const tarn_triangle_setup *t, const plane_basis *basis, const plane_anchor *anchor,
+                             tarn_depth_plane *p)
+{
     const uint32_t value[3] = {t->v[0]->inv_depth, t->v[1]->inv_depth, t->v[2]->inv_depth};
     const tarn_plane steps = make_plane(t, basis, anchor, value);
-    const tarn_exact_step_value step_x = {steps.step_x, 0u, UINT32_MAX}, step_y = {steps.step_y, 0u, UINT32_MAX};
-    p.step_x = step_x;
-    p.step_y = step_y;
-    p.anchor = steps.anchor;
-    p.exact = 0u;
-    return p;
+    depth_on_plane(p, basis, &steps);
 }
 
 /* Exact depth at pixel (i, j): (area2*z0 + E1*(z1 - z0) + E2*(z2 - z0) + area2/2) / area2,
@@ -435,6 +476,22 @@ static uint8_t texel_shift(unsigned t_shift, uint32_t size)
 {
     const unsigned shift = t_shift + 16u - (31u - tarn_clz32(size));
     return (uint8_t)(shift > 31u ? 31u : shift);
+}
+
+/* Depth on a plane through the vertices' near/d, and q's plane, near/d times
+ * 2^normalise, from the same sums (planes_and_up); 0 where they cannot share them:
+ * a sliver's planes are exact divisions, and a vertex's q of 0 is lifted to 1.
+ * Kept out of line, beside the planes made one at a time: its frame is not on the
+ * setup's deepest path, which runs through a sliver's division. */
+static TARN_NOINLINE int shared_depth_and_q(const tarn_triangle_setup *t, const plane_basis *basis,
+                                            const plane_anchor *anchor, unsigned normalise, tarn_attribute_set *set)
+{
+    const uint32_t inv_depth[3] = {t->v[0]->inv_depth, t->v[1]->inv_depth, t->v[2]->inv_depth};
+    if (basis->sliver || inv_depth[0] == 0u || inv_depth[1] == 0u || inv_depth[2] == 0u) return 0;
+    tarn_plane depth;
+    planes_and_up(t, basis, anchor, inv_depth, normalise, &depth, &set->q);
+    depth_on_plane(&set->depth, basis, &depth);
+    return 1;
 }
 
 static void set_texel_lookup(tarn_attribute_set *set, const tarn_texture *texture)
@@ -475,11 +532,15 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
     }
     const plane_anchor anchor = anchor_of(t);
     const plane_basis basis = basis_of(t, &anchor);
-    set->depth = TARN_LINK_EXACT_DEPTH && depth_interpolation == TARN_DEPTH_EXACT
-        ? make_exact_depth_plane(t, &basis.area2)
-        : make_depth_plane(t, &basis, &anchor);
-    if (perspective != TARN_PERSPECTIVE_AFFINE) /* affine interpolation never reads q */
-        set->q = make_plane(t, &basis, &anchor, q);
+    const int exact_depth = TARN_LINK_EXACT_DEPTH && depth_interpolation == TARN_DEPTH_EXACT;
+    const int uses_q = perspective != TARN_PERSPECTIVE_AFFINE; /* affine interpolation never reads q */
+    if (exact_depth || !uses_q || !shared_depth_and_q(t, &basis, &anchor, normalise, set)) {
+        if (exact_depth)
+            set->depth = make_exact_depth_plane(t, &basis.area2);
+        else
+            make_depth_plane(t, &basis, &anchor, &set->depth);
+        if (uses_q) set->q = make_plane(t, &basis, &anchor, q);
+    }
     uint32_t scaled[3];
     unsigned shift;
     for (int k = 0; k < 3; k++) {
