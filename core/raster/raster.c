@@ -74,15 +74,18 @@ static TARN_ALWAYS_INLINE void affine_t(const tarn_attribute_set *set, const tar
     }
 }
 
-/* Exact T values of every attribute at pixel i of the row, perspective-correct. */
+/* Exact T values of every attribute at pixel i of the row, perspective-correct,
+ * and the pixel's near/d by the reciprocal they divide by. */
 static TARN_ALWAYS_INLINE void exact_t(const tarn_attribute_set *set, const tarn_row_origin *origin, int32_t i,
-                    unsigned steps, uint32_t out[TARN_ATTRIBUTES_MAX])
+                    unsigned steps, uint32_t out[TARN_ATTRIBUTES_MAX], tarn_depth_reciprocal *depth)
 {
     uint32_t q = plane_along_row(origin->q, set->q.step_x, i);
     if ((int32_t)q < (int32_t)set->q_min) q = set->q_min;
     if (q > set->q_max) q = set->q_max;
     unsigned lz;
     uint32_t recip = reciprocal_of_q(q, steps, &lz);
+    depth->recip = recip; /* q = near/d * 2^q_shift */
+    depth->lz = lz + set->q_shift;
     for (int k = set->first_varying; k < set->count; k++)
         out[k] = divide_by_q(plane_along_row(origin->attributes[k], origin->step_x[k], i), recip, lz,
                              set->t_min[k], set->t_max[k]);
@@ -228,8 +231,11 @@ static void row_attributes_start(tarn_row_attributes *row, const tarn_tile_targe
 
 /* The T values of every attribute at pixel i of the span in perspective mode
  * `mode`, the triangle's: a constant in each loop below, which is written once
- * and compiled for each mode, so no pixel asks which mode it is in. */
-static TARN_ALWAYS_INLINE void attributes_at(tarn_span *s, int32_t i, int mode)
+ * and compiled for each mode, so no pixel asks which mode it is in. In pixel
+ * mode, the pixel's near/d by its reciprocal too (`depth`, left alone in the
+ * others); an opaque loop's is a local it never reads, and the compiler keeps
+ * none of it. */
+static TARN_ALWAYS_INLINE void attributes_at(tarn_span *s, int32_t i, int mode, tarn_depth_reciprocal *depth)
 {
     const tarn_attribute_set *set = s->set;
     const unsigned steps = s->target->quality->recip_newton_steps;
@@ -238,18 +244,18 @@ static TARN_ALWAYS_INLINE void attributes_at(tarn_span *s, int32_t i, int mode)
     else if (mode == TARN_PERSPECTIVE_SPAN)
         span_t(set, s->triangle, steps, i, s->j, &s->row.span, s->values);
     else
-        exact_t(set, &s->row.origin, i, steps, s->values);
+        exact_t(set, &s->row.origin, i, steps, s->values, depth);
 }
 
-void tarn__span_attributes(tarn_span *s, int32_t i)
+void tarn__span_attributes(tarn_span *s, int32_t i, tarn_depth_reciprocal *depth)
 {
     const int mode = s->set->perspective;
     if (TARN_LINK_PERSPECTIVE_AFFINE && mode == TARN_PERSPECTIVE_AFFINE)
-        attributes_at(s, i, TARN_PERSPECTIVE_AFFINE);
+        attributes_at(s, i, TARN_PERSPECTIVE_AFFINE, depth);
     else if (TARN_LINK_PERSPECTIVE_SPAN && mode == TARN_PERSPECTIVE_SPAN)
-        attributes_at(s, i, TARN_PERSPECTIVE_SPAN);
+        attributes_at(s, i, TARN_PERSPECTIVE_SPAN, depth);
     else if (TARN_LINK_PERSPECTIVE_PIXEL)
-        attributes_at(s, i, TARN_PERSPECTIVE_PIXEL);
+        attributes_at(s, i, TARN_PERSPECTIVE_PIXEL, depth);
 }
 
 /* An opaque pixel whose colour is the triangle's, `rgb`: untextured, lit alike at
@@ -266,7 +272,8 @@ static TARN_ALWAYS_INLINE uint32_t constant_pixel(void *rgb, tarn_span *s, int32
 static TARN_ALWAYS_INLINE uint32_t interpolated_pixel(const tarn_texture *texture, tarn_span *s, int32_t i, int mode,
                                                       int on_line)
 {
-    attributes_at(s, i, mode);
+    tarn_depth_reciprocal unread;
+    attributes_at(s, i, mode, &unread);
     return on_line ? shade_line_pixel(s->set, texture, s->values) : shade_pixel(s->set, texture, s->values);
 }
 

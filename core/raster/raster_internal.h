@@ -128,8 +128,10 @@ typedef struct {
     uint8_t texel_shift[2];
     uint32_t texel_mask[2];
     unsigned log2_width;
-    tarn_lit_line lit_line; /* with first_varying 2: the lit colour from attribute 2 (last:
-                               the fields before it keep the short offsets Thumb loads reach) */
+    tarn_lit_line lit_line; /* with first_varying 2: the lit colour from attribute 2 (near
+                               the end: the fields before it keep the short offsets Thumb
+                               loads reach) */
+    uint8_t q_shift;        /* q is near/d times 2^q_shift, the vertices' normalised */
 } tarn_attribute_set;
 
 /* ---- per-pixel helpers shared with setup (32-bit arithmetic only) ------------ */
@@ -264,10 +266,22 @@ typedef struct {
     tarn_depth_range depth_range; /* the last pixel's, kept from row to row of the triangle */
 } tarn_span;
 
+/* A surface's near/d by its reciprocal, as the perspective divide finds it:
+ * 2^62 / (near/d << lz) (tarn_recip_q30's Q2.30), with lz the leading zeros that
+ * normalised near/d; recip 0 where none was found. A linear depth is one product
+ * from it. */
+typedef struct {
+    uint32_t recip;
+    unsigned lz;
+} tarn_depth_reciprocal;
+
 /* The T values of the varying attributes at pixel i of the span, into its values,
  * for a shader that needs them at some pixels only. Pixels must come in order;
- * one may be skipped in any perspective mode. */
-void tarn__span_attributes(tarn_span *span, int32_t i);
+ * one may be skipped in any perspective mode. In pixel perspective the pixel's q
+ * is near/d to more bits, and its reciprocal, which the divide takes, is given
+ * as near/d's (`depth`); the other modes find none and leave `depth` alone (NULL
+ * in a build without pixel perspective). */
+void tarn__span_attributes(tarn_span *span, int32_t i, tarn_depth_reciprocal *depth);
 
 /* The 16-bit code's range around q (a width of 0 finds one at the next pixel). */
 void tarn__depth_range_find(tarn_depth_range *range, uint32_t q);

@@ -522,6 +522,7 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
     for (int n = 0; n < 3; n++)
         if (t->v[n]->inv_depth > largest) largest = t->v[n]->inv_depth;
     unsigned normalise = tarn_clz32(largest) > 2u ? tarn_clz32(largest) - 2u : 0u;
+    set->q_shift = (uint8_t)normalise;
     set->q_min = TARN_T_ONE;
     set->q_max = 0;
     for (int n = 0; n < 3; n++) {

@@ -60,19 +60,30 @@ void tarn__linear_depth_setup(tarn_linear_depth *d, tarn_q16 near, tarn_q16 far,
     d->near_q46 = (uint64_t)(uint32_t)near << 30;
 }
 
-uint32_t tarn__water_linear_depth(uint32_t iz_q30, const tarn_linear_depth *d)
+/* near * recip * 2^(lz - 32), saturated: the linear depth of a near/d whose
+ * reciprocal is `recip` once shifted up by lz. */
+static inline uint32_t linear_depth_from(uint32_t recip, unsigned lz, const tarn_linear_depth *d)
 {
-    if (iz_q30 == 0u) return (uint32_t)d->far;
-    const unsigned lz = tarn_clz32(iz_q30);
-    const uint32_t recip = tarn_recip_q30(iz_q30 << lz, d->recip_steps); /* 2^62 / (iz << lz) */
     const unsigned near_shift = d->near_shift;
-    /* d = near * recip * 2^(lz - 32), with near pre-shifted for precision */
+    /* near pre-shifted for precision */
     const uint32_t scaled = tarn_mul_hi_u32(d->near_mantissa, recip);
     if (lz >= near_shift) {
         unsigned up = lz - near_shift;
         return up >= 31u || scaled > ((uint32_t)INT32_MAX >> up) ? (uint32_t)INT32_MAX : scaled << up;
     }
     return scaled >> (near_shift - lz);
+}
+
+uint32_t tarn__water_linear_depth_of(const tarn_depth_reciprocal *iz, const tarn_linear_depth *d)
+{
+    return linear_depth_from(iz->recip, iz->lz, d);
+}
+
+uint32_t tarn__water_linear_depth(uint32_t iz_q30, const tarn_linear_depth *d)
+{
+    if (iz_q30 == 0u) return (uint32_t)d->far;
+    const unsigned lz = tarn_clz32(iz_q30);
+    return linear_depth_from(tarn_recip_q30(iz_q30 << lz, d->recip_steps), lz, d); /* 2^62 / (iz << lz) */
 }
 
 static uint32_t background_depth_q30(const tarn_water_context *w, int32_t offset)

@@ -156,6 +156,9 @@ const uint8_t *tarn__water_texel_at(const tarn_texture *t, uint32_t u_fraction, 
                                     unsigned texel_bytes);
 /* near / (iz / 2^30) in Q16.16 world units, saturated; far for iz 0. */
 uint32_t tarn__water_linear_depth(uint32_t iz_q30, const tarn_linear_depth *d);
+/* The same from iz's reciprocal (the perspective divide's, tarn_depth_reciprocal):
+ * near * recip * 2^(lz - 32), saturated. */
+uint32_t tarn__water_linear_depth_of(const tarn_depth_reciprocal *iz, const tarn_linear_depth *d);
 /* Pan offset of a speed (repeats per second, Q16.16) at time_ms, Q0.16. */
 uint16_t tarn__water_pan_offset(tarn_q16 speed, uint32_t time_ms);
 /* The same in Q0.32, for the maps' Q0.32 fractions: floor(speed * time_ms * 2^16 /
@@ -210,7 +213,7 @@ uint32_t tarn__water_background_q30(const tarn_water_context *w, int32_t i, int3
 /* The effects at water pixel (i, j), each called only when the material has it and
  * the build links it. */
 void tarn__water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
-                           tarn_water_effects *out);
+                           uint32_t surface_depth, tarn_water_effects *out);
 /* The features a pixel sharp, which blocks find at every pixel: step 9's foam
  * lines and step 10's sparkles. */
 #define TARN_WATER_SHOWS_FOAM 1u
@@ -229,8 +232,10 @@ unsigned tarn__water_sharp_features(const tarn_water_context *w, const tarn_wate
 /* Whether a sharp feature could show at a pixel sharing effects `e`: sparkles, or
  * foam within its band. A pixel where none can needs no inputs of its own. */
 int tarn__water_sharp_possible(const tarn_water_context *w, const tarn_water_effects *e);
-/* Both at one pixel: the colour of water pixel (i, j) with its own effects. */
-uint32_t tarn__water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in);
+/* Both at one pixel: the colour of water pixel (i, j) with its own effects, its
+ * surface at linear depth ds = `surface_depth` (Q16.16 world units). */
+uint32_t tarn__water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
+                          uint32_t surface_depth);
 
 /* ---- what the steps share (water_common.c) ---- */
 

@@ -59,9 +59,8 @@ unsigned tarn__water_sharp_at(const tarn_water_context *w, const tarn_water_inpu
 }
 
 void tarn__water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
-                           tarn_water_effects *e)
+                           uint32_t surface_depth, tarn_water_effects *e)
 {
-    const uint32_t surface_depth = tarn__water_depth_of(w, in->inv_depth);
     tarn_water_normal n;
     tarn__water_pixel_normal(w, in, &n);
     /* without an apron a refracted sample may not move (offset_limit 0): it is the
@@ -143,9 +142,10 @@ unsigned tarn__water_sharp_features(const tarn_water_context *w, const tarn_wate
     return tarn__water_sharp_at(w, in, e->foam_band, &n);
 }
 
-uint32_t tarn__water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in)
+uint32_t tarn__water_shade(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
+                          uint32_t surface_depth)
 {
     tarn_water_effects e;
-    tarn__water_effects_at(w, i, j, in, &e);
+    tarn__water_effects_at(w, i, j, in, surface_depth, &e);
     return tarn__water_apply(w, &e, e.sharp, i, j);
 }

@@ -54,14 +54,14 @@ static int shares_block(const tarn_water_context *w, const tarn_water_block *blo
  * refracted sample moves with each pixel's own normal, and shared it would move
  * the block's other pixels by the top-left pixel's. */
 static const tarn_water_effects *own_effects(const tarn_water_pass *pass, int32_t i, int32_t j,
-                                             const tarn_water_input *in, uint32_t depth_q30,
+                                             const tarn_water_input *in, uint32_t surface_depth, uint32_t depth_q30,
                                              tarn_water_effects *own)
 {
     tarn_water_context *w = pass->water;
     tarn_water_block *block = block_slot(pass, i);
     const int top_left = ((i | j) & ((1 << w->block_shift) - 1)) == 0;
     tarn_water_effects *e = top_left ? &block->effects : own;
-    tarn__water_effects_at(w, i, j, in, e);
+    tarn__water_effects_at(w, i, j, in, surface_depth, e);
     if (top_left) {
         const int refracts = TARN_LINK_APRON && (e->offset[0] | e->offset[1]) != 0;
         block->serial = refracts ? 0u : w->triangle_serial;
@@ -96,10 +96,21 @@ static int water_needs_inputs(const tarn_water_context *w, const water_choice *c
     return !c->shares || tarn__water_sharp_possible(w, &c->block->effects);
 }
 
-/* The colour of water pixel (i, j) from its attributes `values` (found only where
- * water_needs_inputs). */
+/* ds, the surface's linear depth at a water pixel (Q16.16), from the reciprocal of
+ * its near/d the perspective divide found, where it found one (pixel perspective:
+ * q holds near/d to more bits than the depth, and a reciprocal is spared), else
+ * from near/d, `inv_depth`. */
+static uint32_t surface_depth_of(const tarn_water_context *w, const tarn_depth_reciprocal *surface, uint32_t inv_depth)
+{
+    if (TARN_LINK_PERSPECTIVE_PIXEL && surface->recip != 0u) return tarn__water_linear_depth_of(surface, &w->linear);
+    return tarn__water_depth_of(w, inv_depth);
+}
+
+/* The colour of water pixel (i, j) from its attributes `values` and its surface's
+ * near/d by its reciprocal, `surface` (found only where water_needs_inputs). */
 static uint32_t water_colour(const tarn_water_pass *pass, const water_choice *c, const tarn_attribute_set *set,
-                             const uint32_t values[TARN_ATTRIBUTES_MAX], uint32_t inv_depth, int32_t i, int32_t j)
+                             const uint32_t values[TARN_ATTRIBUTES_MAX], uint32_t inv_depth,
+                             const tarn_depth_reciprocal *surface, int32_t i, int32_t j)
 {
     tarn_water_context *w = pass->water;
     if (c->shares) {
@@ -109,9 +120,10 @@ static uint32_t water_colour(const tarn_water_pass *pass, const water_choice *c,
         return tarn__water_apply(w, shared, tarn__water_sharp_features(w, &in, shared), i, j);
     }
     const tarn_water_input in = water_input(set, values, inv_depth);
-    if (c->block == NULL) return tarn__water_shade(w, i, j, &in);
+    const uint32_t surface_depth = surface_depth_of(w, surface, inv_depth);
+    if (c->block == NULL) return tarn__water_shade(w, i, j, &in, surface_depth);
     tarn_water_effects own;
-    const tarn_water_effects *e = own_effects(pass, i, j, &in, c->depth_q30, &own);
+    const tarn_water_effects *e = own_effects(pass, i, j, &in, surface_depth, c->depth_q30, &own);
     return tarn__water_apply(w, e, e->sharp, i, j);
 }
 
@@ -125,8 +137,11 @@ static TARN_ALWAYS_INLINE uint32_t water_pixel(void *pass_ctx, tarn_span *s, int
 {
     tarn_water_pass *pass = pass_ctx;
     const water_choice choice = water_choice_at(pass, i, s->j);
-    if (water_needs_inputs(pass->water, &choice)) tarn__span_attributes(s, i);
-    const uint32_t rgb = water_colour(pass, &choice, s->set, s->values, inv_depth, i, s->j);
+    tarn_depth_reciprocal surface;
+    surface.recip = 0u; /* none found, unless in pixel perspective: a build without it asks for none */
+    if (water_needs_inputs(pass->water, &choice))
+        tarn__span_attributes(s, i, TARN_LINK_PERSPECTIVE_PIXEL ? &surface : NULL);
+    const uint32_t rgb = water_colour(pass, &choice, s->set, s->values, inv_depth, &surface, i, s->j);
     pass->overlap |= pass->target.colour[index] & pass->mark;
     return rgb | pass->mark;
 }
