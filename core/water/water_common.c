@@ -57,7 +57,6 @@ void tarn__linear_depth_setup(tarn_linear_depth *d, tarn_q16 near, tarn_q16 far,
     d->near_mantissa = (uint32_t)near << d->near_shift;
     d->far = far;
     d->recip_steps = recip_steps;
-    d->near_q46 = (uint64_t)(uint32_t)near << 30;
 }
 
 /* near * recip * 2^(lz - 32), saturated: the linear depth of a near/d whose

@@ -38,7 +38,6 @@ typedef struct {
     unsigned near_shift;
     tarn_q16 far;
     unsigned recip_steps;
-    uint64_t near_q46; /* near (Q16.16) * 2^30: linear depth d is near_q46 / (near/d, Q1.30) */
 } tarn_linear_depth;
 
 void tarn__linear_depth_setup(tarn_linear_depth *d, tarn_q16 near, tarn_q16 far, unsigned recip_steps);

@@ -51,7 +51,8 @@ static int surely_a_unit_below(const tarn_water_context *w, uint32_t iz_q30, uin
     const uint32_t unit_below = surface + Q16_ONE;
     const uint32_t bound = unit_below + (unit_below >> 7) + 8u;
     if (iz_q30 == 0u || bound > (uint32_t)INT32_MAX || surface > (uint32_t)INT32_MAX) return 0;
-    return tarn_mul_u32_wide(bound, iz_q30) <= w->linear.near_q46;
+    const uint32_t near = w->linear.near_mantissa >> w->linear.near_shift; /* Q16.16, exactly */
+    return tarn_mul_u32_wide(bound, iz_q30) <= (uint64_t)near << 30;
 }
 
 /* Step 2: the refracted sample, or the pixel's own when it would land in front.
