@@ -535,7 +535,10 @@ void tarn__setup_attributes(const tarn_triangle_setup *t, const tarn_attribute_r
     const plane_basis basis = basis_of(t, &anchor);
     const int exact_depth = TARN_LINK_EXACT_DEPTH && depth_interpolation == TARN_DEPTH_EXACT;
     const int uses_q = perspective != TARN_PERSPECTIVE_AFFINE; /* affine interpolation never reads q */
-    if (exact_depth || !uses_q || !shared_depth_and_q(t, &basis, &anchor, normalise, set)) {
+    /* a build without pixel perspective (the 16 KB boards') keeps them apart: span
+     * mode divides by q only at its spans' ends, so sharing saves it little, and
+     * its code would take most of what is left of the M0's 32 KB code budget */
+    if (exact_depth || !uses_q || !TARN_LINK_PERSPECTIVE_PIXEL || !shared_depth_and_q(t, &basis, &anchor, normalise, set)) {
         if (exact_depth)
             set->depth = make_exact_depth_plane(t, &basis.area2);
         else
