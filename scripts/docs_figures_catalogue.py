@@ -529,6 +529,9 @@ KEYS["pond.depth-16.shading_cost"] = lambda m: diff(cmp_of("", "shading_psnr")(m
 STILL = "--quality fast --backdrop still"
 KEYS["still.wb2.psnr"] = cmp_of(STILL, "psnr", time=1750)
 KEYS["still.wb4.psnr"] = cmp_of(STILL + " --water-block 4", "psnr", time=1750)
+STILL_REFRACTING = " --quality fast --water-block 4 --apron on --perspective pixel --depth 32"
+KEYS["still.refracting.psnr"] = cmp_of("--backdrop still" + STILL_REFRACTING, "psnr", time=1750)
+KEYS["still.refracting.whole_psnr"] = cmp_of(STILL_REFRACTING.strip(), "psnr", time=1750)
 KEYS["still.wb4.psnr_cost"] = lambda m: diff(KEYS["still.wb2.psnr"](m), KEYS["still.wb4.psnr"](m), 2)
 KEYS["pond.plane.host_saving"] = lambda m: pct_less(host_of("--depth-interpolation plane")(m), host_of("")(m))
 KEYS["pond.fast.plane_host_saving"] = lambda m: pct_less(
@@ -1599,6 +1602,8 @@ def still_bake(m):
     return m.bake("pond", STILL_FLAGS)
 
 
+KEYS["bake.still-refracting.depth_values"] = lambda m: comma(
+    m.bake("pond", STILL_FLAGS + " --apron on --perspective pixel --depth 32")["count.backdrop_depth"])
 KEYS["bake.still.colours"] = lambda m: comma(still_bake(m)["backdrop.colours"])
 KEYS["bake.still.index_bits"] = lambda m: still_bake(m)["backdrop.bits"]
 KEYS["bake.still.foam_places"] = lambda m: comma(still_bake(m)["count.backdrop_depth"])

@@ -21,6 +21,7 @@
 #include "frame_render.h"
 #include "reference.h"
 #include "scene_load.h"
+#include "tile/tile_internal.h"
 
 static void load(const char *path, tarn_loaded_scene *loaded)
 {
@@ -343,6 +344,47 @@ static void test_refraction_reads_the_picture(void **state)
     tarn_scene_free(&loaded);
 }
 
+/* A refracted sample that lands where no water draws (the bank behind the water,
+ * the sphere standing in it) is taken where it lies behind the water it moved from,
+ * as the scene drawn whole takes it: the backdrop keeps the opaque near/d of such
+ * pixels, and the frame without them (each turned back to "none kept") is further
+ * from the float reference, by at least 1 dB on the pond. */
+static void test_samples_beside_the_water_are_taken(void **state)
+{
+    (void)state;
+    tarn_loaded_scene loaded;
+    load("scenes/pond.json", &loaded);
+    tarn_frame_config config = fast_config(&loaded, 2);
+    config.quality.refraction_apron = TARN_APRON_FULL;
+    config.time_ms = 1750;
+    tarn_backdrop_scene b;
+    still_make(&loaded.scene, &config, &b);
+    uint8_t *beside = test_render_rgb(&b.water.scene, &config, "samples beside the water taken");
+    const tarn_backdrop *backdrop = &b.image.backdrop;
+    uint16_t *kept = b.image.depth;
+    size_t turned_back = 0;
+    for (int32_t j = 0; j < config.height; j++)
+        for (uint32_t k = backdrop->row_spans[j]; k < backdrop->row_spans[j + 1]; k++)
+            for (int32_t i = backdrop->spans[k].x0; i < backdrop->spans[k].x1; i++) {
+                const uint32_t colour = tarn__backdrop_colour_at(backdrop, config.width, i, j);
+                uint16_t *value = &kept[backdrop->spans[k].first + (uint32_t)(i - backdrop->spans[k].x0)];
+                if ((colour & TARN_BACKDROP_STILL_OBJECT) != 0u || *value == 0xFFFFu) continue;
+                *value = 0xFFFFu;
+                turned_back++;
+            }
+    uint8_t *refused = test_render_rgb(&b.water.scene, &config, "samples beside the water refused");
+    const double beside_db = psnr_against_reference(&loaded.scene, &config, beside);
+    const double refused_db = psnr_against_reference(&loaded.scene, &config, refused);
+    print_message("pond: %zu pixels beside the water keep their depth; %.2f dB taking samples there, %.2f refusing\n",
+                  turned_back, beside_db, refused_db);
+    assert_true(turned_back > 1000u);
+    assert_true(beside_db > refused_db + 1.0);
+    free(beside);
+    free(refused);
+    tarn_backdrop_scene_free(&b);
+    tarn_scene_free(&loaded);
+}
+
 /* Still water draws flat water only, whose texture coordinates are an affine map
  * of its plane, and a plane the camera does not lie in. */
 static void test_water_still_water_cannot_draw_is_refused(void **state)
@@ -426,6 +468,7 @@ int main(void)
         cmocka_unit_test(test_backdrop_keeps_the_still_water),
         cmocka_unit_test(test_underwater_is_refused_at_bake),
         cmocka_unit_test(test_refraction_reads_the_picture),
+        cmocka_unit_test(test_samples_beside_the_water_are_taken),
         cmocka_unit_test(test_water_still_water_cannot_draw_is_refused),
         cmocka_unit_test(test_another_quality_is_refused),
     };

@@ -124,32 +124,53 @@ typedef struct {
     uint32_t band;
 } still_sample;
 
+/* A sample whose opaque surface lies at linear depth `opaque` (Q16.16) for water
+ * pixel `in`: step 3's diff is db there less ds here. Where that is below 0 the
+ * surface lies in front of this pixel's water, and the sample is not taken (0
+ * returned); else its place in the foam band is found over that depth. */
+static int sample_behind(const tarn_water_context *w, uint32_t opaque, const tarn_water_input *in, still_sample *s)
+{
+    const uint32_t surface = tarn__water_depth_of(w, in->inv_depth);
+    if (opaque < surface) return 0;
+    if (tarn__water_uses(w, TARN_WATER_FOAM)) s->band = tarn__water_foam_band(w, opaque - surface);
+    return 1;
+}
+
 /* The sample that lands at water pixel (x, y) of the walk's object for water pixel
- * `in`: step 3's diff is db there less ds here, its own depth of water plus the
- * depth of its surface less this one's. Where that is below 0 the opaque surface
- * there lies in front of this pixel's water, and the sample is not taken (0
- * returned). Where the backdrop keeps no depth of water there, it is deep: behind,
- * and beyond any foam band. */
+ * `in`: its opaque surface lies its own depth of water below its surface. Where the
+ * backdrop keeps no depth of water there, it is deep: behind, and beyond any foam
+ * band. */
 static int moved_sample(const tarn_water_context *w, const still_walk *walk, int32_t x, int32_t y,
                         const tarn_water_input *in, still_sample *s)
 {
     const uint32_t below = kept_depth(w, walk, x, y);
     s->band = Q16_ONE;
     if (below == DEEP) return 1;
-    const uint32_t surface = tarn__water_depth_of(w, in->inv_depth);
-    const uint32_t opaque = tarn__water_depth_of(w, plane_inv_depth(walk->plane, x, y)) + below;
-    if (opaque < surface) return 0;
-    if (tarn__water_uses(w, TARN_WATER_FOAM)) s->band = tarn__water_foam_band(w, opaque - surface);
-    return 1;
+    return sample_behind(w, tarn__water_depth_of(w, plane_inv_depth(walk->plane, x, y)) + below, in, s);
+}
+
+/* The sample that lands at pixel (x, y) where no water draws (the bank behind the
+ * water, an object standing in it): taken, its colour the opaque one, where the
+ * backdrop keeps its near/d there (a tarn_depth16 code) and it lies behind this
+ * pixel's water. */
+static int beside_sample(const tarn_water_context *w, const still_walk *walk, int32_t x, int32_t y,
+                         const tarn_water_input *in, still_sample *s)
+{
+    const uint32_t code = tarn__backdrop_kept(walk->backdrop, x, y);
+    s->band = Q16_ONE;
+    if (code >= 0xFFFFu) return 0;
+    return sample_behind(w, tarn__water_depth_of(w, tarn_depth16_decode((uint16_t)code)), in, s);
 }
 
 /* Step 2 over still water: the sample of water pixel (i, j), with inputs `in` and
- * normal `n`: the still picture where its refracted sample lands, when the walk's
- * object's water draws there too and the opaque surface there lies behind this
- * pixel's water; else the pixel's own (`still`), as the scene drawn whole keeps a
- * sample that lands in front. The still terms read there are that pixel's, found
- * over its own depth of water where the scene drawn whole finds them over the
- * sample's depth seen from here: they change slowly across the water. */
+ * normal `n`: the still picture where its refracted sample lands, when the opaque
+ * surface there lies behind this pixel's water and the walk's object's water draws
+ * there or none does; else the pixel's own (`still`), as the scene drawn whole
+ * keeps a sample that lands in front. The still terms read on the water are that
+ * pixel's, found over its own depth of water where the scene drawn whole finds them
+ * over the sample's depth seen from here: they change slowly across the water.
+ * Beside the water the picture holds none: the opaque colour is taken as it is,
+ * where the scene drawn whole puts this pixel's still terms over it. */
 static still_sample refracted_sample(const tarn_water_context *w, const still_walk *walk, const tarn_water_input *in,
                                      tarn_water_normal *n, uint32_t still, int32_t i, int32_t j)
 {
@@ -160,8 +181,9 @@ static still_sample refracted_sample(const tarn_water_context *w, const still_wa
     still_sample moved = {0u, Q16_ONE};
     if (target[0] != i || target[1] != j) {
         moved.colour = tarn__backdrop_colour_at(walk->backdrop, w->width, target[0], target[1]);
-        const int same_water = (moved.colour & TARN_BACKDROP_STILL_OBJECT) == walk->mark;
-        if (same_water && moved_sample(w, walk, target[0], target[1], in, &moved)) return moved;
+        const uint32_t water = moved.colour & TARN_BACKDROP_STILL_OBJECT;
+        if (water == walk->mark && moved_sample(w, walk, target[0], target[1], in, &moved)) return moved;
+        if (water == 0u && beside_sample(w, walk, target[0], target[1], in, &moved)) return moved;
     }
     const still_sample own = {still, foam_band(w, walk, still, i, j)};
     return own;

@@ -153,15 +153,33 @@ static uint32_t kept_value(const tarn_water_context *context, int refracts, uint
     return tarn__water_foam_band(context, diff);
 }
 
+/* Where a water pixel's refracted sample may land: within `radius` pixels (0 where
+ * its water does not refract), behind `surface_q30`, its surface's near/d. */
+typedef struct {
+    uint32_t surface_q30;
+    uint8_t radius;
+} refracting_pixel;
+
+/* How far water pixel's refracted sample may move, in pixels, over `diff` of water
+ * (Q16.16): its unit normal times the pixels a unit normal moves it, times its
+ * reach saturate(diff), rounded, within the apron. */
+static uint8_t refraction_radius(const tarn_water_context *context, uint32_t diff, int32_t apron)
+{
+    const uint64_t reach = diff < 65536u ? diff : 65536u;
+    const uint64_t pixels = ((uint64_t)context->refraction_px * reach >> 32) + 1u;
+    return (uint8_t)(pixels < (uint64_t)apron ? pixels : (uint64_t)apron);
+}
+
 /* At each water pixel, what the frame reads of the depth of water beneath it
  * (tarn__still_keeps_depth: the depth itself, or the place in the foam band, Q0.16),
  * found as the scene drawn whole finds it with a pixel's own effects, by the core's
  * own steps: from the opaque depth beneath and the water's own near/d. Where it is
  * kept, `kept` is 1; where foam can show (step 9's f < 1), the pixel's colour takes
- * TARN_BACKDROP_STILL_FOAM. */
+ * TARN_BACKDROP_STILL_FOAM. `refracting` takes where each pixel's refracted sample may
+ * land. */
 static int find_kept_values(const tarn_scene *scene, const tarn_frame_config *config, const tarn_drawn_frame *opaque,
                             tarn_drawn_frame *still, const uint8_t *water, uint16_t *values, uint8_t *kept,
-                            tarn_error *err)
+                            refracting_pixel *refracting, tarn_error *err)
 {
     tarn_drawn_frame surface = {NULL, NULL, 0, 0};
     if (draw_water_alone(scene, config, &surface, err) != 0) return -1;
@@ -169,17 +187,20 @@ static int find_kept_values(const tarn_scene *scene, const tarn_frame_config *co
     tarn__view_setup(scene, config, &view);
     tarn_water_context context;
     memset(&context, 0, sizeof context);
-    const int apron = tarn_frame_apron_pixels(scene, config) > 0;
+    const int32_t apron = tarn_frame_apron_pixels(scene, config);
     for (size_t k = 0; k < (size_t)config->width * config->height; k++) {
         values[k] = 0xFFFFu;
         kept[k] = 0;
+        refracting[k].radius = 0u;
         if (!water[k]) continue;
         const tarn_object *object = water_object(scene, (still->rgb[k] & TARN_BACKDROP_STILL_OBJECT) >> TARN_BACKDROP_STILL_SHIFT);
         if (context.object != object) tarn__water_context_setup(&context, &view, config, object);
-        const int refracts = apron && tarn__water_uses(&context, TARN_WATER_REFRACTION);
+        const int refracts = apron > 0 && tarn__water_uses(&context, TARN_WATER_REFRACTION);
         const uint32_t below = tarn__water_linear_depth(depth_q30(opaque, k), &context.linear);
         const uint32_t at = tarn__water_linear_depth(depth_q30(&surface, k), &context.linear);
         const uint32_t diff = below > at ? below - at : 0u;
+        refracting[k].surface_q30 = depth_q30(&surface, k);
+        if (refracts) refracting[k].radius = refraction_radius(&context, diff, apron);
         const uint32_t value = kept_value(&context, refracts, diff);
         if (value >= 65536u) continue;
         values[k] = (uint16_t)value;
@@ -189,6 +210,30 @@ static int find_kept_values(const tarn_scene *scene, const tarn_frame_config *co
     }
     tarn_drawn_free(&surface);
     return 0;
+}
+
+/* Beside the water: the pixels where no water draws but a refracted sample may land
+ * behind the water it moved from (within its radius, its opaque surface no nearer
+ * than that water's) keep their opaque near/d as a tarn_depth16 code, which the
+ * frame tells from a depth of water by the pixel's colour, unmarked. */
+static void keep_depth_beside_water(const tarn_frame_config *config, const tarn_drawn_frame *opaque,
+                                    const uint8_t *water, const refracting_pixel *refracting, uint16_t *values,
+                                    uint8_t *kept)
+{
+    const int32_t width = config->width, height = config->height;
+    for (int32_t j = 0; j < height; j++)
+        for (int32_t i = 0; i < width; i++) {
+            const refracting_pixel *from = &refracting[(size_t)j * width + i];
+            const int32_t r = from->radius;
+            for (int32_t y = j - r < 0 ? 0 : j - r; r > 0 && y <= j + r && y < height; y++)
+                for (int32_t x = i - r < 0 ? 0 : i - r; x <= i + r && x < width; x++) {
+                    const size_t k = (size_t)y * width + x;
+                    const uint32_t below = depth_q30(opaque, k);
+                    if (water[k] || kept[k] || below > from->surface_q30) continue;
+                    values[k] = tarn_depth16_encode(below);
+                    kept[k] = 1;
+                }
+        }
 }
 
 /* The opaque frame, the still one with its water marked with its object, and
@@ -218,19 +263,22 @@ int tarn_still_image_make(const tarn_scene *scene, const tarn_frame_config *conf
     *water = malloc(pixels);
     uint8_t *kept = malloc(pixels);
     uint16_t *values = malloc(pixels * sizeof *values);
+    refracting_pixel *refracting = malloc(pixels * sizeof *refracting);
     tarn_drawn_frame opaque = {NULL, NULL, 0, 0}, still = {NULL, NULL, 0, 0};
     /* the values are kept as a frame's depth is */
     const tarn_drawn_frame kept_frame = {NULL, (uint8_t *)values, sizeof *values, config->width};
-    const int failed = *water == NULL || kept == NULL || values == NULL
+    int failed = *water == NULL || kept == NULL || values == NULL || refracting == NULL
         ? tarn_fail(err, "backdrop: out of memory drawing the still water")
         : draw_still_frames(scene, config, &opaque, &still, *water, err) ||
-              find_kept_values(scene, config, &opaque, &still, *water, values, kept, err) ||
-              tarn_backdrop_index_colours(still.rgb, pixels, b, err) ||
-              tarn_backdrop_keep_depth(&kept_frame, kept, config->height, b, err);
+              find_kept_values(scene, config, &opaque, &still, *water, values, kept, refracting, err);
+    if (!failed) keep_depth_beside_water(config, &opaque, *water, refracting, values, kept);
+    failed = failed || tarn_backdrop_index_colours(still.rgb, pixels, b, err) ||
+             tarn_backdrop_keep_depth(&kept_frame, kept, config->height, b, err);
     tarn_drawn_free(&opaque);
     tarn_drawn_free(&still);
     free(kept);
     free(values);
+    free(refracting);
     return failed;
 }
 

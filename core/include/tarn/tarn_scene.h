@@ -162,8 +162,9 @@ typedef struct {
  * and, with water blocks, by the highlights the blocks share; docs/bake.md gives
  * the error. A refracted sample (with the quality's apron) is read from the
  * picture itself wherever it lands: the still colour there, whose still terms are
- * that pixel's rather than the refracting one's, and the pixel's own where it
- * lands off the object's water or in front of it. It applies to a frame without
+ * that pixel's rather than the refracting one's; the opaque colour where it lands
+ * beside the water (on the bank behind it, on an object standing in it); and the
+ * pixel's own where it lands on another object's water or in front of it. It applies to a frame without
  * the underwater view. */
 #define TARN_BACKDROP_STILL_OBJECT 0x7E000000u
 #define TARN_BACKDROP_STILL_SHIFT 25u
@@ -223,7 +224,10 @@ typedef struct {
                                   depth of water beneath, db - ds in Q0.16 world
                                   units, where that is less than one unit; else the
                                   place in the foam band (step 9's f, Q0.16) where
-                                  that is less than 1 */
+                                  that is less than 1; at a pixel no water draws
+                                  (unmarked) where a refracted sample may land behind
+                                  its water, the opaque near/d as a tarn_depth16
+                                  code */
     uint32_t depth_count;      /* entries of depth */
 } tarn_backdrop;
 
