@@ -407,25 +407,31 @@ static void isqrt_is_exact(void **state)
     assert_true(tarn_isqrt_u64((uint64_t)1 << 62) == (uint64_t)1 << 31);
 }
 
+/* tarn_math.h's bounds by Newton steps: relative error beyond the rounding below
+ * 2^-8, 2^-15 and 2^-28, and with two steps within 0.501 LSB. */
 static void rsqrt_sweep_within_documented_bound(void **state)
 {
     (void)state;
-    tarn_math_error e = tarn_math_measure_rsqrt();
-    assert_true(e.samples > (1ul << 20));
-    assert_max_error("rsqrt", e, 0.501);
-    assert_max_rel_excess("rsqrt", e, 2.5e-9);
+    static const double relative[] = {1.0 / 256.0, 1.0 / 32768.0, 1.0 / 268435456.0};
+    for (unsigned steps = 0; steps <= TARN_RSQRT_STEPS_MAX; steps++) {
+        tarn_math_error e = tarn_math_measure_rsqrt(steps);
+        print_message("rsqrt, %u Newton steps: %.3g relative beyond rounding\n", steps, e.max_rel_excess);
+        assert_true(e.samples > (1ul << 20));
+        assert_max_rel_excess("rsqrt", e, relative[steps]);
+        if (steps == TARN_RSQRT_STEPS_MAX) assert_max_error("rsqrt", e, 0.501);
+    }
 }
 
 static void rsqrt_limits(void **state)
 {
     (void)state;
-    assert_int_equal(tarn_rsqrt_q16(0), 0);               /* no direction */
-    assert_int_equal(tarn_rsqrt_q16(1), 1u << 24);        /* 1/sqrt(2^-16) = 256.0 */
-    assert_int_equal(tarn_rsqrt_q16(2), 11863283);        /* 2^24 / sqrt(2) */
-    assert_int_equal(tarn_rsqrt_q16(65536), 65536);       /* 1.0 */
-    assert_int_equal(tarn_rsqrt_q16(4 * 65536), 32768);   /* 1/sqrt(4) = 0.5 */
-    assert_int_equal(tarn_rsqrt_q16(UINT32_MAX), 256);    /* 1/sqrt(65536.0) */
-    assert_int_equal(tarn_rsqrt_q16(UINT32_MAX - 1u), 256);
+    assert_int_equal(tarn_rsqrt_q16(0, 2), 0);               /* no direction */
+    assert_int_equal(tarn_rsqrt_q16(1, 2), 1u << 24);        /* 1/sqrt(2^-16) = 256.0 */
+    assert_int_equal(tarn_rsqrt_q16(2, 2), 11863283);        /* 2^24 / sqrt(2) */
+    assert_int_equal(tarn_rsqrt_q16(65536, 2), 65536);       /* 1.0 */
+    assert_int_equal(tarn_rsqrt_q16(4 * 65536, 2), 32768);   /* 1/sqrt(4) = 0.5 */
+    assert_int_equal(tarn_rsqrt_q16(UINT32_MAX, 2), 256);    /* 1/sqrt(65536.0) */
+    assert_int_equal(tarn_rsqrt_q16(UINT32_MAX - 1u, 2), 256);
 }
 
 /* Every code of the 16-bit depth: decoding then encoding gives it back, codes

@@ -43,7 +43,6 @@ uint64_t tarn_isqrt_u64(uint64_t x)
 
 #define ONE_Q28 (1u << 28)
 /* The seed's relative error of 2^-8 shrinks to 2^-15, then to the arithmetic's 2^-28. */
-#define RSQRT_NEWTON_STEPS 2
 
 /* A Newton step for 1/sqrt(m) is y' = y + y (1 - m y^2) / 2, from m y^2 (Q4.28,
  * close to 1). In Q2.30, y (1 - m y^2) / 2 is y * |1 - m y^2| / 2^29 =
@@ -75,7 +74,7 @@ static uint32_t rsqrt_first_step(uint32_t m, uint32_t seed)
     return rsqrt_corrected(seed << 15, m_y_y, tarn__times_seed(rsqrt_error(m_y_y), seed));
 }
 
-uint32_t tarn_rsqrt_q16(uint32_t x_q16)
+uint32_t tarn_rsqrt_q16(uint32_t x_q16, unsigned newton_steps)
 {
     if (x_q16 == 0u) return 0u;
     /* x = m * 2^(32 - lz) with lz even, so sqrt halves the exponent exactly:
@@ -83,8 +82,10 @@ uint32_t tarn_rsqrt_q16(uint32_t x_q16)
     unsigned even_lz = tarn_clz32(x_q16) & ~1u; /* 0..30 */
     uint32_t m = x_q16 << even_lz;              /* Q0.32 in [1/4, 1) */
     const uint32_t seed = tarn__rsqrt_seed_q15[(m >> 24) - TARN_RSQRT_SEED_FIRST];
-    uint32_t y = rsqrt_first_step(m, seed);
-    for (int step = 1; step < RSQRT_NEWTON_STEPS; step++) y = rsqrt_newton_step(m, y);
+    /* more steps than the maximum gain nothing; clamping also bounds the time */
+    const unsigned steps = newton_steps < TARN_RSQRT_STEPS_MAX ? newton_steps : TARN_RSQRT_STEPS_MAX;
+    uint32_t y = steps == 0u ? seed << 15 : rsqrt_first_step(m, seed);
+    for (unsigned step = 1; step < steps; step++) y = rsqrt_newton_step(m, y);
 
     unsigned shift = 22u - (even_lz >> 1); /* 7..22: from Q2.30 to the result */
     return (y + (1u << (shift - 1u))) >> shift;

@@ -134,12 +134,12 @@ tarn_math_error tarn_math_measure_isqrt(void)
     return sweep_finish(&sweep);
 }
 
-tarn_math_error tarn_math_measure_rsqrt(void)
+tarn_math_error tarn_math_measure_rsqrt(unsigned newton_steps)
 {
     error_sweep sweep = sweep_start(1);
     uint64_t x = 1;
     do {
-        sweep_add(&sweep, (int64_t)x, tarn_rsqrt_q16((uint32_t)x), 16777216.0 / sqrt((double)x));
+        sweep_add(&sweep, (int64_t)x, tarn_rsqrt_q16((uint32_t)x, newton_steps), 16777216.0 / sqrt((double)x));
     } while (next_stepped_input(&x));
     return sweep_finish(&sweep);
 }
@@ -168,7 +168,9 @@ static const tarn_math_case math_cases[] = {
     {TARN_MATH_SIN, "tarn_sin_q15", "", {0, 0}, 0},
     {TARN_MATH_COS, "tarn_cos_q15", "", {0, 0}, 0},
     {TARN_MATH_ISQRT, "tarn_isqrt_u32", "", {0, 0}, 0},
-    {TARN_MATH_RSQRT, "tarn_rsqrt_q16", "", {0, 0}, 0},
+    {TARN_MATH_RSQRT, "tarn_rsqrt_q16", "0 Newton steps", {0, 0}, 0},
+    {TARN_MATH_RSQRT, "tarn_rsqrt_q16", "1 Newton step", {0, 0}, 1},
+    {TARN_MATH_RSQRT, "tarn_rsqrt_q16", "2 Newton steps", {0, 0}, 2},
 };
 
 size_t tarn_math_case_count(void)
@@ -192,7 +194,7 @@ tarn_math_error tarn_math_case_measure(const tarn_math_case *c)
     case TARN_MATH_ISQRT: return tarn_math_measure_isqrt();
     case TARN_MATH_RSQRT: break;
     }
-    return tarn_math_measure_rsqrt();
+    return tarn_math_measure_rsqrt(c->newton_steps);
 }
 
 /* ---- benchmark ---------------------------------------------------------------------*/
@@ -279,8 +281,7 @@ static uint32_t call_isqrt(const tarn_math_case *c, uint32_t x)
 
 static uint32_t call_rsqrt(const tarn_math_case *c, uint32_t x)
 {
-    (void)c;
-    return tarn_rsqrt_q16(x);
+    return tarn_rsqrt_q16(x, c->newton_steps);
 }
 
 static uint32_t call_nothing(const tarn_math_case *c, uint32_t x)
