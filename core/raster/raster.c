@@ -11,16 +11,24 @@
  * table-and-Newton reciprocal, using 16x16-bit partial products only. */
 #include "raster/raster_internal.h"
 
+/* The largest premultiplied value a pixel divides: p << 1 then stays within
+ * tarn_mul_hi_u32_small's range. A covered pixel's p is a plane's value inside the
+ * triangle through vertex values of at most 2^30, its rounding a few units over, so
+ * it never reaches this; the cap keeps any other p's product exact on every core. */
+#define PREMULTIPLIED_MAX ((1u << 30) + (1u << 15) - 1u)
+
 /* T = premultiplied * 2^30 / q, given 1/q as a Q2.30 mantissa and q's leading zeros:
  * 1/q = recip * 2^(lz - 62), so T = mul_hi(p << 1, recip) << (lz - 1). Clamped to the
  * triangle's own range, which rounding can overshoot by a few units. A plane's
  * rounding can take p a few units below 0, where it would wrap, or above 2^30,
- * where p << 1 still fits and the clamp to t_max catches the quotient. */
+ * where the clamp to t_max catches the quotient. */
 static TARN_ALWAYS_INLINE uint32_t divide_by_q(uint32_t premultiplied, uint32_t recip, unsigned lz,
                             uint32_t t_min, uint32_t t_max)
 {
-    if ((int32_t)premultiplied < 0) premultiplied = 0;
-    uint32_t t = tarn_mul_hi_u32(premultiplied << 1, recip);
+    if (premultiplied >> 30 != 0u) /* rarely: 2^30 and over, or below 0; one test where two would be */
+        premultiplied = (int32_t)premultiplied < 0 ? 0u
+                                                   : (premultiplied < PREMULTIPLIED_MAX ? premultiplied : PREMULTIPLIED_MAX);
+    uint32_t t = tarn_mul_hi_u32_small(premultiplied << 1, recip); /* recip < 2^31: tarn_recip_q30 */
     if (t > (t_max >> (lz - 1u))) return t_max;
     t <<= lz - 1u;
     return t < t_min ? t_min : t;

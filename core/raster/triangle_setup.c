@@ -270,10 +270,10 @@ static void add_attribute(tarn_attribute_set *set, const tarn_triangle_setup *t,
     set->t_shift[k] = shift;
     if (k < set->first_varying) return; /* constant: no plane */
     /* floor(T * q / 2^30) for T and q at most 2^30: the high word of their doubles'
-       product, which the Cortex-M0 takes in four 16x16 products instead of the whole
-       64-bit product's words */
+       product (each at most 2^31), which the Cortex-M0 takes in four 16x16 products
+       instead of the whole 64-bit product's words */
     if (set->perspective != TARN_PERSPECTIVE_AFFINE)
-        for (int n = 0; n < 3; n++) scaled[n] = tarn_mul_hi_u32(scaled[n] << 1, q[n] << 1);
+        for (int n = 0; n < 3; n++) scaled[n] = tarn_mul_hi_u32_small(scaled[n] << 1, q[n] << 1);
     set->premultiplied[k] = make_plane(t, basis, anchor, scaled);
 }
 
