@@ -154,6 +154,59 @@ static void high_word_by_halves(void **state)
     }
 }
 
+/* The Cortex-M0's high word without a carry (tarn_mul_hi_u32_small) is the native
+ * product's for operands below 2^31 + 2^16, at their edges and at random. */
+static void high_word_of_small_operands_by_halves(void **state)
+{
+    (void)state;
+    static const uint32_t edges[] = {0u, 1u, 0xFFFFu, 0x10000u, 0x3FFFFFFFu, 0x40000000u, 0x40007FFFu,
+                                     0x7FFFFFFFu, 0x80000000u, 0x8000FFFEu, 0x8000FFFFu};
+    const size_t n = sizeof edges / sizeof edges[0];
+    uint32_t seed = 4242u;
+    for (size_t k = 0; k < n * n + 1000000u; k++) {
+        uint32_t a, b;
+        if (k < n * n) {
+            a = edges[k / n];
+            b = edges[k % n];
+        } else {
+            a = (seed = seed * 1664525u + 1013904223u) % 0x8001FFFFu;
+            b = (seed = seed * 1664525u + 1013904223u) % 0x8001FFFFu;
+        }
+        const uint32_t want = (uint32_t)(((uint64_t)a * b) >> 32), got = tarn_mul_hi_u32_small_by_halves(a, b);
+        if (got != want)
+            fail_msg("the high word of 0x%08x * 0x%08x by halves without a carry is 0x%08x, not 0x%08x", a, b, got, want);
+    }
+}
+
+/* The Cortex-M0's sum of two products of factors within +-2^30 is the native one,
+ * at the factors' edges and at random. */
+static void sum_of_products_by_halves(void **state)
+{
+    (void)state;
+    static const int32_t edges[] = {0, 1, -1, 0xFFFF, 0x10000, -0x10000, -0x10001, (1 << 30) - 1, 1 << 30,
+                                    -(1 << 30), -(1 << 30) + 1};
+    const size_t n = sizeof edges / sizeof edges[0];
+    uint32_t seed = 777u;
+    for (size_t k = 0; k < n * n * n * n + 1000000u; k++) {
+        int32_t f[4];
+        for (int c = 0; c < 4; c++) {
+            if (k < n * n * n * n) {
+                size_t index = k;
+                for (int d = 0; d < c; d++) index /= n;
+                f[c] = edges[index % n];
+            } else {
+                seed = seed * 1664525u + 1013904223u;
+                f[c] = (int32_t)(seed % ((1u << 31) + 1u)) - (1 << 30);
+            }
+        }
+        const int64_t want = (int64_t)f[0] * f[1] + (int64_t)f[2] * f[3];
+        const int64_t got = tarn_dot2_i30_wide_by_halves(f[0], f[1], f[2], f[3]);
+        if (got != want)
+            fail_msg("%" PRId32 " * %" PRId32 " + %" PRId32 " * %" PRId32 " by halves is %" PRId64 ", not %" PRId64,
+                     f[0], f[1], f[2], f[3], got, want);
+    }
+}
+
 /* The low word of a rounding shift, at every shift, is the whole shift's: at the
  * edges of int64_t and its words, and at a million random values. */
 static void low_word_of_rounding_shifts(void **state)
@@ -368,6 +421,8 @@ int main(void)
         cmocka_unit_test(leading_zeros_by_table),
         cmocka_unit_test(floor_shift_forms),
         cmocka_unit_test(high_word_by_halves),
+        cmocka_unit_test(high_word_of_small_operands_by_halves),
+        cmocka_unit_test(sum_of_products_by_halves),
         cmocka_unit_test(low_word_of_rounding_shifts),
         cmocka_unit_test(vertex_position_by_halves),
         cmocka_unit_test(products),

@@ -105,11 +105,11 @@ static plane_anchor anchor_of(const tarn_triangle_setup *t)
     return anchor;
 }
 
-/* e1 * d1 + e2 * d2 for two 32-bit factors a term (edge values, weights, value
- * differences) whose sum fits 64 bits. */
+/* e1 * d1 + e2 * d2 for a plane: its two weights (or the anchor pixel's edge
+ * values, below 2^24) and the values' differences, each within +-2^30. */
 static int64_t weighted_sum(int32_t e1, int32_t d1, int32_t e2, int32_t d2)
 {
-    return tarn_mul_i32_wide(e1, d1) + tarn_mul_i32_wide(e2, d2);
+    return tarn_dot2_i30_wide(e1, d1, e2, d2);
 }
 
 /* The same for two edge coefficients (a or b), which are coordinate differences
@@ -463,9 +463,10 @@ tarn_exact_value tarn__exact_depth_at(const tarn_triangle_setup *t, const tarn_d
     const unsigned s = t->subpixel_bits;
     const int32_t px = tarn__pixel_centre(i, s), py = tarn__pixel_centre(j, s);
     /* area2 is below 2^31: two products of coordinate differences */
+    /* an edge's value at a pixel of the box may pass 2^30: whole 32-bit products */
     int64_t num = (int64_t)tarn_mul_u32_wide((uint32_t)t->area2, t->v[0]->inv_depth) + t->area2 / 2 +
-                  weighted_sum(edge_unbiased_at(&t->edges[1], px, py), depth_difference(t, 1),
-                               edge_unbiased_at(&t->edges[2], px, py), depth_difference(t, 2));
+                  tarn_mul_i32_wide(edge_unbiased_at(&t->edges[1], px, py), depth_difference(t, 1)) +
+                  tarn_mul_i32_wide(edge_unbiased_at(&t->edges[2], px, py), depth_difference(t, 2));
     return floor_divmod(num, &depth->den);
 }
 
