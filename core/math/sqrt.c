@@ -41,8 +41,9 @@ uint64_t tarn_isqrt_u64(uint64_t x)
     return root;
 }
 
+/* Each Newton step below takes the seed's relative error of 2^-8 to 2^-15, then to
+ * the arithmetic's 2^-28 (tarn_math.h's bounds by steps). */
 #define ONE_Q28 (1u << 28)
-/* The seed's relative error of 2^-8 shrinks to 2^-15, then to the arithmetic's 2^-28. */
 
 /* A Newton step for 1/sqrt(m) is y' = y + y (1 - m y^2) / 2, from m y^2 (Q4.28,
  * close to 1). In Q2.30, y (1 - m y^2) / 2 is y * |1 - m y^2| / 2^29 =

@@ -462,8 +462,8 @@ tarn_exact_value tarn__exact_depth_at(const tarn_triangle_setup *t, const tarn_d
 {
     const unsigned s = t->subpixel_bits;
     const int32_t px = tarn__pixel_centre(i, s), py = tarn__pixel_centre(j, s);
-    /* area2 is below 2^31: two products of coordinate differences */
-    /* an edge's value at a pixel of the box may pass 2^30: whole 32-bit products */
+    /* area2 is below 2^31: two products of coordinate differences; an edge's value
+       at a pixel of the box may pass 2^30, so whole 32-bit products */
     int64_t num = (int64_t)tarn_mul_u32_wide((uint32_t)t->area2, t->v[0]->inv_depth) + t->area2 / 2 +
                   tarn_mul_i32_wide(edge_unbiased_at(&t->edges[1], px, py), depth_difference(t, 1)) +
                   tarn_mul_i32_wide(edge_unbiased_at(&t->edges[2], px, py), depth_difference(t, 2));

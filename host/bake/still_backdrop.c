@@ -160,7 +160,7 @@ typedef struct {
     uint8_t radius;
 } refracting_pixel;
 
-/* How far water pixel's refracted sample may move, in pixels, over `diff` of water
+/* How far a water pixel's refracted sample may move, in pixels, over `diff` of water
  * (Q16.16): its unit normal times the pixels a unit normal moves it, times its
  * reach saturate(diff), rounded, within the apron. */
 static uint8_t refraction_radius(const tarn_water_context *context, uint32_t diff, int32_t apron)
@@ -212,27 +212,43 @@ static int find_kept_values(const tarn_scene *scene, const tarn_frame_config *co
     return 0;
 }
 
+/* What keeping the depth beside the water reads and writes. */
+typedef struct {
+    const tarn_drawn_frame *opaque;
+    const uint8_t *water;
+    uint16_t *values;
+    uint8_t *kept;
+    int32_t width, height;
+} beside_water;
+
+/* The pixels where no water draws within `from`'s radius of water pixel (i, j),
+ * whose opaque surface lies no nearer than its water's: their opaque near/d kept
+ * as a tarn_depth16 code. */
+static void keep_around(const beside_water *b, const refracting_pixel *from, int32_t i, int32_t j)
+{
+    const int32_t r = from->radius;
+    for (int32_t y = j - r < 0 ? 0 : j - r; y <= j + r && y < b->height; y++)
+        for (int32_t x = i - r < 0 ? 0 : i - r; x <= i + r && x < b->width; x++) {
+            const size_t k = (size_t)y * (size_t)b->width + (size_t)x;
+            const uint32_t below = depth_q30(b->opaque, k);
+            if (b->water[k] || b->kept[k] || below > from->surface_q30) continue;
+            b->values[k] = tarn_depth16_encode(below);
+            b->kept[k] = 1;
+        }
+}
+
 /* Beside the water: the pixels where no water draws but a refracted sample may land
- * behind the water it moved from (within its radius, its opaque surface no nearer
- * than that water's) keep their opaque near/d as a tarn_depth16 code, which the
- * frame tells from a depth of water by the pixel's colour, unmarked. */
+ * behind the water it moved from keep their opaque near/d, which the frame tells
+ * from a depth of water by the pixel's colour, unmarked. */
 static void keep_depth_beside_water(const tarn_frame_config *config, const tarn_drawn_frame *opaque,
                                     const uint8_t *water, const refracting_pixel *refracting, uint16_t *values,
                                     uint8_t *kept)
 {
-    const int32_t width = config->width, height = config->height;
-    for (int32_t j = 0; j < height; j++)
-        for (int32_t i = 0; i < width; i++) {
-            const refracting_pixel *from = &refracting[(size_t)j * width + i];
-            const int32_t r = from->radius;
-            for (int32_t y = j - r < 0 ? 0 : j - r; r > 0 && y <= j + r && y < height; y++)
-                for (int32_t x = i - r < 0 ? 0 : i - r; x <= i + r && x < width; x++) {
-                    const size_t k = (size_t)y * width + x;
-                    const uint32_t below = depth_q30(opaque, k);
-                    if (water[k] || kept[k] || below > from->surface_q30) continue;
-                    values[k] = tarn_depth16_encode(below);
-                    kept[k] = 1;
-                }
+    const beside_water b = {opaque, water, values, kept, config->width, config->height};
+    for (int32_t j = 0; j < b.height; j++)
+        for (int32_t i = 0; i < b.width; i++) {
+            const refracting_pixel *from = &refracting[(size_t)j * (size_t)b.width + (size_t)i];
+            if (from->radius > 0u) keep_around(&b, from, i, j);
         }
 }
 

@@ -164,8 +164,8 @@ typedef struct {
  * picture itself wherever it lands: the still colour there, whose still terms are
  * that pixel's rather than the refracting one's; the opaque colour where it lands
  * beside the water (on the bank behind it, on an object standing in it); and the
- * pixel's own where it lands on another object's water or in front of it. It applies to a frame without
- * the underwater view. */
+ * pixel's own where it lands on another object's water or in front of it. It
+ * applies to a frame without the underwater view. */
 #define TARN_BACKDROP_STILL_OBJECT 0x7E000000u
 #define TARN_BACKDROP_STILL_SHIFT 25u
 #define TARN_BACKDROP_STILL_OBJECTS_MAX 63u
