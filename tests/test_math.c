@@ -407,31 +407,30 @@ static void isqrt_is_exact(void **state)
     assert_true(tarn_isqrt_u64((uint64_t)1 << 62) == (uint64_t)1 << 31);
 }
 
-/* tarn_math.h's bounds by Newton steps: relative error beyond the rounding below
- * 2^-8, 2^-15 and 2^-28, and with two steps within 0.501 LSB. */
+/* tarn_math.h's bounds: tarn_rsqrt_q16 within 0.501 LSB and 2.5e-9 relative beyond
+ * the rounding, tarn_rsqrt15_q16 within 2^-15 relative. */
 static void rsqrt_sweep_within_documented_bound(void **state)
 {
     (void)state;
-    static const double relative[] = {1.0 / 256.0, 1.0 / 32768.0, 1.0 / 268435456.0};
-    for (unsigned steps = 0; steps <= TARN_RSQRT_STEPS_MAX; steps++) {
-        tarn_math_error e = tarn_math_measure_rsqrt(steps);
-        print_message("rsqrt, %u Newton steps: %.3g relative beyond rounding\n", steps, e.max_rel_excess);
-        assert_true(e.samples > (1ul << 20));
-        assert_max_rel_excess("rsqrt", e, relative[steps]);
-        if (steps == TARN_RSQRT_STEPS_MAX) assert_max_error("rsqrt", e, 0.501);
-    }
+    tarn_math_error e = tarn_math_measure_rsqrt(2);
+    assert_true(e.samples > (1ul << 20));
+    assert_max_error("rsqrt", e, 0.501);
+    assert_max_rel_excess("rsqrt", e, 2.5e-9);
+    e = tarn_math_measure_rsqrt(1);
+    assert_true(e.samples > (1ul << 20));
+    assert_max_rel_excess("rsqrt15", e, 1.0 / 32768.0);
 }
 
 static void rsqrt_limits(void **state)
 {
     (void)state;
-    assert_int_equal(tarn_rsqrt_q16(0, 2), 0);               /* no direction */
-    assert_int_equal(tarn_rsqrt_q16(1, 2), 1u << 24);        /* 1/sqrt(2^-16) = 256.0 */
-    assert_int_equal(tarn_rsqrt_q16(2, 2), 11863283);        /* 2^24 / sqrt(2) */
-    assert_int_equal(tarn_rsqrt_q16(65536, 2), 65536);       /* 1.0 */
-    assert_int_equal(tarn_rsqrt_q16(4 * 65536, 2), 32768);   /* 1/sqrt(4) = 0.5 */
-    assert_int_equal(tarn_rsqrt_q16(UINT32_MAX, 2), 256);    /* 1/sqrt(65536.0) */
-    assert_int_equal(tarn_rsqrt_q16(UINT32_MAX - 1u, 2), 256);
+    assert_int_equal(tarn_rsqrt_q16(0), 0);               /* no direction */
+    assert_int_equal(tarn_rsqrt_q16(1), 1u << 24);        /* 1/sqrt(2^-16) = 256.0 */
+    assert_int_equal(tarn_rsqrt_q16(2), 11863283);        /* 2^24 / sqrt(2) */
+    assert_int_equal(tarn_rsqrt_q16(65536), 65536);       /* 1.0 */
+    assert_int_equal(tarn_rsqrt_q16(4 * 65536), 32768);   /* 1/sqrt(4) = 0.5 */
+    assert_int_equal(tarn_rsqrt_q16(UINT32_MAX), 256);    /* 1/sqrt(65536.0) */
+    assert_int_equal(tarn_rsqrt_q16(UINT32_MAX - 1u), 256);
 }
 
 /* Every code of the 16-bit depth: decoding then encoding gives it back, codes

@@ -41,8 +41,8 @@ uint64_t tarn_isqrt_u64(uint64_t x)
     return root;
 }
 
-/* Each Newton step below takes the seed's relative error of 2^-8 to 2^-15, then to
- * the arithmetic's 2^-28 (tarn_math.h's bounds by steps). */
+/* The first Newton step takes the seed's relative error of 2^-8 to 2^-15, the
+ * second to the arithmetic's 2^-28. */
 #define ONE_Q28 (1u << 28)
 
 /* A Newton step for 1/sqrt(m) is y' = y + y (1 - m y^2) / 2, from m y^2 (Q4.28,
@@ -75,19 +75,38 @@ static uint32_t rsqrt_first_step(uint32_t m, uint32_t seed)
     return rsqrt_corrected(seed << 15, m_y_y, tarn__times_seed(rsqrt_error(m_y_y), seed));
 }
 
-uint32_t tarn_rsqrt_q16(uint32_t x_q16, unsigned newton_steps)
+/* 1/sqrt(x) after the seed's first Newton step, in Q2.30 for x's mantissa m (Q0.32 in
+ * [1/4, 1), `*m`), and the shift from Q2.30 to the Q16.16 result (`*shift`); x > 0. */
+static uint32_t rsqrt_first_of(uint32_t x_q16, uint32_t *m, unsigned *shift)
 {
-    if (x_q16 == 0u) return 0u;
     /* x = m * 2^(32 - lz) with lz even, so sqrt halves the exponent exactly:
      * 1/sqrt(x / 2^16) in Q16.16 is (1/sqrt(m)) * 2^(8 + lz/2). */
-    unsigned even_lz = tarn_clz32(x_q16) & ~1u; /* 0..30 */
-    uint32_t m = x_q16 << even_lz;              /* Q0.32 in [1/4, 1) */
-    const uint32_t seed = tarn__rsqrt_seed_q15[(m >> 24) - TARN_RSQRT_SEED_FIRST];
-    /* more steps than the maximum gain nothing; clamping also bounds the time */
-    const unsigned steps = newton_steps < TARN_RSQRT_STEPS_MAX ? newton_steps : TARN_RSQRT_STEPS_MAX;
-    uint32_t y = steps == 0u ? seed << 15 : rsqrt_first_step(m, seed);
-    for (unsigned step = 1; step < steps; step++) y = rsqrt_newton_step(m, y);
+    const unsigned even_lz = tarn_clz32(x_q16) & ~1u; /* 0..30 */
+    *m = x_q16 << even_lz;
+    *shift = 22u - (even_lz >> 1); /* 7..22 */
+    return rsqrt_first_step(*m, tarn__rsqrt_seed_q15[(*m >> 24) - TARN_RSQRT_SEED_FIRST]);
+}
 
-    unsigned shift = 22u - (even_lz >> 1); /* 7..22: from Q2.30 to the result */
+/* y (Q2.30) to Q16.16 by `shift`, rounded to nearest. */
+static uint32_t rsqrt_result(uint32_t y, unsigned shift)
+{
     return (y + (1u << (shift - 1u))) >> shift;
+}
+
+uint32_t tarn_rsqrt_q16(uint32_t x_q16)
+{
+    if (x_q16 == 0u) return 0u;
+    uint32_t m;
+    unsigned shift;
+    const uint32_t y = rsqrt_first_of(x_q16, &m, &shift);
+    return rsqrt_result(rsqrt_newton_step(m, y), shift);
+}
+
+uint32_t tarn_rsqrt15_q16(uint32_t x_q16)
+{
+    if (x_q16 == 0u) return 0u;
+    uint32_t m;
+    unsigned shift;
+    const uint32_t y = rsqrt_first_of(x_q16, &m, &shift);
+    return rsqrt_result(y, shift);
 }

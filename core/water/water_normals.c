@@ -3,11 +3,6 @@
 #include "water/water_internal.h"
 
 #define Q15_ONE 32768
-/* A normal's length is found from its direction cut to 15 bits (or held in Q2.13),
- * so one Newton step of its reciprocal square root, to 2^-15, keeps all it holds:
- * a second cost the M0 about 55 instructions a water pixel for nothing the
- * normal's units show (tests/test_water.c holds the exact normal to them). */
-#define NORMAL_RSQRT_STEPS 1u
 
 static void decode_normal(const uint8_t *texel, int32_t out[3])
 {
@@ -89,7 +84,8 @@ static uint32_t exact_inverse_length(const int32_t v[3], int *scale)
     even += even & 1;
     const uint32_t x = even >= 0 ? length2 >> even : length2 << -even;
     *scale = (int)cut + even / 2 + 8; /* |v| = sqrt(x / 2^16) * 2^(8 + even/2) * 2^cut */
-    return tarn_rsqrt_q16(x, NORMAL_RSQRT_STEPS);
+    /* to 2^-15, as v's cut keeps it (tests/test_water.c holds N to Q1.15's units) */
+    return tarn_rsqrt15_q16(x);
 }
 
 /* floor(v * inverse / 2^15) for |v| < 2^28 and inverse < 2^17: v's bits above and
@@ -176,7 +172,7 @@ void tarn__water_surface_normal(const tarn_water_context *w, const tarn_water_in
 void tarn__water_normalise(tarn_water_normal *n)
 {
     if (n->length2 == 0u) return;
-    const int32_t inverse = (int32_t)tarn_rsqrt_q16(n->length2 >> 10, NORMAL_RSQRT_STEPS); /* 1/|v|, Q16.16 <= 1 */
+    const int32_t inverse = (int32_t)tarn_rsqrt15_q16(n->length2 >> 10); /* 1/|v|, Q16.16 <= 1; v holds Q2.13 */
     n->x = (n->x * inverse) >> 14; /* Q2.13 * Q16.16 -> Q1.15 */
     n->y = (n->y * inverse) >> 14;
     n->z = (n->z * inverse) >> 14;

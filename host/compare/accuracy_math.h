@@ -40,7 +40,8 @@ tarn_math_error tarn_math_measure_cos(void);
 /* Every x below 2^24, then k^2 - 1, k^2 and k^2 + 1 for every k up to 65535, and
  * UINT32_MAX. Exact is floor(sqrt(x)), so any error is a bug. */
 tarn_math_error tarn_math_measure_isqrt(void);
-/* Every x in [1, 2^22], then steps as for recip; with 0..2 Newton steps. */
+/* Every x in [1, 2^22], then steps as for recip: tarn_rsqrt15_q16 (one Newton step)
+ * or tarn_rsqrt_q16 (two). */
 tarn_math_error tarn_math_measure_rsqrt(unsigned newton_steps);
 
 typedef enum {

@@ -124,16 +124,15 @@ uint64_t tarn_isqrt_u64(uint64_t x);
 
 /* 1/sqrt(x) for x in Q16.16, result Q16.16 rounded to nearest, 0 at x = 0 ("no
  * direction"). Used to normalise vectors. Results run from 2^24 (256.0, at the
- * smallest x, 2^-16) down to 256 (1/256), so nothing needs to saturate. A 192-entry
- * table seeds it and Newton steps refine it, as the reciprocal's; more than
- * TARN_RSQRT_STEPS_MAX act as it. Largest relative error beyond the final rounding,
- * over every input (docs/figures.md, "Fixed-point math", measures it):
- *   0 steps (table only)   below 2^-8
- *   1 step                 below 2^-15: a per-pixel normal, whose direction holds 15
- *                          bits, loses nothing to it
- *   2 steps                below 2^-28 (within 0.501 LSB at every input) */
-#define TARN_RSQRT_STEPS_MAX 2u
-uint32_t tarn_rsqrt_q16(uint32_t x_q16, unsigned newton_steps);
+ * smallest x, 2^-16) down to 256 (1/256), so nothing needs to saturate. A table
+ * seeds it and two Newton steps refine it: within 0.501 LSB at every input;
+ * relative error beyond the rounding at most 2.5e-9. */
+uint32_t tarn_rsqrt_q16(uint32_t x_q16);
+/* The same after one Newton step: relative error beyond the rounding below 2^-15.
+ * A per-pixel normal, whose direction holds 15 bits, loses nothing to it, and the
+ * Cortex-M0 saves the second step's three high products (about 55 instructions) and
+ * their code. */
+uint32_t tarn_rsqrt15_q16(uint32_t x_q16);
 /* v / |v| in Q1.30, for a vector of 64-bit integers of any common scale (each below
  * 2^62 in magnitude): to about 2^-16 of each component. Returns 0 for the zero
  * vector, leaving out unchanged. Once a frame: the camera's axes, a moving light. */
