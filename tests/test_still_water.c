@@ -21,7 +21,7 @@
 #include "frame_render.h"
 #include "reference.h"
 #include "scene_load.h"
-#include "tile/tile_internal.h"
+#include "tarn_internal.h"
 
 static void load(const char *path, tarn_loaded_scene *loaded)
 {
