@@ -131,15 +131,11 @@ static void floor_shift_forms(void **state)
     }
 }
 
-/* The Cortex-M0's high word (four 16x16 products and their carries) is the native
- * product's, at the carries' edges and at random. */
-static void high_word_by_halves(void **state)
+/* A by-halves high word `form` against the native product: every pair of `edges`,
+ * then a million random operands below `bound` (0: any). */
+static void assert_high_words(const char *what, uint32_t (*form)(uint32_t, uint32_t), const uint32_t *edges,
+                              size_t n, uint32_t bound, uint32_t seed)
 {
-    (void)state;
-    static const uint32_t edges[] = {0u, 1u, 0xFFFFu, 0x10000u, 0x1FFFFu, 0x7FFFFFFFu, 0x80000000u, 0xFFFF0000u,
-                                     0xFFFF0001u, UINT32_MAX - 1u, UINT32_MAX};
-    const size_t n = sizeof edges / sizeof edges[0];
-    uint32_t seed = 12345u;
     for (size_t k = 0; k < n * n + 1000000u; k++) {
         uint32_t a, b;
         if (k < n * n) {
@@ -148,10 +144,34 @@ static void high_word_by_halves(void **state)
         } else {
             a = seed = seed * 1664525u + 1013904223u;
             b = seed = seed * 1664525u + 1013904223u;
+            if (bound != 0u) {
+                a %= bound;
+                b %= bound;
+            }
         }
-        const uint32_t want = (uint32_t)(((uint64_t)a * b) >> 32), got = tarn_mul_hi_u32_by_halves(a, b);
-        if (got != want) fail_msg("the high word of 0x%08x * 0x%08x by halves is 0x%08x, not 0x%08x", a, b, got, want);
+        const uint32_t want = (uint32_t)(((uint64_t)a * b) >> 32), got = form(a, b);
+        if (got != want) fail_msg("the high word of 0x%08x * 0x%08x %s is 0x%08x, not 0x%08x", a, b, what, got, want);
     }
+}
+
+static uint32_t by_halves(uint32_t a, uint32_t b)
+{
+    return tarn_mul_hi_u32_by_halves(a, b);
+}
+
+static uint32_t small_by_halves(uint32_t a, uint32_t b)
+{
+    return tarn_mul_hi_u32_small_by_halves(a, b);
+}
+
+/* The Cortex-M0's high word (four 16x16 products and their carries) is the native
+ * product's, at the carries' edges and at random. */
+static void high_word_by_halves(void **state)
+{
+    (void)state;
+    static const uint32_t edges[] = {0u, 1u, 0xFFFFu, 0x10000u, 0x1FFFFu, 0x7FFFFFFFu, 0x80000000u, 0xFFFF0000u,
+                                     0xFFFF0001u, UINT32_MAX - 1u, UINT32_MAX};
+    assert_high_words("by halves", by_halves, edges, sizeof edges / sizeof edges[0], 0u, 12345u);
 }
 
 /* The Cortex-M0's high word without a carry (tarn_mul_hi_u32_small) is the native
@@ -161,21 +181,8 @@ static void high_word_of_small_operands_by_halves(void **state)
     (void)state;
     static const uint32_t edges[] = {0u, 1u, 0xFFFFu, 0x10000u, 0x3FFFFFFFu, 0x40000000u, 0x40007FFFu,
                                      0x7FFFFFFFu, 0x80000000u, 0x8000FFFEu, 0x8000FFFFu};
-    const size_t n = sizeof edges / sizeof edges[0];
-    uint32_t seed = 4242u;
-    for (size_t k = 0; k < n * n + 1000000u; k++) {
-        uint32_t a, b;
-        if (k < n * n) {
-            a = edges[k / n];
-            b = edges[k % n];
-        } else {
-            a = (seed = seed * 1664525u + 1013904223u) % 0x8001FFFFu;
-            b = (seed = seed * 1664525u + 1013904223u) % 0x8001FFFFu;
-        }
-        const uint32_t want = (uint32_t)(((uint64_t)a * b) >> 32), got = tarn_mul_hi_u32_small_by_halves(a, b);
-        if (got != want)
-            fail_msg("the high word of 0x%08x * 0x%08x by halves without a carry is 0x%08x, not 0x%08x", a, b, got, want);
-    }
+    assert_high_words("by halves without a carry", small_by_halves, edges, sizeof edges / sizeof edges[0],
+                      0x8001FFFFu, 4242u);
 }
 
 /* The Cortex-M0's sum of two products of factors within +-2^30 is the native one,
