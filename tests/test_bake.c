@@ -303,10 +303,22 @@ static void round_trip(const char *scene_path, const char *name, const char *ext
     round_trip_against(scene_path, name, extra, adjust, later_ms, 0, "core");
 }
 
+/* The pond's flat water keeps its plane, and the default quality (balanced) links
+ * the code that takes its texture coordinates from it: the baked frames are the
+ * loaded scene's. */
 static void test_pond_bakes_without_loss(void **state)
 {
     (void)state;
     round_trip("scenes/pond.json", "pond", "", NULL, 2750);
+    char path[PATH_SIZE];
+    snprintf(path, sizeof path, "%s/pond.c", work_dir);
+    char *source = read_all(path, NULL);
+    assert_int_equal(occurrences(source, "static const tarn_uv_plane "), 1);
+    free(source);
+    snprintf(path, sizeof path, "%s/pond_link.h", work_dir);
+    source = read_all(path, NULL);
+    assert_non_null(strstr(source, "#define TARN_LINK_WATER_PLANE 1\n"));
+    free(source);
 }
 
 /* A moving scene keeps its motion: the baked frames (camera, light and objects posed

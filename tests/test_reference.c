@@ -163,7 +163,7 @@ static int lower_left_rule(int i, int j)
 static void check_corner_triangle(const uint16_t indices[6], coverage_rule rule)
 {
     for (unsigned t = 0; t < 2; t++) {
-        tarn_mesh mesh = { corner_positions, facing, NULL, NULL, indices + 3 * t, 4, 1, NULL, 0 };
+        tarn_mesh mesh = { corner_positions, facing, NULL, NULL, indices + 3 * t, 4, 1, NULL, 0, NULL };
         render_mesh_on_grid(&mesh, &white_two_sided);
         assert_coverage(covered, rule);
     }
@@ -185,7 +185,7 @@ static void test_covered_pixels_take_colour_and_others_background(void **state)
     (void)state;
     static const uint16_t indices[3] = { 0, 2, 1 };
     static const tarn_material red = { RED, NULL, TARN_CULL_NONE, 1, NULL };
-    tarn_mesh mesh = { corner_positions, facing, NULL, NULL, indices, 4, 1, NULL, 0 };
+    tarn_mesh mesh = { corner_positions, facing, NULL, NULL, indices, 4, 1, NULL, 0, NULL };
     render_mesh_on_grid(&mesh, &red);
     for (int j = 0; j < H; j++)
         for (int i = 0; i < W; i++) assert_pixel(i, j, upper_left_rule(i, j) ? RED : BACKGROUND);
@@ -227,7 +227,7 @@ static void test_shared_edges_draw_each_pixel_once(void **state)
 {
     (void)state;
     static const uint16_t fan[12] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1 };
-    tarn_mesh mesh = { diamond_positions, facing, NULL, NULL, fan, 5, 4, NULL, 0 };
+    tarn_mesh mesh = { diamond_positions, facing, NULL, NULL, fan, 5, 4, NULL, 0, NULL };
     uint8_t counts[W * H];
     count_draws(&mesh, counts);
     assert_each_drawn_at_most_once(counts);
@@ -245,8 +245,8 @@ static void test_quad_split_either_way_covers_the_same(void **state)
     };
     static const uint16_t split_02[6] = { 0, 1, 2, 0, 2, 3 };
     static const uint16_t split_13[6] = { 0, 1, 3, 1, 2, 3 };
-    tarn_mesh mesh_02 = { quad, facing, NULL, NULL, split_02, 4, 2, NULL, 0 };
-    tarn_mesh mesh_13 = { quad, facing, NULL, NULL, split_13, 4, 2, NULL, 0 };
+    tarn_mesh mesh_02 = { quad, facing, NULL, NULL, split_02, 4, 2, NULL, 0, NULL };
+    tarn_mesh mesh_13 = { quad, facing, NULL, NULL, split_13, 4, 2, NULL, 0, NULL };
     uint8_t counts_02[W * H], counts_13[W * H];
     count_draws(&mesh_02, counts_02);
     count_draws(&mesh_13, counts_13);
@@ -262,7 +262,7 @@ static void test_zero_area_triangle_draws_nothing(void **state)
         AT_SCREEN(1.5, 1.5, 2), AT_SCREEN(8.5, 8.5, 2), AT_SCREEN(14.5, 14.5, 2),
     };
     static const uint16_t indices[3] = { 0, 1, 2 };
-    tarn_mesh mesh = { line, facing, NULL, NULL, indices, 3, 1, NULL, 0 };
+    tarn_mesh mesh = { line, facing, NULL, NULL, indices, 3, 1, NULL, 0, NULL };
     render_mesh_on_grid(&mesh, &white_two_sided);
     for (int p = 0; p < W * H; p++) assert_int_equal(covered[p], 0);
 }
@@ -284,7 +284,7 @@ static void test_far_off_screen_edges_keep_their_place(void **state)
 {
     (void)state;
     static const uint16_t below_then_above[6] = { 0, 1, 2, 0, 1, 3 };
-    tarn_mesh mesh = { near_miss_positions, facing, NULL, NULL, below_then_above, 4, 2, NULL, 0 };
+    tarn_mesh mesh = { near_miss_positions, facing, NULL, NULL, below_then_above, 4, 2, NULL, 0, NULL };
     tarn_object obj = object_of(&mesh, &white_two_sided);
     tarn_scene scene = scene_of(&obj, 1);
     scene.camera.near = 1; /* 1/65536 */
@@ -309,7 +309,7 @@ static void test_huge_triangles_near_the_eye_cover_every_pixel(void **state)
     static const tarn_vec3 wall[] = { VEC(-2000, -2000, -2), VEC(2000, -2000, -2), VEC(-2000, 2000, -2),
                                       VEC(2000, 2000, -2) };
     static const uint16_t quad[6] = { 0, 1, 2, 2, 1, 3 };
-    tarn_mesh mesh = { wall, facing, NULL, NULL, quad, 4, 2, NULL, 0 };
+    tarn_mesh mesh = { wall, facing, NULL, NULL, quad, 4, 2, NULL, 0, NULL };
     render_mesh(&mesh, &white_two_sided);
     for (int p = 0; p < W * H; p++) assert_int_equal(covered[p], 1);
 }
@@ -329,7 +329,7 @@ static const uint32_t layered_colours[] = {
 
 static void render_layers(const uint16_t indices[6])
 {
-    tarn_mesh mesh = { layered_positions, facing, NULL, layered_colours, indices, 9, 2, NULL, 0 };
+    tarn_mesh mesh = { layered_positions, facing, NULL, layered_colours, indices, 9, 2, NULL, 0, NULL };
     render_mesh(&mesh, &white_two_sided);
 }
 
@@ -361,7 +361,7 @@ static const tarn_vec3 front_positions[] = { VEC(-1, -1, -2), VEC(1, -1, -2), VE
 static int centre_drawn(const uint16_t indices[3], uint8_t cull)
 {
     tarn_material material = { 0xFFFFFF, NULL, cull, 1, NULL };
-    tarn_mesh mesh = { front_positions, facing, NULL, NULL, indices, 3, 1, NULL, 0 };
+    tarn_mesh mesh = { front_positions, facing, NULL, NULL, indices, 3, 1, NULL, 0, NULL };
     render_mesh(&mesh, &material);
     return covered[8 * W + 8];
 }
@@ -385,7 +385,7 @@ static void test_rotated_object_shows_its_back(void **state)
     (void)state;
     static const uint16_t front[3] = { 0, 1, 2 };
     static const tarn_material culled = { 0xFFFFFF, NULL, TARN_CULL_BACK, 1, NULL };
-    tarn_mesh mesh = { front_positions, facing, NULL, NULL, front, 3, 1, NULL, 0 };
+    tarn_mesh mesh = { front_positions, facing, NULL, NULL, front, 3, 1, NULL, 0, NULL };
     tarn_object obj = object_of(&mesh, &culled);
     const tarn_q16 half_turn_y[3][3] = { { Q(-1), 0, 0 }, { 0, Q(1), 0 }, { 0, 0, Q(-1) } };
     memcpy(obj.rotation, half_turn_y, sizeof obj.rotation);
@@ -413,7 +413,7 @@ static void test_near_and_far_planes_cut_the_floor(void **state)
         VEC(-50, -1, 5), VEC(50, -1, 5), VEC(50, -1, -50), VEC(-50, -1, -50),
     };
     static const uint16_t indices[6] = { 0, 1, 2, 0, 2, 3 };
-    tarn_mesh mesh = { floor_positions, facing, NULL, NULL, indices, 4, 2, NULL, 0 };
+    tarn_mesh mesh = { floor_positions, facing, NULL, NULL, indices, 4, 2, NULL, 0, NULL };
     tarn_object obj = object_of(&mesh, &white_two_sided);
     tarn_scene scene = scene_of(&obj, 1);
     scene.camera.near = Q(1.25);
@@ -466,7 +466,7 @@ static void test_colours_interpolate_perspective_correctly(void **state)
     };
     static const uint32_t colours[] = { 0xFF0000, 0x00FF00, 0x0000FF };
     static const uint16_t indices[3] = { 0, 1, 2 };
-    tarn_mesh mesh = { positions, facing, NULL, colours, indices, 3, 1, NULL, 0 };
+    tarn_mesh mesh = { positions, facing, NULL, colours, indices, 3, 1, NULL, 0, NULL };
     render_mesh(&mesh, &white_two_sided);
 
     double world[3][3];
@@ -521,7 +521,7 @@ static void render_textured_quad(double u0, double v0, double u1, double v1, uin
         { Q(u0), Q(v0) }, { Q(u1), Q(v0) }, { Q(u1), Q(v1) }, { Q(u0), Q(v1) },
     };
     tarn_material material = { tint, &texture4, TARN_CULL_BACK, 1, NULL };
-    tarn_mesh mesh = { screen_quad, facing, uvs, NULL, screen_quad_indices, 4, 2, NULL, 0 };
+    tarn_mesh mesh = { screen_quad, facing, uvs, NULL, screen_quad_indices, 4, 2, NULL, 0, NULL };
     fill_texels();
     render_mesh(&mesh, &material);
 }
@@ -618,7 +618,7 @@ static void assert_uniform_frame(uint32_t expected)
 static void test_lighting_values(void **state)
 {
     (void)state;
-    tarn_mesh mesh = { screen_quad, facing, NULL, NULL, screen_quad_indices, 4, 2, NULL, 0 };
+    tarn_mesh mesh = { screen_quad, facing, NULL, NULL, screen_quad_indices, 4, 2, NULL, 0, NULL };
     tarn_object obj = object_of(&mesh, &white_two_sided);
     for (size_t k = 0; k < sizeof lighting_cases / sizeof lighting_cases[0]; k++) {
         render_lit_quad(&lighting_cases[k], &obj);
@@ -638,7 +638,7 @@ static void test_object_transform_moves_positions_and_normals(void **state)
     static const tarn_vec3 turned_normals[] = {
         VEC(-1, 0, 0), VEC(-1, 0, 0), VEC(-1, 0, 0), VEC(-1, 0, 0),
     };
-    tarn_mesh mesh = { object_space, turned_normals, NULL, NULL, screen_quad_indices, 4, 2, NULL, 0 };
+    tarn_mesh mesh = { object_space, turned_normals, NULL, NULL, screen_quad_indices, 4, 2, NULL, 0, NULL };
     tarn_object obj = { &mesh, &white_two_sided, VEC(0, 0, -1),
                         { { 0, 0, Q(1) }, { 0, Q(1), 0 }, { Q(-1), 0, 0 } }, Q(2), NULL, NULL };
     render_lit_quad(&lighting_cases[0], &obj);
@@ -651,7 +651,7 @@ static void test_bad_input_is_rejected(void **state)
 {
     (void)state;
     static const uint16_t past_the_end[3] = { 0, 1, 4 };
-    tarn_mesh mesh = { corner_positions, facing, NULL, NULL, past_the_end, 4, 1, NULL, 0 };
+    tarn_mesh mesh = { corner_positions, facing, NULL, NULL, past_the_end, 4, 1, NULL, 0, NULL };
     tarn_object obj = object_of(&mesh, &white_two_sided);
     tarn_scene scene = scene_of(&obj, 1);
     assert_int_equal(render_mode(&scene, 0), TARN_ERR_SCENE);
@@ -687,7 +687,7 @@ static void test_snapped_mode_matches_on_grid_triangles(void **state)
     static const uint16_t indices[6] = { 0, 2, 1, 1, 2, 3 };
     static const uint32_t colours[4] = { RED, GREEN, 0x0000FF, 0xFFFFFF };
     static const tarn_material material = { 0xFFFFFF, NULL, TARN_CULL_BACK, 1, NULL };
-    tarn_mesh mesh = { corner_positions, facing, NULL, colours, indices, 4, 2, NULL, 0 };
+    tarn_mesh mesh = { corner_positions, facing, NULL, colours, indices, 4, 2, NULL, 0, NULL };
     tarn_object obj = object_of(&mesh, &material);
     tarn_scene scene = scene_of(&obj, 1);
     uint8_t unsnapped_rgb[sizeof rgb], unsnapped_covered[sizeof covered];
@@ -707,7 +707,7 @@ static void test_snapped_mode_culls_back_faces(void **state)
     (void)state;
     static const uint16_t back[3] = { 0, 1, 2 }; /* clockwise seen from the camera */
     static const tarn_material material = { 0xFFFFFF, NULL, TARN_CULL_BACK, 1, NULL };
-    tarn_mesh mesh = { corner_positions, facing, NULL, NULL, back, 4, 1, NULL, 0 };
+    tarn_mesh mesh = { corner_positions, facing, NULL, NULL, back, 4, 1, NULL, 0, NULL };
     tarn_object obj = object_of(&mesh, &material);
     tarn_scene scene = scene_of(&obj, 1);
     assert_int_equal(render_mode(&scene, 1), TARN_OK);

@@ -22,8 +22,8 @@ BOARD_CORES := 2
 BOARD_CORE_SPLIT := pipeline
 BOARD_SCENES := scenes/pond-orbit.json
 # 8-row strips: the ring and its spare strip fit beside the code in SRAM, where
-# 16 rows would not
-BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 8
+# 16 rows would not; water's coordinates on its triangles, as qemu-m0-264k's
+BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 8 --water-uv triangles
 # the second stage the bootrom loads (checksummed at build time), and the UF2 output
 BOARD_BOOT2 := boards/rp2040-st7789/boot2.S
 BOARD_FLASH_BASE := 0x10000000

@@ -22,6 +22,11 @@ typedef struct {
     int32_t basis[3][3];     /* rows: right, up, forward; Q1.30 unit vectors */
     tarn_vec3 eye;           /* Q16.16 world */
     int32_t focal_q12;       /* focal length in pixels, Q20.12 */
+    /* 1 / focal length = inv_focal_mantissa * 2^-inv_focal_shift per pixel, to 2^-31
+     * of itself (Q20.12 rounds a 240-row focal length by 2^-21 of itself), for a
+     * flat water plane's rays (core/water/water_plane.c) */
+    uint32_t inv_focal_mantissa;
+    unsigned inv_focal_shift;
     tarn_q16 near, far;      /* Q16.16 view depth */
     /* focal_q12 and near as mantissa * 2^-shift (top bit set), for the projection */
     uint32_t focal_mantissa, near_mantissa;

@@ -36,7 +36,9 @@ static void camera_basis(const tarn_camera *camera, int32_t basis[3][3])
 }
 
 /* Focal length in pixels (Q20.12): (height / 2) / tan(fov / 2). */
-static int32_t focal_length_q12(const tarn_camera *camera, uint16_t height)
+/* The focal length height / 2 / tan(fov / 2) in pixels, Q20.12, and its reciprocal
+ * 2 tan(fov / 2) / height as a normalised mantissa. */
+static void focal_length(const tarn_camera *camera, uint16_t height, tarn_view *view)
 {
     const int64_t pi_q32 = 13493037705; /* pi * 2^32, rounded */
     tarn_q16 fov = tarn_clamp_i32(camera->fov_y_degrees, TARN_Q16_ONE, 179 * TARN_Q16_ONE);
@@ -44,7 +46,18 @@ static int32_t focal_length_q12(const tarn_camera *camera, uint16_t height)
     int32_t half_angle = (int32_t)tarn_divide_once_i64((int64_t)fov * pi_q32 + (180 << 17), 360u << 18);
     int32_t sine, cosine;
     tarn_sin_cos_q30(half_angle, &sine, &cosine);
-    return tarn_sat_i64_to_i32(tarn_divide_once_i64((int64_t)height * 2048 * cosine + sine / 2, (uint32_t)sine));
+    view->focal_q12 = tarn_sat_i64_to_i32(tarn_divide_once_i64((int64_t)height * 2048 * cosine + sine / 2, (uint32_t)sine));
+    view->inv_focal_mantissa = 0u;
+    view->inv_focal_shift = 0u;
+    if (!TARN_LINK_WATER_PLANE) return; /* its one reader */
+    /* tan in Q32 (below 2^39 up to 179 degrees), then 2 tan / height in Q48 */
+    const int64_t tan_q32 = tarn_divide_once_i64((int64_t)sine * ((int64_t)1 << 32) + cosine / 2, (uint32_t)cosine);
+    const uint64_t inverse_q48 = (uint64_t)tarn_divide_once_i64(tan_q32 * 131072 + height / 2, height);
+    const uint32_t high = (uint32_t)(inverse_q48 >> 32);
+    const unsigned bits = high != 0u ? 64u - tarn_clz32(high) : 32u - tarn_clz32((uint32_t)inverse_q48);
+    view->inv_focal_mantissa =
+        bits > 32u ? (uint32_t)(inverse_q48 >> (bits - 32u)) : (uint32_t)inverse_q48 << (32u - bits);
+    view->inv_focal_shift = 80u - bits; /* inverse = mantissa * 2^(bits - 32) / 2^48 */
 }
 
 static uint32_t channel_q16(uint32_t rgb, int channel)
@@ -63,7 +76,7 @@ void tarn__view_setup(const tarn_scene *scene, const tarn_frame_config *config, 
     view->width = config->width;
     view->height = config->height;
     view->subpixel_bits = config->quality.subpixel_bits;
-    view->focal_q12 = focal_length_q12(camera, config->height);
+    focal_length(camera, config->height, view);
     view->near = camera->near > 0 ? camera->near : 1;
     view->far = camera->far > view->near ? camera->far : view->near;
     /* focal_q12 is at least 17 (one row, a 179-degree fov), so it normalises */

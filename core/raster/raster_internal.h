@@ -169,7 +169,8 @@ tarn_pixel_box tarn__triangle_pixels(const tarn_triangle_setup *t);
 typedef struct {
     const tarn_texture *texture; /* textured opaque: its sizes for sampling */
     int uv;                      /* texture coordinates (textured, or water) */
-    int fresnel;                 /* the fresnel term (water; needs uv) */
+    int fresnel;                 /* the fresnel term (water): after u and v, or in
+                                    their place without them */
     int lit_line;                /* the lit colour may be found from one channel
                                     (tarn_lit_line), which the caller's pixels read */
 } tarn_attribute_request;

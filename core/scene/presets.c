@@ -12,7 +12,9 @@
  *    and refraction moves by the exact normal (TARN_REFRACTION_NORMAL_EXACT): the
  *    shared one moves a refracted sample to a neighbour on about 0.15% of the
  *    pond's pixels; a lit colour on a line is found from one channel
- *    (TARN_LIT_LINE), within the rounding of the vertices' colours;
+ *    (TARN_LIT_LINE), within the rounding of the vertices' colours; flat water's
+ *    texture coordinates come from its plane (TARN_WATER_UV_PLANE), which the
+ *    subpixel grid cannot move (docs/figures.md, "Flat water");
  *  - exact: every knob at its most accurate;
  *  - fast: the Cortex-M0's choice, from its meshes. Its 16 KB hold no full
  *    refraction apron, and an apron that fits needs small tiles, each drawing the
@@ -28,7 +30,10 @@
  *    only fast takes them. Depth stepped on a plane saves three exact divisions a
  *    triangle; the images differ from exact depth's only where surfaces meet.
  *    The refraction normal is the shared one: the exact one costs the still-water
- *    board more for nothing visible at this preset. */
+ *    board more for nothing visible at this preset. Water interpolates its texture
+ *    coordinates on its triangles: the plane's (the other presets',
+ *    TARN_WATER_UV_PLANE) are about 2.5 KB of code the 16 KB board's 32 KB
+ *    budget has not left. */
 #include "tarn/tarn_render.h"
 
 static tarn_quality preset_exact(void)
@@ -51,6 +56,7 @@ static tarn_quality preset_exact(void)
     q.frame_shape = TARN_FRAME_TILES;
     q.vertex_pass = TARN_VERTICES_PER_TILE;
     q.lit_colour = TARN_LIT_PLANES;
+    q.water_coordinates = TARN_WATER_UV_PLANE;
     return q;
 }
 
@@ -75,6 +81,7 @@ tarn_quality tarn_quality_preset(tarn_preset preset)
         q.fog_argument_bits = 6;
         q.water_block = 2;
         q.refraction_normal = TARN_REFRACTION_NORMAL_SHARED;
+        q.water_coordinates = TARN_WATER_UV_TRIANGLES;
     }
     return q;
 }

@@ -58,6 +58,20 @@ static int water_valid(const tarn_water *w)
            w->normal_strength >= 0 && w->normal_strength <= 8 * TARN_Q16_ONE;
 }
 
+/* A plane's numbers within the ranges water_plane.c's products are sized for
+ * (a build without it never reads them). */
+static int plane_valid(const tarn_uv_plane *p)
+{
+    if (p == NULL || !TARN_LINK_WATER_PLANE) return 1;
+    if (p->uv_gradient_bits > TARN_UV_PLANE_GRADIENT_BITS_MAX) return 0;
+    for (int k = 0; k < 3; k++) {
+        if (p->normal[k] < -(1 << 30) || p->normal[k] > (1 << 30)) return 0;
+        for (int a = 0; a < 2; a++)
+            if (p->uv_gradient[a][k] <= -(1 << 24) || p->uv_gradient[a][k] >= (1 << 24)) return 0;
+    }
+    return 1;
+}
+
 /* The clusters are checked even for a mesh without triangles: the walk follows
  * their runs. Positions and normals are read unless static vertices stand in. */
 static int mesh_valid(const tarn_mesh *m, int needs_positions)
@@ -67,7 +81,7 @@ static int mesh_valid(const tarn_mesh *m, int needs_positions)
         for (uint32_t i = 0; i < 3u * m->triangle_count; i++)
             if (m->indices[i] >= m->vertex_count) return 0;
     }
-    return clusters_valid(m);
+    return clusters_valid(m) && plane_valid(m->plane);
 }
 
 /* The frame static screen positions were made for: a size and precision a frame
@@ -154,12 +168,16 @@ tarn_status tarn__scene_check_reach(const tarn_scene *scene, const tarn_frame_co
     const tarn_backdrop *backdrop = tarn__backdrop_for(scene, config);
     if (scene->static_view != NULL && scene->static_view->backdrop != NULL && backdrop == NULL)
         return TARN_ERR_SCENE;
-    /* without the water shading linked, water draws only over still water */
+    /* without the water shading linked, water draws only over still water; without
+     * the planes', it would draw other coordinates than the quality asks for */
     const int still = backdrop != NULL && backdrop->still_water;
+    const int planes = config->quality.water_coordinates == TARN_WATER_UV_PLANE;
     for (uint32_t i = 0; i < scene->object_count; i++) {
         const tarn_water *water = scene->objects[i].material->water;
         if (tarn_water_reach_pixels(water, config->width) > (int32_t)TARN_WATER_APRON_MAX) return TARN_ERR_SCENE;
         if (!TARN_LINK_WATER_SHADING && water != NULL && !still) return TARN_ERR_SCENE;
+        if (!TARN_LINK_WATER_PLANE && planes && water != NULL && !still && scene->objects[i].mesh->plane != NULL)
+            return TARN_ERR_SCENE;
     }
     return TARN_OK;
 }

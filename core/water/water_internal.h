@@ -42,6 +42,36 @@ typedef struct {
 
 void tarn__linear_depth_setup(tarn_linear_depth *d, tarn_q16 near, tarn_q16 far, unsigned recip_steps);
 
+/* An affine function of the pixel, at + per_i * i + per_j * j taken modulo 2^32,
+ * with the steps' 16 fraction bits below: rounded to whole units, they moved a
+ * value 240 pixels from the origin by up to 240 units, 2^-18 of a plane's far
+ * denominator. */
+typedef struct {
+    int32_t at, per_i, per_j;
+    uint16_t fraction_i, fraction_j;
+} tarn_fine_affine;
+
+static inline uint32_t tarn__fine_affine_at(const tarn_fine_affine *f, int32_t i, int32_t j)
+{
+    const uint32_t below = ((uint32_t)f->fraction_i * (uint32_t)i + (uint32_t)f->fraction_j * (uint32_t)j) >> 16;
+    return (uint32_t)f->at + (uint32_t)f->per_i * (uint32_t)i + (uint32_t)f->per_j * (uint32_t)j + below;
+}
+
+/* A flat water object's texture coordinates as the frame sees them (water_plane.c):
+ * at pixel (i, j), u = u_plane * 2^uv_shift / denominator in Q16.16; the
+ * denominator is within [1, 2^30] wherever the surface shows. */
+typedef struct {
+    tarn_fine_affine denominator, u, v;
+    uint8_t uv_shift; /* 0..31 */
+    uint8_t holds;    /* 0: the object has no plane, or its numbers leave these 32
+                         bits in this frame: its triangles interpolate the coordinates */
+} tarn_water_plane;
+
+/* The plane of `object`'s mesh (tarn_mesh.plane) in the frame of `view`, where the
+ * quality's `coordinates` (tarn_water_coordinates) take it. */
+void tarn__water_plane_setup(tarn_water_plane *out, const tarn_view *view, uint8_t coordinates,
+                             const tarn_object *object);
+
 typedef struct tarn_water_context {
     const tarn_water *water;
     const tarn_object *object;  /* the object the context was made for */
@@ -88,6 +118,7 @@ typedef struct tarn_water_context {
        block's highlight, a slot per block column (tarn_still_block); NULL otherwise */
     struct tarn_still_block *still_blocks;
     uint32_t still_walks; /* tile walks over still water this frame, 0 before the first */
+    tarn_water_plane plane; /* the object's texture coordinates from its plane */
     /* rows the background buffers hold before they wrap to their first (a frame
        drawn in strips keeps them in a ring); INT32_MAX: they never do. Last, so
        the fields above keep the offsets a Cortex-M0 loads in one instruction. */
@@ -120,6 +151,50 @@ typedef struct {
                               bit of Q16.16 alone was 1/85 of a texel */
     uint32_t fresnel;   /* saturate(1 - n.v)^2, Q1.15 */
 } tarn_water_input;
+
+/* An affine function of a plane at pixel (i, j), modulo 2^32. */
+static inline uint32_t tarn__pixel_affine_at(const int32_t f[3], int32_t i, int32_t j)
+{
+    return (uint32_t)f[0] + (uint32_t)f[1] * (uint32_t)i + (uint32_t)f[2] * (uint32_t)j;
+}
+
+/* numerator * 2^shift / denominator in Q16.16, modulo 2^32, from the denominator's
+ * reciprocal recip = 2^62 / (denominator << lz): numerator * recip / 2^32 *
+ * 2^(shift + lz - 30), and in `low` the 16 fraction bits below, as the rasterizer
+ * hands them on (tarn_water_input): the panned maps multiply the coordinate by
+ * their scale. */
+static inline uint32_t tarn__plane_coordinate(uint32_t numerator, uint32_t recip, unsigned lz, unsigned shift,
+                                              uint16_t *low)
+{
+    const int32_t high = tarn_mul_hi_s32_u32((int32_t)numerator, recip);
+    const int up = (int)(shift + lz) - 30; /* -29..32: lz 1..31, shift 0..31 */
+    *low = 0u;
+    if (up >= 32) return 0u;
+    if (up >= 0) return (uint32_t)high << up;
+    const unsigned down = (unsigned)-up;
+    /* past 16 bits below Q16.16, rounded to nearest there */
+    const int32_t rounded = down > 16u ? (int32_t)((uint32_t)high + (1u << (down - 17u))) : high;
+    *low = (uint16_t)(((uint32_t)rounded << (32u - down)) >> 16);
+    return (uint32_t)tarn_floor_shift(rounded, down);
+}
+
+/* A water pixel's texture coordinates from a plane's u and v numerators and its
+ * denominator at the pixel, within [1, 2^30] (tarn_water_plane, tarn_still_plane):
+ * one reciprocal for both. */
+static inline void tarn__plane_coordinates(uint32_t denominator, uint32_t u, uint32_t v, unsigned uv_shift,
+                                           unsigned recip_steps, tarn_water_input *in)
+{
+    const unsigned lz = tarn_clz32(denominator);
+    const uint32_t recip = tarn_recip_q30(denominator << lz, recip_steps);
+    in->u = tarn__plane_coordinate(u, recip, lz, uv_shift, &in->u_low);
+    in->v = tarn__plane_coordinate(v, recip, lz, uv_shift, &in->v_low);
+}
+
+/* A plane's denominator, within [1, 2^30]. */
+static inline uint32_t tarn__plane_denominator(uint32_t value)
+{
+    return (uint32_t)tarn_clamp_i32((int32_t)value, 1, 1 << 30);
+}
 
 /* Per-pixel helpers the underwater pass shares (32-bit products only). */
 /* a * b / 2^16 for unsigned Q16.16 values, saturated to INT32_MAX. */

@@ -1,6 +1,7 @@
 /* water_setup.c: what a water context holds for one object in one tile: pan
  * offsets from the frame's time, the half vector in the object's tangent frame,
- * reciprocals of the material's distances. 64-bit products are fine here, and
+ * reciprocals of the material's distances, the plane its texture coordinates
+ * come from (water_plane.c). 64-bit products are fine here, and
  * divisions through tarn_divide_*; the per-pixel files have neither. */
 #include "water/water_internal.h"
 
@@ -88,4 +89,6 @@ void tarn__water_context_setup(tarn_water_context *w, const tarn_view *view,
     int64_t threshold = water->sparkle_amount > 0 ? tarn_divide_once_i64((int64_t)1 << 46, (uint32_t)water->sparkle_amount) : INT64_MAX;
     w->sparkle_threshold = threshold > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)threshold;
     w->dark_cosine = (w->features & TARN_WATER_SPECULAR) != 0 ? tarn__water_dark_cosine(water) : -1;
+    if (TARN_LINK_WATER_PLANE && TARN_LINK_WATER_SHADING)
+        tarn__water_plane_setup(&w->plane, view, config->quality.water_coordinates, object);
 }

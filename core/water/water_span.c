@@ -13,16 +13,36 @@ static uint32_t coordinate_q16(uint32_t t, unsigned shift, uint32_t base, uint16
     return (shift >= 31u ? 0u : t >> shift) + base;
 }
 
-/* The water pixel's inputs from the interpolated attributes. */
-static tarn_water_input water_input(const tarn_attribute_set *set, const uint32_t values[TARN_ATTRIBUTES_MAX],
-                                    uint32_t inv_depth)
+/* Whether the object's texture coordinates come from its plane this frame: then
+ * its triangles interpolate none, and the fresnel term takes their place. */
+static int coordinates_from_plane(const tarn_water_context *w)
+{
+    return TARN_LINK_WATER_PLANE && w->plane.holds;
+}
+
+/* The water pixel (i, j)'s inputs from the interpolated attributes and, with one,
+ * its object's plane. */
+static tarn_water_input water_input(const tarn_water_context *w, const tarn_attribute_set *set,
+                                    const uint32_t values[TARN_ATTRIBUTES_MAX], uint32_t inv_depth, int32_t i,
+                                    int32_t j)
 {
     tarn_water_input in;
     in.inv_depth = inv_depth;
     for (int c = 0; c < 3; c++) in.lit[c] = values[c] >> set->t_shift[c];
-    in.u = coordinate_q16(values[TARN_ATTRIBUTE_U], set->t_shift[TARN_ATTRIBUTE_U], set->u_base, &in.u_low);
-    in.v = coordinate_q16(values[TARN_ATTRIBUTE_V], set->t_shift[TARN_ATTRIBUTE_V], set->v_base, &in.v_low);
-    in.fresnel = set->count > TARN_ATTRIBUTE_FRESNEL ? values[TARN_ATTRIBUTE_FRESNEL] >> set->t_shift[TARN_ATTRIBUTE_FRESNEL] : 0u;
+    int fresnel = TARN_ATTRIBUTE_FRESNEL;
+    if (coordinates_from_plane(w)) {
+        /* every Newton step: a plane's coordinates are whole, where a triangle's
+         * quotient spans its own corners' and the quality's steps suffice */
+        const tarn_water_plane *p = &w->plane;
+        tarn__plane_coordinates(tarn__plane_denominator(tarn__fine_affine_at(&p->denominator, i, j)),
+                                tarn__fine_affine_at(&p->u, i, j), tarn__fine_affine_at(&p->v, i, j), p->uv_shift,
+                                TARN_RECIP_STEPS_MAX, &in);
+        fresnel = TARN_ATTRIBUTE_U;
+    } else {
+        in.u = coordinate_q16(values[TARN_ATTRIBUTE_U], set->t_shift[TARN_ATTRIBUTE_U], set->u_base, &in.u_low);
+        in.v = coordinate_q16(values[TARN_ATTRIBUTE_V], set->t_shift[TARN_ATTRIBUTE_V], set->v_base, &in.v_low);
+    }
+    in.fresnel = set->count > fresnel ? values[fresnel] >> set->t_shift[fresnel] : 0u;
     return in;
 }
 
@@ -116,10 +136,10 @@ static uint32_t water_colour(const tarn_water_pass *pass, const water_choice *c,
     if (c->shares) {
         const tarn_water_effects *shared = &c->block->effects;
         if (!tarn__water_sharp_possible(w, shared)) return tarn__water_apply(w, shared, 0u, i, j);
-        const tarn_water_input in = water_input(set, values, inv_depth);
+        const tarn_water_input in = water_input(w, set, values, inv_depth, i, j);
         return tarn__water_apply(w, shared, tarn__water_sharp_features(w, &in, shared), i, j);
     }
-    const tarn_water_input in = water_input(set, values, inv_depth);
+    const tarn_water_input in = water_input(w, set, values, inv_depth, i, j);
     const uint32_t surface_depth = surface_depth_of(w, surface, inv_depth);
     if (c->block == NULL) return tarn__water_shade(w, i, j, &in, surface_depth);
     tarn_water_effects own;
@@ -153,7 +173,8 @@ void tarn__water_draw_triangle(void *pass_ctx, const tarn_screen_vertex vertex[3
     if (!tarn__triangle_enters_tile(&rows, &pass->target, vertex, object->material->cull)) return;
     if (pass->water->object != object) tarn__water_context_setup(pass->water, pass->view, pass->config, object);
     pass->water->triangle_serial++;
-    const tarn_attribute_request request = {NULL, 1, (object->material->water->features & TARN_WATER_FRESNEL) != 0, 0};
+    const tarn_attribute_request request = {NULL, !coordinates_from_plane(pass->water),
+                                            (object->material->water->features & TARN_WATER_FRESNEL) != 0, 0};
     tarn__triangle_rows_begin(&rows, &request);
     for (tarn_span *s; (s = tarn__triangle_next_span(&rows)) != NULL;) tarn__span_draw(s, water_pixel, pass);
 }

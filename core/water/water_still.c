@@ -16,34 +16,10 @@ int tarn__still_keeps_depth(const tarn_water *water, int refracts)
     return refracts && !((water->features & TARN_WATER_FOAM) != 0u && water->foam_distance >= (tarn_q16)Q16_ONE);
 }
 
-/* An affine function of the plane at pixel (i, j), modulo 2^32. */
-static uint32_t affine_at(const int32_t f[3], int32_t i, int32_t j)
-{
-    return (uint32_t)f[0] + (uint32_t)f[1] * (uint32_t)i + (uint32_t)f[2] * (uint32_t)j;
-}
-
-/* numerator * 2^shift / depth in Q16.16, modulo 2^32, from depth's reciprocal
- * recip = 2^62 / (depth << lz): numerator * recip / 2^32 * 2^(shift + lz - 30),
- * and in `low` the 16 fraction bits below, as the rasterizer hands them on
- * (tarn_water_input): the panned maps multiply the coordinate by their scale. */
-static uint32_t texture_coordinate(uint32_t numerator, uint32_t recip, unsigned lz, unsigned shift, uint16_t *low)
-{
-    const int32_t high = tarn_mul_hi_s32_u32((int32_t)numerator, recip);
-    const int up = (int)(shift + lz) - 30; /* -29..32: lz 1..31, shift 0..31 */
-    *low = 0u;
-    if (up >= 32) return 0u;
-    if (up >= 0) return (uint32_t)high << up;
-    const unsigned down = (unsigned)-up;
-    /* past 16 bits below Q16.16, rounded to nearest there */
-    const int32_t rounded = down > 16u ? (int32_t)((uint32_t)high + (1u << (down - 17u))) : high;
-    *low = (uint16_t)(((uint32_t)rounded << (32u - down)) >> 16);
-    return (uint32_t)tarn_floor_shift(rounded, down);
-}
-
 /* The surface's near/d at pixel (i, j), within the depth buffer's [1, 2^30]. */
 static uint32_t plane_inv_depth(const tarn_still_plane *p, int32_t i, int32_t j)
 {
-    return (uint32_t)tarn_clamp_i32((int32_t)affine_at(p->depth, i, j), 1, 1 << 30);
+    return tarn__plane_denominator(tarn__pixel_affine_at(p->depth, i, j));
 }
 
 /* What a water pixel's moving terms read, from the plane at pixel (i, j): the
@@ -57,10 +33,8 @@ static TARN_ALWAYS_INLINE tarn_water_input plane_input(const tarn_still_plane *p
     in.lit[0] = in.lit[1] = in.lit[2] = 0u; /* drawn into the still colour */
     in.fresnel = 0u;
     in.inv_depth = plane_inv_depth(p, i, j);
-    const unsigned lz = tarn_clz32(in.inv_depth);
-    const uint32_t recip = tarn_recip_q30(in.inv_depth << lz, recip_steps);
-    in.u = texture_coordinate(affine_at(p->u, i, j), recip, lz, p->uv_shift, &in.u_low);
-    in.v = texture_coordinate(affine_at(p->v, i, j), recip, lz, p->uv_shift, &in.v_low);
+    tarn__plane_coordinates(in.inv_depth, tarn__pixel_affine_at(p->u, i, j), tarn__pixel_affine_at(p->v, i, j),
+                            p->uv_shift, recip_steps, &in);
     return in;
 }
 

@@ -98,12 +98,18 @@ STRUCT_TYPE(T_CLUSTER, tarn_cluster, ONE_LINE,
 STRUCT_TYPE(T_TEXTURE, tarn_texture, BLOCK,
             FIELD(tarn_texture, width, T_U16), FIELD(tarn_texture, height, T_U16), FIELD(tarn_texture, rgb, T_REF),
             FIELD(tarn_texture, red_only, T_U8));
+/* int32_t[2][3], the plane's two gradients, positionally */
+STRUCT_TYPE(T_I32_TRIPLE_PAIR, int32_t[2][3], ONE_LINE, {"0", 0, &T_I32_TRIPLE}, {"1", 3 * sizeof(int32_t), &T_I32_TRIPLE});
+STRUCT_TYPE(T_UV_PLANE, tarn_uv_plane, ONE_LINE,
+            FIELD(tarn_uv_plane, normal, T_I32_TRIPLE), FIELD(tarn_uv_plane, offset, T_Q16),
+            FIELD(tarn_uv_plane, uv_origin, T_UV), FIELD(tarn_uv_plane, uv_gradient, T_I32_TRIPLE_PAIR),
+            FIELD(tarn_uv_plane, uv_gradient_bits, T_U8));
 STRUCT_TYPE(T_MESH, tarn_mesh, BLOCK,
             FIELD(tarn_mesh, positions, T_REF),     FIELD(tarn_mesh, normals, T_REF),
             FIELD(tarn_mesh, uvs, T_REF),           FIELD(tarn_mesh, colours, T_REF),
             FIELD(tarn_mesh, indices, T_REF),       FIELD(tarn_mesh, vertex_count, T_U16),
             FIELD(tarn_mesh, triangle_count, T_U16), FIELD(tarn_mesh, clusters, T_REF),
-            FIELD(tarn_mesh, cluster_count, T_U16));
+            FIELD(tarn_mesh, cluster_count, T_U16), FIELD(tarn_mesh, plane, T_REF));
 STRUCT_TYPE(T_PANNING, tarn_panning, BLOCK,
             FIELD(tarn_panning, scale, T_Q16), FIELD(tarn_panning, speed_u, T_Q16),
             FIELD(tarn_panning, speed_v, T_Q16));
@@ -209,7 +215,8 @@ STRUCT_TYPE(T_QUALITY, tarn_quality, BLOCK,
             FIELD(tarn_quality, refraction_apron, T_U8),   FIELD(tarn_quality, cluster_bins, T_U8),
             FIELD(tarn_quality, fog_argument_bits, T_U8),  FIELD(tarn_quality, water_block, T_U8),
             FIELD(tarn_quality, refraction_normal, T_U8), FIELD(tarn_quality, frame_shape, T_U8),
-            FIELD(tarn_quality, vertex_pass, T_U8), FIELD(tarn_quality, lit_colour, T_U8));
+            FIELD(tarn_quality, vertex_pass, T_U8), FIELD(tarn_quality, lit_colour, T_U8),
+            FIELD(tarn_quality, water_coordinates, T_U8));
 STRUCT_TYPE(T_CONFIG, tarn_frame_config, BLOCK,
             FIELD(tarn_frame_config, width, T_U16), FIELD(tarn_frame_config, height, T_U16),
             FIELD(tarn_frame_config, quality, T_QUALITY), FIELD(tarn_frame_config, time_ms, T_U32));
@@ -218,7 +225,7 @@ static const bake_type *const all_structs[] = {
     &T_VEC3,  &T_UV,       &T_CLUSTER,  &T_TEXTURE, &T_MESH,  &T_PANNING,
     &T_WATER, &T_UNDERWATER, &T_MATERIAL, &T_OBJECT, &T_CAMERA, &T_LIGHT,
     &T_SCENE, &T_EXP2,     &T_QUALITY,  &T_CONFIG, &T_U16_TRIPLE, &T_STATIC_VERTEX, &T_BIN,
-    &T_I32_TRIPLE, &T_STILL_PLANE, &T_BACKDROP_SPAN, &T_BACKDROP, &T_STATIC_VIEW,
+    &T_I32_TRIPLE, &T_I32_TRIPLE_PAIR, &T_UV_PLANE, &T_STILL_PLANE, &T_BACKDROP_SPAN, &T_BACKDROP, &T_STATIC_VIEW,
     &T_KEY_CURVE, &T_CAMERA_PATH, &T_OBJECT_MOTION, &T_LIGHT_MOTION};
 
 /* Bytes on a 32-bit target (Cortex-M, rv32): what the header comment reports. */
@@ -433,7 +440,7 @@ static void plan_textures(bake_plan *p)
 }
 
 /* The arrays a mesh points to, and how many elements each holds. */
-typedef enum { PER_VERTEX, PER_INDEX, PER_CLUSTER } array_length;
+typedef enum { PER_VERTEX, PER_INDEX, PER_CLUSTER, ONE } array_length;
 
 static const struct mesh_array {
     const char *suffix;
@@ -446,7 +453,8 @@ static const struct mesh_array {
     {"uvs", offsetof(tarn_mesh, uvs), &T_UV, PER_VERTEX},
     {"colours", offsetof(tarn_mesh, colours), &T_RGB, PER_VERTEX},
     {"indices", offsetof(tarn_mesh, indices), &T_U16, PER_INDEX},
-    {"clusters", offsetof(tarn_mesh, clusters), &T_CLUSTER, PER_CLUSTER}};
+    {"clusters", offsetof(tarn_mesh, clusters), &T_CLUSTER, PER_CLUSTER},
+    {"plane", offsetof(tarn_mesh, plane), &T_UV_PLANE, ONE}};
 
 #define MESH_ARRAYS COUNT(mesh_arrays)
 
@@ -467,7 +475,8 @@ static size_t mesh_array_count(const tarn_mesh *m, const struct mesh_array *a)
     switch (a->length) {
     case PER_VERTEX: return m->vertex_count;
     case PER_INDEX: return 3u * m->triangle_count;
-    default: return m->cluster_count;
+    case PER_CLUSTER: return m->cluster_count;
+    default: return 1u;
     }
 }
 
@@ -1101,6 +1110,17 @@ static int has_opaque_objects(const tarn_scene *scene)
     return 0;
 }
 
+/* Whether some water object's mesh has a plane its texture coordinates may come
+ * from (tarn_water_coordinates). */
+static int has_water_planes(const tarn_scene *scene)
+{
+    for (uint32_t i = 0; i < scene->object_count; i++)
+        if (scene->objects[i].material != NULL && scene->objects[i].material->water != NULL &&
+            scene->objects[i].mesh->plane != NULL)
+            return 1;
+    return 0;
+}
+
 /* The link switches a baked quality decides, as bits: a build links a part when
  * some quality it bakes (the main one or a point) uses it. */
 enum {
@@ -1116,7 +1136,8 @@ enum {
     USES_REFRACTION_EXACT = 1u << 9,
     USES_STRIPS = 1u << 10,
     USES_VERTEX_PASS = 1u << 11,
-    USES_LIT_LINE = 1u << 12
+    USES_LIT_LINE = 1u << 12,
+    USES_WATER_PLANE = 1u << 13 /* plane coordinates, and a water mesh has a plane */
 };
 
 static const struct {
@@ -1129,7 +1150,7 @@ static const struct {
     {"DEPTH32", USES_DEPTH32},                       {"EXACT_DEPTH", USES_EXACT_DEPTH},
     {"FOUND_BINS", USES_FOUND_BINS},                 {"REFRACTION_EXACT", USES_REFRACTION_EXACT},
     {"STRIPS", USES_STRIPS},                         {"VERTEX_PASS", USES_VERTEX_PASS},
-    {"LIT_LINE", USES_LIT_LINE}};
+    {"LIT_LINE", USES_LIT_LINE},                     {"WATER_PLANE", USES_WATER_PLANE}};
 
 static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
 {
@@ -1148,7 +1169,8 @@ static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
            (q->vertex_pass != TARN_VERTICES_PER_TILE ? USES_VERTEX_PASS : 0u) |
            (q->perspective == TARN_PERSPECTIVE_PIXEL && q->lit_colour == TARN_LIT_LINE &&
                     (view == NULL || view->backdrop == NULL)
-                ? USES_LIT_LINE : 0u);
+                ? USES_LIT_LINE : 0u) |
+           (q->water_coordinates == TARN_WATER_UV_PLANE && has_water_planes(scene) ? USES_WATER_PLANE : 0u);
 }
 
 static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,

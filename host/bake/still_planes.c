@@ -4,12 +4,10 @@
 #include <math.h>
 
 #include "ref_geometry.h"
+#include "uv_plane.h"
 
 #define Q16 65536.0
 #define Q30 1073741824.0
-/* How far a vertex may lie off the plane, or a texture coordinate off the affine
- * map, for its extent: Q16.16 positions and coordinates round by 2^-17. */
-#define FLAT_TOLERANCE 1e-4
 
 typedef tarn_dvec3 vec;
 
@@ -19,94 +17,19 @@ static vec add(vec a, vec b, double scale) /* a + b * scale */
     return r;
 }
 
-static vec times(vec v, double scale)
+/* The object's plane (uv_plane.h) in world space: position + scale * rotation p. */
+static int object_plane_of(const tarn_object *o, tarn_uv_plane_fit *p, const char **what)
 {
-    const vec r = {v.x * scale, v.y * scale, v.z * scale};
-    return r;
-}
-
-/* Vertex k of the object in world space, as the reference draws it. */
-static vec world_vertex(const tarn_object *o, uint32_t k)
-{
-    return tarn_ref_world_position(o, o->mesh->positions[k]);
-}
-
-static double coordinate(const tarn_object *o, uint32_t k, int axis)
-{
-    if (o->mesh->uvs == NULL) return 0.0;
-    return (axis == 0 ? o->mesh->uvs[k].u : o->mesh->uvs[k].v) / Q16;
-}
-
-/* The object's plane through its vertex 0 with normal n, and the world gradients of
- * its two texture coordinates, from three vertices that span it. */
-typedef struct {
-    vec origin, normal;
-    double uv0[2];
-    vec gradient[2];
-} object_plane;
-
-/* The vertex farthest from vertex 0, then the one farthest from the line through
- * both: 0 when every vertex lies on one line. */
-static int spanning_vertices(const tarn_object *o, uint32_t *a, uint32_t *b)
-{
-    const vec origin = world_vertex(o, 0);
-    double best = 0;
-    *a = *b = 0;
-    for (uint32_t k = 1; k < o->mesh->vertex_count; k++) {
-        const vec d = add(world_vertex(o, k), origin, -1);
-        if (tarn_dvec_dot(d, d) > best) best = tarn_dvec_dot(d, d), *a = k;
-    }
-    const vec along = add(world_vertex(o, *a), origin, -1);
-    double area = 0;
-    for (uint32_t k = 1; k < o->mesh->vertex_count; k++) {
-        const vec c = tarn_dvec_cross(along, add(world_vertex(o, k), origin, -1));
-        if (tarn_dvec_dot(c, c) > area) area = tarn_dvec_dot(c, c), *b = k;
-    }
-    return area > 1e-12 * best * best;
-}
-
-/* The gradient of a coordinate that is `da` at e1 and `db` at e2 from the origin,
- * over the plane they span. */
-static vec gradient(vec e1, vec e2, double da, double db)
-{
-    const double a = tarn_dvec_dot(e1, e1), b = tarn_dvec_dot(e1, e2), c = tarn_dvec_dot(e2, e2), det = a * c - b * b;
-    return add(times(add(times(e1, c), e2, -b), da / det), add(times(e2, a), e1, -b), db / det);
-}
-
-/* Whether every vertex lies on the plane and takes the coordinates it gives. */
-static int object_fits_plane(const tarn_object *o, const object_plane *p, double extent, const char **what)
-{
-    for (uint32_t k = 0; k < o->mesh->vertex_count; k++)
-        if (fabs(tarn_dvec_dot(add(world_vertex(o, k), p->origin, -1), p->normal)) > FLAT_TOLERANCE * extent) {
-            *what = "is not flat";
-            return 0;
-        }
-    for (uint32_t k = 0; k < o->mesh->vertex_count; k++) {
-        const vec d = add(world_vertex(o, k), p->origin, -1);
-        for (int axis = 0; axis < 2; axis++)
-            if (fabs(p->uv0[axis] + tarn_dvec_dot(p->gradient[axis], d) - coordinate(o, k, axis)) > FLAT_TOLERANCE * (1 + extent)) {
-                *what = "has texture coordinates that are not an affine map of its plane";
-                return 0;
-            }
+    if (!tarn_uv_plane_find(o->mesh, p, what)) return 0;
+    const double scale = o->scale / Q16;
+    p->origin = tarn_ref_world_position(o, o->mesh->positions[0]);
+    p->normal = tarn_dvec_rotate(o->rotation, p->normal);
+    for (int axis = 0; axis < 2; axis++) {
+        const vec g = tarn_dvec_rotate(o->rotation, p->gradient[axis]);
+        const vec per_world_unit = {g.x / scale, g.y / scale, g.z / scale};
+        p->gradient[axis] = per_world_unit;
     }
     return 1;
-}
-
-static int object_plane_of(const tarn_object *o, object_plane *p, const char **what)
-{
-    uint32_t a, b;
-    if (o->mesh->positions == NULL || o->mesh->vertex_count < 3 || !spanning_vertices(o, &a, &b)) {
-        *what = "spans no plane";
-        return 0;
-    }
-    p->origin = world_vertex(o, 0);
-    const vec e1 = add(world_vertex(o, a), p->origin, -1), e2 = add(world_vertex(o, b), p->origin, -1);
-    p->normal = tarn_dvec_normalize(tarn_dvec_cross(e1, e2));
-    for (int axis = 0; axis < 2; axis++) {
-        p->uv0[axis] = coordinate(o, 0, axis);
-        p->gradient[axis] = gradient(e1, e2, coordinate(o, a, axis) - p->uv0[axis], coordinate(o, b, axis) - p->uv0[axis]);
-    }
-    return object_fits_plane(o, p, sqrt(tarn_dvec_dot(e1, e1)), what);
 }
 
 /* An affine function of the pixel centre (x, y): at + per_x * x + per_y * y. */
@@ -167,7 +90,7 @@ static void store(const affine *f, int32_t out[3])
  * times it, passes 2^31 in the frame. near/d = near * (n . dir) / (n . (origin - eye)); along the ray a point is
  * eye + t * dir with t = near / (near/d), so coordinate * near/d = (uv0 + g .
  * (eye - origin)) * near/d + near * (g . dir). */
-static int frame_plane(const object_plane *p, const tarn_ref_camera *cam, const tarn_frame_config *config,
+static int frame_plane(const tarn_uv_plane_fit *p, const tarn_ref_camera *cam, const tarn_frame_config *config,
                        tarn_still_plane *out)
 {
     const vec to_plane = add(p->origin, cam->position, -1);
@@ -201,7 +124,7 @@ int tarn_still_planes_make(const tarn_scene *scene, const tarn_frame_config *con
     for (uint32_t k = 0; k < scene->object_count; k++) {
         const tarn_object *o = &scene->objects[k];
         if (o->material == NULL || o->material->water == NULL) continue;
-        object_plane p;
+        tarn_uv_plane_fit p;
         const char *what = NULL;
         if (!object_plane_of(o, &p, &what))
             return tarn_fail(err, "--backdrop still: water object objects[%u] %s; still water draws flat water only",

@@ -159,6 +159,7 @@ static void print_link_switches(FILE *out)
         {"APRON", TARN_LINK_APRON},                           {"REFRACTION_EXACT", TARN_LINK_REFRACTION_EXACT},
         {"WATER_BLOCKS", TARN_LINK_WATER_BLOCKS},             {"STRIPS", TARN_LINK_STRIPS},
         {"VERTEX_PASS", TARN_LINK_VERTEX_PASS},               {"PARTS", TARN_LINK_PARTS},
+        {"WATER_PLANE", TARN_LINK_WATER_PLANE},
     };
     fputs("link switches:", out);
     for (size_t k = 0; k < sizeof switches / sizeof switches[0]; k++)

@@ -25,6 +25,9 @@ static const tarn_option_choice vertex_pass_values[] = {
 static const tarn_option_choice lit_colour_values[] = {
     {"planes", TARN_LIT_PLANES, "a plane each channel"},
     {"line", TARN_LIT_LINE, "one channel's plane, the others along the line the vertices' colours lie on"}};
+static const tarn_option_choice water_coordinates_values[] = {
+    {"triangles", TARN_WATER_UV_TRIANGLES, "interpolated on each triangle from its snapped corners'"},
+    {"plane", TARN_WATER_UV_PLANE, "where the pixel's ray meets a flat mesh's plane, as the reference"}};
 static const tarn_option_choice depth_interpolation_values[] = {
     {"exact", TARN_DEPTH_EXACT, "near/d rounded exactly at each pixel"},
     {"plane", TARN_DEPTH_PLANE, "stepped on a plane, a division less a triangle"}};
@@ -55,7 +58,8 @@ static const byte_knob byte_knobs[] = {
     CHOICE_KNOB("--refraction-normal", refraction_normal, refraction_normal_values),
     CHOICE_KNOB("--frame", frame_shape, frame_shape_values),
     CHOICE_KNOB("--vertices", vertex_pass, vertex_pass_values),
-    CHOICE_KNOB("--lit", lit_colour, lit_colour_values)};
+    CHOICE_KNOB("--lit", lit_colour, lit_colour_values),
+    CHOICE_KNOB("--water-uv", water_coordinates, water_coordinates_values)};
 
 static int parse_byte_knob(const byte_knob *knob, const char *text, tarn_quality *q, tarn_error *err)
 {

@@ -31,14 +31,15 @@ void tarn_quality_text(const tarn_quality *q, char *out, size_t size)
     snprintf(out, size,
              "--perspective %s --recip-steps %u --depth %u --apron %s --exp2 %u:%s --fog-bits %u "
              "--subpixel %u --tile %u --bins %s --water-block %u --depth-interpolation %s --refraction-normal %s "
-             "--lit %s",
+             "--lit %s --water-uv %s",
              tarn_quality_perspective_text(q, span, sizeof span), (unsigned)q->recip_newton_steps,
              (unsigned)q->depth_bits, tarn_quality_apron_text(q, apron, sizeof apron), (unsigned)q->exp2.entries,
              q->exp2.interpolate ? "linear" : "nearest", (unsigned)q->fog_argument_bits,
              (unsigned)q->subpixel_bits, (unsigned)q->tile_size, q->cluster_bins ? "on" : "off",
              (unsigned)q->water_block, tarn_quality_depth_text(q),
              q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT ? "exact" : "shared",
-             q->lit_colour == TARN_LIT_LINE ? "line" : "planes");
+             q->lit_colour == TARN_LIT_LINE ? "line" : "planes",
+             q->water_coordinates == TARN_WATER_UV_PLANE ? "plane" : "triangles");
     if (q->frame_shape == TARN_FRAME_STRIPS) {
         const size_t used = strlen(out);
         snprintf(out + used, size - used, " --frame strips");

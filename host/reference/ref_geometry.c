@@ -71,3 +71,35 @@ tarn_dvec3 tarn_ref_world_position(const tarn_object *object, tarn_vec3 p)
     tarn_dvec3 world = { pos.x + scale * rotated.x, pos.y + scale * rotated.y, pos.z + scale * rotated.z };
     return world;
 }
+
+static tarn_dvec3 scaled_sum(tarn_dvec3 a, tarn_dvec3 b, double scale) /* a + b * scale */
+{
+    tarn_dvec3 r = { a.x + b.x * scale, a.y + b.y * scale, a.z + b.z * scale };
+    return r;
+}
+
+/* A point p lies on the plane when n . (p - position) = scale * offset (n the
+ * rotated normal), and takes uv = uv_origin + (rotation g / scale) . (p - position). */
+int tarn_ref_plane_uv(const tarn_ref_camera *cam, const tarn_object *object, double x, double y, int width,
+                      int height, double uv[2])
+{
+    const tarn_uv_plane *p = object->mesh->plane;
+    const double scale = object->scale / Q16_SCALE;
+    const tarn_dvec3 normal = { p->normal[0] / 1073741824.0, p->normal[1] / 1073741824.0, p->normal[2] / 1073741824.0 };
+    const tarn_dvec3 n = tarn_dvec_rotate(object->rotation, normal);
+    const tarn_dvec3 dir = scaled_sum(scaled_sum(cam->forward, cam->right, (x - width / 2.0) / cam->focal), cam->up,
+                                      (height / 2.0 - y) / cam->focal);
+    const double along = tarn_dvec_dot(n, dir);
+    if (along == 0) return 0;
+    const tarn_dvec3 from_origin = tarn_dvec_sub(cam->position, tarn_dvec_from_q16(object->position));
+    const double t = (scale * p->offset / Q16_SCALE - tarn_dvec_dot(n, from_origin)) / along;
+    const tarn_dvec3 at = scaled_sum(from_origin, dir, t); /* the point, from the object's origin */
+    const double origin[2] = { p->uv_origin.u / Q16_SCALE, p->uv_origin.v / Q16_SCALE };
+    for (int axis = 0; axis < 2; axis++) {
+        const double per = ldexp(1.0, -(int)p->uv_gradient_bits) / scale;
+        const tarn_dvec3 g = { p->uv_gradient[axis][0] * per, p->uv_gradient[axis][1] * per,
+                               p->uv_gradient[axis][2] * per };
+        uv[axis] = origin[axis] + tarn_dvec_dot(tarn_dvec_rotate(object->rotation, g), at);
+    }
+    return 1;
+}

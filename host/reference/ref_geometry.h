@@ -32,4 +32,10 @@ tarn_ref_camera tarn_ref_camera_make(const tarn_camera *camera, int height);
 /* Object-space point p in world space: position + scale * rotation p. */
 tarn_dvec3 tarn_ref_world_position(const tarn_object *object, tarn_vec3 p);
 
+/* The texture coordinates of a flat mesh (its tarn_uv_plane) where the ray through
+ * the screen point (x, y) (pixels, of a frame width x height) meets its plane, into
+ * uv (1.0 = one repeat): 1, or 0 when the ray runs along the plane. */
+int tarn_ref_plane_uv(const tarn_ref_camera *cam, const tarn_object *object, double x, double y, int width,
+                      int height, double uv[2]);
+
 #endif

@@ -58,6 +58,9 @@ typedef struct {
     double *depth;    /* near/d per pixel in Q1.30 units, rounded; 0 = nothing drawn */
     double *inv_depth; /* near/d per pixel as interpolated, unrounded; 0 = nothing drawn */
     double near, far;  /* the camera's, world units */
+    tarn_ref_camera camera;
+    int plane_coordinates; /* flat water's coordinates from its plane: continuous, or
+                              the core's quality takes them so (tarn_water_coordinates) */
     const tarn_ref_water_view *water; /* the opaque buffers, during the water pass */
 } ref_target;
 
@@ -176,7 +179,10 @@ static void shade_opaque(const ref_pixel *px, const tarn_texture *tex, uint8_t o
 }
 
 /* Water reads the opaque pass's buffers, never its own output. Its depth is exact
- * near / (near/d), not the rounded Q1.30 the depth test uses. */
+ * near / (near/d), not the rounded Q1.30 the depth test uses. Flat water (a mesh
+ * with a plane) takes its texture coordinates where the ray through the pixel's
+ * centre meets its plane, where the core does (TARN_WATER_UV_PLANE): the same as
+ * the continuous triangles interpolate, where snapped ones would move them. */
 static void shade_water(const ref_target *t, const tarn_object *obj, int i, int j,
                         const ref_pixel *px, uint8_t out[3])
 {
@@ -186,6 +192,8 @@ static void shade_water(const ref_target *t, const tarn_object *obj, int i, int 
         .uv = { px->uv[0], px->uv[1] },
         .fresnel = px->fresnel,
     };
+    if (t->plane_coordinates && obj->mesh->plane != NULL)
+        (void)tarn_ref_plane_uv(&t->camera, obj, i + 0.5, j + 0.5, t->width, t->height, surface.uv);
     tarn_ref_shade_water(t->water, obj, i, j, &surface, out);
 }
 
@@ -676,6 +684,10 @@ int tarn_reference_render_surfaces(const tarn_scene *scene, int width, int heigh
         .depth = malloc(pixels * sizeof *t.depth),
         .inv_depth = malloc(pixels * sizeof *t.inv_depth),
         .near = scene->camera.near / Q16_SCALE, .far = scene->camera.far / Q16_SCALE,
+        .camera = tarn_ref_camera_make(&scene->camera, height),
+        .plane_coordinates = continuous || (opt->quality != NULL ? opt->quality->water_coordinates
+                                                                 : tarn_quality_default().water_coordinates) ==
+                                               TARN_WATER_UV_PLANE,
     };
     int status = TARN_ERR_MEMORY;
     if (t.depth != NULL && t.inv_depth != NULL) status = render_frame(scene, &t, opt);

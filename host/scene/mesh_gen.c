@@ -130,6 +130,7 @@ void tarn_mesh_buffer_free(tarn_mesh_buffer *m)
     free(m->colours);
     free(m->indices);
     free(m->clusters);
+    free(m->plane);
     memset(m, 0, sizeof *m);
 }
 

@@ -23,6 +23,7 @@ typedef struct {
     uint32_t *colours; /* 0xRRGGBB per vertex; NULL when the mesh has none (white) */
     uint16_t *indices;
     tarn_cluster *clusters; /* NULL until tarn_mesh_build_clusters (host/scene/mesh_clusters.h) */
+    tarn_uv_plane *plane;   /* NULL unless tarn_mesh_find_plane (host/scene/uv_plane.h) found one */
     uint32_t vertex_capacity, triangle_capacity;
 } tarn_mesh_buffer;
 

@@ -1,6 +1,7 @@
 #include "scene_load.h"
 
 #include "mesh_clusters.h"
+#include "uv_plane.h"
 
 #include <jansson.h>
 #include <math.h>
@@ -448,11 +449,16 @@ static void rotation_matrix(const double degrees[3], tarn_q16 out[3][3])
     }
 }
 
-/* The mesh's clusters (mesh_clusters.h), whose one failure, memory, is named
- * after the object: the orderer knows only the mesh. */
-static int build_clusters(tarn_loader *l, const char *field, tarn_mesh_buffer *mesh)
+/* The mesh's clusters (mesh_clusters.h) and, under water, its plane (uv_plane.h):
+ * their one failure, memory, is named after the object, as the orderer knows
+ * only the mesh. */
+static int finish_mesh(tarn_loader *l, const char *field, const tarn_material *material, tarn_mesh_buffer *mesh)
 {
-    if (tarn_mesh_build_clusters(mesh, l->err) == 0) return 0;
+    if (material->water != NULL && tarn_mesh_find_plane(mesh, material->water) != 0) {
+        tarn_fail(l->err, "out of memory");
+    } else if (tarn_mesh_build_clusters(mesh, l->err) == 0) {
+        return 0;
+    }
     char what[TARN_FIELD_PATH_MAX + 64];
     snprintf(what, sizeof what, "%s: %s", l->file, field);
     return tarn_fail_in(l->err, what);
@@ -481,7 +487,7 @@ static int load_object(tarn_loader *l, const json_t *o, size_t index)
         tarn_get_vec3(l, o, field, "rotation", origin, rotation) ||
         tarn_get_number(l, o, field, "scale", &TARN_POSITIVE, &unit_scale, &scale) ||
         tarn_object_motion_load(l, o, field, &l->out->motions[index], &moves) ||
-        type->build(l, o, field, object->material, mesh) || build_clusters(l, field, mesh)) {
+        type->build(l, o, field, object->material, mesh) || finish_mesh(l, field, object->material, mesh)) {
         return -1;
     }
     object->mesh = &mesh->mesh;

@@ -29,7 +29,7 @@ static const tarn_vec3 quad_positions[4] = {
     {-ONE, 0, ONE}, {ONE, 0, ONE}, {ONE, 0, -ONE}, {-ONE, 0, -ONE}};
 static const tarn_vec3 quad_normals[4] = {{0, ONE, 0}, {0, ONE, 0}, {0, ONE, 0}, {0, ONE, 0}};
 static const uint16_t quad_indices[6] = {0, 1, 2, 0, 2, 3};
-static const tarn_mesh quad = {quad_positions, quad_normals, NULL, NULL, quad_indices, 4, 2, NULL, 0};
+static const tarn_mesh quad = {quad_positions, quad_normals, NULL, NULL, quad_indices, 4, 2, NULL, 0, NULL};
 
 static const tarn_material floor_material = {0xB08050u, NULL, TARN_CULL_BACK, 0, NULL};
 

@@ -248,6 +248,7 @@ static tarn_frame_config make_config(fuzz_reader *r)
     c.quality.frame_shape = pick(r, depth_modes, 3);         /* 2 is refused */
     c.quality.vertex_pass = pick(r, vertex_modes, 4);        /* 3 is refused */
     c.quality.lit_colour = pick(r, depth_modes, 3);          /* 2 is refused */
+    c.quality.water_coordinates = pick(r, depth_modes, 3);   /* 2 is refused */
     return c;
 }
 

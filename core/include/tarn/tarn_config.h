@@ -110,6 +110,14 @@
 #define TARN_LINK_WATER_FEATURES_ALL 0u
 #endif
 
+/* Flat water's texture coordinates from its plane (tarn_uv_plane) at each pixel,
+ * the quality's water_coordinates TARN_WATER_UV_PLANE: about 2.5 KB of code on the
+ * Cortex-M0. tarn bake leaves it out when no quality it bakes takes it for a water
+ * mesh with a plane. */
+#ifndef TARN_LINK_WATER_PLANE
+#define TARN_LINK_WATER_PLANE 1
+#endif
+
 /* Shading water pixels in the frame, every step of tarn_water.h. Without it water
  * draws only over a still-water backdrop, which holds the still steps. */
 #ifndef TARN_LINK_WATER_SHADING

@@ -133,6 +133,8 @@ typedef struct {
                                    projected and lit. Does not change the image. */
     uint8_t lit_colour;         /* tarn_lit_colour: how a triangle interpolates its
                                    vertices' lit colour in per-pixel perspective */
+    uint8_t water_coordinates;  /* tarn_water_coordinates: where a water pixel finds
+                                   its texture coordinates */
 } tarn_quality;
 
 /* Where a frame finds its vertices as the camera sees them. A scene whose static
@@ -192,6 +194,21 @@ typedef enum {
                             divisions fewer. The pixels then differ from the planes'
                             by up to 3/256 of a level before rounding. */
 } tarn_lit_colour;
+
+/* Where a water pixel finds the texture coordinates its maps (normal, foam) are
+ * sampled at. */
+typedef enum {
+    TARN_WATER_UV_TRIANGLES = 0, /* interpolated on its triangle from the corners':
+                                    where the subpixel grid moves a corner, it moves
+                                    the texels along the whole surface */
+    TARN_WATER_UV_PLANE = 1      /* for a mesh with a plane (tarn_uv_plane, flat water),
+                                    where the ray through the pixel's centre meets it,
+                                    as the float reference does (within 1e-6 of a
+                                    repeat); one reciprocal a pixel with every Newton
+                                    step in place of two interpolated coordinates, and
+                                    about 2.5 KB of code on the Cortex-M0
+                                    (TARN_LINK_WATER_PLANE). Other meshes interpolate. */
+} tarn_water_coordinates;
 
 #define TARN_FOG_ARGUMENT_BITS_MIN 4u
 #define TARN_FOG_ARGUMENT_BITS_MAX 16u

@@ -71,6 +71,24 @@ typedef struct {
     uint16_t triangle_count;
 } tarn_cluster;
 
+/* A flat mesh whose texture coordinates are an affine map of its plane: every
+ * vertex p (object space) lies on normal . p = offset and takes the coordinates
+ * uv = uv_origin + uv_gradient . p. The host's loader finds it for each flat mesh
+ * (tarn_mesh.plane). Water drawn with it takes its texture coordinates at each
+ * pixel where the ray through the pixel's centre meets the plane, as the float
+ * reference does, instead of interpolating them from the triangles' snapped
+ * corners; which pixels it covers stays the triangles' (core/water/water_plane.c). */
+typedef struct {
+    int32_t normal[3];         /* Q1.30 unit vector */
+    tarn_q16 offset;           /* Q16.16 object units */
+    tarn_uv uv_origin;         /* Q16.16: the map at the object's origin */
+    int32_t uv_gradient[2][3]; /* u's and v's change per object unit, in units of
+                                  2^-uv_gradient_bits repeats; each below 2^24 */
+    uint8_t uv_gradient_bits;  /* 0..TARN_UV_PLANE_GRADIENT_BITS_MAX */
+} tarn_uv_plane;
+
+#define TARN_UV_PLANE_GRADIENT_BITS_MAX 46u
+
 typedef struct {
     const tarn_vec3 *positions; /* object space, Q16.16; with normals, NULL only when every
                                    object drawing the mesh has static vertices that apply */
@@ -83,6 +101,8 @@ typedef struct {
     const tarn_cluster *clusters; /* runs covering every triangle once, in order; NULL:
                                      one run of all triangles that is never skipped */
     uint16_t cluster_count;
+    const tarn_uv_plane *plane; /* NULL unless the mesh is flat, its texture
+                                     coordinates an affine map of its plane (above) */
 } tarn_mesh;
 
 /* A vertex as the scene's fixed camera sees it: exactly what a frame would compute
