@@ -536,6 +536,14 @@ STILL_REFRACTING = " --quality fast --water-block 4 --apron on --perspective pix
 KEYS["still.refracting.psnr"] = cmp_of("--backdrop still" + STILL_REFRACTING, "psnr", time=1750)
 KEYS["still.refracting.whole_psnr"] = cmp_of(STILL_REFRACTING.strip(), "psnr", time=1750)
 KEYS["still.wb4.psnr_cost"] = lambda m: diff(KEYS["still.wb2.psnr"](m), KEYS["still.wb4.psnr"](m), 2)
+# flat water's texture coordinates, from its plane (the default) or its triangles
+for _scene in ("pond", "effects/normals", "effects/foam"):
+    for _preset in ("balanced", "exact"):
+        for _mode in ("plane", "triangles"):
+            for _f in ("psnr", "shading_psnr"):
+                KEYS["uv.%s.%s.%s.%s" % (_scene, _preset, _mode, _f)] = cmp_of(
+                    "--quality %s --water-uv %s" % (_preset, _mode), _f, scene=_scene)
+KEYS["uv.pond.host_cost"] = lambda m: pct_more(host_of("")(m), host_of("--water-uv triangles")(m))
 KEYS["pond.plane.host_saving"] = lambda m: pct_less(host_of("--depth-interpolation plane")(m), host_of("")(m))
 KEYS["pond.fast.plane_host_saving"] = lambda m: pct_less(
     host_of("--quality fast")(m), host_of("--quality fast --depth-interpolation exact")(m))
@@ -1022,6 +1030,10 @@ add_fw_keys()
 # qemu-m0-backdrop's flags with 2x2 water blocks: what sharing effects saves once the water refracts
 FW_VARIANTS["m0-backdrop-wb2"] = ("qemu-m0", "pond", "--quality fast --backdrop on --apron 18 --exp2 64 "
                                   "--perspective pixel --depth 16")
+add_fw_keys()
+# qemu-m0-264k's flags with the plane's texture coordinates (the balanced preset's)
+FW_VARIANTS["m0-264k-uv-plane"] = ("qemu-m0-264k", "pond-orbit", "--quality balanced --depth-interpolation plane "
+                                   "--frame strips --tile 12 --apron 24 --vertices frame --water-uv plane")
 add_fw_keys()
 # what two of its flags bring: its frame's panel_psnr less that without each (tarn compare at its time)
 BACKDROP_BOARD_TIME = 1000

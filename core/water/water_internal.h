@@ -2,6 +2,7 @@
  * the water pixel of tarn_water.h, in integers.
  *
  *   water_setup.c      per water object per tile: the context below
+ *   water_plane.c      per water object per frame: its plane's texture coordinates
  *   water_span.c       water triangles, row by row as core/raster/ hands them
  *                      out, and the 2x2 or 4x4 blocks that share effects
  *   water_pixel.c      one water pixel: its effects gathered, then applied
