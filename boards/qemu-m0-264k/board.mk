@@ -36,8 +36,7 @@ BOARD_SCENES := scenes/pond-orbit.json scenes/pond-opaque.json
 # triangles): the balanced preset's plane costs each water pixel a reciprocal of
 # its own, and the frame is the board's to make fast; the panel shows the pond
 # well above issue 22's 40 dB without it (docs/firmware.md gives both)
-BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 12 --apron 24 --vertices frame \
-	--water-uv triangles
+BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 12 --apron 24 --vertices frame --water-uv triangles
 # without water nothing refracts: one strip is the ring, and taller strips cut
 # fewer triangles in two; the room left keeps each vertex's view position too
 # (--vertices frame-view), which the triangles clipped at the guard band read

@@ -21,8 +21,7 @@ BOARD_VERTEX_CACHE_SLOTS := 64
 # build/firmware/qemu-rv32-400k@NAME
 BOARD_SCENES := scenes/pond-orbit.json scenes/pond-opaque.json
 # water's coordinates on its triangles, as qemu-m0-264k's (boards/qemu-m0-264k/board.mk)
-BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 12 --apron 24 --vertices frame \
-	--water-uv triangles
+BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 12 --apron 24 --vertices frame --water-uv triangles
 # without water nothing refracts: one strip is the ring, and taller strips cut
 # fewer triangles in two; the room left keeps each vertex's view position too
 # (--vertices frame-view), which the triangles clipped at the guard band read
