@@ -119,7 +119,10 @@ typedef struct tarn_water_context {
        block's highlight, a slot per block column (tarn_still_block); NULL otherwise */
     struct tarn_still_block *still_blocks;
     uint32_t still_walks; /* tile walks over still water this frame, 0 before the first */
-    tarn_water_plane plane; /* the object's texture coordinates from its plane */
+#if TARN_LINK_WATER_PLANE
+    tarn_water_plane plane; /* the object's texture coordinates from its plane: 52
+                               bytes of the frame's stack a build without it keeps */
+#endif
     /* rows the background buffers hold before they wrap to their first (a frame
        drawn in strips keeps them in a ring); INT32_MAX: they never do. Last, so
        the fields above keep the offsets a Cortex-M0 loads in one instruction. */

@@ -205,6 +205,18 @@ static int map_vector(const plane_in_view *pl, const tarn_view *view, const tarn
     return mantissa_of(sum, m) + common;
 }
 
+/* Map `axis` as an affine function of the pixel: s m . dir, its exponent into
+ * *exponent. Found twice, once for its extent and once to store, so that no two are
+ * held at once: this runs at the bottom of the 16 KB board's deepest call chain. */
+static pixel_affine map_affine(const plane_in_view *pl, const tarn_view *view, const tarn_object *object,
+                               const tarn_uv_plane *p, int axis, int *exponent, int *fits)
+{
+    int32_t m[3];
+    *exponent = map_vector(pl, view, object, p, axis, m, fits);
+    for (int k = 0; k < 3; k++) m[k] = pl->c > 0 ? m[k] : -m[k];
+    return along_ray(view, m);
+}
+
 void tarn__water_plane_setup(tarn_water_plane *out, const tarn_view *view, uint8_t coordinates,
                              const tarn_object *object)
 {
@@ -214,43 +226,39 @@ void tarn__water_plane_setup(tarn_water_plane *out, const tarn_view *view, uint8
     plane_in_view pl;
     place_plane(view, object, p, &pl);
     if (pl.c == 0) return; /* the eye on the plane sees it edge on */
-    const int sign = pl.c > 0 ? 1 : -1;
     int32_t d[3];
-    for (int k = 0; k < 3; k++) d[k] = (int32_t)(sign * pl.normal[k]);
-    const pixel_affine denominator = along_ray(view, d);
-    const int d_down = (int)bit_length(largest_at_corners(view, &denominator)) - 30;
+    for (int k = 0; k < 3; k++) d[k] = (int32_t)(pl.c > 0 ? pl.normal[k] : -pl.normal[k]);
+    pixel_affine f = along_ray(view, d);
+    const int d_down = (int)bit_length(largest_at_corners(view, &f)) - 30;
     const unsigned d_shift = d_down > 0 ? (unsigned)d_down : 0u;
-    store(&denominator, d_shift, &out->denominator);
-    int fits = 1;
-    int32_t m[2][3];
-    int exponent[2];
-    pixel_affine map[2];
-    uint64_t most = 0;
-    for (int axis = 0; axis < 2; axis++) {
-        exponent[axis] = map_vector(&pl, view, object, p, axis, m[axis], &fits);
-        for (int k = 0; k < 3; k++) m[axis][k] *= sign;
-        map[axis] = along_ray(view, m[axis]);
-    }
+    store(&f, d_shift, &out->denominator);
     /* both maps at one exponent, the larger, so they share uv_shift */
-    const int e = exponent[0] > exponent[1] ? exponent[0] : exponent[1];
+    int fits = 1, exponent[2];
+    uint64_t most[2];
     for (int axis = 0; axis < 2; axis++) {
-        const int down = e - exponent[axis];
-        map[axis].at = scale_by_power(map[axis].at, -down);
-        map[axis].per_i = scale_by_power(map[axis].per_i, -down);
-        map[axis].per_j = scale_by_power(map[axis].per_j, -down);
-        const uint64_t v = largest_at_corners(view, &map[axis]);
-        if (v > most) most = v;
+        f = map_affine(&pl, view, object, p, axis, &exponent[axis], &fits);
+        most[axis] = largest_at_corners(view, &f);
     }
+    const int e = exponent[0] > exponent[1] ? exponent[0] : exponent[1];
+    const uint64_t larger = (most[0] >> (e - exponent[0] > 63 ? 63 : e - exponent[0])) |
+                            (most[1] >> (e - exponent[1] > 63 ? 63 : e - exponent[1]));
     /* the map holds N 2^(46 - e + EXTRA_BITS), D N's denominator 2^(30 + EXTRA_BITS);
      * stored shifted down by n_down and d_shift, u = N / D in Q16.16 is
-     * u_plane * 2^uv_shift / denominator with uv_shift = e + n_down - d_shift */
-    int n_down = (int)bit_length(most) - 30;
+     * u_plane * 2^uv_shift / denominator with uv_shift = e + n_down - d_shift
+     * (the larger of two maps' bit lengths is their OR's) */
+    int n_down = (int)bit_length(larger) - 30;
     if (n_down < 0) n_down = 0;
     int uv_shift = e + n_down - (int)d_shift;
     if (uv_shift < 0) n_down -= uv_shift, uv_shift = 0;
     if (!fits || uv_shift > 31 || n_down > 62) return;
-    store(&map[0], (unsigned)n_down, &out->u);
-    store(&map[1], (unsigned)n_down, &out->v);
+    for (int axis = 0; axis < 2; axis++) {
+        f = map_affine(&pl, view, object, p, axis, &exponent[axis], &fits);
+        const int down = n_down + e - exponent[axis];
+        f.at = scale_by_power(f.at, n_down - down); /* to the shared exponent first, then stored */
+        f.per_i = scale_by_power(f.per_i, n_down - down);
+        f.per_j = scale_by_power(f.per_j, n_down - down);
+        store(&f, (unsigned)n_down, axis == 0 ? &out->u : &out->v);
+    }
     out->uv_shift = (uint8_t)uv_shift;
     out->holds = 1u;
 }

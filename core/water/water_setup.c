@@ -89,6 +89,7 @@ void tarn__water_context_setup(tarn_water_context *w, const tarn_view *view,
     int64_t threshold = water->sparkle_amount > 0 ? tarn_divide_once_i64((int64_t)1 << 46, (uint32_t)water->sparkle_amount) : INT64_MAX;
     w->sparkle_threshold = threshold > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)threshold;
     w->dark_cosine = (w->features & TARN_WATER_SPECULAR) != 0 ? tarn__water_dark_cosine(water) : -1;
-    if (TARN_LINK_WATER_PLANE && TARN_LINK_WATER_SHADING)
-        tarn__water_plane_setup(&w->plane, view, config->quality.water_coordinates, object);
+#if TARN_LINK_WATER_PLANE
+    if (TARN_LINK_WATER_SHADING) tarn__water_plane_setup(&w->plane, view, config->quality.water_coordinates, object);
+#endif
 }

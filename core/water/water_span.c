@@ -17,8 +17,34 @@ static uint32_t coordinate_q16(uint32_t t, unsigned shift, uint32_t base, uint16
  * its triangles interpolate none, and the fresnel term takes their place. */
 static int coordinates_from_plane(const tarn_water_context *w)
 {
-    return TARN_LINK_WATER_PLANE && w->plane.holds;
+#if TARN_LINK_WATER_PLANE
+    return w->plane.holds;
+#else
+    (void)w;
+    return 0;
+#endif
 }
+
+/* Texture coordinates from the object's plane (tarn_water_plane), with every
+ * Newton step: a plane's coordinates are whole, where a triangle's quotient spans
+ * its own corners' and the quality's steps suffice. Out of line: inlined, its
+ * locals grew the water triangle's frame, at the bottom of the 16 KB board's
+ * deepest call chain, past the board's stack. */
+#if TARN_LINK_WATER_PLANE
+static TARN_NOINLINE void plane_coordinates(const tarn_water_context *w, int32_t i, int32_t j, tarn_water_input *in)
+{
+    const tarn_water_plane *p = &w->plane;
+    tarn__plane_coordinates(tarn__plane_denominator(tarn__fine_affine_at(&p->denominator, i, j)),
+                            tarn__fine_affine_at(&p->u, i, j), tarn__fine_affine_at(&p->v, i, j), p->uv_shift,
+                            TARN_RECIP_STEPS_MAX, in);
+}
+#else
+/* Never called: a build without the plane takes no coordinates from it. */
+static void plane_coordinates(const tarn_water_context *w, int32_t i, int32_t j, tarn_water_input *in)
+{
+    (void)w, (void)i, (void)j, (void)in;
+}
+#endif
 
 /* The water pixel (i, j)'s inputs from the interpolated attributes and, with one,
  * its object's plane. */
@@ -31,12 +57,7 @@ static tarn_water_input water_input(const tarn_water_context *w, const tarn_attr
     for (int c = 0; c < 3; c++) in.lit[c] = values[c] >> set->t_shift[c];
     int fresnel = TARN_ATTRIBUTE_FRESNEL;
     if (coordinates_from_plane(w)) {
-        /* every Newton step: a plane's coordinates are whole, where a triangle's
-         * quotient spans its own corners' and the quality's steps suffice */
-        const tarn_water_plane *p = &w->plane;
-        tarn__plane_coordinates(tarn__plane_denominator(tarn__fine_affine_at(&p->denominator, i, j)),
-                                tarn__fine_affine_at(&p->u, i, j), tarn__fine_affine_at(&p->v, i, j), p->uv_shift,
-                                TARN_RECIP_STEPS_MAX, &in);
+        plane_coordinates(w, i, j, &in);
         fresnel = TARN_ATTRIBUTE_U;
     } else {
         in.u = coordinate_q16(values[TARN_ATTRIBUTE_U], set->t_shift[TARN_ATTRIBUTE_U], set->u_base, &in.u_low);
