@@ -171,6 +171,7 @@ static void measure_all(frame_list *l)
     for (size_t k = 0; k < sizeof knob_scenes / sizeof knob_scenes[0]; k++) add_knobs(l, knob_scenes[k]);
     tarn_quality fast_still = tarn_quality_preset(TARN_PRESET_FAST);
     fast_still.water_block = 4;
+    fast_still.water_coordinates = TARN_WATER_UV_PLANE; /* still water's, always */
     add_backdrop(l, "scenes/pond.json", TARN_BACKDROP_OPAQUE, "fast+backdrop-on", tarn_quality_preset(TARN_PRESET_FAST));
     add_backdrop(l, "scenes/pond.json", TARN_BACKDROP_STILL, "fast+block4+backdrop-still", fast_still);
     add_backdrop(l, "scenes/beach.json", TARN_BACKDROP_OPAQUE, "balanced+backdrop-on", tarn_quality_default());

@@ -38,6 +38,7 @@ static void still_make(const tarn_scene *scene, const tarn_frame_config *config,
 static tarn_frame_config fast_config(const tarn_loaded_scene *loaded, uint8_t water_block)
 {
     tarn_frame_config config = {loaded->width, loaded->height, tarn_quality_preset(TARN_PRESET_FAST), 0};
+    config.quality.water_coordinates = TARN_WATER_UV_PLANE; /* still water's, always */
     config.quality.water_block = water_block;
     return config;
 }

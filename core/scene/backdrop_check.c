@@ -14,13 +14,15 @@ static int same_opaque_quality(const tarn_backdrop *b, const tarn_quality *q)
 
 /* And those that shape the water's still terms, without the underwater view,
  * which moves every pixel. Refraction's apron shapes no still term: its samples
- * are read from the picture as the clock moves them. */
+ * are read from the picture as the clock moves them. Still water takes its texture
+ * coordinates from its plane, and the quality must say so (TARN_WATER_UV_PLANE):
+ * a yardstick's reference follows the quality. */
 static int still_water_applies(const tarn_backdrop *b, const tarn_scene *scene, const tarn_frame_config *config)
 {
     const tarn_quality *q = &config->quality;
     return TARN_LINK_STILL_WATER && b->water_block == q->water_block && b->fog_argument_bits == q->fog_argument_bits &&
            b->exp2_entries == q->exp2.entries && b->exp2_interpolate == q->exp2.interpolate &&
-           !tarn__underwater_active(scene);
+           q->water_coordinates == TARN_WATER_UV_PLANE && !tarn__underwater_active(scene);
 }
 
 const tarn_backdrop *tarn__backdrop_for(const tarn_scene *scene, const tarn_frame_config *config)

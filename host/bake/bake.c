@@ -1170,7 +1170,9 @@ static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
            (q->perspective == TARN_PERSPECTIVE_PIXEL && q->lit_colour == TARN_LIT_LINE &&
                     (view == NULL || view->backdrop == NULL)
                 ? USES_LIT_LINE : 0u) |
-           (q->water_coordinates == TARN_WATER_UV_PLANE && has_water_planes(scene) ? USES_WATER_PLANE : 0u);
+           (q->water_coordinates == TARN_WATER_UV_PLANE && has_water_planes(scene) &&
+                    (view == NULL || view->backdrop == NULL || !view->backdrop->still_water)
+                ? USES_WATER_PLANE : 0u);
 }
 
 static void print_link_header(FILE *out, const bake_plan *p, const tarn_bake_options *o,

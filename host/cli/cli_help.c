@@ -45,14 +45,17 @@ static const char quality_usage[] =
     "         --frame tiles|strips (square tiles, or strips of --tile rows of the whole width\n"
     "         whose opaque pass is kept for the strips below: each pixel drawn once, more memory)\n"
     "         --vertices tile|frame|frame-view (vertices found by each tile's walk, or once a frame\n"
-    "         into memory: 16 bytes a vertex, 28 with the view positions clipped triangles read)\n";
+    "         into memory: 16 bytes a vertex, 28 with the view positions clipped triangles read)\n"
+    "         --water-uv plane|triangles (flat water's texture coordinates where the pixel's ray\n"
+    "         meets its plane, as the reference; or interpolated on each triangle: fast's, less code)\n";
 
 static const char backdrop_usage[] =
     "  --backdrop on|off|still  on: the opaque objects drawn once, for the frame and quality,\n"
     "               into a palette image the water draws over; the image is the same. still: the\n"
     "               water's still terms drawn into it too, and only its moving ones each frame;\n"
     "               each channel within 1 of the scene drawn whole, but for the highlights that\n"
-    "               water blocks share\n";
+    "               water blocks share; its texture coordinates are the water's plane's\n"
+    "               (--water-uv plane, which still sets)\n";
 
 static const char render_usage[] =
     "usage: tarn render SCENE -o OUT.png|OUT.gif [--size WxH] [--time MS] [--frames N [--fps F]]\n"

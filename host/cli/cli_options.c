@@ -159,6 +159,27 @@ static int check_combination(tarn_cli_options *o, tarn_error *err)
     return check_sequence(o, err);
 }
 
+/* Whether the arguments name the option. */
+static int option_given(const tarn_cli_options *o, const char *name)
+{
+    for (int k = 2; k < o->argc; k++)
+        if (strcmp(o->argv[k], name) == 0) return 1;
+    return 0;
+}
+
+/* Still water takes its texture coordinates from its plane (tarn_scene.h, "Still
+ * water"): the quality says so, as the backdrop requires, and asking for the
+ * triangles' is refused. */
+static int still_water_coordinates(tarn_cli_options *o, tarn_error *err)
+{
+    if (o->backdrop != TARN_BACKDROP_STILL) return 0;
+    if (o->quality.water_coordinates != TARN_WATER_UV_PLANE && option_given(o, "--water-uv"))
+        return tarn_fail(err, "--backdrop still: still water takes its texture coordinates from its plane; "
+                              "expected --water-uv plane, got triangles");
+    o->quality.water_coordinates = TARN_WATER_UV_PLANE;
+    return 0;
+}
+
 int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
 {
     memset(o, 0, sizeof *o);
@@ -168,6 +189,7 @@ int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
     if (parse_command(argc < 2 ? NULL : argv[1], o, err) != 0) return -1;
     if (tarn_cli_apply_preset(argc - 2, argv + 2, &o->quality, err) != 0) return -1;
     if (tarn_parse_arguments(argc, argv, &o->scene_path, read_option, o, err) != 0) return -1;
+    if (still_water_coordinates(o, err) != 0) return -1;
     return check_combination(o, err);
 }
 

@@ -207,7 +207,9 @@ typedef enum {
                                     repeat); one reciprocal a pixel with every Newton
                                     step in place of two interpolated coordinates, and
                                     about 2.5 KB of code on the Cortex-M0
-                                    (TARN_LINK_WATER_PLANE). Other meshes interpolate. */
+                                    (TARN_LINK_WATER_PLANE). Other meshes interpolate.
+                                    Still water (tarn_scene.h) takes its plane's
+                                    always, and its backdrop applies only to this. */
 } tarn_water_coordinates;
 
 #define TARN_FOG_ARGUMENT_BITS_MIN 4u

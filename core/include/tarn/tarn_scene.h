@@ -180,7 +180,8 @@ typedef struct {
  * images differ from the scene drawn whole by the rounding of the still terms, by
  * the texture coordinates (exact on the plane, where triangles interpolate them)
  * and, with water blocks, by the highlights the blocks share; docs/bake.md gives
- * the error. A refracted sample (with the quality's apron) is read from the
+ * the error. Its frames take the quality's water_coordinates TARN_WATER_UV_PLANE,
+ * and no other. A refracted sample (with the quality's apron) is read from the
  * picture itself wherever it lands: the still colour there, whose still terms are
  * that pixel's rather than the refracting one's; the opaque colour where it lands
  * beside the water (on the bank behind it, on an object standing in it); and the
