@@ -49,7 +49,7 @@ static int64_t scale_by_power(int64_t v, int up)
 
 /* v = out * 2^exponent, out's components at most 2^MANTISSA_BITS in magnitude:
  * shifted down with rounding, or kept whole. */
-static int mantissa_of(const int64_t v[3], int32_t out[3])
+static TARN_ALWAYS_INLINE int mantissa_of(const int64_t v[3], int32_t out[3])
 {
     uint64_t most = 0;
     for (int k = 0; k < 3; k++)
@@ -68,9 +68,10 @@ static int32_t scalar_mantissa(int64_t v, int *exponent)
     return (int32_t)scale_by_power(v, -*exponent);
 }
 
-/* rows * v (rows: Q(row_bits) unit vectors; v below 2^33), each component rounded
- * by row_bits. */
-static void turned(const int32_t rows[3][3], const int64_t v[3], unsigned row_bits, int64_t out[3])
+/* rows * v (rows: Q(row_bits) unit vectors), each component rounded by row_bits.
+ * Every vector turned here fits 32 bits: held in 64, they took the 16 KB boards'
+ * deepest call chain past their stack. */
+static void turned(const int32_t rows[3][3], const int32_t v[3], unsigned row_bits, int64_t out[3])
 {
     for (int k = 0; k < 3; k++) {
         int64_t sum = 0;
@@ -136,23 +137,33 @@ static void store(const pixel_affine *f, unsigned down, tarn_fine_affine *out)
 /* What the plane gives in view space: n (Q1.30), c (Q16.16 world units) and the
  * eye's offset to the object's origin (Q16.16). */
 typedef struct {
-    int64_t normal[3];
+    int32_t normal[3];
     int64_t c;
     int64_t to_object[3];
 } plane_in_view;
 
-static int64_t dot(const int64_t a[3], const int64_t b[3])
+/* a . b for a within 2^31 and b within 2^33 (each product below 2^63; a unit a keeps
+ * the sum there too). */
+static int64_t dot(const int32_t a[3], const int64_t b[3])
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* The components of v, within 2^31. */
+static void narrowed(const int64_t v[3], int32_t out[3])
+{
+    for (int k = 0; k < 3; k++) out[k] = (int32_t)v[k];
 }
 
 static void place_plane(const tarn_view *view, const tarn_object *object, const tarn_uv_plane *p,
                         plane_in_view *out)
 {
-    const int64_t normal[3] = {p->normal[0], p->normal[1], p->normal[2]};
-    int64_t world[3];
-    turned(object->rotation, normal, 16u, world);
-    turned(view->basis, world, 30u, out->normal);
+    int64_t turned_normal[3];
+    int32_t world[3]; /* Q1.30 */
+    turned(object->rotation, p->normal, 16u, turned_normal);
+    narrowed(turned_normal, world);
+    turned(view->basis, world, 30u, turned_normal);
+    narrowed(turned_normal, out->normal);
     out->to_object[0] = (int64_t)object->position.x - view->eye.x;
     out->to_object[1] = (int64_t)object->position.y - view->eye.y;
     out->to_object[2] = (int64_t)object->position.z - view->eye.z;
@@ -164,12 +175,12 @@ static void place_plane(const tarn_view *view, const tarn_object *object, const 
 /* The gradient of map `axis` in world space, rotation * g / scale, as mantissas
  * into gm and their exponent returned: gm * 2^exponent repeats per world unit.
  * The scale's reciprocal, not a division: 2^-29 of the gradient is 2^-29 of a
- * coordinate's distance from the eye's. */
-static int world_gradient(const tarn_object *object, const tarn_uv_plane *p, int axis, int32_t gm[3])
+ * coordinate's distance from the eye's. `v` is room for the sums, the caller's,
+ * so that no second three 64-bit words take the stack. */
+static int world_gradient(const tarn_object *object, const tarn_uv_plane *p, int axis, int32_t gm[3], int64_t v[3])
 {
-    const int64_t g[3] = {p->uv_gradient[axis][0], p->uv_gradient[axis][1], p->uv_gradient[axis][2]};
-    int64_t v[3]; /* rotation * g, Q(16 + bits) repeats per object unit: below 2^42 */
-    turned(object->rotation, g, 0u, v);
+    /* rotation * g, Q(16 + bits) repeats per object unit: below 2^42 */
+    turned(object->rotation, p->uv_gradient[axis], 0u, v);
     const int turned_exponent = mantissa_of(v, gm);
     const unsigned lz = tarn_clz32((uint32_t)object->scale);
     const uint32_t recip = tarn_recip_q30((uint32_t)object->scale << lz, TARN_RECIP_STEPS_MAX); /* 2^62 / (scale << lz) */
@@ -187,18 +198,17 @@ static int map_vector(const plane_in_view *pl, const tarn_view *view, const tarn
                       const tarn_uv_plane *p, int axis, int32_t m[3], int *fits)
 {
     int32_t gm[3];
-    const int eg = world_gradient(object, p, axis, gm);
-    const int64_t g[3] = {gm[0], gm[1], gm[2]};
+    int64_t sum[3];
+    const int eg = world_gradient(object, p, axis, gm, sum);
     /* U = uv_origin - g . (origin - eye), Q16.32 */
     const int64_t origin = axis == 0 ? p->uv_origin.u : p->uv_origin.v;
-    const int64_t eye = origin * 65536 - scale_by_power(dot(g, pl->to_object), eg + 16);
+    const int64_t eye = origin * 65536 - scale_by_power(dot(gm, pl->to_object), eg + 16);
     if (magnitude(eye) >= (uint64_t)1 << 47) *fits = 0;
     int eu, ec;
     const int64_t um = scalar_mantissa(eye, &eu), cm = scalar_mantissa(pl->c, &ec);
     const int e1 = eu - 16;      /* U n = um * n * 2^e1 in units of 2^-46 */
     const int e2 = ec + eg + 30; /* c G = cm * g_view * 2^(ec - 16 + eg) repeats: 2^e2 units */
-    int64_t sum[3];
-    turned(view->basis, g, 30u, sum);
+    turned(view->basis, gm, 30u, sum);
     const int common = e1 > e2 ? e1 : e2;
     for (int k = 0; k < 3; k++)
         sum[k] = scale_by_power(um * pl->normal[k], e1 - common) + scale_by_power(cm * sum[k], e2 - common);
