@@ -47,9 +47,7 @@ static void focal_length(const tarn_camera *camera, uint16_t height, tarn_view *
     int32_t sine, cosine;
     tarn_sin_cos_q30(half_angle, &sine, &cosine);
     view->focal_q12 = tarn_sat_i64_to_i32(tarn_divide_once_i64((int64_t)height * 2048 * cosine + sine / 2, (uint32_t)sine));
-    view->inv_focal_mantissa = 0u;
-    view->inv_focal_shift = 0u;
-    if (!TARN_LINK_WATER_PLANE) return; /* its one reader */
+    if (!TARN_LINK_WATER_PLANE) return; /* its one reader: the reciprocal stays unset */
     /* tan in Q32 (below 2^39 up to 179 degrees), then 2 tan / height in Q48 */
     const int64_t tan_q32 = tarn_divide_once_i64((int64_t)sine * ((int64_t)1 << 32) + cosine / 2, (uint32_t)cosine);
     const uint64_t inverse_q48 = (uint64_t)tarn_divide_once_i64(tan_q32 * 131072 + height / 2, height);

@@ -34,7 +34,11 @@ static int quality_in_range(const tarn_quality *q)
             (TARN_LINK_REFRACTION_EXACT && q->refraction_normal == TARN_REFRACTION_NORMAL_EXACT)) &&
            (q->frame_shape == TARN_FRAME_TILES || (TARN_LINK_STRIPS && q->frame_shape == TARN_FRAME_STRIPS)) &&
            q->lit_colour <= TARN_LIT_LINE &&
-           q->water_coordinates <= TARN_WATER_UV_PLANE &&
+           /* a build that shades water without the plane's code would draw other
+              coordinates than the plane's */
+           (q->water_coordinates == TARN_WATER_UV_TRIANGLES ||
+            (q->water_coordinates == TARN_WATER_UV_PLANE &&
+             (TARN_LINK_WATER_PLANE || !TARN_LINK_WATER || !TARN_LINK_WATER_SHADING))) &&
            (q->vertex_pass == TARN_VERTICES_PER_TILE ||
             (TARN_LINK_VERTEX_PASS && TARN_LINK_STATIC_VERTICES && q->vertex_pass <= TARN_VERTICES_PER_FRAME_VIEW));
 }

@@ -168,16 +168,12 @@ tarn_status tarn__scene_check_reach(const tarn_scene *scene, const tarn_frame_co
     const tarn_backdrop *backdrop = tarn__backdrop_for(scene, config);
     if (scene->static_view != NULL && scene->static_view->backdrop != NULL && backdrop == NULL)
         return TARN_ERR_SCENE;
-    /* without the water shading linked, water draws only over still water; without
-     * the planes', it would draw other coordinates than the quality asks for */
+    /* without the water shading linked, water draws only over still water */
     const int still = backdrop != NULL && backdrop->still_water;
-    const int planes = config->quality.water_coordinates == TARN_WATER_UV_PLANE;
     for (uint32_t i = 0; i < scene->object_count; i++) {
         const tarn_water *water = scene->objects[i].material->water;
         if (tarn_water_reach_pixels(water, config->width) > (int32_t)TARN_WATER_APRON_MAX) return TARN_ERR_SCENE;
         if (!TARN_LINK_WATER_SHADING && water != NULL && !still) return TARN_ERR_SCENE;
-        if (!TARN_LINK_WATER_PLANE && planes && water != NULL && !still && scene->objects[i].mesh->plane != NULL)
-            return TARN_ERR_SCENE;
     }
     return TARN_OK;
 }

@@ -520,6 +520,17 @@ static void note_mesh(bake_item *item, const tarn_scene *scene, size_t i)
          m->triangle_count, m->cluster_count);
 }
 
+/* Whether some quality the bake holds takes flat water's texture coordinates from
+ * its plane (tarn_water_coordinates): else no mesh's plane is written, and the
+ * meshes point to none. */
+static int bakes_planes(const bake_plan *p)
+{
+    int any = p->config.quality.water_coordinates == TARN_WATER_UV_PLANE;
+    for (size_t i = 0; i < p->points->count; i++)
+        any |= p->points->qualities[i].water_coordinates == TARN_WATER_UV_PLANE;
+    return any;
+}
+
 static void plan_mesh(bake_plan *p, size_t i)
 {
     const tarn_mesh *m = p->scene->scene.objects[i].mesh;
@@ -527,8 +538,8 @@ static void plan_mesh(bake_plan *p, size_t i)
         const void *data = mesh_array_data(m, &mesh_arrays[k]);
         size_t count = mesh_array_count(m, &mesh_arrays[k]);
         if (data == NULL) continue;
-        if (count == 0) {
-            add_alias(p, data, NO_ITEM); /* C has no empty arrays */
+        if (count == 0 || (mesh_arrays[k].length == ONE && !bakes_planes(p))) {
+            add_alias(p, data, NO_ITEM); /* C has no empty arrays; a plane no quality reads */
             continue;
         }
         bake_item *item = add_item(p, BYTES_MESH, mesh_arrays[k].type, data, count, "%s_mesh_%zu_%s",
@@ -1110,14 +1121,12 @@ static int has_opaque_objects(const tarn_scene *scene)
     return 0;
 }
 
-/* Whether some water object's mesh has a plane its texture coordinates may come
- * from (tarn_water_coordinates). */
-static int has_water_planes(const tarn_scene *scene)
+/* Whether the scene has water (a build that shades it links the plane's code for
+ * a quality that takes the plane's coordinates, or refuses that quality). */
+static int has_water(const tarn_scene *scene)
 {
     for (uint32_t i = 0; i < scene->object_count; i++)
-        if (scene->objects[i].material != NULL && scene->objects[i].material->water != NULL &&
-            scene->objects[i].mesh->plane != NULL)
-            return 1;
+        if (scene->objects[i].material != NULL && scene->objects[i].material->water != NULL) return 1;
     return 0;
 }
 
@@ -1170,7 +1179,7 @@ static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
            (q->perspective == TARN_PERSPECTIVE_PIXEL && q->lit_colour == TARN_LIT_LINE &&
                     (view == NULL || view->backdrop == NULL)
                 ? USES_LIT_LINE : 0u) |
-           (q->water_coordinates == TARN_WATER_UV_PLANE && has_water_planes(scene) &&
+           (q->water_coordinates == TARN_WATER_UV_PLANE && has_water(scene) &&
                     (view == NULL || view->backdrop == NULL || !view->backdrop->still_water)
                 ? USES_WATER_PLANE : 0u);
 }

@@ -112,8 +112,8 @@
 
 /* Flat water's texture coordinates from its plane (tarn_uv_plane) at each pixel,
  * the quality's water_coordinates TARN_WATER_UV_PLANE: about 2.5 KB of code on the
- * Cortex-M0. tarn bake leaves it out when no quality it bakes takes it for a water
- * mesh with a plane. */
+ * Cortex-M0. A build that shades water without it refuses that quality; tarn bake
+ * leaves it out when no quality it bakes takes it for the scene's water. */
 #ifndef TARN_LINK_WATER_PLANE
 #define TARN_LINK_WATER_PLANE 1
 #endif
