@@ -1121,15 +1121,6 @@ static int has_opaque_objects(const tarn_scene *scene)
     return 0;
 }
 
-/* Whether the scene has water (a build that shades it links the plane's code for
- * a quality that takes the plane's coordinates, or refuses that quality). */
-static int has_water(const tarn_scene *scene)
-{
-    for (uint32_t i = 0; i < scene->object_count; i++)
-        if (scene->objects[i].material != NULL && scene->objects[i].material->water != NULL) return 1;
-    return 0;
-}
-
 /* The link switches a baked quality decides, as bits: a build links a part when
  * some quality it bakes (the main one or a point) uses it. */
 enum {
@@ -1163,6 +1154,10 @@ static const struct {
 
 static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
 {
+    /* a build that shades water links the plane's code for a quality that takes the
+     * plane's coordinates, or refuses that quality */
+    uint32_t features, every;
+    const int water = used_water(scene, &features, &every);
     const tarn_static_view *view = scene->static_view;
     const int finds_bins =
         q->cluster_bins && (view == NULL || view->bins == NULL || view->subpixel_bits != q->subpixel_bits);
@@ -1179,7 +1174,7 @@ static unsigned quality_uses(const tarn_scene *scene, const tarn_quality *q)
            (q->perspective == TARN_PERSPECTIVE_PIXEL && q->lit_colour == TARN_LIT_LINE &&
                     (view == NULL || view->backdrop == NULL)
                 ? USES_LIT_LINE : 0u) |
-           (q->water_coordinates == TARN_WATER_UV_PLANE && has_water(scene) &&
+           (q->water_coordinates == TARN_WATER_UV_PLANE && water &&
                     (view == NULL || view->backdrop == NULL || !view->backdrop->still_water)
                 ? USES_WATER_PLANE : 0u);
 }

@@ -203,7 +203,7 @@ typedef enum {
                                     the texels along the whole surface */
     TARN_WATER_UV_PLANE = 1      /* for a mesh with a plane (tarn_uv_plane, flat water),
                                     where the ray through the pixel's centre meets it,
-                                    as the float reference does (within 1e-6 of a
+                                    as the host's reference does (within 1e-6 of a
                                     repeat); one reciprocal a pixel with every Newton
                                     step in place of two interpolated coordinates, and
                                     about 2.5 KB of code on the Cortex-M0
