@@ -51,7 +51,8 @@ void firmware_conf_value(char *out, size_t size, const char *text, const char *k
 }
 
 tarn_frame_config firmware_bake_config(const char *scene_path, const char *bake_flags,
-                                       const tarn_loaded_scene *scene, uint32_t time_ms, int *backdrop)
+                                       const tarn_loaded_scene *scene, uint32_t time_ms,
+                                       tarn_backdrop_request *backdrop)
 {
     char flags[512];
     /* parsed as the bake's command line, which is what they were; nothing is written */
@@ -67,7 +68,7 @@ tarn_frame_config firmware_bake_config(const char *scene_path, const char *bake_
     if (tarn_cli_parse(argc, argv, &options, &err) != 0) fail_msg("bake flags '%s': %s", bake_flags, err.message);
     tarn_frame_config config = {options.width ? options.width : scene->width,
                                 options.height ? options.height : scene->height, options.quality, time_ms};
-    if (backdrop != NULL) *backdrop = options.backdrop;
+    if (backdrop != NULL) *backdrop = tarn_cli_backdrop(&options);
     return config;
 }
 

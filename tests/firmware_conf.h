@@ -6,6 +6,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "backdrop.h"
 #include "scene_load.h"
 #include "tarn/tarn_render.h"
 
@@ -21,9 +22,10 @@ void firmware_sort_board_names(char names[][64], size_t n);
 
 /* The frame config `tarn bake SCENE BAKE_FLAGS` bakes: the scene's own size unless
  * the flags give one, the flags parsed as tarn parses them, at `time_ms`; and the
- * backdrop it bakes (a tarn_backdrop_kind) in `*backdrop`, unless NULL. Fails the
- * test on flags tarn refuses. */
+ * backdrop it bakes in `*backdrop`, unless NULL. Fails the test on flags tarn
+ * refuses. */
 tarn_frame_config firmware_bake_config(const char *scene_path, const char *bake_flags,
-                                       const tarn_loaded_scene *scene, uint32_t time_ms, int *backdrop);
+                                       const tarn_loaded_scene *scene, uint32_t time_ms,
+                                       tarn_backdrop_request *backdrop);
 
 #endif

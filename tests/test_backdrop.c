@@ -29,7 +29,7 @@ static void load(const char *path, tarn_loaded_scene *loaded)
 static void backdrop_make(const tarn_loaded_scene *loaded, const tarn_frame_config *config, tarn_backdrop_scene *b)
 {
     tarn_error err;
-    if (tarn_backdrop_scene_make(&loaded->scene, config, TARN_BACKDROP_OPAQUE, 0, b, &err) != 0) fail_msg("%s", err.message);
+    if (tarn_backdrop_scene_make(&loaded->scene, config, tarn_backdrop_of(TARN_BACKDROP_OPAQUE), 0, b, &err) != 0) fail_msg("%s", err.message);
 }
 
 /* The frame at `config` of the scene as loaded, and of its water over the backdrop
@@ -287,7 +287,7 @@ static void test_too_many_colours_are_refused(void **state)
     const tarn_frame_config config = {512, 512, tarn_quality_default(), 0};
     tarn_backdrop_scene backdrop;
     tarn_error err;
-    assert_int_equal(tarn_backdrop_scene_make(&b.scene, &config, TARN_BACKDROP_OPAQUE, 0, &backdrop, &err), -1);
+    assert_int_equal(tarn_backdrop_scene_make(&b.scene, &config, tarn_backdrop_of(TARN_BACKDROP_OPAQUE), 0, &backdrop, &err), -1);
     if (strstr(err.message, "colours, at most 65536 fit its 16-bit indices") == NULL)
         fail_msg("expected the colour count in the error, got: %s", err.message);
 }

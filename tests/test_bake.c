@@ -269,7 +269,7 @@ static void round_trip_against(const char *scene_path, const char *name, const c
     tarn_frame_config config = {scene.width, scene.height, tarn_quality_default(), 0};
     if (adjust) adjust(&config);
     tarn_backdrop_scene over;
-    if (still && tarn_backdrop_scene_make(&scene.scene, &config, TARN_BACKDROP_STILL, 0, &over, &err) != 0)
+    if (still && tarn_backdrop_scene_make(&scene.scene, &config, tarn_backdrop_of(TARN_BACKDROP_STILL), 0, &over, &err) != 0)
         fail_msg("%s", err.message);
     tarn_loaded_scene reference = scene;
     if (still) reference.scene = over.water.scene;

@@ -217,6 +217,19 @@ static void test_backdrop_option(void **state)
     assert_rejected("render s.json -o x.png --reference --backdrop on", "it excludes --reference");
     assert_rejected("bake s.json -o x.c --backdrop on --points p.txt", "it excludes --points");
     assert_rejected("bake s.json -o x.c --backdrop on --static-view off", "it excludes --static-view off");
+    /* --landing-depth: world units 1..4 with still water, the deepest unless given */
+    assert_int_equal(parse("bake s.json -o x.c --backdrop still", &o, &err), 0);
+    assert_int_equal(tarn_cli_backdrop(&o).landing_depth_q16, TARN_LANDING_DEPTH_MAX_Q16);
+    assert_int_equal(parse("bake s.json -o x.c --backdrop still --landing-depth 1.25", &o, &err), 0);
+    assert_int_equal(tarn_cli_backdrop(&o).kind, TARN_BACKDROP_STILL);
+    assert_int_equal(tarn_cli_backdrop(&o).landing_depth_q16, 81920u);
+    assert_rejected("bake s.json -o x.c --backdrop still --landing-depth 0.5",
+                    "--landing-depth: expected world units 1..4, got '0.5'");
+    assert_rejected("bake s.json -o x.c --backdrop still --landing-depth nan",
+                    "--landing-depth: expected world units 1..4, got 'nan'");
+    assert_rejected("bake s.json -o x.c --backdrop still --landing-depth 2x",
+                    "--landing-depth: expected world units 1..4, got '2x'");
+    assert_rejected("bake s.json -o x.c --backdrop on --landing-depth 2", "--landing-depth applies to --backdrop still");
 }
 
 static void test_frame_sequences_parse(void **state)

@@ -175,16 +175,16 @@ static void test_board_matches_host(void **state)
     tarn_loaded_scene scene;
     tarn_error err;
     if (tarn_scene_load(conf.scene, &scene, &err) != 0) fail_msg("%s", err.message);
-    int backdrop;
+    tarn_backdrop_request backdrop;
     tarn_frame_config config = firmware_bake_config(conf.scene, conf.bake_flags, &scene, 0, &backdrop);
+    const int still_water = backdrop.kind == TARN_BACKDROP_STILL;
     /* over still water, the host draws through the same backdrop; every other
      * bake draws the scene's frame itself */
     tarn_backdrop_scene still;
-    if (backdrop == TARN_BACKDROP_STILL &&
-        tarn_backdrop_scene_make(&scene.scene, &config, TARN_BACKDROP_STILL, 0, &still, &err) != 0)
+    if (still_water && tarn_backdrop_scene_make(&scene.scene, &config, backdrop, 0, &still, &err) != 0)
         fail_msg("%s: %s", conf.scene, err.message);
     tarn_loaded_scene drawn = scene;
-    if (backdrop == TARN_BACKDROP_STILL) drawn.scene = still.water.scene;
+    if (still_water) drawn.scene = still.water.scene;
 
     recording_panel *panel = calloc(1, sizeof *panel);
     assert_non_null(panel);
@@ -226,7 +226,7 @@ static void test_board_matches_host(void **state)
     }
     for (unsigned i = 0; i < TIMES; i++) free(panel->pictures[i]);
     free(panel);
-    if (backdrop == TARN_BACKDROP_STILL) tarn_backdrop_scene_free(&still);
+    if (still_water) tarn_backdrop_scene_free(&still);
     tarn_scene_free(&scene);
     assert_int_equal(differ_total, 0);
 }

@@ -156,7 +156,7 @@ static void add_backdrop(frame_list *l, const char *path, tarn_backdrop_kind kin
     const tarn_frame_config config = {s.width, s.height, quality, 1500};
     tarn_backdrop_scene backdrop;
     tarn_error err;
-    if (tarn_backdrop_scene_make(&s.scene, &config, kind, 0, &backdrop, &err) != 0)
+    if (tarn_backdrop_scene_make(&s.scene, &config, tarn_backdrop_of(kind), 0, &backdrop, &err) != 0)
         fail_msg("%s: %s", path, err.message);
     add_line(l, path, quality_name, config.time_ms, frame_checksum(&backdrop.water.scene, &config, path));
     tarn_backdrop_scene_free(&backdrop);

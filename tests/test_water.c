@@ -542,6 +542,48 @@ static void test_specular_skip_matches_the_normalised_normal(void **state)
     assert_true(drawn > 10000u);
 }
 
+/* A refracted sample over still water is read where the fog saw it from another
+ * surface, and moved to this one's (tarn__water_fog_moved): each channel within 1
+ * of endless + (colour - endless) * 2^(-density * (to - from)), through more water
+ * and less, a little and a lot (the fast path below 1/16 of a halving and the
+ * table above it), at every density the loader takes, and held where the colour
+ * would move past 15 halvings' worth. */
+static void test_moved_fog_is_the_fog_ratio(void **state)
+{
+    (void)state;
+    static const double densities[] = {0.001, 0.15, 1.0, 64.0};
+    static const double moves[] = {0.0, 0.01, -0.01, 0.3, -0.3, 1.7, -1.7, -20.0};
+    uint32_t seed = 777u;
+    size_t checked = 0;
+    for (size_t d = 0; d < sizeof densities / sizeof densities[0]; d++)
+        for (size_t m = 0; m < sizeof moves / sizeof moves[0]; m++) {
+            tarn_water water = {0};
+            water.fog_density = (tarn_q16)lround(densities[d] * 65536.0);
+            tarn_water_context w = {0};
+            w.water = &water;
+            const uint32_t from = 10u << 16;
+            const uint32_t to = (uint32_t)((int64_t)from + lround(moves[m] * 65536.0));
+            const double halvings = water.fog_density / 65536.0 * ((double)to - (double)from) / 65536.0;
+            for (int trial = 0; trial < 200; trial++) {
+                seed = seed * 1664525u + 1013904223u;
+                const uint32_t colour = seed >> 8, endless = (seed * 2654435761u) >> 8;
+                const uint32_t moved = tarn__water_fog_moved(&w, colour, endless, from, to);
+                const double ratio = exp2(-(halvings < -15.0 ? -15.0 : halvings));
+                for (int at = 0; at < 24; at += 8) {
+                    const double end = (endless >> at) & 0xFFu, c = (colour >> at) & 0xFFu;
+                    double want = end + (c - end) * ratio;
+                    want = want < 0.0 ? 0.0 : (want > 255.0 ? 255.0 : want);
+                    const double got = (moved >> at) & 0xFFu;
+                    if (fabs(got - want) > 1.0)
+                        fail_msg("density %g, %g more water: channel %d of %06x toward %06x is %g, expected %.2f",
+                                 densities[d], moves[m], at / 8, colour, endless, got, want);
+                    checked++;
+                }
+            }
+        }
+    assert_int_equal(checked, 4u * 8u * 200u * 3u);
+}
+
 /* Where the pixel refracts by the EXACT normal, step 1 finds N itself from the
  * maps' texels: each component within 3 units of Q1.15 of the unit direction, the
  * bound the highlight's skip allows for (water_highlights.c), both N.xy in Q1.30
@@ -657,6 +699,7 @@ int main(void)
         cmocka_unit_test(test_opaque_scenes_pay_nothing_for_water),
         cmocka_unit_test(test_water_in_place_draws_as_the_copy),
         cmocka_unit_test(test_specular_skip_matches_the_normalised_normal),
+        cmocka_unit_test(test_moved_fog_is_the_fog_ratio),
         cmocka_unit_test(test_exact_normal_is_the_unit_direction),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

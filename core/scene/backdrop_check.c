@@ -88,13 +88,16 @@ static int palette_valid(const tarn_backdrop *b, const tarn_scene *scene)
     return 1;
 }
 
-/* Each water object's plane, its shift within a word. */
+/* Each water object's plane, its shift within a word and its lit colour within
+ * 255.0 a channel, as the water's products assume. */
 static int planes_valid(const tarn_backdrop *b, const tarn_scene *scene)
 {
     if (!TARN_LINK_STILL_WATER || !b->still_water) return 1;
     if (b->planes == NULL) return 0;
-    for (uint32_t k = 0; k < scene->object_count; k++)
-        if (b->planes[k].uv_shift > 31u) return 0;
+    for (uint32_t k = 0; k < scene->object_count; k++) {
+        const tarn_still_plane *p = &b->planes[k];
+        if (p->uv_shift > 31u || p->lit[0] > 65280u || p->lit[1] > 65280u || p->lit[2] > 65280u) return 0;
+    }
     return 1;
 }
 

@@ -302,6 +302,11 @@ void tarn__water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, c
  * the sharp features `sharp` (TARN_WATER_SHOWS_*: the effects' own, or the pixel's). */
 uint32_t tarn__water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
                           int32_t j);
+/* Steps 3 to 7 over `diff` of water (Q16.16) and background colour `rgb_below`
+ * (0x00RRGGBB), for a pixel with inputs `in` (its lit colour and fresnel term):
+ * the colour, 0x00RRGGBB, rounded as step 11 rounds. */
+uint32_t tarn__water_still_over(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff,
+                               uint32_t rgb_below);
 /* The sharp features that show at a pixel sharing effects `e` (TARN_WATER_SHOWS_*),
  * of those the material has and the build links; for a pixel where one can
  * (tarn__water_sharp_possible). */
@@ -499,6 +504,15 @@ tarn_water_sample tarn__water_refract(const tarn_water_context *w, int32_t i, in
  * channel (Q8.8). */
 uint32_t tarn__water_fog(const tarn_water_context *w, uint32_t diff);
 void tarn__water_absorb(const tarn_water_context *w, uint32_t diff, uint16_t loss[3]);
+/* Step 4 moved: a colour (0xRRGGBB, marks above ignored) of water whose fog saw its
+ * background through some depth of water, seen through to - from more (Q16.16
+ * world units each: two depths of the surface, say, the background's depth less
+ * the one less the other): endless + (colour - endless) * exp2(-density * (to -
+ * from)) a channel, `endless` the colour over water of endless depth (0xRRGGBB). A
+ * refracted sample over still water is read where the fog saw it from another
+ * pixel's surface. Past 16 halvings' worth less water the colour moves as for 16. */
+uint32_t tarn__water_fog_moved(const tarn_water_context *w, uint32_t colour, uint32_t endless, uint32_t from,
+                               uint32_t to);
 /* Step 6's depth colour and step 7's fresnel raise of alpha (Q1.15) (water_surface.c). */
 void tarn__water_depth_colour(const tarn_water_context *w, uint32_t diff, uint32_t out[3]);
 uint32_t tarn__water_fresnel_alpha(const tarn_water_context *w, const tarn_water_input *in, uint32_t alpha);

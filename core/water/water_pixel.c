@@ -25,8 +25,9 @@ static uint32_t surface_alpha(const tarn_water_context *w, const tarn_water_inpu
 /* Steps 4 to 8 gathered into the effects' gain, through, base and lift from the
  * fog keep (Q1.15), the lit surface and its alpha and the specular (Q8.8 each).
  * Every product stays below 2^32: each share is at most 65280 * 32768. */
-static void gather(const tarn_water_context *w, uint32_t diff, uint32_t keep, const uint32_t surface[3],
-                   uint32_t alpha, const uint32_t highlight[3], tarn_water_effects *e)
+static TARN_ALWAYS_INLINE void gather(const tarn_water_context *w, uint32_t diff, uint32_t keep,
+                                      const uint32_t surface[3], uint32_t alpha, const uint32_t highlight[3],
+                                      tarn_water_effects *e)
 {
     const uint32_t through = 32768u - alpha;
     e->through = (uint16_t)through;
@@ -58,6 +59,21 @@ unsigned tarn__water_sharp_at(const tarn_water_context *w, const tarn_water_inpu
     return sharp;
 }
 
+/* Step 4's fog keep (Q1.15, returned) and step 6's surface lit as step 7 lights
+ * it, over `diff` of water (Q16.16) for a pixel with inputs `in`. */
+static TARN_ALWAYS_INLINE uint32_t lit_surface_over(const tarn_water_context *w, const tarn_water_input *in,
+                                                    uint32_t diff, uint32_t lit[3])
+{
+    const uint32_t keep = tarn__water_uses(w, TARN_WATER_FOG) ? tarn__water_fog(w, diff) : 32768u;
+    uint32_t surface[3];
+    if (tarn__water_uses(w, TARN_WATER_DEPTH_COLOUR))
+        tarn__water_depth_colour(w, diff, surface);
+    else
+        for (int c = 0; c < 3; c++) surface[c] = tarn__water_channel_q8(w->water->albedo_rgb, c);
+    lit_surface(in, surface, lit);
+    return keep;
+}
+
 void tarn__water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, const tarn_water_input *in,
                            uint32_t surface_depth, tarn_water_effects *e)
 {
@@ -70,13 +86,8 @@ void tarn__water_effects_at(const tarn_water_context *w, int32_t i, int32_t j, c
     e->offset[0] = (int8_t)(below.x - i); /* within the apron, at most TARN_WATER_APRON_MAX */
     e->offset[1] = (int8_t)(below.y - j);
     const uint32_t diff = below.depth > surface_depth ? below.depth - surface_depth : 0u;
-    const uint32_t keep = tarn__water_uses(w, TARN_WATER_FOG) ? tarn__water_fog(w, diff) : 32768u;
-    uint32_t surface[3], lit[3], highlight[3] = {0, 0, 0};
-    if (tarn__water_uses(w, TARN_WATER_DEPTH_COLOUR))
-        tarn__water_depth_colour(w, diff, surface);
-    else
-        for (int c = 0; c < 3; c++) surface[c] = tarn__water_channel_q8(w->water->albedo_rgb, c);
-    lit_surface(in, surface, lit);
+    uint32_t lit[3], highlight[3] = {0, 0, 0};
+    const uint32_t keep = lit_surface_over(w, in, diff, lit);
     if (tarn__water_uses(w, TARN_WATER_SPECULAR)) (void)tarn__water_specular(w, &n, highlight);
     gather(w, diff, keep, lit, surface_alpha(w, in), highlight, e);
     e->foam_band = tarn__water_uses(w, TARN_WATER_FOAM) ? tarn__water_foam_band(w, diff) : Q16_ONE;
@@ -99,11 +110,11 @@ static uint32_t moved_background(const tarn_water_context *w, const tarn_water_e
     return w->background[tarn__water_background_offset(w, i, j)];
 }
 
-uint32_t tarn__water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
-                          int32_t j)
+/* Steps 4 to 8 of effects `e` over background colour `rgb_below` (0x00RRGGBB),
+ * Q8.8 a channel. */
+static TARN_ALWAYS_INLINE void blend(const tarn_water_context *w, const tarn_water_effects *e, uint32_t rgb_below,
+                                     uint32_t colour[3])
 {
-    const uint32_t rgb_below = moved_background(w, e, i, j);
-    uint32_t colour[3];
     for (int c = 0; c < 3; c++) {
         const uint32_t below = tarn__water_channel_q8(rgb_below, c);
         if (tarn__water_uses(w, TARN_WATER_ABSORPTION)) {
@@ -113,7 +124,27 @@ uint32_t tarn__water_apply(const tarn_water_context *w, const tarn_water_effects
             colour[c] = e->base[c] + ((below * e->gain) >> 15);
         }
     }
+}
+
+uint32_t tarn__water_apply(const tarn_water_context *w, const tarn_water_effects *e, unsigned sharp, int32_t i,
+                          int32_t j)
+{
+    uint32_t colour[3];
+    blend(w, e, moved_background(w, e, i, j), colour);
     return tarn__water_finish(w, sharp, colour);
+}
+
+uint32_t tarn__water_still_over(const tarn_water_context *w, const tarn_water_input *in, uint32_t diff,
+                               uint32_t rgb_below)
+{
+    static const uint32_t dark[3] = {0u, 0u, 0u};
+    uint32_t lit[3];
+    const uint32_t keep = lit_surface_over(w, in, diff, lit);
+    tarn_water_effects e;
+    gather(w, diff, keep, lit, surface_alpha(w, in), dark, &e);
+    uint32_t colour[3];
+    blend(w, &e, rgb_below, colour);
+    return tarn__water_finish(w, 0u, colour);
 }
 
 uint32_t tarn__water_finish(const tarn_water_context *w, unsigned sharp, uint32_t colour[3])

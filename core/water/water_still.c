@@ -63,18 +63,27 @@ typedef struct {
     uint32_t mark;       /* the object's TARN_BACKDROP_STILL_OBJECT bits */
     uint32_t sharp_bits; /* sharp_bits() */
     int specular;        /* the object has a highlight: without, only sharp features move */
-    int refracts;        /* its refracted samples move (an apron to move in) */
     int keeps_depth;     /* tarn__still_keeps_depth */
     int32_t x0;          /* the tile's first column */
     int32_t block_row;   /* the top row of the blocks of the row walked */
+    tarn_water_input surface; /* what the still terms read of a pixel: the plane's lit
+                                 colour, and no fresnel term (the backdrop keeps none) */
+    uint32_t endless;    /* the still colour over water of endless depth, 0xRRGGBB */
 } still_walk;
+
+/* What the backdrop keeps at water pixel (i, j) as Q16.16 (tarn_backdrop's depth:
+ * Q2.14), 0xFFFF << TARN_BACKDROP_KEPT_SHIFT or more where it keeps none. */
+static uint32_t kept_q16(const still_walk *walk, int32_t i, int32_t j)
+{
+    return tarn__backdrop_kept(walk->backdrop, i, j) << TARN_BACKDROP_KEPT_SHIFT;
+}
 
 /* Step 9's place in the foam band at pixel (i, j), from what the backdrop keeps
  * where foam can show; beyond the band (Q16_ONE) elsewhere. */
 static uint32_t foam_band(const tarn_water_context *w, const still_walk *walk, uint32_t still, int32_t i, int32_t j)
 {
     if (!tarn__water_uses(w, TARN_WATER_FOAM) || (still & TARN_BACKDROP_STILL_FOAM) == 0u) return Q16_ONE;
-    const uint32_t kept = tarn__backdrop_kept(walk->backdrop, i, j);
+    const uint32_t kept = kept_q16(walk, i, j);
     return walk->keeps_depth ? tarn__water_foam_band(w, kept) : kept;
 }
 
@@ -85,66 +94,76 @@ static uint32_t foam_band(const tarn_water_context *w, const still_walk *walk, u
 #define DEEP UINT32_MAX
 static uint32_t kept_depth(const tarn_water_context *w, const still_walk *walk, int32_t x, int32_t y)
 {
-    const uint32_t kept = tarn__backdrop_kept(walk->backdrop, x, y);
-    if (kept >= 0xFFFFu) return DEEP;
+    const uint32_t kept = kept_q16(walk, x, y);
+    if (kept >= 0xFFFFu << TARN_BACKDROP_KEPT_SHIFT) return DEEP;
     return walk->keeps_depth ? kept : tarn__water_mul_q16(kept, (uint32_t)w->water->foam_distance);
 }
 
-/* Where a pixel's refracted sample reads the still picture: its colour there,
- * marks and all, and step 9's place in the foam band over the depth of water the
- * sample lies under, seen from the pixel. */
+/* Where a pixel's refracted sample reads the still picture: its colour there as
+ * this pixel's still terms would have it, and step 9's place in the foam band over
+ * the depth of water the sample lies under, seen from the pixel. */
 typedef struct {
     uint32_t colour;
     uint32_t band;
 } still_sample;
 
-/* A sample whose opaque surface lies at linear depth `opaque` (Q16.16) for water
- * pixel `in`: step 3's diff is db there less ds here. Where that is below 0 the
- * surface lies in front of this pixel's water, and the sample is not taken (0
- * returned); else its place in the foam band is found over that depth. */
-static int sample_behind(const tarn_water_context *w, uint32_t opaque, const tarn_water_input *in, still_sample *s)
+/* A sample whose opaque surface lies at linear depth `opaque` (Q16.16) under a
+ * water pixel whose surface lies at `surface`: step 3's diff is db there less ds
+ * here. Where that is below 0 the surface lies in front of this pixel's water, and
+ * the sample is not taken (0 returned); else its place in the foam band is found
+ * over that depth. */
+static int sample_behind(const tarn_water_context *w, uint32_t opaque, uint32_t surface, still_sample *s)
 {
-    const uint32_t surface = tarn__water_depth_of(w, in->inv_depth);
     if (opaque < surface) return 0;
     if (tarn__water_uses(w, TARN_WATER_FOAM)) s->band = tarn__water_foam_band(w, opaque - surface);
     return 1;
 }
 
-/* The sample that lands at water pixel (x, y) of the walk's object for water pixel
- * `in`: its opaque surface lies its own depth of water below its surface. Where the
- * backdrop keeps no depth of water there, it is deep: behind, and beyond any foam
- * band. */
+/* The sample that lands at water pixel (x, y) of the walk's object, still colour
+ * `still`, for a water pixel whose surface lies at `surface`: its opaque surface
+ * lies its own depth of water below its surface. Where the backdrop keeps no depth
+ * of water there, it is deep: behind, and beyond any foam band. Its colour's fog
+ * saw it from its own surface, and is moved to this one's. */
 static int moved_sample(const tarn_water_context *w, const still_walk *walk, int32_t x, int32_t y,
-                        const tarn_water_input *in, still_sample *s)
+                        uint32_t still, uint32_t surface, still_sample *s)
 {
     const uint32_t below = kept_depth(w, walk, x, y);
+    const int fog = tarn__water_uses(w, TARN_WATER_FOG);
     s->band = Q16_ONE;
-    if (below == DEEP) return 1;
-    return sample_behind(w, tarn__water_depth_of(w, plane_inv_depth(walk->plane, x, y)) + below, in, s);
+    s->colour = still;
+    if (below == DEEP && !fog) return 1;
+    const uint32_t landing = tarn__water_depth_of(w, plane_inv_depth(walk->plane, x, y));
+    if (below != DEEP && !sample_behind(w, landing + below, surface, s)) return 0;
+    if (fog) s->colour = tarn__water_fog_moved(w, still, walk->endless, surface, landing);
+    return 1;
 }
 
 /* The sample that lands at pixel (x, y) where no water draws (the bank behind the
- * water, an object standing in it): taken, its colour the opaque one, where the
- * backdrop keeps its near/d there (a tarn_depth16 code) and it lies behind this
- * pixel's water. */
+ * water, an object standing in it), opaque colour `opaque`: taken where the
+ * backdrop keeps its near/d there (a tarn_depth16 code) and it lies behind the
+ * water at `surface`, its colour this pixel's still terms over it. */
 static int beside_sample(const tarn_water_context *w, const still_walk *walk, int32_t x, int32_t y,
-                         const tarn_water_input *in, still_sample *s)
+                         uint32_t opaque, uint32_t surface, still_sample *s)
 {
     const uint32_t code = tarn__backdrop_kept(walk->backdrop, x, y);
     s->band = Q16_ONE;
     if (code >= 0xFFFFu) return 0;
-    return sample_behind(w, tarn__water_depth_of(w, tarn_depth16_decode((uint16_t)code)), in, s);
+    const uint32_t below = tarn__water_depth_of(w, tarn_depth16_decode((uint16_t)code));
+    if (!sample_behind(w, below, surface, s)) return 0;
+    s->colour = tarn__water_still_over(w, &walk->surface, below - surface, opaque);
+    return 1;
 }
 
 /* Step 2 over still water: the sample of water pixel (i, j), with inputs `in` and
- * normal `n`: the still picture where its refracted sample lands, when the opaque
- * surface there lies behind this pixel's water and the walk's object's water draws
- * there or none does; else the pixel's own (`still`), as the scene drawn whole
- * keeps a sample that lands in front. The still terms read on the water are that
- * pixel's, found over its own depth of water where the scene drawn whole finds them
- * over the sample's depth seen from here: they change slowly across the water.
- * Beside the water the picture holds none: the opaque colour is taken as it is,
- * where the scene drawn whole puts this pixel's still terms over it. */
+ * normal `n`: where its refracted sample lands, when the opaque surface there lies
+ * behind this pixel's water and the walk's object's water draws there or none
+ * does; else the pixel's own (`still`), as the scene drawn whole keeps a sample
+ * that lands in front. On the water the picture holds that pixel's still terms,
+ * found over its own depth of water: the fog's share is moved to the depth seen
+ * from here, and the rest (the surface colour, absorption) kept, as they change
+ * slowly across the water. Beside it the picture holds the opaque colour, and this
+ * pixel's still terms are found over it. Neither takes the fresnel raise of
+ * alpha, which the backdrop does not keep. */
 static still_sample refracted_sample(const tarn_water_context *w, const still_walk *walk, const tarn_water_input *in,
                                      tarn_water_normal *n, uint32_t still, int32_t i, int32_t j)
 {
@@ -154,10 +173,11 @@ static still_sample refracted_sample(const tarn_water_context *w, const still_wa
     tarn__water_refracted_pixel(w, i, j, n, reach, target);
     still_sample moved = {0u, Q16_ONE};
     if (target[0] != i || target[1] != j) {
-        moved.colour = tarn__backdrop_colour_at(walk->backdrop, w->width, target[0], target[1]);
-        const uint32_t water = moved.colour & TARN_BACKDROP_STILL_OBJECT;
-        if (water == walk->mark && moved_sample(w, walk, target[0], target[1], in, &moved)) return moved;
-        if (water == 0u && beside_sample(w, walk, target[0], target[1], in, &moved)) return moved;
+        const uint32_t there = tarn__backdrop_colour_at(walk->backdrop, w->width, target[0], target[1]);
+        const uint32_t water = there & TARN_BACKDROP_STILL_OBJECT;
+        const uint32_t surface = tarn__water_depth_of(w, in->inv_depth);
+        if (water == walk->mark && moved_sample(w, walk, target[0], target[1], there, surface, &moved)) return moved;
+        if (water == 0u && beside_sample(w, walk, target[0], target[1], there, surface, &moved)) return moved;
     }
     const still_sample own = {still, foam_band(w, walk, still, i, j)};
     return own;
@@ -232,7 +252,7 @@ static uint32_t water_pixel(tarn_water_context *w, const still_walk *walk, uint3
 {
     tarn_still_block *block = block_at(w, i, walk->x0);
     const int shared = block != NULL && block->walk == walk->number && block->row == walk->block_row;
-    if (walk->refracts) return refracting_pixel(w, walk, block, shared, still, i, j);
+    if (tarn__water_refracts(w)) return refracting_pixel(w, walk, block, shared, still, i, j);
     const int sharp = (still & walk->sharp_bits) != 0u;
     if (shared && !sharp) return block->lit ? over_still(w, still, block->highlight, 0u) : still & 0xFFFFFFu;
     if (!walk->specular && !sharp) return still & 0xFFFFFFu; /* nothing moves here */
@@ -248,6 +268,19 @@ static uint32_t water_pixel(tarn_water_context *w, const still_walk *walk, uint3
     return over_still(w, still, highlight, sharp ? sharp_at(w, walk, &in, &n, still, i, j) : 0u);
 }
 
+/* What the still terms read of a pixel of plane `p`: its lit colour, no fresnel
+ * term. */
+static tarn_water_input surface_input(const tarn_still_plane *p)
+{
+    tarn_water_input in = {0};
+    for (int c = 0; c < 3; c++) in.lit[c] = p->lit[c];
+    return in;
+}
+
+/* A depth of water past every exp2's reach and every depth colour's scale: the fog
+ * keeps nothing of the background there. */
+#define ENDLESS UINT32_MAX
+
 /* The first pixel of [from, end) that carries `mark`, or `end`: the walk's own
  * loop, kept apart from the water pixel's work. */
 static uint32_t *next_marked(uint32_t *from, const uint32_t *end, uint32_t mark)
@@ -262,9 +295,11 @@ void tarn__water_still_tile(tarn_water_context *w, const tarn_backdrop *backdrop
     const tarn_pixel_rect r = tile->rect;
     const uint32_t mark = (object + 1u) << TARN_BACKDROP_STILL_SHIFT;
     const int refracts = tarn__water_refracts(w);
-    still_walk walk = {backdrop, &backdrop->planes[object], ++w->still_walks, mark, sharp_bits(w),
-                       tarn__water_uses(w, TARN_WATER_SPECULAR), refracts,
-                       tarn__still_keeps_depth(w->water, refracts), r.x0, 0};
+    const tarn_still_plane *plane = &backdrop->planes[object];
+    still_walk walk = {backdrop, plane, ++w->still_walks, mark, sharp_bits(w), tarn__water_uses(w, TARN_WATER_SPECULAR),
+                       tarn__still_keeps_depth(w->water, refracts), r.x0, 0, surface_input(plane), 0u};
+    if (refracts && tarn__water_uses(w, TARN_WATER_FOG))
+        walk.endless = tarn__water_still_over(w, &walk.surface, ENDLESS, 0u);
     for (int32_t j = r.y0; j < r.y1; j++) {
         walk.block_row = j >> w->block_shift << w->block_shift;
         uint32_t *first = &tile->colour[(j - tile->origin_y) * tile->stride + (r.x0 - tile->origin_x)];

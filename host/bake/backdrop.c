@@ -93,12 +93,13 @@ static int opaque_image_make(const tarn_scene *scene, const tarn_frame_config *c
 
 /* The backdrop of `kind`, and where the frame's water draws (NULL under the
  * underwater view). */
-static int image_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_kind kind,
+static int image_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_request request,
                       tarn_backdrop_image *b, uint8_t **water, tarn_error *err)
 {
     *water = NULL;
-    const int failed = kind == TARN_BACKDROP_STILL ? tarn_still_image_make(scene, config, b, water, err)
-                                                   : opaque_image_make(scene, config, b, water, err);
+    const int failed = request.kind == TARN_BACKDROP_STILL
+                           ? tarn_still_image_make(scene, config, request.landing_depth_q16, b, water, err)
+                           : opaque_image_make(scene, config, b, water, err);
     if (failed) {
         image_free(b);
         free(*water);
@@ -107,12 +108,18 @@ static int image_make(const tarn_scene *scene, const tarn_frame_config *config, 
     return failed ? -1 : 0;
 }
 
-int tarn_backdrop_scene_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_kind kind,
+tarn_backdrop_request tarn_backdrop_of(tarn_backdrop_kind kind)
+{
+    const tarn_backdrop_request request = {kind, TARN_LANDING_DEPTH_MAX_Q16};
+    return request;
+}
+
+int tarn_backdrop_scene_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_request request,
                              int keep_positions, tarn_backdrop_scene *out, tarn_error *err)
 {
     memset(out, 0, sizeof *out);
     uint8_t *drawn = NULL;
-    if (image_make(scene, config, kind, &out->image, &drawn, err) != 0) return -1;
+    if (image_make(scene, config, request, &out->image, &drawn, err) != 0) return -1;
     out->water_objects = malloc((scene->object_count > 0 ? scene->object_count : 1u) * sizeof *out->water_objects);
     int failed = out->water_objects == NULL ? tarn_fail(err, "out of memory making the backdrop's scene") : 0;
     tarn_scene water;

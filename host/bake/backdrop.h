@@ -39,6 +39,23 @@ typedef enum {
     TARN_BACKDROP_STILL   /* and the water's still terms: --backdrop still */
 } tarn_backdrop_kind;
 
+/* The deepest water a still backdrop keeps under a pixel where a refracted sample
+ * may land (--landing-depth): Q16.16 world units. */
+#define TARN_LANDING_DEPTH_MIN_Q16 (1u << 16)
+#define TARN_LANDING_DEPTH_MAX_Q16 (4u << 16)
+
+/* What is drawn once: the kind, and for still water how deep it keeps the water
+ * under a pixel where a refracted sample may land within the foam band of the
+ * water it moved from (tarn_scene.h's tarn_backdrop depth: under one unit it
+ * keeps it wherever the frame refracts; deeper only there, at 2 bytes a pixel). */
+typedef struct {
+    tarn_backdrop_kind kind;
+    uint32_t landing_depth_q16; /* TARN_LANDING_DEPTH_MIN_Q16..MAX_Q16 */
+} tarn_backdrop_request;
+
+/* A request of `kind` with the deepest landing depth. */
+tarn_backdrop_request tarn_backdrop_of(tarn_backdrop_kind kind);
+
 /* The scene's water objects over the backdrop of its other objects, without the
  * triangles that draw no pixel of the frame (water_cull.h). */
 typedef struct {
@@ -49,14 +66,14 @@ typedef struct {
                                 holds the backdrop */
 } tarn_backdrop_scene;
 
-/* The backdrop of `kind` (OPAQUE or STILL) of `scene` (without a static view of its
+/* The backdrop `request` asks for (OPAQUE or STILL) of `scene` (without a static view of its
  * own) for `config`'s frame and quality, and its water objects with static vertices
  * over it (static_view.h; `keep_positions` as there). 0, or -1 with `err` set and
  * `out` empty: out of memory, a config the core refuses, more than
  * TARN_BACKDROP_COLOURS_MAX colours, or still water where it would not apply (an
  * underwater view, refraction with an apron, more water objects than
  * TARN_BACKDROP_STILL_OBJECTS_MAX). */
-int tarn_backdrop_scene_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_kind kind,
+int tarn_backdrop_scene_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_request request,
                              int keep_positions, tarn_backdrop_scene *out, tarn_error *err);
 void tarn_backdrop_scene_free(tarn_backdrop_scene *s);
 

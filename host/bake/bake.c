@@ -176,7 +176,8 @@ STRUCT_TYPE(T_BIN, tarn_cluster_bin, ONE_LINE,
             FIELD(tarn_cluster_bin, x1, T_U8), FIELD(tarn_cluster_bin, y1, T_U8));
 STRUCT_TYPE(T_STILL_PLANE, tarn_still_plane, ONE_LINE,
             FIELD(tarn_still_plane, depth, T_I32_TRIPLE), FIELD(tarn_still_plane, u, T_I32_TRIPLE),
-            FIELD(tarn_still_plane, v, T_I32_TRIPLE), FIELD(tarn_still_plane, uv_shift, T_U8));
+            FIELD(tarn_still_plane, v, T_I32_TRIPLE), FIELD(tarn_still_plane, uv_shift, T_U8),
+            FIELD(tarn_still_plane, lit, T_U16_TRIPLE));
 STRUCT_TYPE(T_BACKDROP_SPAN, tarn_backdrop_span, ONE_LINE,
             FIELD(tarn_backdrop_span, x0, T_U16), FIELD(tarn_backdrop_span, x1, T_U16),
             FIELD(tarn_backdrop_span, first, T_U32));
@@ -1333,16 +1334,15 @@ typedef struct {
     int backdrop;
 } static_scene;
 
-static int static_scene_make(const tarn_loaded_scene *scene, const tarn_frame_config *config, int backdrop,
-                             static_scene *out, tarn_error *err)
+static int static_scene_make(const tarn_loaded_scene *scene, const tarn_frame_config *config,
+                             tarn_backdrop_request backdrop, static_scene *out, tarn_error *err)
 {
-    out->backdrop = backdrop;
-    if (backdrop &&
-        tarn_backdrop_scene_make(&scene->scene, config, (tarn_backdrop_kind)backdrop, 0, &out->over_backdrop, err) != 0)
+    out->backdrop = backdrop.kind != TARN_BACKDROP_NONE;
+    if (out->backdrop && tarn_backdrop_scene_make(&scene->scene, config, backdrop, 0, &out->over_backdrop, err) != 0)
         return -1;
-    if (!backdrop && tarn_static_scene_make(&scene->scene, config, 0, &out->with_view, err) != 0) return -1;
+    if (!out->backdrop && tarn_static_scene_make(&scene->scene, config, 0, &out->with_view, err) != 0) return -1;
     out->loaded = *scene;
-    out->loaded.scene = backdrop ? out->over_backdrop.water.scene : out->with_view.scene;
+    out->loaded.scene = out->backdrop ? out->over_backdrop.water.scene : out->with_view.scene;
     return 0;
 }
 
@@ -1397,7 +1397,7 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
     static_scene with_static;
     /* a static view freezes the camera, the light and every object where they stand */
     const int freeze = o->static_view && !tarn_scene_moves(&scene->scene);
-    if (o->backdrop && tarn_scene_moves(&scene->scene))
+    if (o->backdrop.kind != TARN_BACKDROP_NONE && tarn_scene_moves(&scene->scene))
         return tarn_fail(err, "%s: --backdrop: the scene moves (%s), and a backdrop is one frame's picture; use "
                          "--backdrop off", o->scene_path, motion_summary(&scene->scene));
     if (freeze) {
@@ -1405,7 +1405,7 @@ int tarn_bake(const tarn_loaded_scene *scene, const tarn_bake_options *o, tarn_b
             return tarn_fail_in(err, o->scene_path);
         plan.scene = &with_static.loaded;
         plan.static_bin_count = static_bin_count(&with_static);
-        plan.backdrop_colour_words = o->backdrop ? with_static.over_backdrop.image.colour_words : 0u;
+        plan.backdrop_colour_words = with_static.backdrop ? with_static.over_backdrop.image.colour_words : 0u;
     }
     tarn_bake_points points = {NULL, NULL, NULL, 0};
     plan.points = &points;

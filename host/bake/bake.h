@@ -27,6 +27,7 @@
 
 #include <stddef.h>
 #include "error.h"
+#include "backdrop.h"
 #include "scene_load.h"
 #include "tarn/tarn_render.h"
 
@@ -41,10 +42,10 @@ typedef struct {
     int static_view;         /* 1: every object gets static vertices for the scene's camera
                                 and the config's frame, and the meshes lose the positions,
                                 normals and colours they replace (static_view.h) */
-    int backdrop;            /* a tarn_backdrop_kind; with static_view, what is drawn once
-                                for the config into the static view's backdrop
-                                (backdrop.h): the opaque objects, or the still water
-                                too; only the water objects are then baked */
+    tarn_backdrop_request backdrop; /* with static_view, what is drawn once for the
+                                config into the static view's backdrop (backdrop.h):
+                                nothing, the opaque objects, or the still water too;
+                                only the water objects are then baked */
     tarn_frame_config config; /* frame size and quality; its time_ms is baked as 0 */
     int argc;                /* the command line, shown in the header comment */
     char *const *argv;

@@ -70,6 +70,26 @@ static const tarn_object *water_object(const tarn_scene *scene, uint32_t mark)
     return NULL;
 }
 
+/* The lit colour of water object `o` (Q8.8 a channel), as the core lights its
+ * vertices: their mean, flat water being lit alike where its normals and colours
+ * are. */
+static void water_lit(const tarn_scene *scene, const tarn_frame_config *config, const tarn_object *o, uint16_t lit[3])
+{
+    tarn_view view;
+    tarn__view_setup(scene, config, &view);
+    view.static_vertices = 0; /* light the vertices, whether or not static ones apply */
+    tarn_object_xform xform;
+    tarn__object_xform_setup(&view, o, &xform);
+    uint64_t sum[3] = {0, 0, 0};
+    for (uint32_t v = 0; v < o->mesh->vertex_count; v++) {
+        tarn_view_vertex vertex;
+        tarn__vertex_shade(&view, &xform, o->mesh, (uint16_t)v, &vertex);
+        for (int c = 0; c < 3; c++) sum[c] += vertex.lit[c];
+    }
+    const uint64_t count = o->mesh->vertex_count > 0u ? o->mesh->vertex_count : 1u;
+    for (int c = 0; c < 3; c++) lit[c] = (uint16_t)((sum[c] + count / 2u) / count);
+}
+
 /* What keeps still water from applying, refused before anything is drawn; and
  * the water objects' planes. */
 static int still_water_planes(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_image *b,
@@ -86,7 +106,10 @@ static int still_water_planes(const tarn_scene *scene, const tarn_frame_config *
     b->planes = calloc(water_objects > 0 ? water_objects : 1u, sizeof *b->planes);
     if (b->planes == NULL) return tarn_fail(err, "backdrop: out of memory finding the water's planes");
     b->backdrop.planes = b->planes;
-    return tarn_still_planes_make(scene, config, b->planes, err);
+    if (tarn_still_planes_make(scene, config, b->planes, err) != 0) return -1;
+    for (uint32_t mark = 1; mark <= water_objects; mark++)
+        water_lit(scene, config, water_object(scene, mark), b->planes[mark - 1u].lit);
+    return 0;
 }
 
 /* Marks each water pixel of `still` with its water object's number (1 + its index
@@ -142,21 +165,30 @@ static uint32_t depth_q30(const tarn_drawn_frame *f, size_t k)
 }
 
 /* What the backdrop keeps at a water pixel over `diff` of water (Q16.16 world
- * units), for its object's context (tarn__still_keeps_depth): the depth of water
- * below 0xFFFF, which marks the pixels between kept ones, or the place in the foam
- * band below 1; 65536 where it keeps nothing. */
-static uint32_t kept_value(const tarn_water_context *context, int refracts, uint32_t diff)
+ * units), for its object's context (tarn__still_keeps_depth), as Q16.16: the depth
+ * of water, or the place in the foam band. */
+static uint32_t kept_q16(const tarn_water_context *context, int refracts, uint32_t diff)
 {
-    const int foam = tarn__water_uses(context, TARN_WATER_FOAM);
-    if (!foam && !refracts) return 65536u;
-    if (tarn__still_keeps_depth(context->water, refracts)) return diff < 0xFFFFu ? diff : 65536u;
-    return tarn__water_foam_band(context, diff);
+    return tarn__still_keeps_depth(context->water, refracts) ? diff : tarn__water_foam_band(context, diff);
+}
+
+/* A Q16.16 value kept as Q2.14 (TARN_BACKDROP_KEPT_SHIFT), rounded; 0xFFFF, which
+ * marks the pixels between kept ones, where it holds none so large. */
+static uint16_t kept_q2_14(uint32_t q16)
+{
+    const uint32_t half = 1u << (TARN_BACKDROP_KEPT_SHIFT - 1u);
+    const uint32_t v = q16 < UINT32_MAX - half ? (q16 + half) >> TARN_BACKDROP_KEPT_SHIFT : 0xFFFFu;
+    return (uint16_t)(v < 0xFFFFu ? v : 0xFFFFu);
 }
 
 /* Where a water pixel's refracted sample may land: within `radius` pixels (0 where
- * its water does not refract), behind `surface_q30`, its surface's near/d. */
+ * its water does not refract), behind `surface_q30`, its surface's near/d; and what
+ * decides whether a sample landing on water lies within its foam band: its
+ * surface's linear depth and its foam band's depth (0 without foam), and, as a
+ * pixel landed on, its opaque surface's linear depth (Q16.16 each). */
 typedef struct {
     uint32_t surface_q30;
+    uint32_t surface, foam_distance, opaque;
     uint8_t radius;
 } refracting_pixel;
 
@@ -199,17 +231,55 @@ static int find_kept_values(const tarn_scene *scene, const tarn_frame_config *co
         const uint32_t below = tarn__water_linear_depth(depth_q30(opaque, k), &context.linear);
         const uint32_t at = tarn__water_linear_depth(depth_q30(&surface, k), &context.linear);
         const uint32_t diff = below > at ? below - at : 0u;
-        refracting[k].surface_q30 = depth_q30(&surface, k);
-        if (refracts) refracting[k].radius = refraction_radius(&context, diff, apron);
-        const uint32_t value = kept_value(&context, refracts, diff);
-        if (value >= 65536u) continue;
-        values[k] = (uint16_t)value;
+        const int foam = tarn__water_uses(&context, TARN_WATER_FOAM);
+        const refracting_pixel pixel = {depth_q30(&surface, k), at,
+                                        foam ? (uint32_t)object->material->water->foam_distance : 0u, below,
+                                        refracts ? refraction_radius(&context, diff, apron) : 0u};
+        refracting[k] = pixel;
+        if (!foam && !refracts) continue;
+        const uint32_t value = kept_q16(&context, refracts, diff);
+        values[k] = kept_q2_14(value);
+        if (value >= 65536u) continue; /* kept only where a sample lands (keep_landings) */
         kept[k] = 1;
         if (tarn__water_uses(&context, TARN_WATER_FOAM) && tarn__water_foam_band(&context, diff) < 65536u)
             still->rgb[k] |= TARN_BACKDROP_STILL_FOAM;
     }
     tarn_drawn_free(&surface);
     return 0;
+}
+
+/* The water pixels within `from`'s radius of water pixel (i, j) whose value the
+ * backdrop can hold, under water less than `landing_depth_q16` deep, and a sample
+ * from there would find within its foam band: their opaque surface lies less than
+ * the band's depth below its surface. */
+static void keep_landings_around(const tarn_frame_config *config, uint32_t landing_depth_q16, const uint16_t *values,
+                                 const refracting_pixel *refracting, uint8_t *kept, int32_t i, int32_t j)
+{
+    const refracting_pixel *from = &refracting[(size_t)j * config->width + (size_t)i];
+    const int32_t r = from->radius;
+    const uint64_t band_end = (uint64_t)from->surface + from->foam_distance;
+    for (int32_t y = j - r < 0 ? 0 : j - r; y <= j + r && y < config->height; y++)
+        for (int32_t x = i - r < 0 ? 0 : i - r; x <= i + r && x < config->width; x++) {
+            const size_t k = (size_t)y * (size_t)config->width + (size_t)x;
+            const refracting_pixel *at = &refracting[k];
+            if (!kept[k] && values[k] < 0xFFFFu && at->opaque < band_end && at->opaque - at->surface < landing_depth_q16)
+                kept[k] = 1;
+        }
+}
+
+/* On the water: the pixels where a refracted sample may land within the foam band
+ * of the water it moved from keep their depth of water (or place in the band) down
+ * to `landing_depth_q16`, though it is a unit or more: seen from a farther surface
+ * a deep pixel's bed may lie within the band. */
+static void keep_landings(const tarn_frame_config *config, uint32_t landing_depth_q16, const uint16_t *values,
+                          const refracting_pixel *refracting, uint8_t *kept)
+{
+    for (int32_t j = 0; j < config->height; j++)
+        for (int32_t i = 0; i < config->width; i++) {
+            const refracting_pixel *from = &refracting[(size_t)j * config->width + (size_t)i];
+            if (from->radius > 0u && from->foam_distance > 0u)
+                keep_landings_around(config, landing_depth_q16, values, refracting, kept, i, j);
+        }
 }
 
 /* What keeping the depth beside the water reads and writes. */
@@ -270,8 +340,8 @@ static int draw_still_frames(const tarn_scene *scene, const tarn_frame_config *c
 }
 
 /* The still-water backdrop, and where the frame's water draws. */
-int tarn_still_image_make(const tarn_scene *scene, const tarn_frame_config *config, tarn_backdrop_image *b,
-                            uint8_t **water, tarn_error *err)
+int tarn_still_image_make(const tarn_scene *scene, const tarn_frame_config *config, uint32_t landing_depth_q16,
+                          tarn_backdrop_image *b, uint8_t **water, tarn_error *err)
 {
     if (still_water_planes(scene, config, b, err) != 0) return -1;
     tarn_backdrop_set_quality(&b->backdrop, &config->quality, 1);
@@ -287,7 +357,10 @@ int tarn_still_image_make(const tarn_scene *scene, const tarn_frame_config *conf
         ? tarn_fail(err, "backdrop: out of memory drawing the still water")
         : draw_still_frames(scene, config, &opaque, &still, *water, err) ||
               find_kept_values(scene, config, &opaque, &still, *water, values, kept, refracting, err);
-    if (!failed) keep_depth_beside_water(config, &opaque, *water, refracting, values, kept);
+    if (!failed) {
+        keep_landings(config, landing_depth_q16, values, refracting, kept);
+        keep_depth_beside_water(config, &opaque, *water, refracting, values, kept);
+    }
     failed = failed || tarn_backdrop_index_colours(still.rgb, pixels, b, err) ||
              tarn_backdrop_keep_depth(&kept_frame, kept, config->height, b, err);
     tarn_drawn_free(&opaque);

@@ -54,13 +54,17 @@ static const char backdrop_usage[] =
     "               into a palette image the water draws over; the image is the same. still: the\n"
     "               water's still terms drawn into it too, and only its moving ones each frame;\n"
     "               each channel within 1 of the scene drawn whole, but for the highlights that\n"
-    "               water blocks share; its texture coordinates are the water's plane's\n"
-    "               (--water-uv plane, which still sets)\n";
+    "               water blocks share and refracted samples (docs/bake.md); its texture\n"
+    "               coordinates are the water's plane's (--water-uv plane, which still sets)\n"
+    "  --landing-depth U  still: how deep (world units 1..4, 4 by default) the water kept is\n"
+    "               under a pixel where a refracted sample may land within the foam band of the\n"
+    "               water it moved from; shallower keeps fewer pixels (2 bytes each), and a\n"
+    "               sample landing on deeper water shows no foam\n";
 
 static const char render_usage[] =
     "usage: tarn render SCENE -o OUT.png|OUT.gif [--size WxH] [--time MS] [--frames N [--fps F]]\n"
     "                   [--camera X,Y,Z:TX,TY,TZ[:FOV]] [--reference [--snapped]]\n"
-    "                   [--backdrop on|off|still] [--rgb565] [--quiet] [QUALITY]\n"
+    "                   [--backdrop on|off|still [--landing-depth U]] [--rgb565] [--quiet] [QUALITY]\n"
     "  -o OUT.png   the image; - writes it to standard output. A regular file is replaced only\n"
     "               once complete, a link's target is written, a device or FIFO written through\n"
     "  -o OUT.gif   one animated GIF of the frames (one palette for all; F at most 50)\n"
@@ -76,7 +80,7 @@ static const char render_usage[] =
 
 static const char compare_usage[] =
     "usage: tarn compare SCENE [--size WxH] [--time MS] [--camera X,Y,Z:TX,TY,TZ[:FOV]]\n"
-    "                    [--diff HEAT.png] [--backdrop on|off|still] [QUALITY]\n"
+    "                    [--diff HEAT.png] [--backdrop on|off|still [--landing-depth U]] [QUALITY]\n"
     "  prints: compare scene= size= time= psnr= maxerr= over2= over8= shading_psnr= shading_over2=\n"
     "  panel_psnr= coverage= (docs/sweep.md says what each isolates)\n"
     "  --diff HEAT.png  the whole error as a heat map, magenta where the surface differs\n";
@@ -89,7 +93,7 @@ static const char memory_usage[] =
 
 static const char bake_usage[] =
     "usage: tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]\n"
-    "                 [--static-view on|off] [--backdrop on|off|still] [--quiet] [QUALITY]\n"
+    "                 [--static-view on|off] [--backdrop on|off|still [--landing-depth U]] [--quiet] [QUALITY]\n"
     "  -o OUT.c     the scene as const C data; OUT.h and OUT_link.h are written beside it\n"
     "  --name NAME  the C name of the scene (OUT's base name by default)\n"
     "  --points FILE  more qualities the firmware may switch to, one line of knobs each\n"

@@ -67,6 +67,9 @@ static int parse_valued_option(const char *name, const char *value, tarn_cli_opt
         return tarn_parse_choice(name, value, TARN_CHOICES(static_views), &o->no_static_view, err);
     } else if (strcmp(name, "--backdrop") == 0) {
         return tarn_parse_choice(name, value, TARN_CHOICES(backdrops), &o->backdrop, err);
+    } else if (strcmp(name, "--landing-depth") == 0) {
+        return tarn_parse_units(name, value, TARN_LANDING_DEPTH_MIN_Q16, TARN_LANDING_DEPTH_MAX_Q16,
+                                &o->landing_depth_q16, err);
     } else if (strcmp(name, "--name") == 0) {
         o->name = value; /* checked by bake, so that "" gets the one-line error "3d" gets */
         return value ? 0 : tarn_fail(err, "--name: expected a C identifier");
@@ -154,6 +157,8 @@ static int check_combination(tarn_cli_options *o, tarn_error *err)
     if (o->backdrop && (o->reference || o->points_path || o->no_static_view))
         return tarn_fail(err, "--backdrop: draws one quality of the core with static vertices; "
                          "it excludes %s", o->reference ? "--reference" : o->points_path ? "--points" : "--static-view off");
+    if (o->landing_depth_q16 != 0u && o->backdrop != TARN_BACKDROP_STILL)
+        return tarn_fail(err, "--landing-depth applies to --backdrop still");
     if (o->snapped && (o->command != TARN_CMD_RENDER || !o->reference))
         return tarn_fail(err, "--snapped applies to render --reference");
     return check_sequence(o, err);
@@ -191,6 +196,13 @@ int tarn_cli_parse(int argc, char **argv, tarn_cli_options *o, tarn_error *err)
     if (tarn_parse_arguments(argc, argv, &o->scene_path, read_option, o, err) != 0) return -1;
     if (still_water_coordinates(o, err) != 0) return -1;
     return check_combination(o, err);
+}
+
+tarn_backdrop_request tarn_cli_backdrop(const tarn_cli_options *o)
+{
+    tarn_backdrop_request request = tarn_backdrop_of((tarn_backdrop_kind)o->backdrop);
+    if (o->landing_depth_q16 != 0u) request.landing_depth_q16 = o->landing_depth_q16;
+    return request;
 }
 
 int tarn_cli_writes_gif(const tarn_cli_options *o)

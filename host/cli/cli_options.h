@@ -2,14 +2,14 @@
  *
  *   tarn render SCENE -o OUT.png|OUT.gif [--size WxH] [--time MS] [--frames N [--fps F]]
  *               [--camera X,Y,Z:TX,TY,TZ[:FOV]] [--reference [--snapped]]
- *               [--backdrop on|off|still] [--rgb565] [--quiet] [QUALITY]
+ *               [--backdrop on|off|still [--landing-depth U]] [--rgb565] [--quiet] [QUALITY]
  *   tarn compare SCENE [--size WxH] [--time MS] [--camera ...] [--diff HEAT.png]
- *                [--backdrop on|off|still] [QUALITY]   (the core, through a backdrop with
+ *                [--backdrop on|off|still [--landing-depth U]] [QUALITY]   (the core, through a backdrop with
  *                                              --backdrop, on the yardstick: yardstick.h)
  *   tarn accuracy --math
  *   tarn memory SCENE [--size WxH] [QUALITY]   (the working memory a frame needs)
  *   tarn bake SCENE -o OUT.c [--name NAME] [--size WxH] [--points FILE]
- *             [--static-view on|off] [--backdrop on|off|still] [--quiet] [QUALITY]
+ *             [--static-view on|off] [--backdrop on|off|still [--landing-depth U]] [--quiet] [QUALITY]
  *                                              (the scene as const C data: host/bake/bake.h)
  * QUALITY knobs (defaults from tarn_quality_default()):
  *   --tile N (8..64)  --subpixel N (1..8)  --perspective affine|pixel|span:N
@@ -23,6 +23,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "backdrop.h"
 #include "camera_override.h"
 #include "error.h"
 #include "tarn/tarn_render.h"
@@ -46,6 +47,8 @@ typedef struct {
     int static_view_given;   /* --static-view appeared */
     int backdrop;            /* render, bake --backdrop: a tarn_backdrop_kind, what is
                                 drawn once (host/bake/backdrop.h) */
+    uint32_t landing_depth_q16; /* --landing-depth (with --backdrop still), Q16.16
+                                   world units; 0 when not given: the deepest */
     uint16_t width, height;  /* 0: the scene's own frame size */
     uint32_t time_ms;
     tarn_camera_override camera; /* render, compare --camera: in place of the scene's */
@@ -73,6 +76,8 @@ int tarn_cli_parse(int argc, char **argv, tarn_cli_options *options, tarn_error 
 
 /* Whether render writes one animated GIF (-o NAME.gif) rather than PNG. */
 int tarn_cli_writes_gif(const tarn_cli_options *options);
+/* What --backdrop and --landing-depth ask to draw once. */
+tarn_backdrop_request tarn_cli_backdrop(const tarn_cli_options *options);
 
 /* The clock of frame `index`: time_ms + floor(index * 1000 / fps). */
 uint32_t tarn_cli_frame_time(const tarn_cli_options *options, unsigned index);

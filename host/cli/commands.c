@@ -213,7 +213,7 @@ static int render_to_png(const tarn_cli_options *o, const tarn_loaded_scene *sce
 {
     if (o->backdrop == TARN_BACKDROP_NONE) return render_images(o, scene, config, err);
     tarn_backdrop_scene backdrop;
-    if (tarn_backdrop_scene_make(&scene->scene, config, (tarn_backdrop_kind)o->backdrop, 0, &backdrop, err) != 0)
+    if (tarn_backdrop_scene_make(&scene->scene, config, tarn_cli_backdrop(o), 0, &backdrop, err) != 0)
         return tarn_fail_in(err, o->scene_path);
     tarn_loaded_scene over = *scene;
     over.scene = backdrop.water.scene;
@@ -234,7 +234,7 @@ static int render_core_frame(const tarn_cli_options *o, const tarn_loaded_scene 
 {
     if (o->backdrop == TARN_BACKDROP_NONE) return tarn_core_render(&scene->scene, config, rgb, NULL, err);
     tarn_backdrop_scene backdrop;
-    if (tarn_backdrop_scene_make(&scene->scene, config, (tarn_backdrop_kind)o->backdrop, 0, &backdrop, err) != 0)
+    if (tarn_backdrop_scene_make(&scene->scene, config, tarn_cli_backdrop(o), 0, &backdrop, err) != 0)
         return tarn_fail_in(err, o->scene_path);
     int failed = tarn_core_render(&backdrop.water.scene, config, rgb, NULL, err);
     tarn_backdrop_scene_free(&backdrop);
@@ -320,8 +320,8 @@ int tarn_command_memory(const tarn_cli_options *o)
 static int bake_to_c(const tarn_cli_options *o, const tarn_loaded_scene *scene,
                      const tarn_frame_config *config, tarn_error *err)
 {
-    tarn_bake_options options = {o->scene_path, o->output_path, o->name, o->points_path, !o->no_static_view, o->backdrop,
-                                  *config, o->argc, o->argv, o->quiet};
+    tarn_bake_options options = {o->scene_path, o->output_path, o->name, o->points_path, !o->no_static_view,
+                                  tarn_cli_backdrop(o), *config, o->argc, o->argv, o->quiet};
     tarn_bake_result result;
     if (tarn_bake(scene, &options, &result, err) != 0) return -1;
     printf("bake scene=%s const_bytes=%zu memory_bytes=%zu\n", result.name, result.const_bytes,

@@ -29,6 +29,19 @@ int tarn_parse_number(const char *option, const char *text, unsigned long min, u
     return tarn_fail(err, "%s: expected a whole number %lu..%lu, got '%s'", option, min, max, text ? text : "");
 }
 
+int tarn_parse_units(const char *option, const char *text, uint32_t min_q16, uint32_t max_q16, uint32_t *out_q16,
+                     tarn_error *err)
+{
+    char *end = NULL;
+    const double v = text != NULL && *text != '\0' ? strtod(text, &end) : -1.0;
+    const double q16 = v * 65536.0;
+    if (end == NULL || *end != '\0' || !(q16 >= min_q16 && q16 <= max_q16)) /* and not a number fails */
+        return tarn_fail(err, "%s: expected world units %g..%g, got '%s'", option, min_q16 / 65536.0,
+                         max_q16 / 65536.0, text ? text : "");
+    *out_q16 = (uint32_t)(q16 + 0.5);
+    return 0;
+}
+
 int tarn_find_choice(const char *text, const tarn_option_choice *choices, size_t count, int *value)
 {
     for (size_t k = 0; text != NULL && k < count; k++) {

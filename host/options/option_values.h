@@ -23,6 +23,12 @@ int tarn_parse_whole(const char *text, unsigned long min, unsigned long max, uns
 int tarn_parse_number(const char *option, const char *text, unsigned long min, unsigned long max,
                       unsigned long *out, tarn_error *err);
 
+/* A decimal number of world units in [min, max] (Q16.16 each): 0 with *out_q16 set
+ * to it, rounded to Q16.16, or -1 with "OPTION: expected world units MIN..MAX, got
+ * 'text'". */
+int tarn_parse_units(const char *option, const char *text, uint32_t min_q16, uint32_t max_q16, uint32_t *out_q16,
+                     tarn_error *err);
+
 /* A frame size "WxH", each side 1..TARN_FRAME_SIZE_MAX: 0, or -1 with
  * "OPTION: expected WxH with each side 1..1024, got 'text'". */
 int tarn_parse_size(const char *option, const char *text, uint16_t *width, uint16_t *height, tarn_error *err);

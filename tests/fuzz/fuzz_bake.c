@@ -32,7 +32,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     strncpy(output, fuzz_path(outputs[0]), sizeof output - 1);
     output[sizeof output - 1] = '\0';
     const int backdrop = (int)(size % 3u); /* each kind of backdrop, by the input's length */
-    tarn_bake_options options = {"scene.json", output, NULL, NULL, 1, backdrop,
+    tarn_bake_options options = {"scene.json", output, NULL, NULL, 1, tarn_backdrop_of((tarn_backdrop_kind)backdrop),
                                  {scene.width, scene.height, tarn_quality_default(), 0}, 0, NULL, 1};
     tarn_bake_result result;
     const int status = tarn_bake(&scene, &options, &result, &err);

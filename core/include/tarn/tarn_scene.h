@@ -182,15 +182,20 @@ typedef struct {
  * and, with water blocks, by the highlights the blocks share; docs/bake.md gives
  * the error. Its frames take the quality's water_coordinates TARN_WATER_UV_PLANE,
  * and no other. A refracted sample (with the quality's apron) is read from the
- * picture itself wherever it lands: the still colour there, whose still terms are
- * that pixel's rather than the refracting one's; the opaque colour where it lands
- * beside the water (on the bank behind it, on an object standing in it); and the
- * pixel's own where it lands on another object's water or in front of it. It
- * applies to a frame without the underwater view. */
+ * picture itself wherever it lands: on the water, the still colour there with its
+ * fog moved from that pixel's surface to the refracting one's (its other still
+ * terms are that pixel's); beside the water (on the bank behind it, on an object
+ * standing in it), the opaque colour with the refracting pixel's still terms over
+ * it, but for the fresnel raise of alpha; and the pixel's own where it lands on
+ * another object's water or in front of it. It applies to a frame without the
+ * underwater view. */
 #define TARN_BACKDROP_STILL_OBJECT 0x7E000000u
 #define TARN_BACKDROP_STILL_SHIFT 25u
 #define TARN_BACKDROP_STILL_OBJECTS_MAX 63u
 #define TARN_BACKDROP_STILL_FOAM 0x80000000u
+/* A still backdrop keeps a depth of water, or a place in the foam band, in Q2.14
+ * (tarn_backdrop's depth): Q16.16 shifted down by this. */
+#define TARN_BACKDROP_KEPT_SHIFT 2u
 
 /* A flat water object's surface as the frame of a still-water backdrop sees it:
  * three affine functions of the pixel (i, j), f = f[0] + f[1] * i + f[2] * j taken
@@ -200,6 +205,9 @@ typedef struct {
     int32_t u[3], v[3]; /* u * near/d and v * near/d: the texture coordinates (Q16.16,
                            modulo 2^16 repeats) are u = u_plane * 2^uv_shift / depth */
     uint8_t uv_shift;   /* 0..31 */
+    uint16_t lit[3];    /* Q8.8 a channel (255.0 = 65280): step 7's lit surface colour,
+                           the material's colour times its light, as the water's
+                           vertices have it (their mean, where they differ) */
 } tarn_still_plane;
 
 /* The scene's opaque objects as the static view's frame draws them, drawn once by
@@ -242,10 +250,13 @@ typedef struct {
                                   with still_water, whatever depth_bits, a uint16_t:
                                   where the frame refracts (an apron) and the water's
                                   foam band, if any, is less than one unit deep, the
-                                  depth of water beneath, db - ds in Q0.16 world
-                                  units, where that is less than one unit; else the
-                                  place in the foam band (step 9's f, Q0.16) where
-                                  that is less than 1; at a pixel no water draws
+                                  depth of water beneath, db - ds in Q2.14 world
+                                  units, where that is less than one unit, or less
+                                  than four where a refracted sample may land within
+                                  the foam band of the water it moved from; else the
+                                  place in the foam band (step 9's f, Q2.14) where
+                                  that is less than 1, or less than 4 where a sample
+                                  may land within the band; at a pixel no water draws
                                   (unmarked) where a refracted sample may land behind
                                   its water, the opaque near/d as a tarn_depth16
                                   code */
