@@ -1045,6 +1045,26 @@ for _name, _drop in (("perspective_db", "--perspective pixel"), ("exp2_db", "--e
 # what refraction adds on qemu-m0-backdrop: its frame less the same bake without an apron
 KEYS["board.qemu-m0-backdrop.refraction_insn"] = lambda m: diff(
     m.bench("qemu-m0-backdrop")["insn_per_pixel"], fw("m0-backdrop-apron-off")(m)["insn_per_pixel"])
+# qemu-m0-still without refraction (the fast preset's apron off, so no landing depth)
+FW_VARIANTS["m0-still-apron-off"] = ("qemu-m0", "pond", "--quality fast --backdrop still --water-block 4 "
+                                     "--perspective pixel --depth 32")
+add_fw_keys()
+KEYS["board.qemu-m0-still.refraction_insn"] = lambda m: diff(
+    m.bench("qemu-m0-still")["insn_per_pixel"], fw("m0-still-apron-off")(m)["insn_per_pixel"])
+# its landing depth (--landing-depth): the board's, and 1 and 4 world units, at the
+# still figures' time
+STILL_BOARD_TIME = 1750
+for _depth in ("1", "4"):
+    KEYS["still.landing-%s.panel_psnr" % _depth] = (lambda depth: lambda m: m.compare(
+        "pond", re.sub(r"--landing-depth [\d.]+", "--landing-depth " + depth, board_bake_flags("qemu-m0-still")),
+        STILL_BOARD_TIME)["panel_psnr"])(_depth)
+    KEYS["bake.still-landing-%s.depth_values" % _depth] = (lambda depth: lambda m: comma(m.bake(
+        "pond", re.sub(r"--landing-depth [\d.]+", "--landing-depth " + depth,
+                       board_bake_flags("qemu-m0-still")))["count.backdrop_depth"]))(_depth)
+KEYS["still.landing-board.panel_psnr"] = lambda m: m.compare("pond", board_bake_flags("qemu-m0-still"),
+                                                             STILL_BOARD_TIME)["panel_psnr"]
+KEYS["still.landing.board_depth"] = lambda m: m.code("boards/qemu-m0-still/board.mk",
+                                                     r"--landing-depth ([\d.]+)")
 
 KEYS["memory.pond.fast.bins_bytes"] = lambda m: diff(m.memory("pond", "--quality fast")["bytes"],
                                                      m.memory("pond", "--quality fast")["baked_bytes"]).fmt("comma")
@@ -1618,7 +1638,7 @@ def still_bake(m):
 
 
 KEYS["bake.still-refracting.depth_values"] = lambda m: comma(
-    m.bake("pond", STILL_FLAGS + " --apron on --perspective pixel --depth 32")["count.backdrop_depth"])
+    m.bake("pond", board_bake_flags("qemu-m0-still"))["count.backdrop_depth"])
 KEYS["bake.still.colours"] = lambda m: comma(still_bake(m)["backdrop.colours"])
 KEYS["bake.still.index_bits"] = lambda m: still_bake(m)["backdrop.bits"]
 KEYS["bake.still.foam_places"] = lambda m: comma(still_bake(m)["count.backdrop_depth"])
