@@ -8,6 +8,7 @@
 #define MOVED_HALVINGS_MAX 15u
 #define FEW_HALVINGS 4096u /* 1/16, Q16.16 */
 #define LN2_Q16 45426u     /* ln 2 */
+#define UNSEEN_FALL 128u   /* 255 * 128 / 2^16 < 1/2 */
 
 uint32_t tarn__water_fog(const tarn_water_context *w, uint32_t diff)
 {
@@ -60,6 +61,11 @@ uint32_t tarn__water_fog_moved(const tarn_water_context *w, uint32_t colour, uin
 {
     unsigned up;
     const int32_t mantissa = (int32_t)fog_ratio(w, from, to, &up);
+    /* a ratio within UNSEEN_FALL / 2^16 of 1 moves no channel by half a level: the
+     * colour stands as the rounding below would leave it */
+    if ((up == 0u && mantissa > (int32_t)(Q16_ONE - UNSEEN_FALL)) ||
+        (up == 1u && mantissa < (int32_t)((Q16_ONE + UNSEEN_FALL) >> 1)))
+        return colour & 0xFFFFFFu;
     /* (colour - endless) * mantissa lies within +-2^24: lifted by 2^24, it shifts
      * down as a non-negative number, rounded, from 16 - up >= 1 bits */
     const unsigned shift = 16u - up;
