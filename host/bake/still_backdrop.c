@@ -239,7 +239,7 @@ static int find_kept_values(const tarn_scene *scene, const tarn_frame_config *co
         if (!foam && !refracts) continue;
         const uint32_t value = kept_q16(&context, refracts, diff);
         values[k] = kept_q2_14(value);
-        if (value >= 65536u) continue; /* kept only where a sample lands (keep_landings) */
+        if (value >= 65536u) continue; /* kept only where a sample lands (keep_landing) */
         kept[k] = 1;
         if (tarn__water_uses(&context, TARN_WATER_FOAM) && tarn__water_foam_band(&context, diff) < 65536u)
             still->rgb[k] |= TARN_BACKDROP_STILL_FOAM;
@@ -248,77 +248,52 @@ static int find_kept_values(const tarn_scene *scene, const tarn_frame_config *co
     return 0;
 }
 
-/* The water pixels within `from`'s radius of water pixel (i, j) whose value the
- * backdrop can hold, under water less than `landing_depth_q16` deep, and a sample
- * from there would find within its foam band: their opaque surface lies less than
- * the band's depth below its surface. */
-static void keep_landings_around(const tarn_frame_config *config, uint32_t landing_depth_q16, const uint16_t *values,
-                                 const refracting_pixel *refracting, uint8_t *kept, int32_t i, int32_t j)
-{
-    const refracting_pixel *from = &refracting[(size_t)j * config->width + (size_t)i];
-    const int32_t r = from->radius;
-    const uint64_t band_end = (uint64_t)from->surface + from->foam_distance;
-    for (int32_t y = j - r < 0 ? 0 : j - r; y <= j + r && y < config->height; y++)
-        for (int32_t x = i - r < 0 ? 0 : i - r; x <= i + r && x < config->width; x++) {
-            const size_t k = (size_t)y * (size_t)config->width + (size_t)x;
-            const refracting_pixel *at = &refracting[k];
-            if (!kept[k] && values[k] < 0xFFFFu && at->opaque < band_end && at->opaque - at->surface < landing_depth_q16)
-                kept[k] = 1;
-        }
-}
-
-/* On the water: the pixels where a refracted sample may land within the foam band
- * of the water it moved from keep their depth of water (or place in the band) down
- * to `landing_depth_q16`, though it is a unit or more: seen from a farther surface
- * a deep pixel's bed may lie within the band. */
-static void keep_landings(const tarn_frame_config *config, uint32_t landing_depth_q16, const uint16_t *values,
-                          const refracting_pixel *refracting, uint8_t *kept)
-{
-    for (int32_t j = 0; j < config->height; j++)
-        for (int32_t i = 0; i < config->width; i++) {
-            const refracting_pixel *from = &refracting[(size_t)j * config->width + (size_t)i];
-            if (from->radius > 0u && from->foam_distance > 0u)
-                keep_landings_around(config, landing_depth_q16, values, refracting, kept, i, j);
-        }
-}
-
-/* What keeping the depth beside the water reads and writes. */
+/* What keeping the values where refracted samples land reads and writes. */
 typedef struct {
     const tarn_drawn_frame *opaque;
     const uint8_t *water;
+    const refracting_pixel *refracting;
+    uint32_t landing_depth_q16;
     uint16_t *values;
     uint8_t *kept;
     int32_t width, height;
-} beside_water;
+} landings;
 
-/* The pixels where no water draws within `from`'s radius of water pixel (i, j),
- * whose opaque surface lies no nearer than its water's: their opaque near/d kept
- * as a tarn_depth16 code. */
-static void keep_around(const beside_water *b, const refracting_pixel *from, int32_t i, int32_t j)
+/* Pixel k, where a sample from `from` may land. On the water it keeps its depth of
+ * water (or place in the band), though it is a unit or more, where the backdrop can
+ * hold it, under water less than the landing depth, and its opaque surface lies
+ * within `from`'s foam band: seen from a farther surface a deep pixel's bed may lie
+ * within the band. Beside the water it keeps its opaque near/d, as a tarn_depth16
+ * code, where that lies no nearer than `from`'s water. */
+static void keep_landing(const landings *l, const refracting_pixel *from, size_t k)
 {
-    const int32_t r = from->radius;
-    for (int32_t y = j - r < 0 ? 0 : j - r; y <= j + r && y < b->height; y++)
-        for (int32_t x = i - r < 0 ? 0 : i - r; x <= i + r && x < b->width; x++) {
-            const size_t k = (size_t)y * (size_t)b->width + (size_t)x;
-            const uint32_t below = depth_q30(b->opaque, k);
-            if (b->water[k] || b->kept[k] || below > from->surface_q30) continue;
-            b->values[k] = tarn_depth16_encode(below);
-            b->kept[k] = 1;
-        }
+    if (l->kept[k]) return;
+    if (l->water[k]) {
+        const refracting_pixel *at = &l->refracting[k];
+        l->kept[k] = (uint8_t)(from->foam_distance > 0u && l->values[k] < 0xFFFFu &&
+                               at->opaque < (uint64_t)from->surface + from->foam_distance &&
+                               at->opaque - at->surface < l->landing_depth_q16);
+        return;
+    }
+    const uint32_t below = depth_q30(l->opaque, k);
+    if (below > from->surface_q30) return;
+    l->values[k] = tarn_depth16_encode(below);
+    l->kept[k] = 1;
 }
 
-/* Beside the water: the pixels where no water draws but a refracted sample may land
- * behind the water it moved from keep their opaque near/d, which the frame tells
- * from a depth of water by the pixel's colour, unmarked. */
-static void keep_depth_beside_water(const tarn_frame_config *config, const tarn_drawn_frame *opaque,
-                                    const uint8_t *water, const refracting_pixel *refracting, uint16_t *values,
-                                    uint8_t *kept)
+/* Where a refracted sample may land, within each refracting pixel's radius, the
+ * backdrop keeps what the frame reads there (keep_landing): the frame tells a
+ * depth of water from an opaque near/d by the pixel's colour, marked with a water
+ * object or not. */
+static void keep_where_samples_land(const landings *l)
 {
-    const beside_water b = {opaque, water, values, kept, config->width, config->height};
-    for (int32_t j = 0; j < b.height; j++)
-        for (int32_t i = 0; i < b.width; i++) {
-            const refracting_pixel *from = &refracting[(size_t)j * (size_t)b.width + (size_t)i];
-            if (from->radius > 0u) keep_around(&b, from, i, j);
+    for (int32_t j = 0; j < l->height; j++)
+        for (int32_t i = 0; i < l->width; i++) {
+            const refracting_pixel *from = &l->refracting[(size_t)j * (size_t)l->width + (size_t)i];
+            const int32_t r = from->radius;
+            for (int32_t y = j - r < 0 ? 0 : j - r; r > 0 && y <= j + r && y < l->height; y++)
+                for (int32_t x = i - r < 0 ? 0 : i - r; x <= i + r && x < l->width; x++)
+                    keep_landing(l, from, (size_t)y * (size_t)l->width + (size_t)x);
         }
 }
 
@@ -357,10 +332,8 @@ int tarn_still_image_make(const tarn_scene *scene, const tarn_frame_config *conf
         ? tarn_fail(err, "backdrop: out of memory drawing the still water")
         : draw_still_frames(scene, config, &opaque, &still, *water, err) ||
               find_kept_values(scene, config, &opaque, &still, *water, values, kept, refracting, err);
-    if (!failed) {
-        keep_landings(config, landing_depth_q16, values, refracting, kept);
-        keep_depth_beside_water(config, &opaque, *water, refracting, values, kept);
-    }
+    const landings l = {&opaque, *water, refracting, landing_depth_q16, values, kept, config->width, config->height};
+    if (!failed) keep_where_samples_land(&l);
     failed = failed || tarn_backdrop_index_colours(still.rgb, pixels, b, err) ||
              tarn_backdrop_keep_depth(&kept_frame, kept, config->height, b, err);
     tarn_drawn_free(&opaque);
