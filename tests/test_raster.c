@@ -693,6 +693,25 @@ static void test_lit_line_where_colours_lie_on_one(void **state)
     assert_int_equal(setup_lit(v, TARN_PERSPECTIVE_PIXEL, 1).first_varying, 0);
 }
 
+/* Lit vertices a rounding step from the line are on it (within
+ * TARN_LIT_LINE_TOLERANCE), but the line's far end must not leave 0..255.0, where a
+ * pixel would have to clamp it: such a triangle keeps a plane a channel. */
+static void test_lit_line_stays_in_range(void **state)
+{
+    (void)state;
+    tarn_screen_vertex v[3] = {screen_vertex(0, 0), screen_vertex(40 * 16, 0), screen_vertex(0, 40 * 16)};
+    for (int c = 0; c < 3; c++) {
+        v[0].lit[c] = v[1].lit[c] = 0;
+        v[2].lit[c] = 65280;
+    }
+    assert_int_equal(setup_lit(v, TARN_PERSPECTIVE_PIXEL, 1).first_varying, 2); /* ends exactly 0 and 255.0 */
+    v[0].lit[1] = v[1].lit[1] = 130; /* green's line ends at 65281: one over */
+    assert_int_equal(setup_lit(v, TARN_PERSPECTIVE_PIXEL, 1).first_varying, 0);
+    v[0].lit[1] = v[1].lit[1] = 13;  /* ... and from 13 down to 0 ends at -1 */
+    v[2].lit[1] = 0;
+    assert_int_equal(setup_lit(v, TARN_PERSPECTIVE_PIXEL, 1).first_varying, 0);
+}
+
 /* Random lit triangles drawn with the lit colour on its line and with a plane a
  * channel: the same pixels, each channel within a level. */
 static void test_lit_line_draws_as_planes(void **state)
@@ -862,6 +881,7 @@ int main(void)
         cmocka_unit_test(test_depth_ties_resolve_like_the_reference),
         cmocka_unit_test(test_plane_depth_follows_exact_depth),
         cmocka_unit_test(test_lit_line_where_colours_lie_on_one),
+        cmocka_unit_test(test_lit_line_stays_in_range),
         cmocka_unit_test(test_lit_line_draws_as_planes),
         cmocka_unit_test(test_depth_ranges_code_as_the_encoder),
         cmocka_unit_test(test_cull_modes),

@@ -207,19 +207,22 @@ static uint32_t shade_pixel(const tarn_attribute_set *set, const tarn_texture *t
 }
 
 /* shade_pixel for a lit colour on a line (first_varying 2): each channel found
- * from the key's value, attribute 2. */
+ * from the key's value, attribute 2, times the texel's (`texture`, or white
+ * without one). The key is clamped to its vertices' range, so `along` is
+ * 0..65280, and the line keeps every channel within 0..255.0 over that range
+ * (lit_line_key), so no channel is clamped. */
 static TARN_ALWAYS_INLINE uint32_t shade_line_pixel(const tarn_attribute_set *set, const tarn_texture *texture,
                                                     const uint32_t t[TARN_ATTRIBUTES_MAX])
 {
     const tarn_lit_line *line = &set->lit_line;
-    /* the key is clamped to its vertices' range, so `along` is 0..65280 */
     const int32_t along = (int32_t)(t[2] >> set->t_shift[2]) - line->key_base;
-    const uint8_t *texel = texture != NULL ? texel_at(set, texture, t) : NULL;
     uint32_t rgb = 0;
-    for (int c = 0; c < 3; c++) {
-        const uint32_t lit = (uint32_t)tarn_clamp_i32(tarn__lit_on_line(line, c, along), 0, 65280);
-        rgb = (rgb << 8) | (texel != NULL ? lit_texel_byte(texel[c], lit) : lit_byte(lit));
+    if (texture == NULL) {
+        for (int c = 0; c < 3; c++) rgb = (rgb << 8) | lit_byte((uint32_t)tarn__lit_on_line(line, c, along));
+        return rgb;
     }
+    const uint8_t *texel = texel_at(set, texture, t);
+    for (int c = 0; c < 3; c++) rgb = (rgb << 8) | lit_texel_byte(texel[c], (uint32_t)tarn__lit_on_line(line, c, along));
     return rgb;
 }
 

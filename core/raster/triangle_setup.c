@@ -353,6 +353,10 @@ static TARN_NOINLINE int lit_line_key(const tarn_triangle_setup *t, tarn_lit_lin
         const int32_t half = change < 0 ? -spread / 2 : spread / 2;
         line->base[c] = t->v[least]->lit[c];
         line->slope[c] = (change * 32768 + half) / spread; /* below 2^31 */
+        /* the line is monotone in the key, so in range at its far end it is in range
+           at every pixel, which then needs no clamp */
+        const int32_t far = tarn__lit_on_line(line, c, spread);
+        if (far < 0 || far > 65280) return -1;
     }
     for (int n = 0; n < 3; n++)
         for (int c = 0; c < 3; c++) {
