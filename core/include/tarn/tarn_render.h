@@ -188,7 +188,8 @@ typedef enum {
     TARN_LIT_PLANES = 0, /* a plane each channel */
     TARN_LIT_LINE = 1    /* where the three vertices' colours lie on one line in RGB
                             (one light over a mesh without vertex colours, unless a
-                            vertex saturates), each within 2/256 of a level a channel:
+                            vertex saturates), each within 2/256 of a level a channel
+                            and the line within 0..255 over them, so no pixel clamps:
                             one plane, of the channel that changes most, and the
                             others found from it along the line, two planes and two
                             divisions fewer. The pixels then differ from the planes'
