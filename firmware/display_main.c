@@ -187,7 +187,9 @@ static tarn_status show_frame(void)
     return show_part(board_milliseconds(), 0);
 }
 #else
-static uint64_t second_stack[FW_STACK_BYTES / 8u];
+/* Core 1's stack, in a section of its own that a board's link.ld may place apart
+ * (the RP2040's in SRAM4-5); cortex_m_sections.ld's .bss takes it otherwise. */
+static uint64_t second_stack[FW_STACK_BYTES / 8u] __attribute__((section(".bss.second_stack")));
 
 /* Core 1: its share of each frame core 0 sends it a word for, its status sent back. */
 static void second_core_main(void)

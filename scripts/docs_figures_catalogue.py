@@ -164,6 +164,9 @@ for _b in REAL_BOARDS:
     KEYS["real.%s.ram_left" % _b] = (lambda b: lambda m: Fig("1", 1.0) if m.recording else comma(exact(
         link_length(b, "RAM")(m).num - m.build(b)["ram_bytes"].num)))(_b)
 KEYS["real.rp2040-st7789.pipeline_memory_bytes"] = lambda m: comma(m.build("rp2040-st7789")["pipeline_memory_bytes"])
+# SRAM4-5, apart from RAM: core 1's stack (boards/rp2040-st7789/link.ld's SCRATCH)
+KEYS["real.rp2040-st7789.scratch_bytes"] = lambda m: comma(m.build("rp2040-st7789")["scratch_bytes"])
+KEYS["limit.rp2040-st7789.scratch"] = (lambda f: lambda m: comma(f(m)))(link_length("rp2040-st7789", "SCRATCH"))
 
 
 def piece_rgb565_bytes(m, board):
@@ -943,6 +946,11 @@ for _b, _on in REAL_COUNTED_ON.items():
 # tiles, a part a core, each with memory of its own
 FW_VARIANTS["rp2040-tile-parts"] = ("qemu-m0-264k", "pond-orbit", "", FW_VARIANTS["real-rp2040-st7789"][3][1:] +
                                     ("BOARD_CORE_SPLIT=parts",))
+# and before core 1's stack moved to SRAM4-5: the whole apron, each strip finding its
+# vertices again
+FW_VARIANTS["rp2040-whole-apron"] = ("qemu-m0-264k", "pond-orbit",
+                                     "--quality balanced --depth-interpolation plane --frame strips --tile 8 "
+                                     "--water-uv triangles", FW_VARIANTS["real-rp2040-st7789"][3])
 add_fw_keys()
 
 

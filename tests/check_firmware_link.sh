@@ -66,7 +66,7 @@ check() {
             passed=$((passed + 1))
         fi
     done
-    code_bytes=$(firmware/image_sizes.sh arm-none-eabi- "$dir/firmware.elf" | sed 's/.* code_bytes=//')
+    code_bytes=$(firmware/image_sizes.sh arm-none-eabi- "$dir/firmware.elf" | sed -n 's/.* code_bytes=\([0-9]*\).*/\1/p')
     echo "firmware-link board=$board scene=$(basename "$scene" .json)$extra_name code_bytes=$code_bytes" >> "$sizes"
 }
 

@@ -5,7 +5,8 @@
  *
  * - The link fits: every allocated section of firmware.elf lies inside a memory
  *   region of the link's own map (firmware.map, "Memory Configuration"), the loaded
- *   bytes inside FLASH, .bss and the stack inside RAM. The figures are printed.
+ *   bytes inside FLASH, .data, .bss and the stack inside RAM (and on the RP2040 core
+ *   1's stack, .scratch, in SRAM4-5, its region SCRATCH). The figures are printed.
  * - The vector table starts .text: its first word is the initial stack pointer, in
  *   RAM and 8-byte aligned, its second the ELF's entry (reset_handler) with the
  *   Thumb bit set. It sits at the start of flash, or right after boot2.
@@ -224,31 +225,45 @@ static void test_crc_check_value(void **state)
 
 /* ---- the checks of one board ---- */
 
+/* The region of the map a section lies wholly inside, NULL for none. */
+static const region *region_holding(const region *regions, size_t n, uint32_t address, uint32_t size)
+{
+    for (size_t i = 0; i < n; i++)
+        if (inside(&regions[i], address, size)) return &regions[i];
+    return NULL;
+}
+
 static void check_link_fit(const char *board, const elf_image *elf, const region *regions, size_t n)
 {
     const region *flash = find_region(regions, n, "FLASH"), *ram = find_region(regions, n, "RAM");
     assert_non_null(flash);
     assert_non_null(ram);
-    uint32_t flash_end = flash->origin, ram_end = ram->origin;
+    uint32_t end[REGIONS_MAX];
+    for (size_t r = 0; r < n; r++) end[r] = regions[r].origin;
     for (size_t i = 0; i < elf->section_count; i++) {
         const section *s = &elf->sections[i];
         if (!(s->flags & 2u /* SHF_ALLOC */) || s->size == 0) continue;
-        const int in_flash = inside(flash, s->address, s->size), in_ram = inside(ram, s->address, s->size);
-        if (!in_flash && !in_ram)
-            fail_msg("%s: section %s (0x%08x, %u bytes) lies outside FLASH and RAM", board,
+        const region *holder = region_holding(regions, n, s->address, s->size);
+        if (holder == NULL)
+            fail_msg("%s: section %s (0x%08x, %u bytes) lies outside every region of the link's map", board,
                      s->name, (unsigned)s->address, (unsigned)s->size);
-        if (in_flash && s->address + s->size > flash_end) flash_end = s->address + s->size;
-        if (in_ram && s->address + s->size > ram_end) ram_end = s->address + s->size;
+        const int ram_only = strcmp(s->name, ".data") == 0 || strcmp(s->name, ".bss") == 0 ||
+                             strcmp(s->name, ".stack") == 0;
+        if (ram_only && holder != ram)
+            fail_msg("%s: section %s (0x%08x) lies in %s, not RAM", board, s->name, (unsigned)s->address,
+                     holder->name);
+        const size_t r = (size_t)(holder - regions);
+        if (s->address + s->size > end[r]) end[r] = s->address + s->size;
     }
     size_t loaded;
     uint8_t *image = flash_image(elf, flash->origin, flash->length, &loaded); /* asserts LMAs */
     free(image);
-    if (flash->origin + loaded > flash_end) flash_end = flash->origin + (uint32_t)loaded;
-    print_message("%s: flash %u of %u bytes (%u free), RAM %u of %u bytes (%u free)\n", board,
-                  (unsigned)(flash_end - flash->origin), (unsigned)flash->length,
-                  (unsigned)(flash->origin + flash->length - flash_end),
-                  (unsigned)(ram_end - ram->origin), (unsigned)ram->length,
-                  (unsigned)(ram->origin + ram->length - ram_end));
+    const size_t f = (size_t)(flash - regions);
+    if (flash->origin + loaded > end[f]) end[f] = flash->origin + (uint32_t)loaded;
+    for (size_t r = 0; r < n; r++)
+        print_message("%s: %s %u of %u bytes (%u free)\n", board, regions[r].name,
+                      (unsigned)(end[r] - regions[r].origin), (unsigned)regions[r].length,
+                      (unsigned)(regions[r].origin + regions[r].length - end[r]));
 }
 
 static void check_vector_table(const char *board, const elf_image *elf, const region *regions, size_t n)

@@ -17,13 +17,17 @@ BOARD_STACK_BYTES := 8192
 # vertices again, and 16 slots lost most of a grid row's; 1.5 KB more stack
 BOARD_VERTEX_CACHE_SLOTS := 64
 # both cores draw each frame (firmware/display_main.c, cores.c), sharing its memory
-# (tarn_strip_pipeline_begin); each has its strip buffers and a stack of its own
+# (tarn_strip_pipeline_begin); each has its strip buffers and a stack of its own,
+# core 1's in SRAM4-5 (link.ld), which leaves SRAM0-3 room for the vertex pass
 BOARD_CORES := 2
 BOARD_CORE_SPLIT := pipeline
 BOARD_SCENES := scenes/pond-orbit.json
 # 8-row strips: the ring and its spare strip fit beside the code in SRAM, where
-# 16 rows would not; water's coordinates on its triangles, as qemu-m0-264k's
-BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 8 --water-uv triangles
+# 16 rows would not; refraction's 24-pixel apron and the vertex pass, as
+# qemu-m0-264k's: the ring two strips shorter holds every vertex found once a
+# frame (docs/firmware.md, "Clock, memory and frame rate"); water's coordinates on
+# its triangles, as qemu-m0-264k's
+BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --frame strips --tile 8 --apron 24 --vertices frame --water-uv triangles
 # the second stage the bootrom loads (checksummed at build time), and the UF2 output
 BOARD_BOOT2 := boards/rp2040-st7789/boot2.S
 BOARD_FLASH_BASE := 0x10000000
