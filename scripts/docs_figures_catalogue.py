@@ -181,12 +181,21 @@ def rp2040_spi_hz(m):
     return peri / m.code("boards/rp2040-st7789/panel_spi.c", r"^#define SPI_CPSDVSR (\d+)u").num
 
 
-KEYS["real.rp2040-st7789.piece_bytes"] = lambda m: Fig("1", 1.0) if m.recording else comma(exact(
-    int(piece_rgb565_bytes(m, "rp2040-st7789"))))
-KEYS["real.rp2040-st7789.piece_ms"] = lambda m: Fig("1", 1.0) if m.recording else exact(
-    "%.2f" % (1000.0 * 8 * piece_rgb565_bytes(m, "rp2040-st7789") / rp2040_spi_hz(m)))
-KEYS["real.rp2040-st7789.spi_mhz"] = lambda m: Fig("1", 1.0) if m.recording else exact(
-    "%.2f" % (rp2040_spi_hz(m) / 1e6))
+def stm32_spi_hz(m):
+    """SPI1's bit rate: PCLK2 over the baud divider 2^(BR + 1) (boards/stm32f411-st7789/panel_spi.c)."""
+    pclk2 = m.code("boards/stm32f411-st7789/clock.h", r"^#define CLOCK_PCLK2_HZ (\d+)u").num
+    return pclk2 / 2 ** (m.code("boards/stm32f411-st7789/panel_spi.c", r"^#define SPI_BR_DIV4 (\d+)u").num + 1)
+
+
+REAL_SPI_HZ = {"rp2040-st7789": rp2040_spi_hz, "stm32f411-st7789": stm32_spi_hz}
+for _b, _spi in REAL_SPI_HZ.items():
+    KEYS["real.%s.piece_bytes" % _b] = (lambda b: lambda m: Fig("1", 1.0) if m.recording else comma(exact(
+        int(piece_rgb565_bytes(m, b)))))(_b)
+    KEYS["real.%s.piece_ms" % _b] = (lambda b, spi: lambda m: Fig("1", 1.0) if m.recording else exact(
+        "%.2f" % (1000.0 * 8 * piece_rgb565_bytes(m, b) / spi(m))))(_b, _spi)
+    KEYS["real.%s.spi_mhz" % _b] = (lambda spi: lambda m: Fig("1", 1.0) if m.recording else exact(
+        "%.2f" % (spi(m) / 1e6)))(_spi)
+KEYS["real.stm32f411-st7789.piece_width"] = lambda m: m.build("stm32f411-st7789")["piece_width"]
 KEYS["real.rp2040-st7789.uf2_bytes"] = lambda m: comma(m.build("rp2040-st7789")["uf2_bytes"])
 KEYS["real.rp2040-st7789.uf2_blocks"] = lambda m: Fig("1", 1.0) if m.recording else exact(
     m.build("rp2040-st7789")["uf2_bytes"].num // 512)
@@ -946,8 +955,10 @@ for _b, _on in REAL_COUNTED_ON.items():
 # tiles, a part a core, each with memory of its own
 FW_VARIANTS["rp2040-tile-parts"] = ("qemu-m0-264k", "pond-orbit", "", FW_VARIANTS["real-rp2040-st7789"][3][1:] +
                                     ("BOARD_CORE_SPLIT=parts",))
-# and before core 1's stack moved to SRAM4-5: the whole apron, each strip finding its
-# vertices again
+# the STM32F411's before: the default quality, 32-pixel tiles and the whole apron
+FW_VARIANTS["stm32-default"] = ("qemu-m3", "pond-orbit", "")
+# and the RP2040's before core 1's stack moved to SRAM4-5: the whole apron, each strip
+# finding its vertices again
 FW_VARIANTS["rp2040-whole-apron"] = ("qemu-m0-264k", "pond-orbit",
                                      "--quality balanced --depth-interpolation plane --frame strips --tile 8 "
                                      "--water-uv triangles", FW_VARIANTS["real-rp2040-st7789"][3])

@@ -2,8 +2,10 @@
 # STM32F411 (Cortex-M4 at 100 MHz, 512 KB flash, 128 KB RAM) with an ST7789 240x240
 # on SPI1, fed by DMA2 while the next tile renders. It renders the moving pond (the
 # camera circling, each frame at the board's millisecond clock) at the
-# default quality: its renderer memory, two 8,192-byte tile buffers and
-# an 8 KB stack in the 128 KB (README.md gives the figures). Variables read by
+# balanced preset with depth on a plane and water's coordinates on its triangles
+# (as qemu-m0-264k), in 48-pixel tiles with a 24-pixel refraction apron: its
+# renderer memory, two tile buffers and an 8 KB stack in the 128 KB (README.md
+# gives the figures). Variables read by
 # firmware/firmware.mk; the rest, as for every real board, from
 # boards/common/real_board.mk.
 #
@@ -18,5 +20,11 @@ BOARD_STACK_BYTES := 8192
 # finds its vertices again, and 16 slots lost most of a grid row's; 1.5 KB more stack
 BOARD_VERTEX_CACHE_SLOTS := 64
 BOARD_SCENES := scenes/pond-orbit.json
-BOARD_BAKE_FLAGS :=
+# 48-pixel tiles, each drawing the opaque scene 24 pixels around itself for
+# refraction: a tile redraws its apron four times over its own pixels, where the
+# default's 32-pixel tiles with the whole 32-pixel apron redrew it nine times, at
+# half the instructions a pixel for 1.6 dB of panel PSNR (docs/firmware.md, "Clock,
+# memory and frame rate"); the largest such tiles that divide the frame and leave
+# the RAM room for an application's own
+BOARD_BAKE_FLAGS := --quality balanced --depth-interpolation plane --water-uv triangles --tile 48 --apron 24
 include boards/common/real_board.mk
