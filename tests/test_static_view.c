@@ -3,7 +3,9 @@
  * preset and two times, with the meshes' positions kept or left out, and in a frame
  * other than the one their screen positions and bins were made for. The bins take
  * the place of found ones; a moved camera drops the static view (or, without
- * positions, refuses the scene), and static vertices out of their ranges are refused. */
+ * positions, refuses the scene); a vertex not projected keeps the clip planes it
+ * lies outside, which drop its triangles; static vertices out of their ranges are
+ * refused. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -191,6 +193,51 @@ static void test_clipped_triangles_read_view_positions(void **state)
     static_scene_free(&bare);
 }
 
+/* A vertex the frame could not project keeps the clip planes it lies outside
+ * (tarn_static_vertex), and a triangle whose three vertices claim one plane draws
+ * nothing: the pond with its water's vertices all claiming the near plane draws
+ * the pond without its water, its clusters' bins and walks past them unread. */
+static void test_unprojected_vertices_keep_their_planes(void **state)
+{
+    (void)state;
+    const tarn_frame_config clipped = scene_config(CLIPPED_SCENE, TARN_PRESET_BALANCED, 0);
+    static_scene near;
+    static_scene_make(&near, CLIPPED_SCENE, &clipped, 0);
+    size_t unprojected = 0;
+    for (uint32_t o = 0; o < near.vertices->object_count; o++)
+        for (uint32_t k = 0; k < near.scene.objects[o].mesh->vertex_count; k++) {
+            const tarn_static_vertex *v = &near.vertices->vertices[o][k];
+            if (v->inv_depth != 0u) continue;
+            unprojected++;
+            if (v->screen_x <= 0 || (unsigned)v->screen_x > TARN_CLIP_PLANE_BITS || v->screen_y != 0)
+                fail_msg("%s: vertex %u of object %u not projected keeps planes 0x%x and row %d", CLIPPED_SCENE,
+                         (unsigned)k, (unsigned)o, (unsigned)(uint16_t)v->screen_x, v->screen_y);
+        }
+    assert_true(unprojected > 0);
+    static_scene_free(&near);
+
+    const tarn_frame_config config = scene_config("scenes/pond.json", TARN_PRESET_FAST, 0);
+    static_scene s;
+    static_scene_make(&s, "scenes/pond.json", &config, 0);
+    const uint32_t water = s.scene.object_count - 1u;
+    assert_non_null(s.scene.objects[water].material->water);
+    for (uint32_t k = 0; k < s.scene.objects[water].mesh->vertex_count; k++) {
+        tarn_static_vertex *v = &s.vertices->vertices[water][k];
+        v->inv_depth = 0u;
+        v->screen_x = 1; /* the near plane, tarn__clip_outcode's bit 0 */
+        v->screen_y = 0;
+    }
+    uint8_t *claimed = test_render_rgb(&s.scene, &config, "pond, its water's vertices beyond the near plane");
+    s.loaded.scene.object_count = water;
+    uint8_t *without = test_render_rgb(&s.loaded.scene, &config, "pond without its water");
+    if (memcmp(claimed, without, 3u * config.width * config.height) != 0)
+        fail_msg("pond: triangles whose vertices all lie beyond the near plane still drew");
+    free(claimed);
+    free(without);
+    s.loaded.scene.object_count = water + 1u;
+    static_scene_free(&s);
+}
+
 /* Each out-of-range field of a static vertex, or of the static view, is refused. */
 static void test_out_of_range_static_vertices_are_refused(void **state)
 {
@@ -216,6 +263,15 @@ static void test_out_of_range_static_vertices_are_refused(void **state)
     v->screen_x = 0;
     v->screen_y = INT16_MIN;
     assert_int_equal(test_render_status(&s.scene, &config), TARN_ERR_SCENE);
+    v->inv_depth = 0u; /* not projected: clip planes in screen_x, and nothing in screen_y */
+    v->screen_x = (int16_t)(TARN_CLIP_PLANE_BITS + 1u);
+    v->screen_y = 0;
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_ERR_SCENE);
+    v->screen_x = -1;
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_ERR_SCENE);
+    v->screen_x = (int16_t)TARN_CLIP_PLANE_BITS;
+    v->screen_y = 1;
+    assert_int_equal(test_render_status(&s.scene, &config), TARN_ERR_SCENE);
     *v = saved;
     assert_int_equal(test_render_status(&s.scene, &config), TARN_OK);
     s.vertices->view.subpixel_bits = 0;
@@ -234,6 +290,7 @@ int main(void)
         cmocka_unit_test(test_static_bins_stand_in_for_found_ones),
         cmocka_unit_test(test_moved_camera_drops_static_vertices),
         cmocka_unit_test(test_clipped_triangles_read_view_positions),
+        cmocka_unit_test(test_unprojected_vertices_keep_their_planes),
         cmocka_unit_test(test_out_of_range_static_vertices_are_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

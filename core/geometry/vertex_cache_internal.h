@@ -23,7 +23,7 @@ typedef char tarn_vertex_cache_slots_check[(TARN_VERTEX_CACHE_SLOTS >= 4u && TAR
 
 /* tarn__cached_triangle's outcodes: tarn__clip_outcode's bits, and above them, from
  * bit TARN_CACHED_TILE_OUTCODE_SHIFT, the tile edges. */
-#define TARN_CACHED_CLIP_PLANES 0x3Fu
+#define TARN_CACHED_CLIP_PLANES TARN_CLIP_PLANE_BITS
 #define TARN_CACHED_TILE_OUTCODE_SHIFT 6u
 
 /* A tile's four edges (left, right, top, bottom) as slopes in view space, for a

@@ -19,12 +19,15 @@ tarn_static_vertex tarn__static_vertex_of(const tarn_view *view, const tarn_obje
         position->y = v.y;
         position->z = v.d;
     }
-    if (tarn__clip_outcode(view, &v) == 0u) {
+    const unsigned outcode = tarn__clip_outcode(view, &v);
+    if (outcode == 0u) {
         tarn_screen_vertex screen;
         tarn__project_position(view, &v, &screen);
         out.screen_x = (int16_t)screen.x;
         out.screen_y = (int16_t)screen.y;
         out.inv_depth = screen.inv_depth;
+    } else {
+        out.screen_x = (int16_t)outcode; /* the planes it lies outside (tarn_static_vertex) */
     }
     tarn__vertex_shade(view, xform, mesh, index, &v);
     for (int c = 0; c < 3; c++) out.lit[c] = (uint16_t)v.lit[c];

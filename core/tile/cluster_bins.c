@@ -54,22 +54,28 @@ static tarn_cluster_bin to_cells(const tarn_subpixel_bounds *bounds, int32_t mar
 }
 
 /* The bin of triangles [first, end) of the cache's mesh: what the walk would hand
- * the rasterizer, less the triangles it would cull. */
+ * the rasterizer, less the triangles it would cull. A frame with static screen
+ * positions reads them as the walk does: the cache then transforms the vertices
+ * of the triangles the frame clips, not those of every triangle. */
 static tarn_cluster_bin bin_run(tarn_vertex_cache *cache, const tarn_object *object, uint32_t first,
                                 uint32_t end)
 {
     const tarn_mesh *mesh = object->mesh;
+    const tarn_static_vertex *projected =
+        TARN_LINK_STATIC_VERTICES && cache->view->static_screen ? cache->static_vertices : NULL;
     tarn_subpixel_bounds bounds = tarn__bounds_empty();
     int32_t margin = 0; /* 1 once a triangle was clipped */
     for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
-        tarn_cached_vertex c[3];
-        unsigned outside_any;
-        const unsigned outside_all = tarn__cached_triangle(cache, index, c, &outside_any);
-        if (outside_all) continue;
-        if (outside_any & NEAR_PLANE_BIT) return bin_whole;
         tarn_screen_vertex screen[3];
-        for (int k = 0; k < 3; k++) tarn__cached_projection(cache, &c[k], &screen[k]);
+        unsigned outside_any = 0u;
+        if (projected == NULL || !tarn__static_screen_positions(projected, index, screen)) {
+            if (projected != NULL && tarn__static_outside_a_plane(projected, index)) continue;
+            tarn_cached_vertex c[3];
+            if (tarn__cached_triangle(cache, index, c, &outside_any)) continue;
+            if (outside_any & NEAR_PLANE_BIT) return bin_whole;
+            for (int k = 0; k < 3; k++) tarn__cached_projection(cache, &c[k], &screen[k]);
+        }
         if (outside_any == 0 && tarn__drawn_area2(screen, object->material->cull) == 0) continue;
         if (outside_any) margin = 1;
         for (int k = 0; k < 3; k++) tarn__bounds_add(&bounds, &screen[k]);

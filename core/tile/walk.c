@@ -81,23 +81,6 @@ static int bounds_miss(const tarn_screen_vertex s[3], const tarn_subpixel_bounds
     return tarn_max3_i32(s[0].y, s[1].y, s[2].y) < centres->y0 || tarn_min3_i32(s[0].y, s[1].y, s[2].y) > centres->y1;
 }
 
-/* The screen positions of a triangle whose three static vertices were projected
- * for this frame (tarn_view's static_screen), read straight from them: a projected
- * vertex lies inside every clip plane, so neither outcodes nor the cache are
- * needed. 0 when one was not projected; the cached walk then clips the triangle. */
-static int static_screen_positions(const tarn_static_vertex *baked, const uint16_t index[3],
-                                   tarn_screen_vertex screen[3])
-{
-    for (int k = 0; k < 3; k++) {
-        const tarn_static_vertex *v = &baked[index[k]];
-        if (v->inv_depth == 0u) return 0;
-        screen[k].x = v->screen_x;
-        screen[k].y = v->screen_y;
-        screen[k].inv_depth = v->inv_depth;
-    }
-    return 1;
-}
-
 /* Their shading, read once the triangle is known to reach the tile. */
 static void static_screen_attributes(const tarn_static_vertex *baked, const tarn_mesh *mesh,
                                      const uint16_t index[3], tarn_screen_vertex screen[3])
@@ -151,11 +134,12 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
     tarn_screen_vertex screen[3];
     for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
-        if (projected == NULL || !static_screen_positions(projected, index, screen)) {
-            walk_cached_triangle(object, index, centres, cache, screen, sink, ctx);
-        } else if (!centres || !bounds_miss(screen, centres)) {
+        if (projected != NULL && tarn__static_screen_positions(projected, index, screen)) {
+            if (centres && bounds_miss(screen, centres)) continue;
             static_screen_attributes(projected, mesh, index, screen);
             sink(ctx, screen, object);
+        } else if (projected == NULL || !tarn__static_outside_a_plane(projected, index)) {
+            walk_cached_triangle(object, index, centres, cache, screen, sink, ctx);
         }
     }
 }

@@ -112,10 +112,19 @@ typedef struct {
  * 16 bytes: a triangle with a vertex outside a clip plane, the only one that needs
  * the vertex's view position, finds it in the static view's positions or, without
  * them, from its mesh. */
+/* The six clip planes of a frame (near, far, and the guard band's four sides), a
+ * bit each: what a vertex that was not projected lies outside. */
+#define TARN_CLIP_PLANE_BITS 0x3Fu
+
 typedef struct {
     uint32_t inv_depth;         /* near/d, Q1.30 (1..2^30), for a vertex inside every clip
                                    plane of the static view's frame; 0: not projected */
-    int16_t screen_x, screen_y; /* subpixels of that frame, inside its guard band */
+    int16_t screen_x, screen_y; /* subpixels of that frame, inside its guard band; for a
+                                   vertex not projected, screen_x holds the clip planes
+                                   (TARN_CLIP_PLANE_BITS) it lies outside and screen_y 0:
+                                   a triangle whose three vertices lie outside one plane
+                                   is dropped without their view positions (0 claims
+                                   none, and such a triangle is clipped as any other) */
     uint16_t lit[3];            /* lit colour, Q8.8 per channel, at most 65280 */
     uint16_t fresnel;           /* (1 - n.v)^2, Q1.15, at most 32768; 0 but on water */
 } tarn_static_vertex;
