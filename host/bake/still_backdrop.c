@@ -291,7 +291,8 @@ static void keep_where_samples_land(const landings *l)
         for (int32_t i = 0; i < l->width; i++) {
             const refracting_pixel *from = &l->refracting[(size_t)j * (size_t)l->width + (size_t)i];
             const int32_t r = from->radius;
-            for (int32_t y = j - r < 0 ? 0 : j - r; r > 0 && y <= j + r && y < l->height; y++)
+            if (r == 0) continue; /* not a refracting pixel: no sample lands from it */
+            for (int32_t y = j - r < 0 ? 0 : j - r; y <= j + r && y < l->height; y++)
                 for (int32_t x = i - r < 0 ? 0 : i - r; x <= i + r && x < l->width; x++)
                     keep_landing(l, from, (size_t)y * (size_t)l->width + (size_t)x);
         }
