@@ -114,8 +114,8 @@ static int static_vertices_valid(const tarn_static_view *view, const tarn_static
     for (uint32_t i = 0; i < count; i++) {
         const tarn_static_vertex *v = &vertices[i];
         if (v->lit[0] > 65280u || v->lit[1] > 65280u || v->lit[2] > 65280u || v->fresnel > 32768u) return 0;
-        if (v->inv_depth == 0u) { /* the planes it lies outside, and nothing else */
-            if ((uint16_t)v->screen_x > TARN_CLIP_PLANE_BITS || v->screen_y != 0) return 0;
+        if (v->inv_depth == 0u) { /* the planes it lies outside, and nothing else, where read */
+            if (TARN_LINK_VERTEX_PASS && ((uint16_t)v->screen_x > TARN_CLIP_PLANE_BITS || v->screen_y != 0)) return 0;
             continue;
         }
         if (v->inv_depth > (1u << 30) || !screen_valid(v->screen_x, view->width, guard, view->subpixel_bits) ||

@@ -76,9 +76,12 @@ static inline int tarn__static_screen_positions(const tarn_static_vertex *baked,
 /* Whether the three static vertices lie outside one clip plane, by the planes each
  * one not projected keeps (tarn_static_vertex): such a triangle draws nothing. Most
  * of those a frame meets lie beyond the guard band at its sides, where the cache
- * would transform their vertices again only to find that out. */
+ * would transform their vertices again only to find that out. Only a build with
+ * the vertex pass reads them (TARN_LINK_VERTEX_PASS: its frames clip the most, and
+ * a 16 KB board's flash has no bytes to spare for it); others find 0. */
 static inline int tarn__static_outside_a_plane(const tarn_static_vertex *baked, const uint16_t index[3])
 {
+    if (!TARN_LINK_VERTEX_PASS) return 0;
     unsigned all = TARN_CLIP_PLANE_BITS;
     for (int k = 0; k < 3; k++) {
         const tarn_static_vertex *v = &baked[index[k]];

@@ -134,12 +134,12 @@ static void walk_run(const tarn_object *object, uint32_t first, uint32_t end,
     tarn_screen_vertex screen[3];
     for (uint32_t t = first; t < end; t++) {
         const uint16_t *index = &mesh->indices[3 * t];
-        if (projected != NULL && tarn__static_screen_positions(projected, index, screen)) {
-            if (centres && bounds_miss(screen, centres)) continue;
+        if (projected == NULL || !tarn__static_screen_positions(projected, index, screen)) {
+            if (projected == NULL || !tarn__static_outside_a_plane(projected, index))
+                walk_cached_triangle(object, index, centres, cache, screen, sink, ctx);
+        } else if (!centres || !bounds_miss(screen, centres)) {
             static_screen_attributes(projected, mesh, index, screen);
             sink(ctx, screen, object);
-        } else if (projected == NULL || !tarn__static_outside_a_plane(projected, index)) {
-            walk_cached_triangle(object, index, centres, cache, screen, sink, ctx);
         }
     }
 }
