@@ -122,9 +122,10 @@ typedef struct {
     int16_t screen_x, screen_y; /* subpixels of that frame, inside its guard band; for a
                                    vertex not projected, screen_x holds the clip planes
                                    (TARN_CLIP_PLANE_BITS) it lies outside and screen_y 0:
-                                   a triangle whose three vertices lie outside one plane
-                                   is dropped without their view positions (0 claims
-                                   none, and such a triangle is clipped as any other) */
+                                   where a build links the vertex pass, a triangle whose
+                                   three vertices lie outside one plane is dropped
+                                   without their view positions (0 claims none, and
+                                   such a triangle is clipped as any other) */
     uint16_t lit[3];            /* lit colour, Q8.8 per channel, at most 65280 */
     uint16_t fresnel;           /* (1 - n.v)^2, Q1.15, at most 32768; 0 but on water */
 } tarn_static_vertex;
