@@ -105,6 +105,10 @@ typedef struct {
                                      coordinates an affine map of its plane (above) */
 } tarn_mesh;
 
+/* The six clip planes of a frame (near, far, and the guard band's four sides), a
+ * bit each: what a vertex that was not projected lies outside. */
+#define TARN_CLIP_PLANE_BITS 0x3Fu
+
 /* A vertex as the scene's fixed camera sees it: exactly what a frame would compute
  * from the object's mesh, transform and material, the camera and the light (tarn
  * bake writes them, docs/bake.md "Static view"). A frame then neither transforms,
@@ -112,10 +116,6 @@ typedef struct {
  * 16 bytes: a triangle with a vertex outside a clip plane, the only one that needs
  * the vertex's view position, finds it in the static view's positions or, without
  * them, from its mesh. */
-/* The six clip planes of a frame (near, far, and the guard band's four sides), a
- * bit each: what a vertex that was not projected lies outside. */
-#define TARN_CLIP_PLANE_BITS 0x3Fu
-
 typedef struct {
     uint32_t inv_depth;         /* near/d, Q1.30 (1..2^30), for a vertex inside every clip
                                    plane of the static view's frame; 0: not projected */
